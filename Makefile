@@ -1,0 +1,96 @@
+# bentray: one C binary, built with pkg-config, warnings as errors.
+#   make deps   install the Debian packages the project needs (idempotent)
+#   make demo   build and render the default scene headless to a PNG
+#   make test   build and run every test
+#   make golden re-render the committed golden images (on purpose only; look at them)
+
+CC      ?= cc
+BUILD   ?= build
+CFLAGS  ?= -O2 -g
+CFLAGS  += -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Isrc -I$(BUILD)/gen
+PKGS    := egl glesv2 inih libpng
+HAVE_OSMESA := $(shell pkg-config --exists osmesa 2>/dev/null && echo 1)
+ifeq ($(HAVE_OSMESA),1)
+PKGS    += osmesa
+CFLAGS  += -DHAVE_OSMESA=1
+endif
+PKG_CFLAGS := $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
+PKG_LIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null)
+LDLIBS  += $(PKG_LIBS) -lm -lpthread
+
+# Debian packages: build tools, GL stacks (EGL surfaceless + OSMesa on Mesa), libraries, test tools.
+DEB_PACKAGES := make gcc pkg-config libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri \
+                libosmesa6-dev libinih-dev libpng-dev libcmocka-dev
+
+LIB_SRCS  := $(shell find src -name '*.c' ! -path 'src/tools/*' ! -name main.c | sort)
+LIB_OBJS  := $(LIB_SRCS:%.c=$(BUILD)/%.o) $(BUILD)/gen/shaders_embedded.o
+SHADERS   := $(sort $(wildcard shaders_es/*.glsl))
+TEST_SRCS := $(sort $(wildcard tests/unit/test_*.c))
+TEST_BINS := $(TEST_SRCS:tests/unit/%.c=$(BUILD)/tests/%)
+
+.PHONY: all deps demo test test-unit test-render golden assets clean
+all: bentray
+
+bentray: $(BUILD)/src/main.o $(BUILD)/libbentray.a
+	$(CC) $(CFLAGS) -o $@ $^ $(LDLIBS)
+
+$(BUILD)/libbentray.a: $(LIB_OBJS)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(BUILD)/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(PKG_CFLAGS) -MMD -MP -c -o $@ $<
+
+# Shaders are compiled into the binary: one table of (file name, text).
+$(BUILD)/tools/embed: src/tools/embed.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $<
+$(BUILD)/gen/shaders_embedded.c: $(BUILD)/tools/embed $(SHADERS)
+	@mkdir -p $(dir $@)
+	$(BUILD)/tools/embed $@ $(SHADERS)
+$(BUILD)/gen/shaders_embedded.o: $(BUILD)/gen/shaders_embedded.c
+	$(CC) $(CFLAGS) -c -o $@ $<
+
+# Generated assets (checkerboards, star field, test sky) come from the project's own tool.
+$(BUILD)/tools/gen_assets: src/tools/gen_assets.c src/io/png_io.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(PKG_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
+assets: $(BUILD)/tools/gen_assets
+	$(BUILD)/tools/gen_assets assets
+
+deps:
+	@missing=$$(for p in $(DEB_PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "installing:" $$missing; \
+	  SUDO=; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
+	  $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $$missing || \
+	  { $$SUDO apt-get update -qq && $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $$missing; }; \
+	fi
+
+demo: deps
+	@$(MAKE) --no-print-directory bentray
+	@mkdir -p out
+	./bentray render --scene assets/scenes/demo.scene --out out/demo.png
+	@echo "$(CURDIR)/out/demo.png"
+
+$(BUILD)/tests/%: tests/unit/%.c $(BUILD)/libbentray.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(PKG_CFLAGS) -Itests -o $@ $^ $(LDLIBS) -lcmocka
+
+test: deps
+	@$(MAKE) --no-print-directory test-unit test-render
+
+test-unit: $(TEST_BINS)
+	@set -e; for t in $(TEST_BINS); do echo "== $$t"; $$t; done
+
+test-render: bentray
+	@tests/render/run_all.sh
+
+golden: bentray
+	tests/render/make_golden.sh
+
+clean:
+	rm -rf $(BUILD) bentray
+
+-include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

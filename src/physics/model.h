@@ -1,0 +1,55 @@
+/* Models of curved light: dx/dtau = v, dv/dtau = f(x, v) (paper eq. 1), in double precision.
+ * The GLSL ES versions in shaders_es/model_*.glsl compute the same functions in float. */
+#ifndef BT_MODEL_H
+#define BT_MODEL_H
+#include "physics/vec3.h"
+
+enum model_type {
+    MODEL_FLAT,           /* straight rays; nothing is integrated */
+    MODEL_LORENZ,
+    MODEL_ROSSLER,
+    MODEL_POTENTIAL,      /* radial force field around a centre */
+    MODEL_REFRACTION,     /* medium with varying index of refraction */
+    MODEL_SCHWARZSCHILD,
+    MODEL_COUNT
+};
+
+enum potential_profile {
+    PROFILE_YUKAWA,       /* V = zeta exp(-mu r) / r, f = -grad V */
+    PROFILE_POLYNOMIAL    /* f = -strength (x-c)/r xi(r), xi = 2r^3/R^3 - 3r^2/R^2 + 1 for r <= R */
+};
+
+struct model {
+    enum model_type type;
+    vec3d center;         /* origin of the flow, the force centre, the explosion centre, the mass */
+    /* Lorenz and Roessler: f(x) = strength * F((x - center) / scale) */
+    double scale;
+    double strength;
+    double sigma, rho, beta;                 /* Lorenz */
+    double ross_a, ross_b, ross_c;           /* Roessler alpha, beta, gamma */
+    /* Potential field */
+    enum potential_profile profile;
+    double zeta, mu;                         /* Yukawa */
+    double radius;                           /* polynomial xi(r): range R (strength reused) */
+    /* Varying index of refraction: n(x) = 1 + amplitude * shell(r) * (1 + noise_amplitude * N(x)) */
+    double amplitude, shell_radius, shell_width, noise_amplitude, noise_frequency;
+    /* Schwarzschild */
+    double mass;                             /* M in scene length units (G = c = 1) */
+};
+
+const char *model_name(enum model_type t);
+/* f(x, v) of eq. (1). */
+vec3d model_accel(const struct model *m, vec3d x, vec3d v);
+/* Initial ray velocity for a unit viewing direction dir seen by a camera at x. */
+vec3d model_initial_velocity(const struct model *m, vec3d x, vec3d dir);
+/* Radius (around center) inside which rays are captured; 0 when the model has none. */
+double model_capture_radius(const struct model *m);
+/* Index of refraction n(x) for MODEL_REFRACTION (1 elsewhere). */
+double model_refraction_index(const struct model *m, vec3d x);
+
+enum integration_method { METHOD_EULER, METHOD_RK4 };
+const char *method_name(enum integration_method m);
+/* One step of size h of eq. (1), in place (Euler as eq. (2), or classical RK4). */
+void model_step(const struct model *m, enum integration_method method, double h, vec3d *x, vec3d *v);
+
+#endif

@@ -1,0 +1,116 @@
+/* The scene: camera, model of light propagation, objects, lights, sky and render settings.
+ * Filled by scene_load() from a scene file (assets/scenes/*.scene) and --set overrides. */
+#ifndef BT_SCENE_H
+#define BT_SCENE_H
+#include "physics/vec3.h"
+#include "physics/model.h"
+
+#define SCENE_MAX_OBJECTS 64
+#define SCENE_MAX_LIGHTS 4
+#define SCENE_MAX_TEXTURES 8
+#define SCENE_NAME_LEN 64
+#define SCENE_PATH_LEN 512
+/* Upper limits that keep a typo from asking for hours of work or gigabytes. */
+#define SCENE_MAX_SIZE 8192
+#define SCENE_MAX_SEGMENTS 100000
+#define SCENE_MAX_STEPS_PER_SEGMENT 10000
+#define SCENE_MAX_STEPS_PER_PASS 64
+
+enum primitive_type { PRIM_SPHERE, PRIM_TRIANGLE, PRIM_DISK, PRIM_RECT, PRIM_COUNT };
+enum precision_choice { PRECISION_AUTO, PRECISION_FP32, PRECISION_FP16 };
+enum mrt_choice { MRT_AUTO, MRT_ON, MRT_OFF };
+enum sky_type { SKY_COLOR, SKY_CUBEMAP };
+
+struct camera {
+    vec3d position;
+    vec3d look_at;
+    vec3d up;
+    double fov_deg;          /* vertical field of view, degrees */
+};
+
+/* Material of the paper's section 3.4: ambient, emissive, texture-modulated, fake Blinn-Phong. */
+struct material {
+    vec3d color;             /* base (diffuse) colour, linear RGB 0..1 */
+    vec3d emission;          /* emitted colour, added unlit */
+    double ambient;          /* ambient factor */
+    double diffuse;          /* diffuse factor */
+    double specular;         /* specular factor */
+    double shininess;        /* Blinn-Phong exponent */
+    int texture;             /* index into scene.textures, -1 for none */
+    double checker;          /* >0: procedural checkerboard with this many squares per unit texcoord */
+    vec3d checker_color;     /* second colour of the checkerboard */
+};
+
+/* Geometry of one object. Which fields are used depends on the primitive. */
+struct object {
+    char name[SCENE_NAME_LEN];
+    enum primitive_type type;
+    vec3d center;            /* sphere, disk, rect */
+    double radius;           /* sphere; disk outer radius */
+    double inner_radius;     /* disk (annulus); 0 for a full disk */
+    vec3d normal;            /* disk */
+    vec3d axis_u, axis_v;    /* rect: half-edge vectors from the centre */
+    vec3d vertex[3];         /* triangle */
+    double uv[3][2];         /* triangle texture coordinates */
+    vec3d pole;              /* sphere: north axis for texture coordinates */
+    struct material material;
+};
+
+struct light {
+    vec3d position;
+    vec3d color;
+};
+
+struct sky {
+    enum sky_type type;
+    vec3d color;             /* SKY_COLOR */
+    char cubemap[SCENE_PATH_LEN]; /* SKY_CUBEMAP: path prefix, faces are PREFIX_{px,nx,py,ny,pz,nz}.png */
+};
+
+struct render_settings {
+    int width, height;
+    enum integration_method method;
+    double step_size;        /* integration step h, scene length units (affine parameter) */
+    int steps_per_segment;   /* paper's n_integration */
+    int segments;            /* paper's n_segs */
+    int steps_per_pass;      /* K: integration steps unrolled in one shader */
+    double bound_radius;     /* radius of the bounding sphere around bound_center */
+    vec3d bound_center;
+    enum precision_choice precision;
+    enum mrt_choice mrt;
+};
+
+struct scene {
+    char path[SCENE_PATH_LEN];     /* file it came from */
+    char dir[SCENE_PATH_LEN];      /* its directory: relative asset paths resolve against it */
+    char name[SCENE_NAME_LEN];
+    char description[256];
+    struct camera camera;
+    struct model model;
+    struct render_settings render;
+    struct sky sky;
+    vec3d ambient_light;           /* colour of the ambient light */
+    int n_objects;
+    struct object objects[SCENE_MAX_OBJECTS];
+    int n_lights;
+    struct light lights[SCENE_MAX_LIGHTS];
+    int n_textures;
+    char textures[SCENE_MAX_TEXTURES][SCENE_PATH_LEN]; /* resolved paths of PNG textures */
+};
+
+/* Error from loading or overriding a scene: where and what. */
+struct scene_error {
+    char where[SCENE_PATH_LEN + 32];  /* "file:line" or "--set model.mass=x" */
+    char message[512];
+};
+
+/* Defaults for every field (flat space, one sphere-free empty scene). */
+void scene_defaults(struct scene *s);
+/* Parse FILE into s (defaults first). 0 ok, -1 with err filled. */
+int scene_load(struct scene *s, const char *path, struct scene_error *err);
+/* Apply one "section.key=value" override (sections of objects: object.NAME.key). */
+int scene_set(struct scene *s, const char *assignment, struct scene_error *err);
+/* Cross-field checks after all overrides (e.g. camera not inside the horizon). */
+int scene_validate(const struct scene *s, struct scene_error *err);
+
+#endif
