@@ -8,7 +8,7 @@ CC      ?= cc
 BUILD   ?= build
 CFLAGS  ?= -O2 -g
 CFLAGS  += -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Isrc -I$(BUILD)/gen
-PKGS    := egl glesv2 inih libpng
+PKGS    := egl inih libpng
 HAVE_OSMESA := $(shell pkg-config --exists osmesa 2>/dev/null && echo 1)
 ifeq ($(HAVE_OSMESA),1)
 PKGS    += osmesa

@@ -5,6 +5,8 @@
 
 typedef struct { double x, y, z; } vec3d;
 
+#define PI_D 3.14159265358979323846
+
 static inline vec3d v3(double x, double y, double z) { vec3d r = {x, y, z}; return r; }
 static inline vec3d v3_add(vec3d a, vec3d b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
 static inline vec3d v3_sub(vec3d a, vec3d b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }

@@ -1,5 +1,5 @@
 /* The scene: camera, model of light propagation, objects, lights, sky and render settings.
- * Filled by scene_load() from a scene file (assets/scenes/*.scene) and --set overrides. */
+ * Filled by scene_load() from a scene file (assets/scenes/NAME.scene) and --set overrides. */
 #ifndef BT_SCENE_H
 #define BT_SCENE_H
 #include "physics/vec3.h"
@@ -59,6 +59,7 @@ struct object {
 struct light {
     vec3d position;
     vec3d color;
+    char name[SCENE_NAME_LEN];     /* from [light NAME]: lets --set light.NAME.key find it */
 };
 
 struct sky {

@@ -1,0 +1,35 @@
+// Conventions every stage shares; the C side is src/render/raystate.h.
+//   ray position  texture: xyz = x,  w = integration steps taken (negative: the ray failed)
+//   ray velocity  texture: xyz = v,  w = step size h
+//   hit           texture: xyz = hit point, w = depth key = segment index + fraction in the segment
+//   image         texture: rgb = shaded colour, a = object id, or an outcome code below
+// One texel per pixel; gl_FragCoord.xy is the texel centre, so no filtering ever happens.
+
+const float NO_HIT = 60000.0;          // depth key of a ray still travelling (fits in fp16)
+const float CODE_SKY = -1.0;           // left the bounding sphere: sky by exit direction
+const float CODE_CAPTURED = -2.0;      // fell through the horizon: black
+const float CODE_UNFINISHED = -3.0;    // still travelling after the last segment
+const float CODE_FAILED = -4.0;        // the integration produced a non-finite number
+
+// Precision traps of GLSL ES on Mesa 22.3 (checked on llvmpipe; the fp32 render tests catch them):
+// - an expression with a literal constant written inside a branch of ?: or if is evaluated
+//   at 16-bit precision: compute it into a named local first, then select;
+// - constant expressions such as 7.0 / 9.0 fold at 16-bit precision: write the literal.
+
+uniform vec2 u_inv_size;               // 1 / ray-state texture size
+
+// A macro, not a function: a sampler passed as a function parameter can lose its highp
+// precision in GLSL ES 1.00 (Mesa then returns 16-bit floats from a 32-bit texture).
+#define fetch(state) texture2D(state, gl_FragCoord.xy * u_inv_size)
+
+// A stage writes up to two targets: in one pass with MRT, or one per pass (BT_TARGET).
+#ifdef BT_MRT
+#define WRITE_TARGET0(value) gl_FragData[0] = (value)
+#define WRITE_TARGET1(value) gl_FragData[1] = (value)
+#elif BT_TARGET == 0
+#define WRITE_TARGET0(value) gl_FragColor = (value)
+#define WRITE_TARGET1(value)
+#else
+#define WRITE_TARGET0(value)
+#define WRITE_TARGET1(value) gl_FragColor = (value)
+#endif

@@ -1,0 +1,36 @@
+// Radial force field around a centre (paper section 5.2): Yukawa, or the polynomial xi(r) when the
+// preamble defines PROFILE_POLYNOMIAL.
+uniform vec3 u_model_center;
+#ifdef PROFILE_POLYNOMIAL
+uniform float u_model_strength;
+uniform float u_poly_radius;    // range R, scene length units
+#else
+uniform vec2 u_yukawa;          // zeta, mu (1 / scene length)
+#endif
+
+// Below this distance the direction to the centre is lost to rounding (scene units). Compared with
+// <= so that a precision which flushes it to zero still guards r == 0.
+const float MODEL_GUARD_RADIUS = 1e-9;
+
+vec3 model_accel(vec3 x, vec3 v)
+{
+    vec3 y = x - u_model_center;
+    float r = length(y);
+    if (r <= MODEL_GUARD_RADIUS)
+        return vec3(0.0);
+    vec3 outward = y / r;
+#ifdef PROFILE_POLYNOMIAL
+    float q = min(r / u_poly_radius, 1.0);   // xi(R) = 0, so clamping gives zero force beyond R
+    float xi = (2.0 * q - 3.0) * q * q + 1.0;
+    return -u_model_strength * xi * outward;
+#else
+    // zeta exp(-mu r) (1/r^2 + mu/r) written as (zeta exp(-mu r) / r) (1/r + mu): no r^2 to underflow.
+    float radial = u_yukawa.x * exp(-u_yukawa.y * r) / r * (1.0 / r + u_yukawa.y);
+    return radial * outward;
+#endif
+}
+
+vec3 model_initial_velocity(vec3 x, vec3 d)
+{
+    return d;
+}

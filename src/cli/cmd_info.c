@@ -1,0 +1,88 @@
+/* bentray info: what the GL back-ends can do, proved by rendering (see src/gl/caps.c). */
+#include "cli/commands.h"
+#include "cli/options.h"
+#include "gl/caps.h"
+#include "render/path.h"
+#include <stdio.h>
+#include <string.h>
+
+static void usage(FILE *out)
+{
+    fprintf(out, "usage: bentray info [--backend egl|osmesa|auto|all] [--shader-dir DIR]\n"
+                 "Probe the headless GL back-ends and print their versions, renderer, the float\n"
+                 "render-target formats that really work, MRT, fragment highp, and the render path\n"
+                 "bentray would choose. --backend all (the default) probes every back-end built in.\n");
+}
+
+static void print_caps(const struct gl_caps *c)
+{
+    printf("back-end:        %s (%s)\n", c->backend, c->platform_version);
+    printf("GL version:      %s\n", c->version);
+    printf("GLSL version:    %s\n", c->glsl_version);
+    printf("renderer:        %s (%s)\n", c->renderer, c->vendor);
+    printf("fragment highp:  %s (%d mantissa bits)\n", c->fragment_highp ? "yes" : "no", c->fragment_highp_bits);
+    printf("max texture:     %d\n", c->max_texture_size);
+    printf("float render targets (written, sampled and read back):\n");
+    for (int i = 0; i < c->n_formats; i++)
+        printf("  %-46s %s%s%s\n", c->formats[i].name, c->formats[i].works ? "works" : "no: ",
+               c->formats[i].works ? "" : c->formats[i].why, "");
+    printf("draw buffers:    GL_MAX_DRAW_BUFFERS %d; MRT %s%s\n", c->max_draw_buffers,
+           c->mrt_works ? "works" : "no: ", c->mrt_works ? "" : c->mrt_why);
+    struct render_path path;
+    char err[512];
+    if (render_path_choose(c, PRECISION_AUTO, MRT_AUTO, &path, err, sizeof err) == 0)
+        printf("render path:     %s\n", path.description);
+    else
+        printf("render path:     none: %s\n", err);
+}
+
+int cmd_info(int argc, char **argv)
+{
+    const char *backend = "all";
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            usage(stdout);
+            return EXIT_OK;
+        } else if (strcmp(argv[i], "--backend") == 0 && i + 1 < argc) {
+            backend = argv[++i];
+        } else if (strcmp(argv[i], "--shader-dir") == 0 && i + 1 < argc) {
+            shader_set_directory(argv[++i]);
+        } else {
+            fprintf(stderr, "bentray info: unknown option '%s'\n", argv[i]);
+            usage(stderr);
+            return EXIT_USAGE;
+        }
+    }
+    static const char *const all[] = {"egl", "osmesa", NULL};
+    const char *one[] = {backend, NULL};
+    const char *const *list = strcmp(backend, "all") == 0 ? all : one;
+    if (strcmp(backend, "all") != 0 && !option_backend_valid(backend)) {
+        fprintf(stderr, "bentray info: --backend: unknown back-end '%s' (expected egl, osmesa, auto or all)\n", backend);
+        return EXIT_USAGE;
+    }
+    int failures = 0, shown = 0;
+    for (int i = 0; list[i]; i++) {
+        char err[1024];
+        if (list == all && !gl_backend_built(list[i])) {
+            printf("back-end:        %s (not built in)\n\n", list[i]);
+            continue;
+        }
+        struct gl_context *ctx = gl_context_create(list[i], err, sizeof err);
+        if (!ctx) {
+            printf("back-end:        %s: unavailable: %s\n\n", list[i], err);
+            failures++;
+            continue;
+        }
+        struct gl_caps caps;
+        if (gl_caps_probe(&caps, ctx, err, sizeof err) != 0) {
+            printf("back-end:        %s: probe failed: %s\n\n", list[i], err);
+            failures++;
+        } else {
+            print_caps(&caps);
+            printf("\n");
+            shown++;
+        }
+        gl_context_destroy(ctx);
+    }
+    return shown > 0 && failures == 0 ? EXIT_OK : EXIT_RUNTIME;
+}

@@ -1,0 +1,133 @@
+/* bentray trace: one ray's polyline and outcome as JSON, read back from the GPU after each
+ * segment (the only place the pipeline reads back before the end). */
+#include "cli/commands.h"
+#include "cli/options.h"
+#include "render/frame.h"
+#include "render/renderer.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void usage(FILE *out)
+{
+    fprintf(out,
+            "usage: bentray trace --scene FILE --pixel I J [options]\n"
+            "Trace the ray of pixel column I, row J (row 0 at the top) and print its polyline\n"
+            "(segment end points) and outcome as JSON. Options as for render: --size, --backend,\n"
+            "--precision, --no-mrt, --set, --shader-dir.\n");
+}
+
+struct polyline {
+    int n, cap;
+    float (*points)[4];
+};
+
+static int record_point(struct renderer *r, int segment, void *arg)
+{
+    (void)segment;
+    struct polyline *pl = arg;
+    char err[256];
+    if (pl->n == pl->cap)
+        return -1;
+    if (renderer_read_position(r, 0, 0, pl->points[pl->n], err, sizeof err) != 0) {
+        fprintf(stderr, "bentray trace: %s\n", err);
+        return -1;
+    }
+    pl->n++;
+    return 0;
+}
+
+static void print_vec(const char *name, const float *v, const char *after)
+{
+    printf("  \"%s\": [%.9g, %.9g, %.9g]%s\n", name, v[0], v[1], v[2], after);
+}
+
+int cmd_trace(int argc, char **argv)
+{
+    struct common_options o = {.backend = "auto"};
+    long px = -1, py = -1;
+    for (int i = 1; i < argc; i++) {
+        int c = options_common(&o, "trace", argc, argv, &i);
+        if (c < 0)
+            return EXIT_USAGE;
+        if (c > 0)
+            continue;
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            usage(stdout);
+            return EXIT_OK;
+        } else if (strcmp(argv[i], "--pixel") == 0) {
+            if (i + 2 >= argc || option_parse_int(argv[i + 1], 0, SCENE_MAX_SIZE - 1, &px) ||
+                option_parse_int(argv[i + 2], 0, SCENE_MAX_SIZE - 1, &py)) {
+                fprintf(stderr, "bentray trace: --pixel: expected two pixel indices I J\n");
+                return EXIT_USAGE;
+            }
+            i += 2;
+        } else {
+            fprintf(stderr, "bentray trace: unknown option '%s'\n", argv[i]);
+            usage(stderr);
+            return EXIT_USAGE;
+        }
+    }
+    if (px < 0) {
+        fprintf(stderr, "bentray trace: --pixel I J is required\n");
+        return EXIT_USAGE;
+    }
+    static struct scene s;
+    int rc = options_load_scene(&o, "trace", &s);
+    if (rc)
+        return rc;
+    if (px >= s.render.width || py >= s.render.height) {
+        fprintf(stderr, "bentray trace: --pixel: %ld %ld is outside the %dx%d image\n", px, py, s.render.width,
+                s.render.height);
+        return EXIT_USAGE;
+    }
+    char err[2048];
+    int bad_input;
+    struct gl_context *ctx = gl_context_create(o.backend, err, sizeof err);
+    if (!ctx) {
+        fprintf(stderr, "bentray trace: %s\n", err);
+        return EXIT_RUNTIME;
+    }
+    struct renderer *r = renderer_create(ctx, &s, err, sizeof err, &bad_input);
+    struct polyline pl = {0, s.render.segments + 1, NULL};
+    pl.points = calloc((size_t)pl.cap, sizeof *pl.points);
+    struct render_result res = {0};
+    rc = EXIT_RUNTIME;
+    /* a 1x1 ray state for the chosen pixel: the same arithmetic as the full frame */
+    int gl_row = s.render.height - 1 - (int)py;
+    if (r && pl.points && renderer_run(r, (int)px, gl_row, 1, 1, record_point, &pl, err, sizeof err) == 0 &&
+        renderer_read(r, &res, 1, err, sizeof err) == 0) {
+        struct dump d;
+        if (result_to_dump(&res, "gpu", &d) == 0) {
+            const struct dump_record *rec = &d.records[0];
+            printf("{\n  \"scene\": \"%s\",\n  \"pixel\": [%ld, %ld],\n  \"engine\": \"gpu %s\",\n", s.name, px, py,
+                   renderer_path(r)->name);
+            printf("  \"model\": \"%s\",\n  \"outcome\": \"%s\",\n", model_name(s.model.type),
+                   dump_outcome_name(rec->outcome));
+            if (rec->outcome >= 0) {
+                printf("  \"object\": \"%s\",\n", s.objects[rec->outcome].name);
+                print_vec("hit", rec->hit, ",");
+            }
+            printf("  \"depth\": %.9g,\n  \"steps\": %u,\n", rec->depth, rec->steps);
+            print_vec("final_position", rec->position, ",");
+            print_vec("final_direction", rec->direction, ",");
+            printf("  \"polyline\": [\n    [%.9g, %.9g, %.9g]", s.camera.position.x, s.camera.position.y,
+                   s.camera.position.z);
+            for (int k = 0; k < pl.n; k++)
+                printf(",\n    [%.9g, %.9g, %.9g]", pl.points[k][0], pl.points[k][1], pl.points[k][2]);
+            printf("\n  ]\n}\n");
+            dump_free(&d);
+            rc = EXIT_OK;
+        }
+    } else if (!r) {
+        rc = bad_input ? EXIT_USAGE : EXIT_RUNTIME;
+    }
+    if (rc != EXIT_OK)
+        fprintf(stderr, "bentray trace: %s\n", err);
+    render_result_free(&res);
+    free(pl.points);
+    renderer_destroy(r);
+    gl_context_destroy(ctx);
+    return rc;
+}

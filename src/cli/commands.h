@@ -1,0 +1,11 @@
+/* Sub-commands of the bentray binary. Each returns the process exit code. */
+#ifndef BT_COMMANDS_H
+#define BT_COMMANDS_H
+
+enum exit_code { EXIT_OK = 0, EXIT_RUNTIME = 1, EXIT_USAGE = 2 };
+
+int cmd_info(int argc, char **argv);
+int cmd_render(int argc, char **argv);
+int cmd_trace(int argc, char **argv);
+
+#endif

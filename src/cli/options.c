@@ -1,0 +1,134 @@
+#include "cli/options.h"
+#include "cli/commands.h"
+#include "gl/shader.h"
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int option_backend_valid(const char *name)
+{
+    return strcmp(name, "egl") == 0 || strcmp(name, "osmesa") == 0 || strcmp(name, "auto") == 0;
+}
+
+int option_parse_int(const char *text, long min, long max, long *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(text, &end, 10);
+    if (errno || end == text || *end != '\0' || v < min || v > max)
+        return -1;
+    *out = v;
+    return 0;
+}
+
+int option_parse_size(const char *text, int *w, int *h)
+{
+    char buf[64];
+    long lw, lh;
+    if (strlen(text) >= sizeof buf)
+        return -1;
+    strcpy(buf, text);
+    char *x = strchr(buf, 'x');
+    if (!x)
+        return -1;
+    *x = '\0';
+    if (option_parse_int(buf, 1, SCENE_MAX_SIZE, &lw) || option_parse_int(x + 1, 1, SCENE_MAX_SIZE, &lh))
+        return -1;
+    *w = (int)lw;
+    *h = (int)lh;
+    return 0;
+}
+
+static const char *value_of(const char *cmd, int argc, char **argv, int *i)
+{
+    if (*i + 1 >= argc) {
+        fprintf(stderr, "bentray %s: option %s needs a value\n", cmd, argv[*i]);
+        return NULL;
+    }
+    return argv[++*i];
+}
+
+int options_common(struct common_options *o, const char *cmd, int argc, char **argv, int *i)
+{
+    const char *opt = argv[*i], *v;
+    if (strcmp(opt, "--scene") == 0) {
+        if (!(v = value_of(cmd, argc, argv, i)))
+            return -1;
+        o->scene_path = v;
+    } else if (strcmp(opt, "--backend") == 0) {
+        if (!(v = value_of(cmd, argc, argv, i)))
+            return -1;
+        if (!option_backend_valid(v)) {
+            fprintf(stderr, "bentray %s: --backend: unknown back-end '%s' (expected egl, osmesa or auto)\n", cmd, v);
+            return -1;
+        }
+        o->backend = v;
+    } else if (strcmp(opt, "--shader-dir") == 0) {
+        if (!(v = value_of(cmd, argc, argv, i)))
+            return -1;
+        o->shader_dir = v;
+        shader_set_directory(v);
+    } else if (strcmp(opt, "--size") == 0) {
+        if (!(v = value_of(cmd, argc, argv, i)))
+            return -1;
+        if (option_parse_size(v, &o->width, &o->height) != 0) {
+            fprintf(stderr, "bentray %s: --size: expected WxH with 1 <= W, H <= %d, got '%s'\n", cmd, SCENE_MAX_SIZE, v);
+            return -1;
+        }
+    } else if (strcmp(opt, "--precision") == 0) {
+        if (!(v = value_of(cmd, argc, argv, i)))
+            return -1;
+        if (strcmp(v, "fp32") && strcmp(v, "fp16") && strcmp(v, "auto")) {
+            fprintf(stderr, "bentray %s: --precision: expected fp32, fp16 or auto, got '%s'\n", cmd, v);
+            return -1;
+        }
+        o->precision = v;
+    } else if (strcmp(opt, "--no-mrt") == 0) {
+        o->no_mrt = 1;
+    } else if (strcmp(opt, "--set") == 0) {
+        if (!(v = value_of(cmd, argc, argv, i)))
+            return -1;
+        if (o->n_sets == OPTIONS_MAX_SETS) {
+            fprintf(stderr, "bentray %s: --set: at most %d overrides\n", cmd, OPTIONS_MAX_SETS);
+            return -1;
+        }
+        o->sets[o->n_sets++] = v;
+    } else {
+        return 0;
+    }
+    return 1;
+}
+
+int options_load_scene(const struct common_options *o, const char *cmd, struct scene *s)
+{
+    struct scene_error err;
+    if (!o->scene_path) {
+        fprintf(stderr, "bentray %s: --scene FILE is required\n", cmd);
+        return EXIT_USAGE;
+    }
+    if (scene_load(s, o->scene_path, &err) != 0) {
+        fprintf(stderr, "%s: error: %s\n", err.where, err.message);
+        return EXIT_USAGE;
+    }
+    for (int k = 0; k < o->n_sets; k++)
+        if (scene_set(s, o->sets[k], &err) != 0) {
+            fprintf(stderr, "%s: error: %s\n", err.where, err.message);
+            return EXIT_USAGE;
+        }
+    if (o->width) {
+        s->render.width = o->width;
+        s->render.height = o->height;
+    }
+    if (o->precision)
+        s->render.precision = strcmp(o->precision, "fp32") == 0   ? PRECISION_FP32
+                              : strcmp(o->precision, "fp16") == 0 ? PRECISION_FP16
+                                                                  : PRECISION_AUTO;
+    if (o->no_mrt)
+        s->render.mrt = MRT_OFF;
+    if (scene_validate(s, &err) != 0) {
+        fprintf(stderr, "%s: error: %s\n", err.where, err.message);
+        return EXIT_USAGE;
+    }
+    return 0;
+}

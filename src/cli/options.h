@@ -1,0 +1,34 @@
+/* Shared option parsing for the sub-commands: one place that turns argv into settings and
+ * reports which option is wrong. */
+#ifndef BT_OPTIONS_H
+#define BT_OPTIONS_H
+#include "scene/scene.h"
+
+#define OPTIONS_MAX_SETS 64
+
+struct common_options {
+    const char *scene_path;
+    const char *backend;          /* egl|osmesa|auto */
+    const char *shader_dir;
+    int width, height;            /* 0: from the scene */
+    const char *precision;        /* NULL: from the scene */
+    int no_mrt;
+    int n_sets;
+    const char *sets[OPTIONS_MAX_SETS];
+};
+
+int option_backend_valid(const char *name);
+/* Parse "WxH"; 0 ok. */
+int option_parse_size(const char *text, int *w, int *h);
+/* Parse a non-negative integer option fully; 0 ok. */
+int option_parse_int(const char *text, long min, long max, long *out);
+
+/* Try to consume argv[*i] (and its value) as a common option. Returns 1 consumed, 0 not a
+ * common option, -1 bad value (message printed naming the option). */
+int options_common(struct common_options *o, const char *cmd, int argc, char **argv, int *i);
+
+/* Load the scene and apply --size, --precision, --no-mrt and --set. Prints the error
+ * (file:line or option) and returns EXIT_USAGE on bad input, 0 on success. */
+int options_load_scene(const struct common_options *o, const char *cmd, struct scene *s);
+
+#endif

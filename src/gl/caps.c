@@ -1,0 +1,260 @@
+#include "gl/caps.h"
+#include "gl/quad.h"
+#include "gl/readback.h"
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define PROBE_SIZE 4
+
+int extension_list_has(const char *list, const char *token)
+{
+    size_t n = strlen(token);
+    for (const char *p = list; p && (p = strstr(p, token)) != NULL; p += n) {
+        int starts = (p == list || p[-1] == ' ');
+        int ends = (p[n] == ' ' || p[n] == '\0');
+        if (starts && ends)
+            return 1;
+    }
+    return 0;
+}
+
+int gl_has_extension(const char *name)
+{
+    return extension_list_has((const char *)glGetString(GL_EXTENSIONS), name);
+}
+
+static void copy_string(char *dst, size_t n, GLenum name)
+{
+    const GLubyte *s = glGetString(name);
+    snprintf(dst, n, "%s", s ? (const char *)s : "(unknown)");
+}
+
+static void parse_version(struct gl_caps *c)
+{
+    const char *v = c->version;
+    if (strncmp(v, "OpenGL ES ", 10) == 0)
+        v += 10;
+    if (sscanf(v, "%d.%d", &c->major, &c->minor) != 2)
+        c->major = c->minor = 0;
+}
+
+static void add_format(struct gl_caps *c, const char *name, GLint internal, GLenum format, GLenum type, int fp32)
+{
+    struct float_format *f = &c->formats[c->n_formats++];
+    f->name = name;
+    f->internal_format = internal;
+    f->format = format;
+    f->type = type;
+    f->is_fp32 = fp32;
+}
+
+/* Candidates in order of preference. ES2 has no sized float formats; its unsized GL_RGBA/GL_FLOAT
+ * is listed so that `bentray info` shows it failing rather than silently skipping it. */
+static void list_candidates(struct gl_caps *c)
+{
+    if (!c->is_es || c->major >= 3) {
+        add_format(c, "RGBA32F", GL_RGBA32F, GL_RGBA, GL_FLOAT, 1);
+        add_format(c, "RGBA16F", GL_RGBA16F, GL_RGBA, c->is_es ? GL_HALF_FLOAT : GL_FLOAT, 0);
+        return;
+    }
+    add_format(c, "RGBA/FLOAT (OES_texture_float)", GL_RGBA, GL_RGBA, GL_FLOAT, 1);
+    add_format(c, "RGBA/HALF_FLOAT_OES (OES_texture_half_float)", GL_RGBA, GL_RGBA, GL_HALF_FLOAT_OES, 0);
+}
+
+static GLuint make_target(const struct float_format *f, GLuint *fbo)
+{
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexImage2D(GL_TEXTURE_2D, 0, f->internal_format, PROBE_SIZE, PROBE_SIZE, 0, f->format, f->type, NULL);
+    glGenFramebuffers(1, fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, *fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+    return tex;
+}
+
+static void set_probe(GLuint prog, const float v[4], int use_source)
+{
+    glUseProgram(prog);
+    glUniform4f(glGetUniformLocation(prog, "u_value"), v[0], v[1], v[2], v[3]);
+    glUniform1f(glGetUniformLocation(prog, "u_use_source"), use_source ? 1.0f : 0.0f);
+    glUniform1i(glGetUniformLocation(prog, "u_source"), 0);
+}
+
+static int close_to(const float *got, const float *want, float tol)
+{
+    for (int i = 0; i < 4; i++)
+        if (!(fabsf(got[i] - want[i]) <= tol * fmaxf(1.0f, fabsf(want[i]))))
+            return 0;
+    return 1;
+}
+
+/* Render a value into texture A, sample A into B adding a second value, read B back. The values
+ * need the format's precision: 1 + 2^-20 (fp32) or 1 + 2^-10 (fp16), negative and > 1 (not unorm). */
+static void probe_format(struct float_format *f, GLuint prog)
+{
+    const float fp32_a[4] = {1.0f + 0x1p-20f, -3.25f, 65537.0f, 0.5f};
+    const float fp16_a[4] = {1.0f + 0x1p-10f, -3.25f, 1000.5f, 0.5f};
+    const float *a = f->is_fp32 ? fp32_a : fp16_a;
+    const float b[4] = {f->is_fp32 ? 0x1p-20f : 0x1p-10f, 0.0f, 1.0f, 0.25f};
+    float want[4], got[4 * PROBE_SIZE * PROBE_SIZE];
+    for (int i = 0; i < 4; i++)
+        want[i] = a[i] + b[i];
+
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    GLuint fbo_a, fbo_b;
+    GLuint tex_a = make_target(f, &fbo_a);
+    GLuint tex_b = make_target(f, &fbo_b);
+    GLenum status_a, status_b;
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_a);
+    status_a = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_b);
+    status_b = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    GLenum gl_err = glGetError();
+    if (gl_err != GL_NO_ERROR) {
+        snprintf(f->why, sizeof f->why, "texture creation fails (%s)", gl_error_name(gl_err));
+    } else if (status_a != GL_FRAMEBUFFER_COMPLETE || status_b != GL_FRAMEBUFFER_COMPLETE) {
+        snprintf(f->why, sizeof f->why, "not a render target (framebuffer status 0x%04x)",
+                 status_a != GL_FRAMEBUFFER_COMPLETE ? status_a : status_b);
+    } else {
+        glViewport(0, 0, PROBE_SIZE, PROBE_SIZE);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo_a);
+        set_probe(prog, a, 0);
+        quad_draw(prog, 0.0f);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo_b);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, tex_a);
+        set_probe(prog, b, 1);
+        quad_draw(prog, 0.0f);
+        if (read_float_pixels(0, 0, PROBE_SIZE, PROBE_SIZE, got) != 0)
+            snprintf(f->why, sizeof f->why, "renders, but cannot be read back as floats");
+        else if (!close_to(got, want, f->is_fp32 ? 0x1p-23f : 0x1p-12f))
+            snprintf(f->why, sizeof f->why, "loses precision: wrote %.9g %.9g %.9g %.9g, read %.9g %.9g %.9g %.9g",
+                     want[0], want[1], want[2], want[3], got[0], got[1], got[2], got[3]);
+        else if ((gl_err = glGetError()) != GL_NO_ERROR)
+            snprintf(f->why, sizeof f->why, "rendering fails (%s)", gl_error_name(gl_err));
+        else
+            f->works = 1;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo_a);
+    glDeleteFramebuffers(1, &fbo_b);
+    glDeleteTextures(1, &tex_a);
+    glDeleteTextures(1, &tex_b);
+    while (glGetError() != GL_NO_ERROR) {
+    }
+}
+
+/* Two draw buffers written by one pass, each read back: GL_MAX_DRAW_BUFFERS alone can lie. */
+static void probe_mrt(struct gl_caps *c, const struct float_format *f)
+{
+    static const char *const vs[] = {"quad_vertex.glsl", NULL};
+    static const char *const fs[] = {"probe_fragment.glsl", NULL};
+    if (!f) {
+        snprintf(c->mrt_why, sizeof c->mrt_why, "no float format renders");
+        return;
+    }
+    if (c->max_draw_buffers < 2 || !bt_gl.DrawBuffers) {
+        snprintf(c->mrt_why, sizeof c->mrt_why, "GL_MAX_DRAW_BUFFERS is %d%s", c->max_draw_buffers,
+                 bt_gl.DrawBuffers ? "" : " and glDrawBuffers is missing");
+        return;
+    }
+    if (c->is_es && c->major < 3 && !gl_has_extension("GL_EXT_draw_buffers")) {
+        snprintf(c->mrt_why, sizeof c->mrt_why, "GL_EXT_draw_buffers is missing");
+        return;
+    }
+    struct shader_target t = c->shader;
+    t.draw_buffers_ext = c->is_es;
+    char err[1024];
+    GLuint prog = shader_program_build(&t, "#define PROBE_MRT 1\n", vs, fs, err, sizeof err);
+    if (!prog) {
+        snprintf(c->mrt_why, sizeof c->mrt_why, "a shader writing gl_FragData[1] does not compile");
+        return;
+    }
+    GLuint fbo, fbo1;
+    GLuint tex0 = make_target(f, &fbo);
+    GLuint tex1 = make_target(f, &fbo1);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, tex1, 0);
+    static const GLenum bufs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(2, bufs);
+    const float v[4] = {1.5f, -2.0f, 3.0f, 0.25f}, want[4] = {3.0f, -4.0f, 6.0f, 0.5f};
+    float got[4 * PROBE_SIZE * PROBE_SIZE];
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        snprintf(c->mrt_why, sizeof c->mrt_why, "a framebuffer with two float attachments is incomplete");
+    } else {
+        glViewport(0, 0, PROBE_SIZE, PROBE_SIZE);
+        set_probe(prog, v, 0);
+        quad_draw(prog, 0.0f);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo1);
+        if (read_float_pixels(0, 0, PROBE_SIZE, PROBE_SIZE, got) != 0 || !close_to(got, want, 1e-3f))
+            snprintf(c->mrt_why, sizeof c->mrt_why, "the second draw buffer is not written");
+        else
+            c->mrt_works = glGetError() == GL_NO_ERROR;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteFramebuffers(1, &fbo1);
+    glDeleteTextures(1, &tex0);
+    glDeleteTextures(1, &tex1);
+    glDeleteProgram(prog);
+    while (glGetError() != GL_NO_ERROR) {
+    }
+}
+
+int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, char *err, size_t errlen)
+{
+    static const char *const vs[] = {"quad_vertex.glsl", NULL};
+    static const char *const fs[] = {"probe_fragment.glsl", NULL};
+    memset(c, 0, sizeof *c);
+    c->backend = ctx->backend;
+    snprintf(c->platform_version, sizeof c->platform_version, "%s", ctx->platform_version);
+    c->is_es = ctx->is_es;
+    copy_string(c->version, sizeof c->version, GL_VERSION);
+    copy_string(c->renderer, sizeof c->renderer, GL_RENDERER);
+    copy_string(c->vendor, sizeof c->vendor, GL_VENDOR);
+    copy_string(c->glsl_version, sizeof c->glsl_version, GL_SHADING_LANGUAGE_VERSION);
+    parse_version(c);
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &c->max_texture_size);
+    c->max_draw_buffers = 1;
+    if (!c->is_es || c->major >= 3 || gl_has_extension("GL_EXT_draw_buffers"))
+        glGetIntegerv(GL_MAX_DRAW_BUFFERS, &c->max_draw_buffers);
+    GLint range[2] = {0, 0}, precision = 0;
+    glGetShaderPrecisionFormat(GL_FRAGMENT_SHADER, GL_HIGH_FLOAT, range, &precision);
+    c->fragment_highp_bits = precision;
+    c->fragment_highp = precision > 0;
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    c->shader.dialect = ctx->dialect;
+    c->shader.fragment_highp = c->fragment_highp;
+    c->shader.draw_buffers_ext = 0;
+
+    if (quad_init() != 0) {
+        snprintf(err, errlen, "cannot create the vertex buffer of the full-screen quad");
+        return -1;
+    }
+    GLuint prog = shader_program_build(&c->shader, NULL, vs, fs, err, errlen);
+    if (!prog)
+        return -1;
+    list_candidates(c);
+    for (int i = 0; i < c->n_formats; i++)
+        probe_format(&c->formats[i], prog);
+    glDeleteProgram(prog);
+    const struct float_format *best = caps_format(c, 1);
+    probe_mrt(c, best ? best : caps_format(c, 0));
+    return 0;
+}
+
+const struct float_format *caps_format(const struct gl_caps *c, int fp32)
+{
+    for (int i = 0; i < c->n_formats; i++)
+        if (c->formats[i].works && c->formats[i].is_fp32 == fp32)
+            return &c->formats[i];
+    return NULL;
+}

@@ -1,0 +1,43 @@
+/* What the GL context can really do, proved by rendering and reading back, never taken
+ * from extension strings alone. */
+#ifndef BT_CAPS_H
+#define BT_CAPS_H
+#include "gl/context.h"
+#include "gl/gl_api.h"
+#include "gl/shader.h"
+
+#define CAPS_MAX_FORMATS 4
+
+struct float_format {
+    const char *name;          /* "RGBA32F", "RGBA16F", ... */
+    GLint internal_format;
+    GLenum format, type;
+    int is_fp32;               /* 32-bit mantissa class (else half float) */
+    int works;                 /* renders, samples and keeps its precision */
+    char why[160];             /* what failed when it does not work */
+};
+
+struct gl_caps {
+    char version[160], renderer[160], vendor[160], glsl_version[160];
+    const char *backend;
+    char platform_version[64];
+    int is_es, major, minor;
+    int fragment_highp, fragment_highp_bits;
+    int max_texture_size, max_draw_buffers;
+    int mrt_works;
+    char mrt_why[160];
+    int n_formats;
+    struct float_format formats[CAPS_MAX_FORMATS];
+    struct shader_target shader;     /* preamble settings for this context */
+};
+
+/* Whole-token search in a space-separated extension list. */
+int extension_list_has(const char *list, const char *token);
+int gl_has_extension(const char *name);
+
+/* Probe the current context. Returns 0; the probe itself failing (no shader compiles) gives -1. */
+int gl_caps_probe(struct gl_caps *caps, const struct gl_context *ctx, char *err, size_t errlen);
+/* The best working format of the class (fp32 or fp16), or NULL. */
+const struct float_format *caps_format(const struct gl_caps *caps, int fp32);
+
+#endif

@@ -1,0 +1,32 @@
+/* A GL context behind one small interface, in the style of kmscube's init_*() back-ends.
+ * Rendering code sees only this struct; it never knows which back-end made the context. */
+#ifndef BT_CONTEXT_H
+#define BT_CONTEXT_H
+#include <stddef.h>
+
+enum shading_dialect {
+    DIALECT_GLSL_ES_100,   /* GLES2/3 contexts: shaders_es/ as written */
+    DIALECT_GLSL_130       /* desktop GL (OSMesa): the same source behind a generated preamble */
+};
+
+struct gl_context {
+    const char *backend;            /* "egl" or "osmesa" */
+    enum shading_dialect dialect;
+    int is_es;                      /* GLES API (else desktop GL) */
+    char platform_version[64];      /* "EGL 1.5 (surfaceless)" or "OSMesa 22.3.6" */
+    void *(*get_proc)(const char *name);
+    void (*destroy)(struct gl_context *ctx);
+    void *priv;
+};
+
+/* Each returns NULL with a message in err when the back-end is unavailable. */
+struct gl_context *init_egl_surfaceless(char *err, size_t errlen);
+struct gl_context *init_osmesa(char *err, size_t errlen);
+
+/* name: "egl", "osmesa" or "auto" (EGL first, then OSMesa). Loads the GL entry points too. */
+struct gl_context *gl_context_create(const char *name, char *err, size_t errlen);
+void gl_context_destroy(struct gl_context *ctx);
+/* Whether this build has the back-end at all. */
+int gl_backend_built(const char *name);
+
+#endif

@@ -1,0 +1,29 @@
+#include "gl/quad.h"
+
+static GLuint quad_buffer;
+
+int quad_init(void)
+{
+    static const GLfloat corners[] = {-1, -1, 1, -1, -1, 1, 1, 1};
+    glGenBuffers(1, &quad_buffer);
+    glBindBuffer(GL_ARRAY_BUFFER, quad_buffer);
+    glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, 0);
+    glEnableVertexAttribArray(0);
+    return glGetError() == GL_NO_ERROR ? 0 : -1;
+}
+
+void quad_release(void)
+{
+    if (quad_buffer)
+        glDeleteBuffers(1, &quad_buffer);
+    quad_buffer = 0;
+}
+
+void quad_draw(GLuint program, float z)
+{
+    GLint loc = glGetUniformLocation(program, "u_quad_depth");
+    if (loc >= 0)
+        glUniform1f(loc, z);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+}

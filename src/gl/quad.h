@@ -1,0 +1,9 @@
+/* The viewport-filling quadrilateral every pass draws. */
+#ifndef BT_QUAD_H
+#define BT_QUAD_H
+#include "gl/gl_api.h"
+int quad_init(void);
+void quad_release(void);
+/* Draw the quad with the bound program at constant depth z (NDC, -1..1). */
+void quad_draw(GLuint program, float z);
+#endif

@@ -1,0 +1,162 @@
+#include "gl/shader.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct embedded_file { const char *name; const char *text; };
+extern const struct embedded_file embedded_shaders[];
+
+#define SHADER_MAX_FILES 16
+#define SHADER_MAX_BYTES (1 << 20)
+
+static const char *shader_dir;
+
+void shader_set_directory(const char *dir) { shader_dir = dir; }
+
+static char *read_file(const char *path, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(err, errlen, "cannot read shader %s", path);
+        return NULL;
+    }
+    char *buf = malloc(SHADER_MAX_BYTES + 1);
+    size_t n = buf ? fread(buf, 1, SHADER_MAX_BYTES + 1, f) : 0;
+    fclose(f);
+    if (!buf || n > SHADER_MAX_BYTES) {
+        free(buf);
+        snprintf(err, errlen, "shader %s is larger than %d bytes", path, SHADER_MAX_BYTES);
+        return NULL;
+    }
+    buf[n] = '\0';
+    return buf;
+}
+
+char *shader_load_text(const char *name, char *err, size_t errlen)
+{
+    if (shader_dir) {
+        char path[1024];
+        snprintf(path, sizeof path, "%s/%s", shader_dir, name);
+        return read_file(path, err, errlen);
+    }
+    for (const struct embedded_file *e = embedded_shaders; e->name; e++)
+        if (strcmp(e->name, name) == 0)
+            return strdup(e->text);
+    snprintf(err, errlen, "no shader named %s is built in", name);
+    return NULL;
+}
+
+static void preamble(const struct shader_target *t, GLenum stage, char *out, size_t n)
+{
+    if (t->dialect == DIALECT_GLSL_130) {
+        /* Desktop GL (compatibility profile): GLSL 1.30 accepts the ES 1.00 source as is;
+         * precision qualifiers are accepted and have no effect. */
+        snprintf(out, n, "#version 130\n#define BT_DESKTOP 1\n");
+        return;
+    }
+    if (stage == GL_VERTEX_SHADER) {
+        snprintf(out, n, "#version 100\nprecision highp float;\n");
+        return;
+    }
+    snprintf(out, n, "#version 100\n%s%s",
+             t->draw_buffers_ext ? "#extension GL_EXT_draw_buffers : require\n" : "",
+             t->fragment_highp ? "precision highp float;\nprecision highp sampler2D;\n"
+                               : "precision mediump float;\n");
+}
+
+/* Driver logs say "S:L(C): ..." with S the source string; each file after the preamble
+ * starts with "#line 1 S", so S maps back to a file name. */
+static void translate_log(const char *log, const char *const *files, int n_files, char *out, size_t n)
+{
+    size_t used = 0;
+    out[0] = '\0';
+    for (const char *line = log; *line && used + 1 < n;) {
+        const char *end = strchr(line, '\n');
+        size_t len = end ? (size_t)(end - line) : strlen(line);
+        int s = -1, l = -1, consumed = 0;
+        if (sscanf(line, "%d:%d%n", &s, &l, &consumed) == 2 && s >= 1 && s <= n_files)
+            used += snprintf(out + used, n - used, "  %s:%d%.*s\n", files[s - 1], l, (int)(len - consumed),
+                             line + consumed);
+        else
+            used += snprintf(out + used, n - used, "  %.*s\n", (int)len, line);
+        if (used >= n)
+            break;
+        line = end ? end + 1 : line + len;
+    }
+}
+
+static GLuint compile(const struct shader_target *t, GLenum stage, const char *defines,
+                      const char *const *files, char *err, size_t errlen)
+{
+    const char *src[2 * SHADER_MAX_FILES + 2];
+    char *texts[SHADER_MAX_FILES] = {0};
+    char lines[SHADER_MAX_FILES][32];
+    char pre[256];
+    int n_files = 0, n_src = 0;
+    GLuint sh = 0;
+
+    preamble(t, stage, pre, sizeof pre);
+    src[n_src++] = pre;
+    src[n_src++] = defines ? defines : "";
+    for (; files[n_files]; n_files++) {
+        if (n_files == SHADER_MAX_FILES) {
+            snprintf(err, errlen, "too many shader files (at most %d)", SHADER_MAX_FILES);
+            goto out;
+        }
+        texts[n_files] = shader_load_text(files[n_files], err, errlen);
+        if (!texts[n_files])
+            goto out;
+        snprintf(lines[n_files], sizeof lines[n_files], "\n#line 1 %d\n", n_files + 1);
+        src[n_src++] = lines[n_files];
+        src[n_src++] = texts[n_files];
+    }
+    sh = glCreateShader(stage);
+    glShaderSource(sh, n_src, src, NULL);
+    glCompileShader(sh);
+    GLint ok = 0;
+    glGetShaderiv(sh, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[4096] = "", mapped[4096];
+        glGetShaderInfoLog(sh, sizeof log, NULL, log);
+        translate_log(log, files, n_files, mapped, sizeof mapped);
+        snprintf(err, errlen, "%s shader (%s%s) does not compile:\n%s",
+                 stage == GL_VERTEX_SHADER ? "vertex" : "fragment", files[0], n_files > 1 ? ", ..." : "", mapped);
+        glDeleteShader(sh);
+        sh = 0;
+    }
+out:
+    for (int i = 0; i < n_files && i < SHADER_MAX_FILES; i++)
+        free(texts[i]);
+    return sh;
+}
+
+GLuint shader_program_build(const struct shader_target *target, const char *defines,
+                            const char *const *vertex, const char *const *fragment,
+                            char *err, size_t errlen)
+{
+    GLuint vs = compile(target, GL_VERTEX_SHADER, defines, vertex, err, errlen);
+    if (!vs)
+        return 0;
+    GLuint fs = compile(target, GL_FRAGMENT_SHADER, defines, fragment, err, errlen);
+    if (!fs) {
+        glDeleteShader(vs);
+        return 0;
+    }
+    GLuint prog = glCreateProgram();
+    glAttachShader(prog, vs);
+    glAttachShader(prog, fs);
+    glBindAttribLocation(prog, 0, "a_corner");
+    glLinkProgram(prog);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint ok = 0;
+    glGetProgramiv(prog, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[2048] = "";
+        glGetProgramInfoLog(prog, sizeof log, NULL, log);
+        snprintf(err, errlen, "program (%s + %s) does not link: %s", vertex[0], fragment[0], log);
+        glDeleteProgram(prog);
+        return 0;
+    }
+    return prog;
+}

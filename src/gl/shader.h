@@ -1,0 +1,28 @@
+/* Shader programs from shaders_es/ (GLSL ES 1.00), embedded in the binary or read from a
+ * directory, behind a preamble generated for the context's dialect and the pass variant. */
+#ifndef BT_SHADER_H
+#define BT_SHADER_H
+#include "gl/context.h"
+#include "gl/gl_api.h"
+#include <stddef.h>
+
+struct shader_target {
+    enum shading_dialect dialect;
+    int fragment_highp;        /* the fragment stage has highp float */
+    int draw_buffers_ext;      /* GLSL ES 1.00 needs #extension GL_EXT_draw_buffers for gl_FragData[1] */
+};
+
+/* Load shader files from DIR instead of the embedded copies (development); NULL resets. */
+void shader_set_directory(const char *dir);
+/* Text of one shader file, malloc'd; NULL with err filled. */
+char *shader_load_text(const char *name, char *err, size_t errlen);
+
+/* Compile and link a program. vertex/fragment are NULL-terminated lists of file names,
+ * concatenated in order after the preamble; defines is extra preamble text ("#define X 1\n...").
+ * The vertex attribute a_corner is bound to location 0. Returns 0 with err filled on failure;
+ * compiler messages name the file and line. */
+GLuint shader_program_build(const struct shader_target *target, const char *defines,
+                            const char *const *vertex, const char *const *fragment,
+                            char *err, size_t errlen);
+
+#endif

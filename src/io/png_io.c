@@ -1,0 +1,298 @@
+/* PNG input and output through libpng.
+ *
+ * Writing uses the simplified API (png_image): it is short and always produces 8-bit RGBA.
+ * Reading uses the full API because the simplified one assumes that 16-bit files without a
+ * gAMA chunk hold linear light and gamma-encodes them on the way to 8 bits, which would
+ * brighten ordinary 16-bit textures. Here 16-bit samples are only rescaled and, as for every
+ * other format, no gamma conversion is applied: textures are used as stored. */
+#include "io/png_io.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <png.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static void set_err(char *err, size_t errlen, const char *fmt, ...)
+{
+    if (!err || errlen == 0)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err, errlen, fmt, ap);
+    va_end(ap);
+}
+
+static void set_exists_err(char *err, size_t errlen, const char *path)
+{
+    set_err(err, errlen, "refusing to replace existing file %s (use --force to overwrite it)",
+            path);
+}
+
+/* Opens a new file next to PATH, so that the final rename stays within one file system and is
+ * atomic. O_EXCL keeps two writers (or a stale leftover) from sharing a temporary. */
+static int open_temp(const char *path, char *tmp, size_t tmplen)
+{
+    static unsigned counter;
+    for (int attempt = 0; attempt < 100; attempt++) {
+        int n = snprintf(tmp, tmplen, "%s.tmp-%ld-%u", path, (long)getpid(), counter++);
+        if (n < 0 || (size_t)n >= tmplen) {
+            errno = ENAMETOOLONG;
+            return -1;
+        }
+        int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0 || errno != EEXIST)
+            return fd;
+    }
+    errno = EEXIST;
+    return -1;
+}
+
+/* Moves the finished temporary into place. Without OVERWRITE, link() is used because it fails
+ * when the name exists, which closes the gap between the earlier check and the rename; file
+ * systems without hard links fall back to check-then-rename. */
+static int commit_temp(const char *tmp, const char *path, int overwrite, char *err, size_t errlen)
+{
+    if (!overwrite) {
+        if (link(tmp, path) == 0) {
+            unlink(tmp);
+            return 0;
+        }
+        int e = errno;
+        if (e == EEXIST) {
+            set_exists_err(err, errlen, path);
+            return -1;
+        }
+        struct stat st;
+        if (e != EPERM && e != ENOTSUP && e != EOPNOTSUPP && e != ENOSYS && e != EMLINK) {
+            set_err(err, errlen, "cannot write %s: %s", path, strerror(e));
+            return -1;
+        }
+        if (stat(path, &st) == 0) {
+            set_exists_err(err, errlen, path);
+            return -1;
+        }
+    }
+    if (rename(tmp, path) != 0) {
+        set_err(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+int png_write_rgba8(const char *path, int width, int height, const unsigned char *rgba_top_down,
+                    int overwrite, char *err, size_t errlen)
+{
+    if (!path || !*path || !rgba_top_down || width <= 0 || height <= 0 ||
+        width > INT32_MAX / 4) {
+        set_err(err, errlen, "cannot write %s: invalid image (%d x %d)", path ? path : "(null)",
+                width, height);
+        return -1;
+    }
+
+    /* Checked first only for a clear message before any work; commit_temp has the last word. */
+    struct stat st;
+    if (stat(path, &st) == 0) {
+        if (S_ISDIR(st.st_mode)) {
+            set_err(err, errlen, "cannot write %s: %s", path, strerror(EISDIR));
+            return -1;
+        }
+        if (!overwrite) {
+            set_exists_err(err, errlen, path);
+            return -1;
+        }
+    }
+
+    size_t tmplen = strlen(path) + 48;
+    char *tmp = malloc(tmplen);
+    if (!tmp) {
+        set_err(err, errlen, "cannot write %s: out of memory", path);
+        return -1;
+    }
+    int fd = open_temp(path, tmp, tmplen);
+    if (fd < 0) {
+        set_err(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        free(tmp);
+        return -1;
+    }
+    FILE *fp = fdopen(fd, "wb");
+    if (!fp) {
+        set_err(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        close(fd);
+        unlink(tmp);
+        free(tmp);
+        return -1;
+    }
+
+    png_image image;
+    memset(&image, 0, sizeof image);
+    image.version = PNG_IMAGE_VERSION;
+    image.width = (png_uint_32)width;
+    image.height = (png_uint_32)height;
+    image.format = PNG_FORMAT_RGBA;
+
+    int ok = png_image_write_to_stdio(&image, fp, 0, rgba_top_down, 0, NULL) != 0;
+    if (!ok)
+        set_err(err, errlen, "cannot write %s: %s", path, image.message);
+    png_image_free(&image);
+
+    /* A full disk often shows only at flush or close time, so both are checked. */
+    if (ok && (fflush(fp) != 0 || ferror(fp) || fsync(fileno(fp)) != 0)) {
+        set_err(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        ok = 0;
+    }
+    if (fclose(fp) != 0 && ok) {
+        set_err(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        ok = 0;
+    }
+    if (ok && commit_temp(tmp, path, overwrite, err, errlen) != 0)
+        ok = 0;
+    if (!ok)
+        unlink(tmp);
+    free(tmp);
+    return ok ? 0 : -1;
+}
+
+struct read_ctx {
+    FILE *fp;
+    int max_size;
+    png_structp png;
+    png_infop info;
+    unsigned char *pixels;
+    png_bytep *rows;
+    png_uint_32 width, height;
+    char msg[200];
+};
+
+static void on_png_error(png_structp png, png_const_charp msg)
+{
+    struct read_ctx *ctx = png_get_error_ptr(png);
+    snprintf(ctx->msg, sizeof ctx->msg, "%s", msg);
+    png_longjmp(png, 1);
+}
+
+/* Warnings (unknown chunks, odd sRGB profiles) are not the caller's business. */
+static void on_png_warning(png_structp png, png_const_charp msg)
+{
+    (void)png;
+    (void)msg;
+}
+
+/* libpng's own reader says only "Read Error" when the file ends early; truncation is the
+ * common case (an interrupted copy or download), so it gets a message of its own. */
+static void read_data(png_structp png, png_bytep data, size_t length)
+{
+    struct read_ctx *ctx = png_get_io_ptr(png);
+    if (fread(data, 1, length, ctx->fp) != length)
+        png_error(png, feof(ctx->fp) ? "the file is truncated" : strerror(errno));
+}
+
+/* Kept apart from png_read_rgba8 so that everything changed after setjmp lives in *ctx, outside
+ * this stack frame, and keeps its value when libpng jumps back. */
+static int read_image(struct read_ctx *ctx)
+{
+    if (setjmp(png_jmpbuf(ctx->png)))
+        return -1;
+
+    png_set_read_fn(ctx->png, ctx, read_data);
+    png_read_info(ctx->png, ctx->info);
+
+    ctx->width = png_get_image_width(ctx->png, ctx->info);
+    ctx->height = png_get_image_height(ctx->png, ctx->info);
+    if (ctx->width > (png_uint_32)ctx->max_size || ctx->height > (png_uint_32)ctx->max_size) {
+        snprintf(ctx->msg, sizeof ctx->msg,
+                 "image is %lu x %lu, larger than the limit of %d pixels a side",
+                 (unsigned long)ctx->width, (unsigned long)ctx->height, ctx->max_size);
+        return -1;
+    }
+
+    int color_type = png_get_color_type(ctx->png, ctx->info);
+    int bit_depth = png_get_bit_depth(ctx->png, ctx->info);
+    int has_trns = png_get_valid(ctx->png, ctx->info, PNG_INFO_tRNS) != 0;
+
+    if (color_type == PNG_COLOR_TYPE_PALETTE)
+        png_set_palette_to_rgb(ctx->png);
+    if (color_type == PNG_COLOR_TYPE_GRAY && bit_depth < 8)
+        png_set_expand_gray_1_2_4_to_8(ctx->png);
+    if (has_trns)
+        png_set_tRNS_to_alpha(ctx->png);
+    if (bit_depth == 16)
+        png_set_scale_16(ctx->png);
+    if (color_type == PNG_COLOR_TYPE_GRAY || color_type == PNG_COLOR_TYPE_GRAY_ALPHA)
+        png_set_gray_to_rgb(ctx->png);
+    if (!(color_type & PNG_COLOR_MASK_ALPHA) && !has_trns)
+        png_set_add_alpha(ctx->png, 0xff, PNG_FILLER_AFTER);
+    png_set_interlace_handling(ctx->png);
+    png_read_update_info(ctx->png, ctx->info);
+
+    size_t rowbytes = png_get_rowbytes(ctx->png, ctx->info);
+    if (rowbytes != (size_t)ctx->width * 4) {
+        snprintf(ctx->msg, sizeof ctx->msg, "unsupported pixel layout (%zu bytes a row)", rowbytes);
+        return -1;
+    }
+    ctx->pixels = malloc(rowbytes * ctx->height);
+    ctx->rows = malloc(sizeof *ctx->rows * ctx->height);
+    if (!ctx->pixels || !ctx->rows) {
+        snprintf(ctx->msg, sizeof ctx->msg, "out of memory");
+        return -1;
+    }
+    for (png_uint_32 y = 0; y < ctx->height; y++)
+        ctx->rows[y] = ctx->pixels + rowbytes * y;
+    png_read_image(ctx->png, ctx->rows);
+    png_read_end(ctx->png, NULL);
+    return 0;
+}
+
+int png_read_rgba8(const char *path, int max_size, int *width, int *height,
+                   unsigned char **rgba_top_down, char *err, size_t errlen)
+{
+    if (!path || !width || !height || !rgba_top_down || max_size <= 0) {
+        set_err(err, errlen, "cannot read %s: invalid arguments", path ? path : "(null)");
+        return -1;
+    }
+    struct read_ctx ctx;
+    memset(&ctx, 0, sizeof ctx);
+    ctx.max_size = max_size;
+
+    ctx.fp = fopen(path, "rb");
+    if (!ctx.fp) {
+        set_err(err, errlen, "cannot read %s: %s", path, strerror(errno));
+        return -1;
+    }
+    /* Checking the signature ourselves gives a plain message instead of libpng's. */
+    unsigned char sig[8];
+    if (fread(sig, 1, sizeof sig, ctx.fp) != sizeof sig || png_sig_cmp(sig, 0, sizeof sig) != 0) {
+        set_err(err, errlen, "cannot read %s: not a PNG file", path);
+        fclose(ctx.fp);
+        return -1;
+    }
+    ctx.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &ctx, on_png_error, on_png_warning);
+    if (ctx.png)
+        ctx.info = png_create_info_struct(ctx.png);
+    if (!ctx.png || !ctx.info) {
+        set_err(err, errlen, "cannot read %s: out of memory", path);
+        png_destroy_read_struct(ctx.png ? &ctx.png : NULL, NULL, NULL);
+        fclose(ctx.fp);
+        return -1;
+    }
+    png_set_sig_bytes(ctx.png, sizeof sig);
+
+    int rc = read_image(&ctx);
+    png_destroy_read_struct(&ctx.png, &ctx.info, NULL);
+    fclose(ctx.fp);
+    free(ctx.rows);
+    if (rc != 0) {
+        free(ctx.pixels);
+        set_err(err, errlen, "cannot read %s: %s", path, ctx.msg);
+        return -1;
+    }
+    *width = (int)ctx.width;
+    *height = (int)ctx.height;
+    *rgba_top_down = ctx.pixels;
+    return 0;
+}

@@ -1,0 +1,40 @@
+/* bentray: light on curved paths, traced on the GPU (Weiskopf, Schafhitzel, Ertl 2004). */
+#include "cli/commands.h"
+#include <stdio.h>
+#include <string.h>
+
+static void usage(FILE *out)
+{
+    fprintf(out,
+            "usage: bentray COMMAND [options]\n"
+            "\n"
+            "commands:\n"
+            "  render   render a scene headless to a PNG (and optionally a per-pixel dump)\n"
+            "  trace    print one ray's polyline and result as JSON\n"
+            "  info     probe the GL back-ends: versions, float formats, MRT, render path\n"
+            "\n"
+            "bentray COMMAND --help shows the options of a command.\n"
+            "exit codes: 0 ok, 1 runtime failure, 2 bad usage or input\n");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return EXIT_USAGE;
+    }
+    const char *cmd = argv[1];
+    if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
+        usage(stdout);
+        return EXIT_OK;
+    }
+    if (strcmp(cmd, "info") == 0)
+        return cmd_info(argc - 1, argv + 1);
+    if (strcmp(cmd, "render") == 0)
+        return cmd_render(argc - 1, argv + 1);
+    if (strcmp(cmd, "trace") == 0)
+        return cmd_trace(argc - 1, argv + 1);
+    fprintf(stderr, "bentray: unknown command '%s'\n", cmd);
+    usage(stderr);
+    return EXIT_USAGE;
+}

@@ -1,0 +1,214 @@
+/* The force laws f(x, v) of eq. (1) and their integrators, in double precision.
+ * shaders_es/model_*.glsl must compute the same functions; change both together. */
+#include "physics/model.h"
+
+#include <math.h>
+#include <stddef.h>
+
+/* Below this distance from a force centre the direction to it is meaningless (scene length units);
+ * the force is taken as zero there rather than letting 0/0 poison the ray state. */
+#define CENTER_GUARD_RADIUS 1e-9
+
+/* Fixed noise directions and phases of the procedural explosion model: incommensurate enough
+ * that the sum of three plane waves does not look periodic on screen. */
+static const double noise_dir[3][3] = {{0.8, 0.6, 0.0}, {0.0, 0.8, 0.6}, {0.6, 0.0, 0.8}};
+static const double noise_phase[3] = {0.0, 1.7, 4.1};
+
+const char *model_name(enum model_type t)
+{
+    switch (t) {
+    case MODEL_FLAT: return "flat";
+    case MODEL_LORENZ: return "lorenz";
+    case MODEL_ROSSLER: return "rossler";
+    case MODEL_POTENTIAL: return "potential";
+    case MODEL_REFRACTION: return "refraction";
+    case MODEL_SCHWARZSCHILD: return "schwarzschild";
+    case MODEL_COUNT: break;
+    }
+    return "unknown";
+}
+
+const char *method_name(enum integration_method m)
+{
+    switch (m) {
+    case METHOD_EULER: return "euler";
+    case METHOD_RK4: return "rk4";
+    }
+    return "unknown";
+}
+
+static vec3d lorenz_accel(const struct model *m, vec3d y)
+{
+    vec3d u = v3_scale(y, 1.0 / m->scale);
+    vec3d flow = v3(m->sigma * (u.y - u.x), u.x * (m->rho - u.z) - u.y, u.x * u.y - m->beta * u.z);
+    return v3_scale(flow, m->strength);
+}
+
+static vec3d rossler_accel(const struct model *m, vec3d y)
+{
+    vec3d u = v3_scale(y, 1.0 / m->scale);
+    vec3d flow = v3(-(u.y + u.z), u.x + m->ross_a * u.y, m->ross_b + u.z * (u.x - m->ross_c));
+    return v3_scale(flow, m->strength);
+}
+
+static vec3d potential_accel(const struct model *m, vec3d y)
+{
+    double r = v3_len(y);
+    if (r < CENTER_GUARD_RADIUS)
+        return v3(0.0, 0.0, 0.0);
+    vec3d outward = v3_scale(y, 1.0 / r);
+    if (m->profile == PROFILE_POLYNOMIAL) {
+        if (r > m->radius)
+            return v3(0.0, 0.0, 0.0);
+        double q = r / m->radius;
+        double xi = (2.0 * q - 3.0) * q * q + 1.0;
+        return v3_scale(outward, -m->strength * xi);
+    }
+    /* -dV/dr of V = zeta exp(-mu r) / r, pointing outward for zeta > 0 (repulsion). */
+    double radial = m->zeta * exp(-m->mu * r) * (1.0 / (r * r) + m->mu / r);
+    return v3_scale(outward, radial);
+}
+
+/* Gaussian shell profile s(r) of the explosion front. */
+static double shell_profile(const struct model *m, double r)
+{
+    double q = (r - m->shell_radius) / m->shell_width;
+    return exp(-q * q);
+}
+
+/* N(y) and its gradient; the sum of three plane waves is divided by three so |N| <= 1. */
+static double noise_field(const struct model *m, vec3d y, vec3d *grad)
+{
+    double sum = 0.0;
+    vec3d g = v3(0.0, 0.0, 0.0);
+    for (int i = 0; i < 3; i++) {
+        vec3d e = v3(noise_dir[i][0], noise_dir[i][1], noise_dir[i][2]);
+        double phase = m->noise_frequency * v3_dot(e, y) + noise_phase[i];
+        sum += sin(phase);
+        g = v3_axpy(m->noise_frequency * cos(phase), e, g);
+    }
+    *grad = v3_scale(g, 1.0 / 3.0);
+    return sum / 3.0;
+}
+
+/* n(x) and, when grad is not NULL, its analytic gradient. */
+static double refraction_index(const struct model *m, vec3d x, vec3d *grad)
+{
+    vec3d y = v3_sub(x, m->center);
+    double r = v3_len(y);
+    vec3d noise_grad;
+    double noise = noise_field(m, y, &noise_grad);
+    double shell = shell_profile(m, r);
+    double modulation = 1.0 + m->noise_amplitude * noise;
+    if (grad) {
+        /* The shell is a cone at r = 0 with no defined slope; its radial term is dropped there. */
+        vec3d g = v3_scale(noise_grad, m->amplitude * shell * m->noise_amplitude);
+        if (r >= CENTER_GUARD_RADIUS) {
+            double dshell_dr = -2.0 * (r - m->shell_radius) / (m->shell_width * m->shell_width) * shell;
+            g = v3_axpy(m->amplitude * dshell_dr * modulation / r, y, g);
+        }
+        *grad = g;
+    }
+    return 1.0 + m->amplitude * shell * modulation;
+}
+
+double model_refraction_index(const struct model *m, vec3d x)
+{
+    if (m->type != MODEL_REFRACTION)
+        return 1.0;
+    return refraction_index(m, x, NULL);
+}
+
+/* Binet's u'' + u = 3 M u^2 as a central force: with h = |y x v| conserved,
+ * f = -3 M h^2 y / r^5 = -3 M |yhat x v|^2 yhat / r^2 (the second form never forms h^2 or r^5). */
+static vec3d schwarzschild_accel(const struct model *m, vec3d y, vec3d v)
+{
+    double r = v3_len(y);
+    if (r < CENTER_GUARD_RADIUS)
+        return v3(0.0, 0.0, 0.0);
+    vec3d outward = v3_scale(y, 1.0 / r);
+    vec3d transverse = v3_cross(outward, v);
+    double pull = 3.0 * m->mass * v3_dot(transverse, transverse) / (r * r);
+    return v3_scale(outward, -pull);
+}
+
+vec3d model_accel(const struct model *m, vec3d x, vec3d v)
+{
+    vec3d y = v3_sub(x, m->center);
+    switch (m->type) {
+    case MODEL_LORENZ: return lorenz_accel(m, y);
+    case MODEL_ROSSLER: return rossler_accel(m, y);
+    case MODEL_POTENTIAL: return potential_accel(m, y);
+    case MODEL_REFRACTION: {
+        /* With ds = n dsigma the ray equation d/ds(n dx/ds) = grad n becomes
+         * d2x/dsigma2 = n grad n, and |dx/dsigma| = n. */
+        vec3d grad;
+        double n = refraction_index(m, x, &grad);
+        return v3_scale(grad, n);
+    }
+    case MODEL_SCHWARZSCHILD: return schwarzschild_accel(m, y, v);
+    case MODEL_FLAT:
+    case MODEL_COUNT: break;
+    }
+    return v3(0.0, 0.0, 0.0);
+}
+
+/* A static observer measures radial lengths stretched by 1/sqrt(1 - 2M/r) against the Schwarzschild
+ * coordinate, so the coordinate direction of a ray has its radial part scaled by sqrt(1 - 2M/r).
+ * This makes the Binet invariant 1/b^2 = u'^2 + u^2 - 2 M u^3 equal (sin psi / r)^2 / (1 - 2M/r). */
+static vec3d schwarzschild_initial_velocity(const struct model *m, vec3d x, vec3d dir)
+{
+    vec3d y = v3_sub(x, m->center);
+    double r = v3_len(y);
+    if (m->mass == 0.0 || r < CENTER_GUARD_RADIUS || r <= 2.0 * m->mass)
+        return dir;
+    vec3d outward = v3_scale(y, 1.0 / r);
+    double radial_shrink = 1.0 - sqrt(1.0 - 2.0 * m->mass / r);
+    vec3d d = v3_axpy(-radial_shrink * v3_dot(dir, outward), outward, dir);
+    return v3_normalize(d);
+}
+
+vec3d model_initial_velocity(const struct model *m, vec3d x, vec3d dir)
+{
+    switch (m->type) {
+    case MODEL_REFRACTION: return v3_scale(dir, refraction_index(m, x, NULL));
+    case MODEL_SCHWARZSCHILD: return schwarzschild_initial_velocity(m, x, dir);
+    case MODEL_FLAT:
+    case MODEL_LORENZ:
+    case MODEL_ROSSLER:
+    case MODEL_POTENTIAL:
+    case MODEL_COUNT: break;
+    }
+    return dir;
+}
+
+double model_capture_radius(const struct model *m)
+{
+    if (m->type == MODEL_SCHWARZSCHILD && m->mass > 0.0)
+        return 2.0 * m->mass;
+    return 0.0;
+}
+
+void model_step(const struct model *m, enum integration_method method, double h, vec3d *x, vec3d *v)
+{
+    vec3d x0 = *x, v0 = *v;
+    if (method == METHOD_EULER) {
+        /* Eq. (2): both updates read the old state. */
+        vec3d f0 = model_accel(m, x0, v0);
+        *x = v3_axpy(h, v0, x0);
+        *v = v3_axpy(h, f0, v0);
+        return;
+    }
+    vec3d k1x = v0;
+    vec3d k1v = model_accel(m, x0, v0);
+    vec3d k2x = v3_axpy(0.5 * h, k1v, v0);
+    vec3d k2v = model_accel(m, v3_axpy(0.5 * h, k1x, x0), k2x);
+    vec3d k3x = v3_axpy(0.5 * h, k2v, v0);
+    vec3d k3v = model_accel(m, v3_axpy(0.5 * h, k2x, x0), k3x);
+    vec3d k4x = v3_axpy(h, k3v, v0);
+    vec3d k4v = model_accel(m, v3_axpy(h, k3x, x0), k4x);
+    vec3d dx = v3_add(v3_add(k1x, k4x), v3_scale(v3_add(k2x, k3x), 2.0));
+    vec3d dv = v3_add(v3_add(k1v, k4v), v3_scale(v3_add(k2v, k3v), 2.0));
+    *x = v3_axpy(h / 6.0, dx, x0);
+    *v = v3_axpy(h / 6.0, dv, v0);
+}

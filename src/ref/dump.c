@@ -1,0 +1,167 @@
+#include "ref/dump.h"
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+const char *dump_outcome_name(int32_t outcome)
+{
+    switch (outcome) {
+    case DUMP_SKY: return "sky";
+    case DUMP_CAPTURED: return "captured";
+    case DUMP_UNFINISHED: return "unfinished";
+    case DUMP_FAILED: return "failed";
+    default: return outcome >= 0 ? "object" : "invalid";
+    }
+}
+
+static void put_u32(unsigned char *p, uint32_t v)
+{
+    for (int i = 0; i < 4; i++)
+        p[i] = (unsigned char)(v >> (8 * i));
+}
+
+static uint32_t get_u32(const unsigned char *p)
+{
+    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+}
+
+static void put_f32(unsigned char *p, float f)
+{
+    uint32_t v;
+    memcpy(&v, &f, 4);
+    put_u32(p, v);
+}
+
+static float get_f32(const unsigned char *p)
+{
+    uint32_t v = get_u32(p);
+    float f;
+    memcpy(&f, &v, 4);
+    return f;
+}
+
+static void encode(unsigned char *p, const struct dump_record *r)
+{
+    put_u32(p, (uint32_t)r->outcome);
+    for (int i = 0; i < 3; i++) {
+        put_f32(p + 4 + 4 * i, r->hit[i]);
+        put_f32(p + 16 + 4 * i, r->position[i]);
+        put_f32(p + 28 + 4 * i, r->direction[i]);
+    }
+    put_f32(p + 40, r->depth);
+    put_u32(p + 44, r->steps);
+}
+
+static void decode(const unsigned char *p, struct dump_record *r)
+{
+    r->outcome = (int32_t)get_u32(p);
+    for (int i = 0; i < 3; i++) {
+        r->hit[i] = get_f32(p + 4 + 4 * i);
+        r->position[i] = get_f32(p + 16 + 4 * i);
+        r->direction[i] = get_f32(p + 28 + 4 * i);
+    }
+    r->depth = get_f32(p + 40);
+    r->steps = get_u32(p + 44);
+}
+
+int dump_write(const char *path, const struct dump *d, int overwrite, char *err, size_t errlen)
+{
+    int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | (overwrite ? 0 : O_EXCL) | O_CLOEXEC, 0644);
+    if (fd < 0) {
+        if (errno == EEXIST)
+            snprintf(err, errlen, "refusing to replace existing file %s (use --force to overwrite it)", path);
+        else
+            snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        return -1;
+    }
+    FILE *f = fdopen(fd, "wb");
+    if (!f) {
+        close(fd);
+        snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        return -1;
+    }
+    unsigned char header[DUMP_HEADER_SIZE] = {0}, rec[DUMP_RECORD_SIZE];
+    memcpy(header, DUMP_MAGIC, 8);
+    put_u32(header + 8, DUMP_VERSION);
+    put_u32(header + 12, (uint32_t)d->width);
+    put_u32(header + 16, (uint32_t)d->height);
+    put_u32(header + 20, DUMP_RECORD_SIZE);
+    snprintf((char *)header + 24, 32, "%s", d->engine);
+    int ok = fwrite(header, sizeof header, 1, f) == 1;
+    size_t n = (size_t)d->width * d->height;
+    for (size_t i = 0; ok && i < n; i++) {
+        encode(rec, &d->records[i]);
+        ok = fwrite(rec, sizeof rec, 1, f) == 1;
+    }
+    if (fclose(f) != 0)
+        ok = 0;
+    if (!ok) {
+        snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        unlink(path);
+        return -1;
+    }
+    return 0;
+}
+
+int dump_read(const char *path, struct dump *d, char *err, size_t errlen)
+{
+    memset(d, 0, sizeof *d);
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(err, errlen, "cannot read %s: %s", path, strerror(errno));
+        return -1;
+    }
+    unsigned char header[DUMP_HEADER_SIZE], rec[DUMP_RECORD_SIZE];
+    if (fread(header, sizeof header, 1, f) != 1 || memcmp(header, DUMP_MAGIC, 8) != 0) {
+        fclose(f);
+        snprintf(err, errlen, "%s is not a bentray dump (bad header)", path);
+        return -1;
+    }
+    uint32_t version = get_u32(header + 8), w = get_u32(header + 12), h = get_u32(header + 16);
+    uint32_t rsize = get_u32(header + 20);
+    if (version != DUMP_VERSION || rsize != DUMP_RECORD_SIZE || w < 1 || h < 1 || w > DUMP_MAX_SIDE ||
+        h > DUMP_MAX_SIDE) {
+        fclose(f);
+        snprintf(err, errlen, "%s: unsupported dump (version %u, %ux%u, record %u bytes; expected version %d, "
+                              "sides 1..%d, record %d bytes)", path, version, w, h, rsize, DUMP_VERSION,
+                 DUMP_MAX_SIDE, DUMP_RECORD_SIZE);
+        return -1;
+    }
+    d->width = (int)w;
+    d->height = (int)h;
+    memcpy(d->engine, header + 24, 31);
+    d->engine[31] = '\0';
+    size_t n = (size_t)w * h;
+    d->records = malloc(n * sizeof *d->records);
+    if (!d->records) {
+        fclose(f);
+        snprintf(err, errlen, "out of memory reading %s", path);
+        return -1;
+    }
+    for (size_t i = 0; i < n; i++) {
+        if (fread(rec, sizeof rec, 1, f) != 1) {
+            fclose(f);
+            dump_free(d);
+            snprintf(err, errlen, "%s is truncated: %zu of %zu records", path, i, n);
+            return -1;
+        }
+        decode(rec, &d->records[i]);
+    }
+    int extra = fgetc(f) != EOF;
+    fclose(f);
+    if (extra) {
+        dump_free(d);
+        snprintf(err, errlen, "%s has data after its last record", path);
+        return -1;
+    }
+    return 0;
+}
+
+void dump_free(struct dump *d)
+{
+    free(d->records);
+    d->records = NULL;
+}

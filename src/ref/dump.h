@@ -1,0 +1,37 @@
+/* Per-pixel results in a documented binary file (docs/DUMP.md): what each pixel's ray hit,
+ * where, where it ended, in which direction, after how many steps. Written by both engines. */
+#ifndef BT_DUMP_H
+#define BT_DUMP_H
+#include <stddef.h>
+#include <stdint.h>
+
+#define DUMP_MAGIC "BTDUMP\0\0"
+#define DUMP_VERSION 1
+#define DUMP_HEADER_SIZE 56
+#define DUMP_RECORD_SIZE 48
+#define DUMP_MAX_SIDE 8192
+
+/* Outcome of a ray: object index >= 0, or one of these. */
+enum dump_outcome { DUMP_SKY = -1, DUMP_CAPTURED = -2, DUMP_UNFINISHED = -3, DUMP_FAILED = -4 };
+
+struct dump_record {
+    int32_t outcome;
+    float hit[3];          /* hit point (outcome >= 0) */
+    float position[3];     /* final position of the ray */
+    float direction[3];    /* final direction, unit length */
+    float depth;           /* segment index + fraction where the ray ended */
+    uint32_t steps;        /* integration steps taken */
+};
+
+struct dump {
+    int width, height;
+    char engine[32];       /* "gpu fp32+mrt", "cpu", ... */
+    struct dump_record *records;  /* width * height, top row first */
+};
+
+const char *dump_outcome_name(int32_t outcome);   /* "sky", "captured", ..., "object" */
+int dump_write(const char *path, const struct dump *d, int overwrite, char *err, size_t errlen);
+int dump_read(const char *path, struct dump *d, char *err, size_t errlen);
+void dump_free(struct dump *d);
+
+#endif

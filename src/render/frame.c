@@ -1,0 +1,59 @@
+#include "render/frame.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int render_frame(const struct scene *s, const char *backend, struct render_result *out, int with_state,
+                 struct frame_info *info, char *err, size_t errlen, int *bad_input)
+{
+    *bad_input = 0;
+    struct gl_context *ctx = gl_context_create(backend, err, errlen);
+    if (!ctx)
+        return -1;
+    int rc = -1;
+    struct renderer *r = renderer_create(ctx, s, err, errlen, bad_input);
+    if (r) {
+        if (info) {
+            snprintf(info->backend, sizeof info->backend, "%s", ctx->backend);
+            snprintf(info->path_name, sizeof info->path_name, "%s", renderer_path(r)->name);
+            snprintf(info->path_description, sizeof info->path_description, "%s", renderer_path(r)->description);
+            snprintf(info->renderer, sizeof info->renderer, "%s", renderer_caps(r)->renderer);
+        }
+        if (renderer_run(r, 0, 0, s->render.width, s->render.height, NULL, NULL, err, errlen) == 0 &&
+            renderer_read(r, out, with_state, err, errlen) == 0)
+            rc = 0;
+        renderer_destroy(r);
+    }
+    gl_context_destroy(ctx);
+    return rc;
+}
+
+int result_to_dump(const struct render_result *res, const char *engine, struct dump *d)
+{
+    size_t n = (size_t)res->width * res->height;
+    d->width = res->width;
+    d->height = res->height;
+    snprintf(d->engine, sizeof d->engine, "%s", engine);
+    d->records = calloc(n, sizeof *d->records);
+    if (!d->records)
+        return -1;
+    for (size_t i = 0; i < n; i++) {
+        struct dump_record *rec = &d->records[i];
+        const float *pos = res->position + 4 * i, *vel = res->velocity + 4 * i, *hit = res->hit + 4 * i;
+        float code = res->image[4 * i + 3];
+        rec->outcome = (int32_t)lrintf(code);
+        if (pos[3] < 0.0f)
+            rec->outcome = DUMP_FAILED;
+        float len = sqrtf(vel[0] * vel[0] + vel[1] * vel[1] + vel[2] * vel[2]);
+        for (int k = 0; k < 3; k++) {
+            rec->hit[k] = rec->outcome >= 0 ? hit[k] : 0.0f;
+            rec->position[k] = pos[k];
+            rec->direction[k] = len > 0.0f ? vel[k] / len : 0.0f;
+        }
+        rec->depth = hit[3];
+        float steps = pos[3] < 0.0f ? -1.0f - pos[3] : pos[3];
+        rec->steps = (uint32_t)lrintf(steps);
+    }
+    return 0;
+}

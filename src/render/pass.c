@@ -1,0 +1,45 @@
+/* One pass: a viewport-filling quad drawn into the ray-state targets. */
+#include "render/stages.h"
+#include "gl/quad.h"
+#include <stdio.h>
+
+void uniform_vec3(GLuint program, const char *name, vec3d v)
+{
+    glUniform3f(glGetUniformLocation(program, name), (float)v.x, (float)v.y, (float)v.z);
+}
+
+void uniform_float(GLuint program, const char *name, double v)
+{
+    glUniform1f(glGetUniformLocation(program, name), (float)v);
+}
+
+int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GLuint out1,
+             const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
+             char *err, size_t errlen)
+{
+    struct raystate *rs = &r->rs;
+    for (int k = 0; k < sp->n_programs; k++) {
+        GLuint fbo;
+        if (sp->n_programs == 1)
+            fbo = raystate_fbo(rs, out0, out1, err, errlen);
+        else
+            fbo = raystate_fbo(rs, k == 0 ? out0 : out1, 0, err, errlen);
+        if (!fbo)
+            return -1;
+        GLuint prog = sp->program[k];
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        glViewport(0, 0, rs->width, rs->height);
+        glUseProgram(prog);
+        glUniform2f(glGetUniformLocation(prog, "u_inv_size"), 1.0f / (float)rs->width, 1.0f / (float)rs->height);
+        for (int i = 0; i < n_inputs; i++) {
+            glActiveTexture(GL_TEXTURE0 + i);
+            glBindTexture(GL_TEXTURE_2D, inputs[i].texture);
+            glUniform1i(glGetUniformLocation(prog, inputs[i].sampler), i);
+        }
+        if (set_uniforms)
+            set_uniforms(prog, arg);
+        quad_draw(prog, 0.0f);
+        r->passes++;
+    }
+    return 0;
+}

@@ -1,0 +1,35 @@
+/* The ray state on the GPU (paper sections 3.1-3.3): float RGBA textures, one texel per pixel.
+ * Layout of each texture: shaders_es/common.glsl. Positions are triple-buffered so that the
+ * start of a segment survives the integration passes that build it; the rest ping-pong. */
+#ifndef BT_RAYSTATE_H
+#define BT_RAYSTATE_H
+#include "gl/gl_api.h"
+#include "render/path.h"
+
+/* Outcome codes stored in the image texture's alpha (object ids are >= 0). */
+#define OUTCOME_SKY (-1)
+#define OUTCOME_CAPTURED (-2)
+#define OUTCOME_UNFINISHED (-3)
+#define OUTCOME_FAILED (-4)
+#define DEPTH_NO_HIT 60000.0f      /* depth key of a ray still travelling (fits fp16) */
+
+#define RAYSTATE_MAX_FBOS 24
+
+struct raystate {
+    int width, height;
+    GLuint position[3], velocity[2], hit[2], image[2];
+    GLuint final_color;            /* RGBA8 image for presentation and PNG */
+    int cur_position, cur_velocity, cur_hit;  /* indices of the current copies */
+    struct { GLuint target0, target1, fbo; } fbos[RAYSTATE_MAX_FBOS];
+    int n_fbos;
+};
+
+int raystate_init(struct raystate *rs, const struct render_path *path, int width, int height,
+                  char *err, size_t errlen);
+void raystate_release(struct raystate *rs);
+/* Framebuffer with target0 (and target1 when nonzero) attached; made once and cached. */
+GLuint raystate_fbo(struct raystate *rs, GLuint target0, GLuint target1, char *err, size_t errlen);
+/* Read one texture back as floats, top row first (image order): w*h*4 floats. */
+int raystate_read(struct raystate *rs, GLuint texture, float *rgba_top_down, char *err, size_t errlen);
+
+#endif

@@ -1,0 +1,184 @@
+/* The pass schedule of one frame (paper Figure 1). */
+#include "gl/quad.h"
+#include "gl/readback.h"
+#include "render/stages.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+struct renderer *renderer_create(const struct gl_context *ctx, const struct scene *scene, char *err,
+                                 size_t errlen, int *bad_input)
+{
+    *bad_input = 0;
+    struct renderer *r = calloc(1, sizeof *r);
+    if (!r) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    r->scene = scene;
+    if (gl_caps_probe(&r->caps, ctx, err, errlen) != 0) {
+        free(r);
+        return NULL;
+    }
+    if (render_path_choose(&r->caps, scene->render.precision, scene->render.mrt, &r->path, err, errlen) != 0) {
+        /* a forced path that this GPU lacks is the user's request; no path at all is the machine's */
+        *bad_input = scene->render.precision != PRECISION_AUTO || scene->render.mrt == MRT_ON;
+        free(r);
+        return NULL;
+    }
+    if (scene->render.width > r->caps.max_texture_size || scene->render.height > r->caps.max_texture_size) {
+        snprintf(err, errlen, "image size %dx%d exceeds this GPU's texture limit %d", scene->render.width,
+                 scene->render.height, r->caps.max_texture_size);
+        *bad_input = 1;
+        free(r);
+        return NULL;
+    }
+    program_cache_init(&r->programs, &r->caps.shader, r->path.mrt);
+    snprintf(r->model_defines, sizeof r->model_defines, "#define MODEL_%s 1\n#define METHOD_%s 1\n#define STEPS_PER_PASS %d\n%s",
+             scene->model.type == MODEL_FLAT ? "FLAT" : "CURVED",
+             scene->render.method == METHOD_RK4 ? "RK4" : "EULER", scene->render.steps_per_pass,
+             scene->model.type == MODEL_POTENTIAL && scene->model.profile == PROFILE_POLYNOMIAL
+                 ? "#define PROFILE_POLYNOMIAL 1\n" : "");
+    if (textures_load(r, err, errlen) != 0) {
+        renderer_destroy(r);
+        return NULL;
+    }
+    return r;
+}
+
+const struct render_path *renderer_path(const struct renderer *r) { return &r->path; }
+const struct gl_caps *renderer_caps(const struct renderer *r) { return &r->caps; }
+
+int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int height, segment_hook hook,
+                 void *hook_arg, char *err, size_t errlen)
+{
+    const struct scene *s = r->scene;
+    if (!r->have_state || r->rs.width != width || r->rs.height != height) {
+        if (r->have_state)
+            raystate_release(&r->rs);
+        r->have_state = 0;
+        if (raystate_init(&r->rs, &r->path, width, height, err, errlen) != 0)
+            return -1;
+        r->have_state = 1;
+    }
+    double t0 = now_seconds();
+    r->passes = 0;
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    if (stage_setup(r, origin_x, origin_y, err, errlen) != 0)
+        return -1;
+    int segments = s->model.type == MODEL_FLAT ? 1 : s->render.segments;
+    for (int seg = 0; seg < segments; seg++) {
+        int start = r->rs.cur_position;
+        if (stage_integrate(r, start, err, errlen) != 0)
+            return -1;
+        for (int obj = 0; obj < s->n_objects; obj++)
+            if (stage_intersect(r, obj, seg, start, err, errlen) != 0)
+                return -1;
+        if (gl_check("ray-object intersection", err, errlen) != 0)
+            return -1;
+        if (stage_terminate(r, seg, err, errlen) != 0)
+            return -1;
+        if (hook && hook(r, seg, hook_arg) != 0)
+            return -1;
+    }
+    if (stage_sky(r, err, errlen) != 0)
+        return -1;
+    glFinish();
+    r->seconds = now_seconds() - t0;
+    r->image_width = width;
+    r->image_height = height;
+    return 0;
+}
+
+int renderer_read_position(struct renderer *r, int x, int y, float xyzw[4], char *err, size_t errlen)
+{
+    float buf[4 * 1];
+    GLuint fbo = raystate_fbo(&r->rs, r->rs.position[r->rs.cur_position], 0, err, errlen);
+    if (!fbo)
+        return -1;
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    if (read_float_pixels(x, y, 1, 1, buf) != 0) {
+        snprintf(err, errlen, "cannot read the ray position back");
+        return -1;
+    }
+    memcpy(xyzw, buf, sizeof buf);
+    return 0;
+}
+
+int renderer_read(struct renderer *r, struct render_result *out, int with_state, char *err, size_t errlen)
+{
+    struct raystate *rs = &r->rs;
+    size_t n = (size_t)rs->width * rs->height;
+    memset(out, 0, sizeof *out);
+    out->width = rs->width;
+    out->height = rs->height;
+    out->passes = r->passes;
+    out->seconds = r->seconds;
+    out->rgba = malloc(n * 4);
+    unsigned char *rows = malloc(n * 4);
+    if (!out->rgba || !rows) {
+        free(rows);
+        snprintf(err, errlen, "out of memory reading the image back");
+        return -1;
+    }
+    GLuint fbo = raystate_fbo(rs, rs->final_color, 0, err, errlen);
+    if (!fbo) {
+        free(rows);
+        return -1;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, rs->width, rs->height, GL_RGBA, GL_UNSIGNED_BYTE, rows);
+    for (int y = 0; y < rs->height; y++)
+        memcpy(out->rgba + (size_t)(rs->height - 1 - y) * rs->width * 4, rows + (size_t)y * rs->width * 4,
+               (size_t)rs->width * 4);
+    free(rows);
+    if (gl_check("reading the image back", err, errlen) != 0)
+        return -1;
+    if (!with_state)
+        return 0;
+    float **dst[4] = {&out->position, &out->velocity, &out->hit, &out->image};
+    GLuint src[4] = {rs->position[rs->cur_position], rs->velocity[rs->cur_velocity], rs->hit[rs->cur_hit],
+                     rs->image[rs->cur_hit]};
+    for (int k = 0; k < 4; k++) {
+        *dst[k] = malloc(n * 4 * sizeof(float));
+        if (!*dst[k]) {
+            snprintf(err, errlen, "out of memory reading the ray state back");
+            return -1;
+        }
+        if (raystate_read(rs, src[k], *dst[k], err, errlen) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+void render_result_free(struct render_result *res)
+{
+    free(res->rgba);
+    free(res->position);
+    free(res->velocity);
+    free(res->hit);
+    free(res->image);
+    memset(res, 0, sizeof *res);
+}
+
+void renderer_destroy(struct renderer *r)
+{
+    if (!r)
+        return;
+    if (r->have_state)
+        raystate_release(&r->rs);
+    textures_release(r);
+    program_cache_release(&r->programs);
+    quad_release();
+    free(r);
+}

@@ -1,0 +1,43 @@
+/* The GPU pipeline of the paper's Figure 1, as named stages:
+ *   setup -> [ integrate (n_integration / K passes) -> intersect (one pass per object)
+ *              -> terminate ] x n_segs -> sky
+ * No read-back until the final image, except where a caller asks for one per segment (trace). */
+#ifndef BT_RENDERER_H
+#define BT_RENDERER_H
+#include "gl/caps.h"
+#include "gl/context.h"
+#include "render/path.h"
+#include "scene/scene.h"
+
+struct renderer;
+
+/* Called after each segment (for bentray trace); NULL for none. */
+typedef int (*segment_hook)(struct renderer *r, int segment, void *arg);
+
+struct render_result {
+    int width, height;
+    unsigned char *rgba;                    /* final image, RGBA8, top row first */
+    float *position, *velocity, *hit, *image; /* ray state, RGBA floats, top row first; NULL if not read */
+    double seconds;                         /* wall time of the GPU passes (glFinish included) */
+    long passes;                            /* quads drawn */
+};
+
+/* Probes the context, picks the render path the scene asks for, loads textures and sky.
+ * NULL with err; *bad_input is set when the failure is the user's request (forced path missing). */
+struct renderer *renderer_create(const struct gl_context *ctx, const struct scene *scene, char *err,
+                                 size_t errlen, int *bad_input);
+const struct render_path *renderer_path(const struct renderer *r);
+const struct gl_caps *renderer_caps(const struct renderer *r);
+
+/* Trace the rays of a width x height block of image pixels whose lower-left pixel (GL order,
+ * rows bottom-up) is (origin_x, origin_y); a full frame is (0, 0, scene width, scene height). */
+int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int height, segment_hook hook,
+                 void *hook_arg, char *err, size_t errlen);
+/* Read the final image, and the ray state when with_state. */
+int renderer_read(struct renderer *r, struct render_result *out, int with_state, char *err, size_t errlen);
+/* Position of the ray of texel (x, y) (GL order) right now: for per-segment hooks. */
+int renderer_read_position(struct renderer *r, int x, int y, float xyzw[4], char *err, size_t errlen);
+void render_result_free(struct render_result *res);
+void renderer_destroy(struct renderer *r);
+
+#endif

@@ -1,0 +1,31 @@
+/* Stage 5, sky and final colour (paper section 4.3). */
+#include "render/stages.h"
+
+static void set_sky(GLuint p, const void *arg)
+{
+    const struct renderer *r = arg;
+    if (r->sky_cubemap) {
+        glActiveTexture(GL_TEXTURE0 + UNIT_SKY);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, r->sky_cubemap);
+        glUniform1i(glGetUniformLocation(p, "u_sky"), UNIT_SKY);
+    } else {
+        uniform_vec3(p, "u_sky_color", r->scene->sky.color);
+    }
+}
+
+int stage_sky(struct renderer *r, char *err, size_t errlen)
+{
+    static const char *const files[] = {"common.glsl", "stage_sky.glsl", NULL};
+    struct raystate *rs = &r->rs;
+    const struct stage_program *sp =
+        program_cache_get(&r->programs, files, r->sky_cubemap ? "#define SKY_CUBEMAP 1\n" : "", 0, err, errlen);
+    if (!sp)
+        return -1;
+    struct pass_input in[] = {
+        {"u_image", rs->image[rs->cur_hit]},
+        {"u_ray_velocity", rs->velocity[rs->cur_velocity]},
+    };
+    if (pass_run(r, sp, rs->final_color, 0, in, 2, set_sky, r, err, errlen) != 0)
+        return -1;
+    return gl_check("sky and final colour", err, errlen);
+}

@@ -1,0 +1,53 @@
+/* Internals shared by the stage files of the pipeline. */
+#ifndef BT_STAGES_H
+#define BT_STAGES_H
+#include "render/programs.h"
+#include "render/raystate.h"
+#include "render/renderer.h"
+
+/* Texture units: ray-state inputs first, then scene textures. */
+#define UNIT_OBJECT_TEXTURE 5
+#define UNIT_SKY 6
+
+struct renderer {
+    const struct scene *scene;
+    struct gl_caps caps;
+    struct render_path path;
+    struct program_cache programs;
+    struct raystate rs;
+    int have_state;
+    GLuint textures[SCENE_MAX_TEXTURES];
+    GLuint sky_cubemap;
+    char model_defines[256];      /* model, method, steps per pass */
+    int image_width, image_height;
+    long passes;
+    double seconds;
+};
+
+struct pass_input {
+    const char *sampler;
+    GLuint texture;
+};
+
+typedef void (*set_uniforms_fn)(GLuint program, const void *arg);
+
+/* Draw the quad with each program of the stage into out0 (and out1), inputs bound as samplers. */
+int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GLuint out1,
+             const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
+             char *err, size_t errlen);
+
+void model_set_uniforms(GLuint program, const struct model *m);
+void bounds_set_uniforms(GLuint program, const struct scene *s);
+void uniform_vec3(GLuint program, const char *name, vec3d v);
+void uniform_float(GLuint program, const char *name, double v);
+
+int textures_load(struct renderer *r, char *err, size_t errlen);
+void textures_release(struct renderer *r);
+
+int stage_setup(struct renderer *r, int origin_x, int origin_y, char *err, size_t errlen);
+int stage_integrate(struct renderer *r, int segment_start, char *err, size_t errlen);
+int stage_intersect(struct renderer *r, int object, int segment, int segment_start, char *err, size_t errlen);
+int stage_terminate(struct renderer *r, int segment, char *err, size_t errlen);
+int stage_sky(struct renderer *r, char *err, size_t errlen);
+
+#endif

@@ -1,0 +1,62 @@
+/* Scene textures and the sky cube map, uploaded once per renderer. */
+#include "io/png_io.h"
+#include "render/stages.h"
+#include <stdio.h>
+#include <stdlib.h>
+
+static int upload(GLenum target, const char *path, int max_size, char *err, size_t errlen)
+{
+    int w, h;
+    unsigned char *rgba = NULL;
+    char msg[400];
+    if (png_read_rgba8(path, max_size, &w, &h, &rgba, msg, sizeof msg) != 0) {
+        snprintf(err, errlen, "%s", msg);
+        return -1;
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(target, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    free(rgba);
+    return 0;
+}
+
+int textures_load(struct renderer *r, char *err, size_t errlen)
+{
+    const struct scene *s = r->scene;
+    int max_size = r->caps.max_texture_size < SCENE_MAX_SIZE ? r->caps.max_texture_size : SCENE_MAX_SIZE;
+    for (int i = 0; i < s->n_textures; i++) {
+        glGenTextures(1, &r->textures[i]);
+        glBindTexture(GL_TEXTURE_2D, r->textures[i]);
+        /* ES2 allows GL_REPEAT only for power-of-two sizes; texture coordinates stay in [0,1] */
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        if (upload(GL_TEXTURE_2D, s->textures[i], max_size, err, errlen) != 0)
+            return -1;
+    }
+    if (s->sky.type == SKY_CUBEMAP) {
+        static const char *const faces[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+        glGenTextures(1, &r->sky_cubemap);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, r->sky_cubemap);
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        for (int f = 0; f < 6; f++) {
+            char path[SCENE_PATH_LEN + 16];
+            snprintf(path, sizeof path, "%s_%s.png", s->sky.cubemap, faces[f]);
+            if (upload(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, path, max_size, err, errlen) != 0)
+                return -1;
+        }
+    }
+    return gl_check("uploading textures", err, errlen);
+}
+
+void textures_release(struct renderer *r)
+{
+    for (int i = 0; i < r->scene->n_textures; i++)
+        if (r->textures[i])
+            glDeleteTextures(1, &r->textures[i]);
+    if (r->sky_cubemap)
+        glDeleteTextures(1, &r->sky_cubemap);
+}

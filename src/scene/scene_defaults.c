@@ -1,0 +1,102 @@
+/* Values every scene starts from; a scene file only names what differs. The numbers are the ones
+ * documented in docs/SCENES.md: change both together. */
+#include <string.h>
+#include "scene/scene.h"
+#include "scene/scene_keys.h"
+
+static void render_defaults(struct render_settings *r)
+{
+    r->width = 320;
+    r->height = 240;
+    r->method = METHOD_RK4;
+    r->step_size = 0.05;
+    r->steps_per_segment = 10;
+    r->segments = 30;
+    r->steps_per_pass = 10;
+    r->bound_radius = 50.0;
+    r->bound_center = v3(0.0, 0.0, 0.0);
+    r->precision = PRECISION_AUTO;
+    r->mrt = MRT_AUTO;
+}
+
+/* Parameters of every model are kept, not only the flat one's, so that switching model.type with
+ * --set gives a working model without naming all its parameters. */
+static void model_defaults(struct model *m)
+{
+    m->type = MODEL_FLAT;
+    m->center = v3(0.0, 0.0, 0.0);
+    m->scale = 1.0;
+    m->strength = 1.0;
+    /* Lorenz's classic chaotic parameters */
+    m->sigma = 10.0;
+    m->rho = 28.0;
+    m->beta = 8.0 / 3.0;
+    m->ross_a = 0.375;
+    m->ross_b = 2.0;
+    m->ross_c = 4.0;
+    m->profile = PROFILE_YUKAWA;
+    m->zeta = -1.0;      /* attractive */
+    m->mu = 0.0;         /* unscreened: a Coulomb-like 1/r potential */
+    m->radius = 5.0;
+    m->amplitude = 0.05;
+    m->shell_radius = 2.0;
+    m->shell_width = 0.7;
+    m->noise_amplitude = 0.5;
+    m->noise_frequency = 3.0;
+    m->mass = 1.0;
+}
+
+void scene_defaults(struct scene *s)
+{
+    memset(s, 0, sizeof *s);
+    strcpy(s->dir, ".");
+    strcpy(s->name, "untitled");
+    s->camera.position = v3(0.0, 0.0, 10.0);
+    s->camera.look_at = v3(0.0, 0.0, 0.0);
+    s->camera.up = v3(0.0, 1.0, 0.0);
+    s->camera.fov_deg = 60.0;
+    render_defaults(&s->render);
+    model_defaults(&s->model);
+    s->sky.type = SKY_COLOR;
+    s->sky.color = v3(0.02, 0.02, 0.05);
+    s->ambient_light = v3(1.0, 1.0, 1.0);
+}
+
+void scene_object_defaults(struct object *o, const char *name)
+{
+    memset(o, 0, sizeof *o);
+    strncpy(o->name, name, sizeof o->name - 1);
+    o->type = PRIM_SPHERE;
+    o->center = v3(0.0, 0.0, 0.0);
+    o->radius = 1.0;
+    o->inner_radius = 0.0;
+    o->normal = v3(0.0, 1.0, 0.0);
+    /* a 2 x 2 square in the x-z plane */
+    o->axis_u = v3(1.0, 0.0, 0.0);
+    o->axis_v = v3(0.0, 0.0, 1.0);
+    o->vertex[0] = v3(0.0, 0.0, 0.0);
+    o->vertex[1] = v3(1.0, 0.0, 0.0);
+    o->vertex[2] = v3(0.0, 1.0, 0.0);
+    o->uv[1][0] = 1.0;
+    o->uv[2][1] = 1.0;
+    o->pole = v3(0.0, 1.0, 0.0);
+    o->material.color = v3(0.8, 0.8, 0.8);
+    o->material.emission = v3(0.0, 0.0, 0.0);
+    o->material.ambient = 0.2;
+    o->material.diffuse = 0.8;
+    o->material.specular = 0.3;
+    o->material.shininess = 32.0;
+    o->material.texture = -1;
+    o->material.checker = 0.0;
+    o->material.checker_color = v3(0.1, 0.1, 0.1);
+}
+
+void scene_light_defaults(struct light *l, const char *name)
+{
+    memset(l, 0, sizeof *l);
+    strncpy(l->name, name, sizeof l->name - 1);
+    /* above and behind the default camera, so a light that only sets its colour still lights
+     * what the camera sees */
+    l->position = v3(0.0, 10.0, 10.0);
+    l->color = v3(1.0, 1.0, 1.0);
+}

@@ -1,0 +1,105 @@
+/* Private to src/scene: every key a scene may hold, described once in a table, and the parsing and
+ * storing of values shared by the file loader and --set, so that both accept exactly the same text. */
+#ifndef BT_SCENE_KEYS_H
+#define BT_SCENE_KEYS_H
+#include <stddef.h>
+#include "scene/scene.h"
+
+/* No honest scene file comes near this; refusing earlier keeps a wrong path (a video, a disk image)
+ * from being read into memory. */
+#define SCENE_MAX_FILE_BYTES (1L << 20)
+/* Rectangle half-edges may deviate from a right angle by this much (cosine of their angle). */
+#define SCENE_RECT_ORTHO_TOL 1e-6
+/* Capacity of per-key bookkeeping arrays; the table is checked against it at compile time. */
+#define SCENE_KEY_TABLE_MAX 96
+
+enum scene_section_kind {
+    SECTION_SCENE,
+    SECTION_CAMERA,
+    SECTION_RENDER,
+    SECTION_MODEL,
+    SECTION_LIGHTING,
+    SECTION_LIGHT,      /* named: [light NAME] */
+    SECTION_SKY,
+    SECTION_OBJECT,     /* named: [object NAME] */
+    SECTION_COUNT
+};
+
+enum scene_key_kind {
+    KEY_NUMBER,         /* one double in [lo, hi] */
+    KEY_INTEGER,        /* one int in [lo, hi] */
+    KEY_VECTOR,         /* "x y z", any finite components */
+    KEY_COLOR,          /* "r g b", each component in [lo, hi] */
+    KEY_TEXCOORD,       /* "u v" */
+    KEY_CHOICE,         /* one of the names in choices; the index is the enum value */
+    KEY_TEXT,           /* lo..hi bytes, stored in a char array of hi + 1 */
+    KEY_PATH            /* a file relative to the scene file's directory, checked by the setter */
+};
+
+#define KEY_ABOVE_LO 1u     /* value > lo instead of >= lo */
+#define KEY_BELOW_HI 2u     /* value < hi instead of <= hi */
+#define KEY_NONZERO 4u      /* a vector that gives a direction: not all components zero */
+
+union scene_key_value {
+    double number;
+    int integer;
+    vec3d vector;
+    double texcoord[2];
+    int choice;
+    const char *text;
+};
+
+/* Stores a parsed value where a plain field copy is not enough (enums, files to check, shared
+ * textures). target is the scene, the object or the light the section stands for. On failure the
+ * setter writes why into reason. */
+typedef int (*scene_key_setter)(struct scene *s, void *target, const union scene_key_value *v,
+                                char *reason, size_t reason_len);
+
+struct scene_key {
+    enum scene_section_kind section;
+    const char *name;
+    enum scene_key_kind kind;
+    double lo, hi;
+    unsigned flags;
+    const char *const *choices;  /* KEY_CHOICE: NULL-terminated */
+    unsigned applies;            /* [model]: bits of model_type; [object]: bits of primitive_type;
+                                    0: every type */
+    size_t offset;               /* field in the scene, object or light, when set is NULL */
+    scene_key_setter set;
+};
+
+extern const struct scene_key scene_keys[];
+extern const int scene_key_count;
+
+const char *scene_section_name(enum scene_section_kind section);
+/* Section kind called NAME, -1 if there is none. */
+int scene_section_find(const char *name);
+/* Sections that stand for one of several instances and carry a name: [light NAME], [object NAME]. */
+int scene_section_named(enum scene_section_kind section);
+/* Sections whose 'type' decides which other keys apply, so it has to come first in a file. */
+int scene_section_type_first(enum scene_section_kind section);
+/* "scene, camera, ..., object NAME", for messages. */
+const char *scene_section_list(void);
+/* "[camera]" or "[object earth]"; instance is the light or object index of named sections. */
+void scene_section_label(const struct scene *s, enum scene_section_kind section, int instance,
+                         char *buf, size_t len);
+
+/* Index of the first table entry of SECTION called NAME (a name may have one entry per model
+ * type it applies to), -1 when the section has no such key. */
+int scene_key_find(enum scene_section_kind section, const char *name);
+/* Parse VALUE for key NAME of a section instance and store it. 0, or -1 with a full message. */
+int scene_key_apply(struct scene *s, enum scene_section_kind section, int instance,
+                    const char *name, const char *value, char *msg, size_t msg_len);
+
+const char *scene_model_type_name(enum model_type type);
+const char *scene_primitive_name(enum primitive_type type);
+/* Object and light names: 1 to SCENE_NAME_LEN - 1 of letters, digits, '_' and '-', so that they
+ * survive being written as object.NAME.key on a command line. */
+int scene_instance_name_ok(const char *name);
+/* REL against the scene file's directory (absolute paths are kept). -1 if it does not fit. */
+int scene_resolve_path(const struct scene *s, const char *rel, char *out, size_t out_len);
+
+void scene_object_defaults(struct object *o, const char *name);
+void scene_light_defaults(struct light *l, const char *name);
+
+#endif

@@ -1,0 +1,92 @@
+/* Checks that involve more than one key, run once the file and every --set have been applied
+ * (a single key's range is checked when it is read). */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+#include "scene/scene.h"
+#include "scene/scene_keys.h"
+
+/* Below this the up vector is taken as parallel to the view direction (sine of their angle). */
+#define CAMERA_UP_MIN_SINE 1e-6
+
+__attribute__((format(printf, 3, 4)))
+static int invalid(const struct scene *s, struct scene_error *err, const char *fmt, ...)
+{
+    va_list ap;
+    snprintf(err->where, sizeof err->where, "%s", s->path[0] ? s->path : "scene");
+    va_start(ap, fmt);
+    vsnprintf(err->message, sizeof err->message, fmt, ap);
+    va_end(ap);
+    return -1;
+}
+
+static int validate_camera(const struct scene *s, struct scene_error *err)
+{
+    const struct camera *c = &s->camera;
+    vec3d view = v3_sub(c->look_at, c->position);
+    double view_len = v3_len(view), up_len = v3_len(c->up);
+    double from_bound = v3_len(v3_sub(c->position, s->render.bound_center));
+
+    if (view_len == 0.0)
+        return invalid(s, err, "camera position and look_at are the same point (%g %g %g): "
+                       "the view direction is undefined", c->position.x, c->position.y, c->position.z);
+    if (up_len == 0.0 || v3_len(v3_cross(view, c->up)) <= CAMERA_UP_MIN_SINE * view_len * up_len)
+        return invalid(s, err, "camera up (%g %g %g) is parallel to the view direction: "
+                       "choose an up vector across it", c->up.x, c->up.y, c->up.z);
+    /* rays are followed only inside the bounding sphere: a camera outside it sees only sky */
+    if (!(from_bound < s->render.bound_radius))
+        return invalid(s, err, "the camera is %g from render.bound_center, outside the bounding "
+                       "sphere of radius %g: enlarge render.bound_radius or move the camera",
+                       from_bound, s->render.bound_radius);
+    if (s->model.type == MODEL_SCHWARZSCHILD) {
+        double horizon = 2.0 * s->model.mass;
+        double r = v3_len(v3_sub(c->position, s->model.center));
+        if (!(r > horizon))
+            return invalid(s, err, "the camera is %g from the mass, inside the horizon radius "
+                           "2M = %g: no light leaves it; move the camera out", r, horizon);
+    }
+    return 0;
+}
+
+static int validate_render(const struct scene *s, struct scene_error *err)
+{
+    const struct render_settings *r = &s->render;
+    /* a pass runs steps_per_pass steps, and a segment must end on a pass boundary for its
+     * intersection test to see the whole segment */
+    if (r->steps_per_segment % r->steps_per_pass != 0)
+        return invalid(s, err, "render.steps_per_segment (%d) must be a multiple of "
+                       "render.steps_per_pass (%d)", r->steps_per_segment, r->steps_per_pass);
+    return 0;
+}
+
+static int validate_objects(const struct scene *s, struct scene_error *err)
+{
+    for (int i = 0; i < s->n_objects; i++) {
+        const struct object *o = &s->objects[i];
+        if (o->type == PRIM_RECT) {
+            double cosine = v3_dot(o->axis_u, o->axis_v) / (v3_len(o->axis_u) * v3_len(o->axis_v));
+            if (!(fabs(cosine) <= SCENE_RECT_ORTHO_TOL))
+                return invalid(s, err, "[object %s]: axis_u and axis_v of a rect must be "
+                               "orthogonal (the cosine of their angle is %g)", o->name, cosine);
+        } else if (o->type == PRIM_DISK && !(o->inner_radius < o->radius)) {
+            return invalid(s, err, "[object %s]: inner_radius (%g) must be smaller than radius (%g)",
+                           o->name, o->inner_radius, o->radius);
+        }
+        if (o->material.texture >= s->n_textures)
+            return invalid(s, err, "[object %s]: texture index %d, but the scene has %d textures",
+                           o->name, o->material.texture, s->n_textures);
+    }
+    return 0;
+}
+
+int scene_validate(const struct scene *s, struct scene_error *err)
+{
+    memset(err, 0, sizeof *err);
+    if (validate_camera(s, err) || validate_render(s, err) || validate_objects(s, err))
+        return -1;
+    if (s->sky.type == SKY_CUBEMAP && s->sky.cubemap[0] == '\0')
+        return invalid(s, err, "[sky] type is cubemap but no cubemap is given: add cubemap = PREFIX "
+                       "(faces PREFIX_px.png ... PREFIX_nz.png)");
+    return 0;
+}
