@@ -62,7 +62,8 @@ void main()
     float b = dot(oc, d);
     float c = dot(oc, oc) - u_bound_radius2;
     float exit_distance = sqrt(max(b * b - c, 0.0)) - b;
-    vec3 exit_point = x + d * exit_distance * 1.000001;
+    // 1% beyond the boundary, so that even a 16-bit position lands outside it
+    vec3 exit_point = x + d * exit_distance * 1.01;
     float next_steps = steps + 1.0;
     x = running ? exit_point : x;
     steps = running ? next_steps : steps;

@@ -1,0 +1,77 @@
+#include "ref/straight.h"
+#include "physics/intersect.h"
+#include <math.h>
+#include <stdlib.h>
+
+vec3d camera_ray(const struct scene *s, int i, int j)
+{
+    const struct camera *c = &s->camera;
+    int w = s->render.width, h = s->render.height;
+    vec3d forward = v3_normalize(v3_sub(c->look_at, c->position));
+    vec3d right = v3_normalize(v3_cross(forward, c->up));
+    vec3d up = v3_cross(right, forward);
+    double tan_half = tan(c->fov_deg * PI_D / 360.0);
+    double ndc_x = ((i + 0.5) / w) * 2.0 - 1.0;
+    double ndc_y = ((h - 1 - j + 0.5) / h) * 2.0 - 1.0;   /* image rows run top-down, GL rows bottom-up */
+    vec3d d = v3_add(forward, v3_add(v3_scale(right, ndc_x * tan_half * w / h), v3_scale(up, ndc_y * tan_half)));
+    return v3_normalize(d);
+}
+
+static int first_hit(const struct scene *s, vec3d a, vec3d b)
+{
+    int best = -1;
+    double best_t = INFINITY, t, p, q;
+    for (int k = 0; k < s->n_objects; k++) {
+        const struct object *o = &s->objects[k];
+        int found = 0;
+        switch (o->type) {
+        case PRIM_SPHERE: found = intersect_sphere(a, b, o->center, o->radius, &t); break;
+        case PRIM_TRIANGLE: found = intersect_triangle(a, b, o->vertex[0], o->vertex[1], o->vertex[2], &t, &p, &q); break;
+        case PRIM_DISK: found = intersect_disk(a, b, o->center, o->normal, o->inner_radius, o->radius, &t); break;
+        case PRIM_RECT: found = intersect_rect(a, b, o->center, o->axis_u, o->axis_v, &t, &p, &q); break;
+        default: break;
+        }
+        if (found && t < best_t) {
+            best_t = t;
+            best = k;
+        }
+    }
+    return best;
+}
+
+void straight_cast(const struct scene *s, int32_t *ids)
+{
+    /* one segment from the camera to beyond the far side of the bounding sphere */
+    double reach = 2.0 * s->render.bound_radius + v3_len(v3_sub(s->camera.position, s->render.bound_center));
+    for (int j = 0; j < s->render.height; j++)
+        for (int i = 0; i < s->render.width; i++) {
+            vec3d d = camera_ray(s, i, j);
+            ids[j * s->render.width + i] = first_hit(s, s->camera.position, v3_axpy(reach, d, s->camera.position));
+        }
+}
+
+static vec3d grow_about(vec3d p, vec3d centre, double f)
+{
+    return v3_add(centre, v3_scale(v3_sub(p, centre), f));
+}
+
+void straight_cast_grown(const struct scene *s, double growth, int32_t *ids)
+{
+    struct scene *g = malloc(sizeof *g);
+    if (!g)
+        abort();
+    *g = *s;
+    double f = 1.0 + growth;
+    for (int k = 0; k < g->n_objects; k++) {
+        struct object *o = &g->objects[k];
+        o->radius *= f;
+        o->inner_radius /= f;
+        o->axis_u = v3_scale(o->axis_u, f);
+        o->axis_v = v3_scale(o->axis_v, f);
+        vec3d centroid = v3_scale(v3_add(o->vertex[0], v3_add(o->vertex[1], o->vertex[2])), 1.0 / 3.0);
+        for (int v = 0; v < 3; v++)
+            o->vertex[v] = grow_about(o->vertex[v], centroid, f);
+    }
+    straight_cast(g, ids);
+    free(g);
+}

@@ -1,0 +1,17 @@
+/* Straight-line ray casting in double precision: the image the nonlinear tracer must give
+ * when every field is off (flat space, zero mass, zero potential). */
+#ifndef BT_STRAIGHT_H
+#define BT_STRAIGHT_H
+#include "scene/scene.h"
+#include <stdint.h>
+
+/* Camera ray of pixel (i, j), j counted from the top row; pixel centres at (i + 0.5) / W. */
+vec3d camera_ray(const struct scene *s, int i, int j);
+/* Object index hit first by each pixel's straight ray, or -1 (sky): width * height, top row first. */
+void straight_cast(const struct scene *s, int32_t *ids);
+/* The same with every object grown by the relative amount `growth` (negative: shrunk) about its
+ * centre: pixels whose id changes between -e and +e lie within e of a silhouette, where float
+ * rounding may decide the outcome. */
+void straight_cast_grown(const struct scene *s, double growth, int32_t *ids);
+
+#endif
