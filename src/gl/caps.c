@@ -1,6 +1,7 @@
 #include "gl/caps.h"
 #include "gl/quad.h"
 #include "gl/readback.h"
+#include "gl/texture.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -64,14 +65,7 @@ static void list_candidates(struct gl_caps *c)
 
 static GLuint make_target(const struct float_format *f, GLuint *fbo)
 {
-    GLuint tex;
-    glGenTextures(1, &tex);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTexImage2D(GL_TEXTURE_2D, 0, f->internal_format, PROBE_SIZE, PROBE_SIZE, 0, f->format, f->type, NULL);
+    GLuint tex = texture_create_nearest(f->internal_format, f->format, f->type, PROBE_SIZE, PROBE_SIZE);
     glGenFramebuffers(1, fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, *fbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);

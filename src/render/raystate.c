@@ -1,21 +1,9 @@
 #include "render/raystate.h"
 #include "gl/readback.h"
+#include "gl/texture.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static GLuint make_texture(GLint internal, GLenum format, GLenum type, int w, int h)
-{
-    GLuint tex;
-    glGenTextures(1, &tex);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTexImage2D(GL_TEXTURE_2D, 0, internal, w, h, 0, format, type, NULL);
-    return tex;
-}
 
 int raystate_init(struct raystate *rs, const struct render_path *path, int width, int height,
                   char *err, size_t errlen)
@@ -25,13 +13,13 @@ int raystate_init(struct raystate *rs, const struct render_path *path, int width
     rs->width = width;
     rs->height = height;
     for (int i = 0; i < 3; i++)
-        rs->position[i] = make_texture(f->internal_format, f->format, f->type, width, height);
+        rs->position[i] = texture_create_nearest(f->internal_format, f->format, f->type, width, height);
     for (int i = 0; i < 2; i++) {
-        rs->velocity[i] = make_texture(f->internal_format, f->format, f->type, width, height);
-        rs->hit[i] = make_texture(f->internal_format, f->format, f->type, width, height);
-        rs->image[i] = make_texture(f->internal_format, f->format, f->type, width, height);
+        rs->velocity[i] = texture_create_nearest(f->internal_format, f->format, f->type, width, height);
+        rs->hit[i] = texture_create_nearest(f->internal_format, f->format, f->type, width, height);
+        rs->image[i] = texture_create_nearest(f->internal_format, f->format, f->type, width, height);
     }
-    rs->final_color = make_texture(GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+    rs->final_color = texture_create_nearest(GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
     return gl_check("allocating the ray-state textures", err, errlen);
 }
 
