@@ -17,10 +17,12 @@ endif
 PKG_CFLAGS := $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 PKG_LIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null)
 LDLIBS  += $(PKG_LIBS) -lm -lpthread
+# Tests only: cmocka, and GSL's special functions as an independent source of closed forms.
+TEST_LIBS := -lcmocka $(shell pkg-config --libs gsl 2>/dev/null)
 
 # Debian packages: build tools, GL stacks (EGL surfaceless + OSMesa on Mesa), libraries, test tools.
 DEB_PACKAGES := make gcc pkg-config libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri \
-                libosmesa6-dev libinih-dev libpng-dev libcmocka-dev
+                libosmesa6-dev libinih-dev libpng-dev libcmocka-dev libgsl-dev
 
 LIB_SRCS  := $(shell find src -name '*.c' ! -path 'src/tools/*' ! -name main.c | sort)
 LIB_OBJS  := $(LIB_SRCS:%.c=$(BUILD)/%.o) $(BUILD)/gen/shaders_embedded.o
@@ -76,7 +78,7 @@ demo: deps
 
 $(BUILD)/tests/%: tests/unit/%.c $(BUILD)/libbentray.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(PKG_CFLAGS) -Itests -o $@ $^ $(LDLIBS) -lcmocka
+	$(CC) $(CFLAGS) $(PKG_CFLAGS) -Itests -o $@ $^ $(LDLIBS) $(TEST_LIBS)
 
 test: deps
 	@$(MAKE) --no-print-directory test-unit test-render

@@ -12,6 +12,7 @@ static void usage(FILE *out)
             "  render   render a scene headless to a PNG (and optionally a per-pixel dump)\n"
             "  trace    print one ray's polyline and result as JSON\n"
             "  info     probe the GL back-ends: versions, float formats, MRT, render path\n"
+            "  compare  error metrics of one per-pixel dump against a reference dump\n"
             "\n"
             "bentray COMMAND --help shows the options of a command.\n"
             "exit codes: 0 ok, 1 runtime failure, 2 bad usage or input\n");
@@ -34,6 +35,8 @@ int main(int argc, char **argv)
         return cmd_render(argc - 1, argv + 1);
     if (strcmp(cmd, "trace") == 0)
         return cmd_trace(argc - 1, argv + 1);
+    if (strcmp(cmd, "compare") == 0)
+        return cmd_compare(argc - 1, argv + 1);
     fprintf(stderr, "bentray: unknown command '%s'\n", cmd);
     usage(stderr);
     return EXIT_USAGE;

@@ -4,6 +4,7 @@
 #include "cli/options.h"
 #include "render/frame.h"
 #include "render/renderer.h"
+#include "ref/straight.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,8 +15,8 @@ static void usage(FILE *out)
     fprintf(out,
             "usage: bentray trace --scene FILE --pixel I J [options]\n"
             "Trace the ray of pixel column I, row J (row 0 at the top) and print its polyline\n"
-            "(segment end points) and outcome as JSON. Options as for render: --size, --backend,\n"
-            "--precision, --no-mrt, --set, --shader-dir.\n");
+            "(segment end points) and outcome as JSON. Options as for render: --size, --set,\n"
+            "--engine gpu|cpu; GPU: --backend, --precision, --no-mrt, --shader-dir; CPU: --rtol.\n");
 }
 
 struct polyline {
@@ -41,6 +42,90 @@ static int record_point(struct renderer *r, int segment, void *arg)
 static void print_vec(const char *name, const float *v, const char *after)
 {
     printf("  \"%s\": [%.9g, %.9g, %.9g]%s\n", name, v[0], v[1], v[2], after);
+}
+
+static void print_json(const struct scene *s, long px, long py, const char *engine, const struct dump_record *rec,
+                       const struct polyline *pl)
+{
+    printf("{\n  \"scene\": \"%s\",\n  \"pixel\": [%ld, %ld],\n  \"engine\": \"%s\",\n", s->name, px, py, engine);
+    printf("  \"model\": \"%s\",\n  \"outcome\": \"%s\",\n", model_name(s->model.type),
+           dump_outcome_name(rec->outcome));
+    if (rec->outcome >= 0) {
+        printf("  \"object\": \"%s\",\n", s->objects[rec->outcome].name);
+        print_vec("hit", rec->hit, ",");
+    }
+    printf("  \"depth\": %.9g,\n  \"steps\": %u,\n", rec->depth, rec->steps);
+    print_vec("final_position", rec->position, ",");
+    print_vec("final_direction", rec->direction, ",");
+    printf("  \"polyline\": [\n    [%.9g, %.9g, %.9g]", s->camera.position.x, s->camera.position.y,
+           s->camera.position.z);
+    for (int k = 0; k < pl->n; k++)
+        printf(",\n    [%.9g, %.9g, %.9g]", pl->points[k][0], pl->points[k][1], pl->points[k][2]);
+    printf("\n  ]\n}\n");
+}
+
+/* GPU path: a 1x1 ray state for the chosen pixel, the same arithmetic as the full frame. */
+static int trace_gpu(const struct common_options *o, const struct scene *s, long px, long py, struct polyline *pl)
+{
+    char err[2048];
+    int bad_input, rc = EXIT_RUNTIME;
+    struct gl_context *ctx = gl_context_create(o->backend, err, sizeof err);
+    if (!ctx) {
+        fprintf(stderr, "bentray trace: %s\n", err);
+        return EXIT_RUNTIME;
+    }
+    struct renderer *r = renderer_create(ctx, s, err, sizeof err, &bad_input);
+    struct render_result res = {0};
+    int gl_row = s->render.height - 1 - (int)py;
+    if (r && renderer_run(r, (int)px, gl_row, 1, 1, record_point, pl, err, sizeof err) == 0 &&
+        renderer_read(r, &res, 1, err, sizeof err) == 0) {
+        struct dump d;
+        if (result_to_dump(&res, s, "gpu", &d) == 0) {
+            char engine[40];
+            snprintf(engine, sizeof engine, "gpu %s", renderer_path(r)->name);
+            print_json(s, px, py, engine, &d.records[0], pl);
+            dump_free(&d);
+            rc = EXIT_OK;
+        }
+    } else if (!r) {
+        rc = bad_input ? EXIT_USAGE : EXIT_RUNTIME;
+    }
+    if (rc != EXIT_OK)
+        fprintf(stderr, "bentray trace: %s\n", err);
+    render_result_free(&res);
+    renderer_destroy(r);
+    gl_context_destroy(ctx);
+    return rc;
+}
+
+static void record_sample(void *arg, double lambda, vec3d x, vec3d v)
+{
+    (void)lambda;
+    (void)v;
+    struct polyline *pl = arg;
+    if (pl->n < pl->cap) {
+        float p[4] = {(float)x.x, (float)x.y, (float)x.z, 0.0f};
+        memcpy(pl->points[pl->n++], p, sizeof p);
+    }
+}
+
+/* CPU reference: the same ray, sampled at the GPU's segment ends and where it ends. */
+static int trace_cpu(const struct common_options *o, const struct scene *s, long px, long py, struct polyline *pl)
+{
+    struct cpu_render_options opt;
+    options_cpu(o, s, &opt);
+    vec3d x0 = s->camera.position;
+    vec3d v0 = model_initial_velocity(&s->model, x0, camera_ray(s, (int)px, (int)py));
+    struct ref_ray ray;
+    double segment_length = s->render.steps_per_segment * s->render.step_size;
+    ref_trace(s, &opt.ref, x0, v0, &ray, segment_length, record_sample, pl);
+    struct dump_record rec;
+    unsigned char no_colour[4] = {0, 0, 0, 0};
+    ref_ray_to_record(&ray, no_colour, &rec);
+    char engine[40];
+    snprintf(engine, sizeof engine, "cpu dopri5 rtol %.0e", opt.ref.rtol);
+    print_json(s, px, py, engine, &rec, pl);
+    return EXIT_OK;
 }
 
 int cmd_trace(int argc, char **argv)
@@ -82,52 +167,14 @@ int cmd_trace(int argc, char **argv)
                 s.render.height);
         return EXIT_USAGE;
     }
-    char err[2048];
-    int bad_input;
-    struct gl_context *ctx = gl_context_create(o.backend, err, sizeof err);
-    if (!ctx) {
-        fprintf(stderr, "bentray trace: %s\n", err);
+    /* one point per segment end, and the end of the ray */
+    struct polyline pl = {0, s.render.segments + 2, NULL};
+    pl.points = calloc((size_t)pl.cap, sizeof *pl.points);
+    if (!pl.points) {
+        fprintf(stderr, "bentray trace: out of memory\n");
         return EXIT_RUNTIME;
     }
-    struct renderer *r = renderer_create(ctx, &s, err, sizeof err, &bad_input);
-    struct polyline pl = {0, s.render.segments + 1, NULL};
-    pl.points = calloc((size_t)pl.cap, sizeof *pl.points);
-    struct render_result res = {0};
-    rc = EXIT_RUNTIME;
-    /* a 1x1 ray state for the chosen pixel: the same arithmetic as the full frame */
-    int gl_row = s.render.height - 1 - (int)py;
-    if (r && pl.points && renderer_run(r, (int)px, gl_row, 1, 1, record_point, &pl, err, sizeof err) == 0 &&
-        renderer_read(r, &res, 1, err, sizeof err) == 0) {
-        struct dump d;
-        if (result_to_dump(&res, "gpu", &d) == 0) {
-            const struct dump_record *rec = &d.records[0];
-            printf("{\n  \"scene\": \"%s\",\n  \"pixel\": [%ld, %ld],\n  \"engine\": \"gpu %s\",\n", s.name, px, py,
-                   renderer_path(r)->name);
-            printf("  \"model\": \"%s\",\n  \"outcome\": \"%s\",\n", model_name(s.model.type),
-                   dump_outcome_name(rec->outcome));
-            if (rec->outcome >= 0) {
-                printf("  \"object\": \"%s\",\n", s.objects[rec->outcome].name);
-                print_vec("hit", rec->hit, ",");
-            }
-            printf("  \"depth\": %.9g,\n  \"steps\": %u,\n", rec->depth, rec->steps);
-            print_vec("final_position", rec->position, ",");
-            print_vec("final_direction", rec->direction, ",");
-            printf("  \"polyline\": [\n    [%.9g, %.9g, %.9g]", s.camera.position.x, s.camera.position.y,
-                   s.camera.position.z);
-            for (int k = 0; k < pl.n; k++)
-                printf(",\n    [%.9g, %.9g, %.9g]", pl.points[k][0], pl.points[k][1], pl.points[k][2]);
-            printf("\n  ]\n}\n");
-            dump_free(&d);
-            rc = EXIT_OK;
-        }
-    } else if (!r) {
-        rc = bad_input ? EXIT_USAGE : EXIT_RUNTIME;
-    }
-    if (rc != EXIT_OK)
-        fprintf(stderr, "bentray trace: %s\n", err);
-    render_result_free(&res);
+    rc = options_engine_cpu(&o) ? trace_cpu(&o, &s, px, py, &pl) : trace_gpu(&o, &s, px, py, &pl);
     free(pl.points);
-    renderer_destroy(r);
-    gl_context_destroy(ctx);
     return rc;
 }

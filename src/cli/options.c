@@ -86,6 +86,36 @@ int options_common(struct common_options *o, const char *cmd, int argc, char **a
         o->precision = v;
     } else if (strcmp(opt, "--no-mrt") == 0) {
         o->no_mrt = 1;
+    } else if (strcmp(opt, "--engine") == 0) {
+        if (!(v = value_of(cmd, argc, argv, i)))
+            return -1;
+        if (strcmp(v, "gpu") && strcmp(v, "cpu")) {
+            fprintf(stderr, "bentray %s: --engine: expected gpu or cpu, got '%s'\n", cmd, v);
+            return -1;
+        }
+        o->engine = v;
+    } else if (strcmp(opt, "--threads") == 0) {
+        long n;
+        if (!(v = value_of(cmd, argc, argv, i)))
+            return -1;
+        if (option_parse_int(v, 0, 256, &n) != 0) {
+            fprintf(stderr, "bentray %s: --threads: expected 0 (one per core) to 256, got '%s'\n", cmd, v);
+            return -1;
+        }
+        o->threads = (int)n;
+    } else if (strcmp(opt, "--rtol") == 0) {
+        if (!(v = value_of(cmd, argc, argv, i)))
+            return -1;
+        char *end;
+        errno = 0;
+        double r = strtod(v, &end);
+        /* below 1e-14 the tolerance is under double rounding and the controller can only stall */
+        if (errno || end == v || *end != '\0' || !(r >= 1e-14 && r <= 1e-2)) {
+            fprintf(stderr, "bentray %s: --rtol: expected a relative tolerance from 1e-14 to 1e-2, got '%s'\n",
+                    cmd, v);
+            return -1;
+        }
+        o->rtol = r;
     } else if (strcmp(opt, "--set") == 0) {
         if (!(v = value_of(cmd, argc, argv, i)))
             return -1;
@@ -100,9 +130,52 @@ int options_common(struct common_options *o, const char *cmd, int argc, char **a
     return 1;
 }
 
+int options_engine_cpu(const struct common_options *o)
+{
+    return o->engine && strcmp(o->engine, "cpu") == 0;
+}
+
+void options_cpu(const struct common_options *o, const struct scene *s, struct cpu_render_options *out)
+{
+    memset(out, 0, sizeof *out);
+    ref_options_default(&out->ref, s);
+    if (o->rtol > 0.0) {
+        out->ref.atol *= o->rtol / out->ref.rtol;
+        out->ref.rtol = o->rtol;
+    }
+    out->threads = o->threads;
+    out->progress = 1;
+}
+
+/* Options that belong to one engine are refused with the other, never silently ignored. */
+static int check_engine_options(const struct common_options *o, const char *cmd)
+{
+    const char *wrong = NULL;
+    if (options_engine_cpu(o)) {
+        wrong = o->backend && strcmp(o->backend, "auto") ? "--backend"
+                : o->precision                           ? "--precision"
+                : o->no_mrt                              ? "--no-mrt"
+                : o->shader_dir                          ? "--shader-dir"
+                                                         : NULL;
+        if (wrong) {
+            fprintf(stderr, "bentray %s: %s applies to the GPU engine only, not to --engine cpu\n", cmd, wrong);
+            return -1;
+        }
+    } else {
+        wrong = o->threads ? "--threads" : o->rtol > 0.0 ? "--rtol" : NULL;
+        if (wrong) {
+            fprintf(stderr, "bentray %s: %s applies to the CPU engine only (add --engine cpu)\n", cmd, wrong);
+            return -1;
+        }
+    }
+    return 0;
+}
+
 int options_load_scene(const struct common_options *o, const char *cmd, struct scene *s)
 {
     struct scene_error err;
+    if (check_engine_options(o, cmd) != 0)
+        return EXIT_USAGE;
     if (!o->scene_path) {
         fprintf(stderr, "bentray %s: --scene FILE is required\n", cmd);
         return EXIT_USAGE;

@@ -2,6 +2,7 @@
  * reports which option is wrong. */
 #ifndef BT_OPTIONS_H
 #define BT_OPTIONS_H
+#include "ref/engine_cpu.h"
 #include "scene/scene.h"
 
 #define OPTIONS_MAX_SETS 64
@@ -13,6 +14,9 @@ struct common_options {
     int width, height;            /* 0: from the scene */
     const char *precision;        /* NULL: from the scene */
     int no_mrt;
+    const char *engine;           /* gpu|cpu; NULL: gpu */
+    int threads;                  /* cpu engine: 0 = one per core */
+    double rtol;                  /* cpu engine: 0 = REF_DEFAULT_RTOL */
     int n_sets;
     const char *sets[OPTIONS_MAX_SETS];
 };
@@ -30,5 +34,10 @@ int options_common(struct common_options *o, const char *cmd, int argc, char **a
 /* Load the scene and apply --size, --precision, --no-mrt and --set. Prints the error
  * (file:line or option) and returns EXIT_USAGE on bad input, 0 on success. */
 int options_load_scene(const struct common_options *o, const char *cmd, struct scene *s);
+
+/* Is the CPU reference engine asked for? */
+int options_engine_cpu(const struct common_options *o);
+/* Options of the CPU engine for scene s (tolerances default from the scene). */
+void options_cpu(const struct common_options *o, const struct scene *s, struct cpu_render_options *out);
 
 #endif

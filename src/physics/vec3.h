@@ -23,6 +23,13 @@ static inline vec3d v3_normalize(vec3d a)
     double l = v3_len(a);
     return l > 0.0 ? v3_scale(a, 1.0 / l) : a;
 }
+/* A unit vector perpendicular to n: the reference direction of angular texture coordinates
+ * (the GPU's uniforms and the CPU shading take it from here, so both agree). */
+static inline vec3d v3_perpendicular(vec3d n)
+{
+    vec3d helper = fabs(n.x) < 0.9 ? v3(1, 0, 0) : v3(0, 1, 0);
+    return v3_normalize(v3_cross(helper, n));
+}
 static inline int v3_isfinite(vec3d a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
 #endif

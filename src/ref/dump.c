@@ -53,6 +53,7 @@ static void encode(unsigned char *p, const struct dump_record *r)
     }
     put_f32(p + 40, r->depth);
     put_u32(p + 44, r->steps);
+    memcpy(p + 48, r->rgba, 4);
 }
 
 static void decode(const unsigned char *p, struct dump_record *r)
@@ -65,6 +66,7 @@ static void decode(const unsigned char *p, struct dump_record *r)
     }
     r->depth = get_f32(p + 40);
     r->steps = get_u32(p + 44);
+    memcpy(r->rgba, p + 48, 4);
 }
 
 int dump_write(const char *path, const struct dump *d, int overwrite, char *err, size_t errlen)
@@ -90,7 +92,14 @@ int dump_write(const char *path, const struct dump *d, int overwrite, char *err,
     put_u32(header + 16, (uint32_t)d->height);
     put_u32(header + 20, DUMP_RECORD_SIZE);
     snprintf((char *)header + 24, 32, "%s", d->engine);
+    put_u32(header + 56, (uint32_t)d->n_objects);
+    snprintf((char *)header + 64, 32, "%s", d->scene);
     int ok = fwrite(header, sizeof header, 1, f) == 1;
+    for (int i = 0; ok && i < d->n_objects; i++) {
+        unsigned char size[4];
+        put_f32(size, d->object_size[i]);
+        ok = fwrite(size, sizeof size, 1, f) == 1;
+    }
     size_t n = (size_t)d->width * d->height;
     for (size_t i = 0; ok && i < n; i++) {
         encode(rec, &d->records[i]);
@@ -121,19 +130,31 @@ int dump_read(const char *path, struct dump *d, char *err, size_t errlen)
         return -1;
     }
     uint32_t version = get_u32(header + 8), w = get_u32(header + 12), h = get_u32(header + 16);
-    uint32_t rsize = get_u32(header + 20);
+    uint32_t rsize = get_u32(header + 20), n_objects = get_u32(header + 56);
     if (version != DUMP_VERSION || rsize != DUMP_RECORD_SIZE || w < 1 || h < 1 || w > DUMP_MAX_SIDE ||
-        h > DUMP_MAX_SIDE) {
+        h > DUMP_MAX_SIDE || n_objects > DUMP_MAX_OBJECTS) {
         fclose(f);
-        snprintf(err, errlen, "%s: unsupported dump (version %u, %ux%u, record %u bytes; expected version %d, "
-                              "sides 1..%d, record %d bytes)", path, version, w, h, rsize, DUMP_VERSION,
-                 DUMP_MAX_SIDE, DUMP_RECORD_SIZE);
+        snprintf(err, errlen, "%s: unsupported dump (version %u, %ux%u, record %u bytes, %u objects; expected "
+                              "version %d, sides 1..%d, record %d bytes, at most %d objects)", path, version, w, h,
+                 rsize, n_objects, DUMP_VERSION, DUMP_MAX_SIDE, DUMP_RECORD_SIZE, DUMP_MAX_OBJECTS);
         return -1;
     }
     d->width = (int)w;
     d->height = (int)h;
     memcpy(d->engine, header + 24, 31);
     d->engine[31] = '\0';
+    memcpy(d->scene, header + 64, 31);
+    d->scene[31] = '\0';
+    d->n_objects = (int)n_objects;
+    for (int i = 0; i < d->n_objects; i++) {
+        unsigned char size[4];
+        if (fread(size, sizeof size, 1, f) != 1) {
+            fclose(f);
+            snprintf(err, errlen, "%s is truncated in its object table", path);
+            return -1;
+        }
+        d->object_size[i] = get_f32(size);
+    }
     size_t n = (size_t)w * h;
     d->records = malloc(n * sizeof *d->records);
     if (!d->records) {

@@ -6,10 +6,11 @@
 #include <stdint.h>
 
 #define DUMP_MAGIC "BTDUMP\0\0"
-#define DUMP_VERSION 1
-#define DUMP_HEADER_SIZE 56
-#define DUMP_RECORD_SIZE 48
+#define DUMP_VERSION 2
+#define DUMP_HEADER_SIZE 96
+#define DUMP_RECORD_SIZE 52
 #define DUMP_MAX_SIDE 8192
+#define DUMP_MAX_OBJECTS 64
 
 /* Outcome of a ray: object index >= 0, or one of these. */
 enum dump_outcome { DUMP_SKY = -1, DUMP_CAPTURED = -2, DUMP_UNFINISHED = -3, DUMP_FAILED = -4 };
@@ -21,11 +22,15 @@ struct dump_record {
     float direction[3];    /* final direction, unit length */
     float depth;           /* segment index + fraction where the ray ended */
     uint32_t steps;        /* integration steps taken */
+    uint8_t rgba[4];       /* the pixel's colour in the PNG, sRGB 8 bit */
 };
 
 struct dump {
     int width, height;
     char engine[32];       /* "gpu fp32+mrt", "cpu", ... */
+    char scene[32];        /* scene name: compare refuses dumps of different scenes */
+    int n_objects;
+    float object_size[DUMP_MAX_OBJECTS]; /* length scale of each object, for relative hit errors */
     struct dump_record *records;  /* width * height, top row first */
 };
 

@@ -17,7 +17,7 @@ vec3d camera_ray(const struct scene *s, int i, int j)
     return v3_normalize(d);
 }
 
-static int first_hit(const struct scene *s, vec3d a, vec3d b)
+int straight_first_hit(const struct scene *s, vec3d a, vec3d b, double *t_hit)
 {
     int best = -1;
     double best_t = INFINITY, t, p, q;
@@ -36,6 +36,8 @@ static int first_hit(const struct scene *s, vec3d a, vec3d b)
             best = k;
         }
     }
+    if (t_hit)
+        *t_hit = best_t;
     return best;
 }
 
@@ -45,8 +47,8 @@ void straight_cast(const struct scene *s, int32_t *ids)
     double reach = 2.0 * s->render.bound_radius + v3_len(v3_sub(s->camera.position, s->render.bound_center));
     for (int j = 0; j < s->render.height; j++)
         for (int i = 0; i < s->render.width; i++) {
-            vec3d d = camera_ray(s, i, j);
-            ids[j * s->render.width + i] = first_hit(s, s->camera.position, v3_axpy(reach, d, s->camera.position));
+            vec3d far = v3_axpy(reach, camera_ray(s, i, j), s->camera.position);
+            ids[j * s->render.width + i] = straight_first_hit(s, s->camera.position, far, NULL);
         }
 }
 

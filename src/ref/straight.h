@@ -7,6 +7,8 @@
 
 /* Camera ray of pixel (i, j), j counted from the top row; pixel centres at (i + 0.5) / W. */
 vec3d camera_ray(const struct scene *s, int i, int j);
+/* Index of the object the segment a -> b hits first, with its fraction t along the segment, or -1. */
+int straight_first_hit(const struct scene *s, vec3d a, vec3d b, double *t);
 /* Object index hit first by each pixel's straight ray, or -1 (sky): width * height, top row first. */
 void straight_cast(const struct scene *s, int32_t *ids);
 /* The same with every object grown by the relative amount `growth` (negative: shrunk) about its

@@ -1,4 +1,5 @@
 #include "render/frame.h"
+#include "ref/dump_scene.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -29,8 +30,10 @@ int render_frame(const struct scene *s, const char *backend, struct render_resul
     return rc;
 }
 
-int result_to_dump(const struct render_result *res, const char *engine, struct dump *d)
+int result_to_dump(const struct render_result *res, const struct scene *s, const char *engine, struct dump *d)
 {
+    memset(d, 0, sizeof *d);
+    dump_describe_scene(d, s);
     size_t n = (size_t)res->width * res->height;
     d->width = res->width;
     d->height = res->height;
@@ -54,6 +57,7 @@ int result_to_dump(const struct render_result *res, const char *engine, struct d
         rec->depth = hit[3];
         float steps = pos[3] < 0.0f ? -1.0f - pos[3] : pos[3];
         rec->steps = (uint32_t)lrintf(steps);
+        memcpy(rec->rgba, res->rgba + 4 * i, 4);
     }
     return 0;
 }

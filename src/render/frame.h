@@ -14,7 +14,7 @@ struct frame_info {
 /* Returns 0, or -1 with err; *bad_input tells a user error (exit 2) from a runtime failure (1). */
 int render_frame(const struct scene *s, const char *backend, struct render_result *out, int with_state,
                  struct frame_info *info, char *err, size_t errlen, int *bad_input);
-/* Per-pixel records from a result read with its state. */
-int result_to_dump(const struct render_result *res, const char *engine, struct dump *d);
+/* Per-pixel records (and colours) from a result read with its state. */
+int result_to_dump(const struct render_result *res, const struct scene *s, const char *engine, struct dump *d);
 
 #endif

@@ -13,13 +13,6 @@ struct intersect_args {
     int object_id, segment;
 };
 
-/* A unit vector perpendicular to n: the reference direction of angular texture coordinates. */
-static vec3d perpendicular(vec3d n)
-{
-    vec3d helper = fabs(n.x) < 0.9 ? v3(1, 0, 0) : v3(0, 1, 0);
-    return v3_normalize(v3_cross(helper, n));
-}
-
 static void set_object(GLuint p, const void *arg)
 {
     const struct intersect_args *a = arg;
@@ -34,14 +27,14 @@ static void set_object(GLuint p, const void *arg)
     switch (o->type) {
     case PRIM_SPHERE: {
         vec3d pole = v3_normalize(o->pole);
-        uniform_vec3(p, "u_axis_u", perpendicular(pole));
+        uniform_vec3(p, "u_axis_u", v3_perpendicular(pole));
         uniform_vec3(p, "u_axis_v", pole);
         break;
     }
     case PRIM_DISK: {
         vec3d n = v3_normalize(o->normal);
         uniform_vec3(p, "u_normal", n);
-        uniform_vec3(p, "u_axis_u", perpendicular(n));
+        uniform_vec3(p, "u_axis_u", v3_perpendicular(n));
         break;
     }
     case PRIM_RECT:

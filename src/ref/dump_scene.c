@@ -1,0 +1,33 @@
+#include "ref/dump_scene.h"
+#include <stdio.h>
+
+_Static_assert(SCENE_MAX_OBJECTS <= DUMP_MAX_OBJECTS, "a dump must hold every object of a scene");
+
+double object_size(const struct object *o)
+{
+    switch (o->type) {
+    case PRIM_SPHERE:
+    case PRIM_DISK:
+        return o->radius;
+    case PRIM_TRIANGLE: {
+        double longest = 0.0;
+        for (int i = 0; i < 3; i++) {
+            double edge = v3_len(v3_sub(o->vertex[(i + 1) % 3], o->vertex[i]));
+            longest = edge > longest ? edge : longest;
+        }
+        return longest;
+    }
+    case PRIM_RECT:
+    default:
+        return v3_len(v3_add(o->axis_u, o->axis_v));
+    }
+}
+
+void dump_describe_scene(struct dump *d, const struct scene *s)
+{
+    /* a name longer than the field is cut: it only guards against comparing unrelated dumps */
+    snprintf(d->scene, sizeof d->scene, "%.*s", (int)sizeof d->scene - 1, s->name);
+    d->n_objects = s->n_objects;
+    for (int i = 0; i < s->n_objects; i++)
+        d->object_size[i] = (float)object_size(&s->objects[i]);
+}

@@ -1,0 +1,164 @@
+#include "ref/engine_cpu.h"
+#include "ref/dump_scene.h"
+#include "ref/shade_cpu.h"
+#include "ref/straight.h"
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#define MAX_THREADS 256
+/* Progress is shown only for renders that last longer than this, then at this interval. */
+#define PROGRESS_AFTER_S 1.0
+#define PROGRESS_EVERY_S 1.0
+
+struct job {
+    const struct scene *scene;
+    const struct cpu_render_options *opt;
+    const struct cpu_materials *materials;
+    struct cpu_image *out;
+    atomic_int next_row;
+    atomic_int rows_done;
+    atomic_long steps, rejected;
+};
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void ref_ray_to_record(const struct ref_ray *ray, const unsigned char rgba[4], struct dump_record *rec)
+{
+    vec3d dir = v3_normalize(ray->velocity);
+    rec->outcome = ray->outcome;
+    float hit[3] = {(float)ray->hit.x, (float)ray->hit.y, (float)ray->hit.z};
+    float pos[3] = {(float)ray->position.x, (float)ray->position.y, (float)ray->position.z};
+    float d[3] = {(float)dir.x, (float)dir.y, (float)dir.z};
+    memcpy(rec->hit, hit, sizeof hit);
+    memcpy(rec->position, pos, sizeof pos);
+    memcpy(rec->direction, d, sizeof d);
+    rec->depth = (float)ray->depth;
+    rec->steps = (uint32_t)ray->steps;
+    memcpy(rec->rgba, rgba, 4);
+}
+
+static void render_row(struct job *job, int j)
+{
+    const struct scene *s = job->scene;
+    struct cpu_image *img = job->out;
+    long steps = 0, rejected = 0;
+    for (int i = 0; i < s->render.width; i++) {
+        size_t k = (size_t)j * s->render.width + i;
+        vec3d x0 = s->camera.position;
+        vec3d v0 = model_initial_velocity(&s->model, x0, camera_ray(s, i, j));
+        struct ref_ray ray;
+        ref_trace(s, &job->opt->ref, x0, v0, &ray, 0.0, NULL, NULL);
+        cpu_shade(job->materials, &ray, img->rgba + 4 * k);
+        ref_ray_to_record(&ray, img->rgba + 4 * k, &img->dump.records[k]);
+        steps += ray.steps;
+        rejected += ray.rejected;
+    }
+    atomic_fetch_add(&job->steps, steps);
+    atomic_fetch_add(&job->rejected, rejected);
+}
+
+static void *worker(void *arg)
+{
+    struct job *job = arg;
+    for (;;) {
+        int j = atomic_fetch_add(&job->next_row, 1);
+        if (j >= job->scene->render.height)
+            return NULL;
+        render_row(job, j);
+        atomic_fetch_add(&job->rows_done, 1);
+    }
+}
+
+static int thread_count(const struct cpu_render_options *o, int rows)
+{
+    long n = o->threads > 0 ? o->threads : sysconf(_SC_NPROCESSORS_ONLN);
+    n = n < 1 ? 1 : n > MAX_THREADS ? MAX_THREADS : n;
+    return n > rows ? rows : (int)n;
+}
+
+/* Wait for the workers, printing progress on stderr while a long render runs. */
+static void wait_with_progress(struct job *job, double start)
+{
+    int rows = job->scene->render.height, shown = 0;
+    double next_report = start + PROGRESS_AFTER_S;
+    while (atomic_load(&job->rows_done) < rows) {
+        struct timespec pause = {0, 50 * 1000 * 1000};
+        nanosleep(&pause, NULL);
+        double t = now_s();
+        if (job->opt->progress && t >= next_report) {
+            int done = atomic_load(&job->rows_done);
+            double eta = done > 0 ? (t - start) * (rows - done) / done : 0.0;
+            fprintf(stderr, "\rcpu reference: %d/%d rows (%.0f%%), %.1f s, about %.0f s left   ", done, rows,
+                    100.0 * done / rows, t - start, eta);
+            shown = 1;
+            next_report = t + PROGRESS_EVERY_S;
+        }
+    }
+    if (shown)
+        fprintf(stderr, "\n");
+}
+
+int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct cpu_image *out, char *err,
+               size_t errlen)
+{
+    memset(out, 0, sizeof *out);
+    int w = s->render.width, h = s->render.height;
+    struct cpu_materials materials;
+    if (cpu_materials_load(&materials, s, err, errlen) != 0) {
+        cpu_materials_free(&materials);
+        return -1;
+    }
+    out->width = w;
+    out->height = h;
+    out->rgba = malloc((size_t)w * h * 4);
+    out->dump.records = calloc((size_t)w * h, sizeof *out->dump.records);
+    if (!out->rgba || !out->dump.records) {
+        cpu_materials_free(&materials);
+        cpu_image_free(out);
+        snprintf(err, errlen, "out of memory for a %dx%d image", w, h);
+        return -1;
+    }
+    out->dump.width = w;
+    out->dump.height = h;
+    dump_describe_scene(&out->dump, s);
+    snprintf(out->dump.engine, sizeof out->dump.engine, "cpu dopri5 rtol %.0e", o->ref.rtol);
+
+    struct job job = {.scene = s, .opt = o, .materials = &materials, .out = out};
+    atomic_init(&job.next_row, 0);
+    atomic_init(&job.rows_done, 0);
+    atomic_init(&job.steps, 0);
+    atomic_init(&job.rejected, 0);
+    int n = thread_count(o, h), started = 0;
+    pthread_t threads[MAX_THREADS];
+    double start = now_s();
+    for (int i = 0; i < n; i++)
+        started += pthread_create(&threads[started], NULL, worker, &job) == 0;
+    if (started == 0)
+        worker(&job);               /* no thread could start: do the work here */
+    else
+        wait_with_progress(&job, start);
+    for (int i = 0; i < started; i++)
+        pthread_join(threads[i], NULL);
+    out->seconds = now_s() - start;
+    out->steps = atomic_load(&job.steps);
+    out->rejected = atomic_load(&job.rejected);
+    cpu_materials_free(&materials);
+    return 0;
+}
+
+void cpu_image_free(struct cpu_image *img)
+{
+    free(img->rgba);
+    img->rgba = NULL;
+    dump_free(&img->dump);
+}

@@ -1,0 +1,29 @@
+/* The CPU reference engine for a whole image: every pixel's ray through ref_trace(), shaded as the
+ * GPU shades it, on all cores (pthreads), with progress on stderr for long renders. */
+#ifndef BT_ENGINE_CPU_H
+#define BT_ENGINE_CPU_H
+#include "ref/dump.h"
+#include "ref/reference.h"
+
+struct cpu_render_options {
+    struct ref_options ref;
+    int threads;          /* 0: one per online core */
+    int progress;         /* print progress on stderr when the render takes more than a moment */
+};
+
+struct cpu_image {
+    int width, height;
+    unsigned char *rgba;  /* RGBA8, top row first, as written to the PNG */
+    struct dump dump;     /* per-pixel records (rgba included), engine "cpu dopri5 rtol R" */
+    double seconds;       /* wall time */
+    long steps, rejected; /* summed over all rays */
+};
+
+/* Render scene s (its render.width x render.height). 0 ok, -1 with err (missing texture, memory). */
+int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct cpu_image *out, char *err,
+               size_t errlen);
+void cpu_image_free(struct cpu_image *img);
+/* The dump record of one traced ray with its colour. */
+void ref_ray_to_record(const struct ref_ray *ray, const unsigned char rgba[4], struct dump_record *rec);
+
+#endif

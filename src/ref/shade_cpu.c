@@ -1,0 +1,131 @@
+#include "ref/shade_cpu.h"
+#include "io/png_io.h"
+#include "ref/dump.h"
+#include <stdio.h>
+#include <stdlib.h>
+
+int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *err, size_t errlen)
+{
+    static const char *const faces[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+    *mat = (struct cpu_materials){.scene = s};
+    for (int i = 0; i < s->n_textures; i++) {
+        struct cpu_texture *t = &mat->textures[i];
+        if (png_read_rgba8(s->textures[i], SCENE_MAX_SIZE, &t->width, &t->height, &t->rgba, err, errlen) != 0)
+            return -1;
+    }
+    if (s->sky.type == SKY_CUBEMAP) {
+        mat->has_sky_cubemap = 1;
+        for (int f = 0; f < 6; f++) {
+            char path[SCENE_PATH_LEN + 16];
+            snprintf(path, sizeof path, "%s_%s.png", s->sky.cubemap, faces[f]);
+            struct cpu_texture *t = &mat->sky[f];
+            if (png_read_rgba8(path, SCENE_MAX_SIZE, &t->width, &t->height, &t->rgba, err, errlen) != 0)
+                return -1;
+        }
+    }
+    return 0;
+}
+
+void cpu_materials_free(struct cpu_materials *mat)
+{
+    for (int i = 0; i < SCENE_MAX_TEXTURES; i++)
+        free(mat->textures[i].rgba);
+    for (int f = 0; f < 6; f++)
+        free(mat->sky[f].rgba);
+}
+
+static vec3d texel(const struct cpu_texture *t, int x, int y)
+{
+    x = x < 0 ? 0 : x >= t->width ? t->width - 1 : x;
+    y = y < 0 ? 0 : y >= t->height ? t->height - 1 : y;
+    const unsigned char *p = t->rgba + 4 * ((size_t)y * t->width + x);
+    return v3(p[0] / 255.0, p[1] / 255.0, p[2] / 255.0);
+}
+
+/* GL_LINEAR with GL_CLAMP_TO_EDGE: texel centres at (i + 0.5) / size. */
+static vec3d sample_bilinear(const struct cpu_texture *t, double s, double tc)
+{
+    s = s < 0.0 ? 0.0 : s > 1.0 ? 1.0 : s;
+    tc = tc < 0.0 ? 0.0 : tc > 1.0 ? 1.0 : tc;
+    double u = s * t->width - 0.5, v = tc * t->height - 0.5;
+    int x0 = (int)floor(u), y0 = (int)floor(v);
+    double fx = u - x0, fy = v - y0;
+    vec3d bottom = v3_add(v3_scale(texel(t, x0, y0), 1.0 - fx), v3_scale(texel(t, x0 + 1, y0), fx));
+    vec3d top = v3_add(v3_scale(texel(t, x0, y0 + 1), 1.0 - fx), v3_scale(texel(t, x0 + 1, y0 + 1), fx));
+    return v3_add(v3_scale(bottom, 1.0 - fy), v3_scale(top, fy));
+}
+
+/* Face and (s, t) of a direction: table 3.21 of the OpenGL ES 3.2 specification. */
+static vec3d sample_cube(const struct cpu_materials *mat, vec3d d)
+{
+    double ax = fabs(d.x), ay = fabs(d.y), az = fabs(d.z), sc, tc, ma;
+    int face;
+    if (ax >= ay && ax >= az) {
+        face = d.x > 0.0 ? 0 : 1;
+        sc = d.x > 0.0 ? -d.z : d.z;
+        tc = -d.y;
+        ma = ax;
+    } else if (ay >= az) {
+        face = d.y > 0.0 ? 2 : 3;
+        sc = d.x;
+        tc = d.y > 0.0 ? d.z : -d.z;
+        ma = ay;
+    } else {
+        face = d.z > 0.0 ? 4 : 5;
+        sc = d.z > 0.0 ? d.x : -d.x;
+        tc = -d.y;
+        ma = az;
+    }
+    if (!(ma > 0.0))
+        return v3(0.0, 0.0, 0.0);
+    return sample_bilinear(&mat->sky[face], 0.5 * (sc / ma + 1.0), 0.5 * (tc / ma + 1.0));
+}
+
+static vec3d vmul(vec3d a, vec3d b) { return v3(a.x * b.x, a.y * b.y, a.z * b.z); }
+
+/* shade() of shaders_es/shade.glsl */
+static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray *ray)
+{
+    const struct scene *s = mat->scene;
+    const struct material *m = &s->objects[ray->outcome].material;
+    vec3d base = m->color;
+    if (m->texture >= 0)
+        base = vmul(base, sample_bilinear(&mat->textures[m->texture], ray->uv[0], ray->uv[1]));
+    if (m->checker > 0.0) {
+        double sx = floor(ray->uv[0] * m->checker), sy = floor(ray->uv[1] * m->checker);
+        if (fmod(sx + sy, 2.0) != 0.0)
+            base = m->checker_color;
+    }
+    vec3d color = v3_add(m->emission, v3_scale(vmul(s->ambient_light, base), m->ambient));
+    vec3d to_viewer = v3_scale(v3_normalize(ray->velocity), -1.0);
+    vec3d n = v3_dot(ray->normal, to_viewer) < 0.0 ? v3_scale(ray->normal, -1.0) : ray->normal;
+    for (int i = 0; i < s->n_lights; i++) {
+        vec3d to_light = v3_normalize(v3_sub(s->lights[i].position, ray->hit));
+        double lambert = fmax(v3_dot(n, to_light), 0.0);
+        vec3d halfway = v3_normalize(v3_add(to_light, to_viewer));
+        double specular = lambert > 0.0 ? pow(fmax(v3_dot(n, halfway), 0.0), m->shininess) : 0.0;
+        vec3d lit = v3_add(v3_scale(base, m->diffuse * lambert), v3(m->specular * specular, m->specular * specular,
+                                                                     m->specular * specular));
+        color = v3_add(color, vmul(s->lights[i].color, lit));
+    }
+    return color;
+}
+
+static unsigned char to_unorm8(double c)
+{
+    c = c < 0.0 ? 0.0 : c > 1.0 ? 1.0 : c;
+    return (unsigned char)lrint(c * 255.0);
+}
+
+void cpu_shade(const struct cpu_materials *mat, const struct ref_ray *ray, unsigned char rgba[4])
+{
+    vec3d c = v3(0.0, 0.0, 0.0);
+    if (ray->outcome >= 0)
+        c = shade_surface(mat, ray);
+    else if (ray->outcome == DUMP_SKY || ray->outcome == DUMP_UNFINISHED)
+        c = mat->has_sky_cubemap ? sample_cube(mat, v3_normalize(ray->velocity)) : mat->scene->sky.color;
+    rgba[0] = to_unorm8(c.x);
+    rgba[1] = to_unorm8(c.y);
+    rgba[2] = to_unorm8(c.z);
+    rgba[3] = 255;
+}

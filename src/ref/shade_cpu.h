@@ -1,0 +1,27 @@
+/* Colour of a traced ray on the CPU, computed as shaders_es/shade.glsl and stage_sky.glsl compute
+ * it: the same material model, bilinear texture filtering with clamped edges, cube-map face
+ * selection of the GL specification, and the same rounding to 8 bits. */
+#ifndef BT_SHADE_CPU_H
+#define BT_SHADE_CPU_H
+#include "ref/reference.h"
+#include <stddef.h>
+
+struct cpu_texture {
+    int width, height;
+    unsigned char *rgba;          /* top row first, as read from the PNG (= t = 0 row in GL) */
+};
+
+struct cpu_materials {
+    const struct scene *scene;
+    struct cpu_texture textures[SCENE_MAX_TEXTURES];
+    struct cpu_texture sky[6];    /* +x, -x, +y, -y, +z, -z */
+    int has_sky_cubemap;
+};
+
+/* Load the scene's textures and sky faces. 0, or -1 with err naming the file. */
+int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *err, size_t errlen);
+void cpu_materials_free(struct cpu_materials *mat);
+/* Final RGBA8 colour of a ray's result. */
+void cpu_shade(const struct cpu_materials *mat, const struct ref_ray *ray, unsigned char rgba[4]);
+
+#endif
