@@ -30,7 +30,7 @@ SHADERS   := $(sort $(wildcard shaders_es/*.glsl))
 TEST_SRCS := $(sort $(wildcard tests/unit/test_*.c))
 TEST_BINS := $(TEST_SRCS:tests/unit/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps demo test test-unit test-render golden assets clean
+.PHONY: all deps demo test test-unit test-render golden assets accuracy clean
 all: bentray
 
 bentray: $(BUILD)/src/main.o $(BUILD)/libbentray.a
@@ -61,6 +61,14 @@ $(BUILD)/tools/gen_assets: src/tools/gen_assets.c src/io/png_io.c
 assets: $(BUILD)/tools/gen_assets
 	$(BUILD)/tools/gen_assets assets
 
+# Every scene on the GPU in several configurations against the CPU reference: docs/ACCURACY.md.
+$(BUILD)/tools/accuracy_report: src/tools/accuracy_report.c $(BUILD)/libbentray.a
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) $(PKG_CFLAGS) -o $@ $^ $(LDLIBS)
+accuracy: deps
+	@$(MAKE) --no-print-directory $(BUILD)/tools/accuracy_report
+	$(BUILD)/tools/accuracy_report assets/scenes docs/ACCURACY.md
+
 deps:
 	@missing=$$(for p in $(DEB_PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
 	if [ -n "$$missing" ]; then \
@@ -73,7 +81,7 @@ deps:
 demo: deps
 	@$(MAKE) --no-print-directory bentray
 	@mkdir -p out
-	./bentray render --scene assets/scenes/demo.scene --out out/demo.png
+	./bentray render --scene assets/scenes/demo.scene --out out/demo.png --force
 	@echo "$(CURDIR)/out/demo.png"
 
 $(BUILD)/tests/%: tests/unit/%.c $(BUILD)/libbentray.a
@@ -86,7 +94,8 @@ test: deps
 test-unit: $(TEST_BINS)
 	@set -e; for t in $(TEST_BINS); do echo "== $$t"; $$t; done
 
-test-render: bentray
+# the report tool is built here too, so that it cannot rot between runs of `make accuracy`
+test-render: bentray $(BUILD)/tools/accuracy_report
 	@tests/render/run_all.sh
 
 golden: bentray

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 static void usage(FILE *out)
 {
@@ -18,12 +19,16 @@ static void usage(FILE *out)
             "  --dump FILE          also write per-pixel results (format in docs/DUMP.md)\n"
             "  --force              replace existing output files\n"
             "  --size WxH           image size (overrides render.width/height)\n"
+            "GPU engine:\n"
             "  --backend B          egl, osmesa or auto (default auto: EGL, then OSMesa)\n"
             "  --precision P        fp32, fp16 or auto: the float format of the ray state\n"
             "  --no-mrt             write x and v in separate passes even where MRT works\n"
             "  --set SECTION.KEY=V  override any scene key, e.g. --set model.mass=1.5\n"
             "  --shader-dir DIR     load shaders from DIR instead of the built-in copies\n"
             "  --quiet              print only the output path\n"
+            "  --engine E           gpu (default) or cpu: the double-precision reference (docs/ERRORS.md)\n"
+            "  --rtol R             cpu engine: relative tolerance per step (default 1e-10)\n"
+            "  --threads N          cpu engine: worker threads (default 0: one per core)\n"
             "exit codes: 0 ok, 1 runtime failure, 2 bad usage or input\n");
 }
 
@@ -152,6 +157,14 @@ int cmd_render(int argc, char **argv)
         snprintf(default_out, sizeof default_out, "%s.png", s.name);
         out_path = default_out;
     }
+    /* refuse before the work, not after: a long render must not end in "file exists" */
+    const char *outputs[2] = {out_path, dump_path};
+    for (int k = 0; k < 2; k++)
+        if (outputs[k] && !force && access(outputs[k], F_OK) == 0) {
+            fprintf(stderr, "bentray render: %s: refusing to replace existing file %s (use --force to overwrite "
+                            "it)\n", k ? "--dump" : "--out", outputs[k]);
+            return EXIT_USAGE;
+        }
     struct rendered r = {0};
     char err[2048];
     rc = options_engine_cpu(&o) ? render_cpu(&o, &s, &r) : render_gpu(&s, o.backend, &r);

@@ -8,5 +8,6 @@ int cmd_info(int argc, char **argv);
 int cmd_render(int argc, char **argv);
 int cmd_trace(int argc, char **argv);
 int cmd_compare(int argc, char **argv);
+int cmd_error(int argc, char **argv);
 
 #endif

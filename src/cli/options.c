@@ -151,7 +151,13 @@ void options_cpu(const struct common_options *o, const struct scene *s, struct c
 static int check_engine_options(const struct common_options *o, const char *cmd)
 {
     const char *wrong = NULL;
-    if (options_engine_cpu(o)) {
+    if (o->both_engines) {
+        if (o->engine) {
+            fprintf(stderr, "bentray %s: --engine: this command runs both engines; GPU and CPU options both "
+                            "apply\n", cmd);
+            return -1;
+        }
+    } else if (options_engine_cpu(o)) {
         wrong = o->backend && strcmp(o->backend, "auto") ? "--backend"
                 : o->precision                           ? "--precision"
                 : o->no_mrt                              ? "--no-mrt"

@@ -17,6 +17,7 @@ struct common_options {
     const char *engine;           /* gpu|cpu; NULL: gpu */
     int threads;                  /* cpu engine: 0 = one per core */
     double rtol;                  /* cpu engine: 0 = REF_DEFAULT_RTOL */
+    int both_engines;             /* the command runs both engines (bentray error) */
     int n_sets;
     const char *sets[OPTIONS_MAX_SETS];
 };

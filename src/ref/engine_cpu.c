@@ -150,6 +150,7 @@ int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct
     for (int i = 0; i < started; i++)
         pthread_join(threads[i], NULL);
     out->seconds = now_s() - start;
+    out->threads = started > 0 ? started : 1;
     out->steps = atomic_load(&job.steps);
     out->rejected = atomic_load(&job.rejected);
     cpu_materials_free(&materials);

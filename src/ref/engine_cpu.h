@@ -17,6 +17,7 @@ struct cpu_image {
     struct dump dump;     /* per-pixel records (rgba included), engine "cpu dopri5 rtol R" */
     double seconds;       /* wall time */
     long steps, rejected; /* summed over all rays */
+    int threads;          /* worker threads that ran */
 };
 
 /* Render scene s (its render.width x render.height). 0 ok, -1 with err (missing texture, memory). */

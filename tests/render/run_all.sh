@@ -37,7 +37,7 @@ for f in tests/scenes_bad/*.scene; do
 done
 # both back-ends render; the output is not replaced without --force
 check "render egl" 0 "hit an object" -- $BT render --scene $S --size 32x24 --backend egl --out "$TMP/a.png"
-check "no overwrite" 1 "refusing to replace" -- $BT render --scene $S --size 32x24 --out "$TMP/a.png"
+check "no overwrite" 2 "--out: refusing to replace" -- $BT render --scene $S --size 32x24 --out "$TMP/a.png"
 check "render osmesa" 0 "on osmesa" -- $BT render --scene $S --size 32x24 --backend osmesa --out "$TMP/b.png"
 check "trace json" 0 "\"outcome\": \"(object|sky)\"" -- $BT trace --scene $S --size 32x24 --pixel 16 12
 check "info" 0 "RGBA32F +works" -- $BT info
@@ -51,5 +51,18 @@ check "fp32 targets missing" 0 "fp16(\+mrt)?: RGBA16F.*reduced accuracy" -- env 
 # a broken shader directory: clear message naming the file and line, exit 1
 mkdir -p "$TMP/shaders" && cp shaders_es/*.glsl "$TMP/shaders/" && echo "this is not glsl" >> "$TMP/shaders/stage_setup.glsl"
 check "broken shader" 1 "stage_setup.glsl:[0-9]+" -- $BT render --scene $S --size 32x24 --shader-dir "$TMP/shaders" --out "$TMP/g.png"
+# the CPU reference: same outputs as the GPU engine; on the flat test scene both give the same outcomes
+check "render cpu" 0 "CPU reference" -- $BT render --scene $S --size 32x24 --engine cpu --out "$TMP/cpu.png" --dump "$TMP/cpu.dump"
+check "render gpu dump" 0 "hit an object" -- $BT render --scene $S --size 32x24 --out "$TMP/gpu.png" --dump "$TMP/gpu.dump"
+check "compare flat" 0 "outcome differs: 0 of 768" -- $BT compare "$TMP/gpu.dump" "$TMP/cpu.dump"
+check "compare json" 0 "\"differ\": 0," -- $BT compare --json "$TMP/gpu.dump" "$TMP/cpu.dump"
+check "compare other scene" 2 "scene" -- sh -c "$BT render --scene assets/scenes/lorenz.scene --size 32x24 --engine cpu --out $TMP/l.png --dump $TMP/l.dump >/dev/null 2>&1; $BT compare $TMP/l.dump $TMP/cpu.dump"
+check "compare not a dump" 2 "not a bentray dump" -- $BT compare "$TMP/cpu.png" "$TMP/cpu.dump"
+check "error table" 0 "time: gpu .*cpu dopri5" -- $BT error --scene assets/scenes/schwarzschild.scene --size 24x18
+check "trace cpu" 0 "\"engine\": \"cpu dopri5" -- $BT trace --scene $S --size 32x24 --pixel 16 12 --engine cpu
+check "cpu with gpu option" 2 "--precision applies to the GPU engine" -- $BT render --scene $S --engine cpu --precision fp16 --out "$TMP/h.png"
+check "rtol without cpu" 2 "--rtol applies to the CPU engine" -- $BT render --scene $S --rtol 1e-8 --out "$TMP/h.png"
+check "bad rtol" 2 "--rtol: expected" -- $BT render --scene $S --engine cpu --rtol 0 --out "$TMP/h.png"
+check "bad engine" 2 "--engine: expected gpu or cpu" -- $BT render --scene $S --engine quantum --out "$TMP/h.png"
 echo "command-line tests: $fails failed"
 [ "$fails" = 0 ]

@@ -1,0 +1,86 @@
+/* bentray error: render a scene on the GPU and on the CPU reference, and report the error of the
+ * GPU image against the reference with both times: speed against error for one configuration. */
+#include "cli/commands.h"
+#include "cli/measure.h"
+#include "cli/options.h"
+#include "ref/compare.h"
+#include <stdio.h>
+#include <string.h>
+
+static void usage(FILE *out)
+{
+    fprintf(out,
+            "usage: bentray error --scene FILE [options]\n"
+            "Render the scene with the GPU engine and with the CPU reference, and compare them\n"
+            "(metrics in docs/ERRORS.md). GPU options: --backend, --precision, --no-mrt, --shader-dir;\n"
+            "CPU options: --rtol, --threads; both: --size, --set SECTION.KEY=V.\n"
+            "  --json               print JSON instead of the table\n"
+            "exit codes: 0 ok (a large error is not a failure), 1 runtime failure, 2 bad usage or input\n");
+}
+
+static void print_times(FILE *f, const struct measured *gpu, const struct measured *cpu, int json)
+{
+    if (json)
+        fprintf(f, "{\"gpu_seconds\": %.6g, \"gpu_passes\": %ld, \"cpu_seconds\": %.6g, \"cpu_steps\": %ld,\n"
+                   " \"comparison\": ", gpu->seconds, gpu->work, cpu->seconds, cpu->work);
+    else
+        fprintf(f, "time: %s %.3f s (%ld passes); %s %.3f s (%ld steps)\n", gpu->engine, gpu->seconds, gpu->work,
+                cpu->engine, cpu->seconds, cpu->work);
+}
+
+int cmd_error(int argc, char **argv)
+{
+    struct common_options o = {.backend = "auto", .both_engines = 1};
+    int json = 0;
+    for (int i = 1; i < argc; i++) {
+        int c = options_common(&o, "error", argc, argv, &i);
+        if (c < 0)
+            return EXIT_USAGE;
+        if (c > 0)
+            continue;
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            usage(stdout);
+            return EXIT_OK;
+        } else if (strcmp(argv[i], "--json") == 0) {
+            json = 1;
+        } else {
+            fprintf(stderr, "bentray error: unknown option '%s'\n", argv[i]);
+            usage(stderr);
+            return EXIT_USAGE;
+        }
+    }
+    static struct scene s;
+    int rc = options_load_scene(&o, "error", &s);
+    if (rc)
+        return rc;
+    struct cpu_render_options cpu_opt;
+    options_cpu(&o, &s, &cpu_opt);
+    struct measured gpu, cpu;
+    char err[2048];
+    int bad_input = 0;
+    if (measure_gpu(&s, o.backend, &gpu, err, sizeof err, &bad_input) != 0) {
+        fprintf(stderr, "bentray error: GPU engine: %s\n", err);
+        return bad_input ? EXIT_USAGE : EXIT_RUNTIME;
+    }
+    if (measure_cpu(&s, &cpu_opt, &cpu, err, sizeof err) != 0) {
+        fprintf(stderr, "bentray error: CPU reference: %s\n", err);
+        measured_free(&gpu);
+        return EXIT_RUNTIME;
+    }
+    struct compare_result r;
+    rc = EXIT_OK;
+    if (compare_dumps(&gpu.dump, &cpu.dump, &r, err, sizeof err) != 0) {
+        fprintf(stderr, "bentray error: %s\n", err);
+        rc = EXIT_RUNTIME;
+    } else if (json) {
+        print_times(stdout, &gpu, &cpu, 1);
+        compare_print_json(stdout, &r);
+        printf("}\n");
+    } else {
+        compare_print_table(stdout, &r);
+        print_times(stdout, &gpu, &cpu, 0);
+    }
+    measured_free(&gpu);
+    measured_free(&cpu);
+    return rc;
+}

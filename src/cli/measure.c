@@ -1,0 +1,51 @@
+#include "cli/measure.h"
+#include "render/frame.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int measure_gpu(const struct scene *s, const char *backend, struct measured *m, char *err, size_t errlen,
+                int *bad_input)
+{
+    memset(m, 0, sizeof *m);
+    struct render_result res;
+    struct frame_info info;
+    if (render_frame(s, backend, &res, 1, &info, err, errlen, bad_input) != 0)
+        return -1;
+    snprintf(m->engine, sizeof m->engine, "gpu %s", info.path_name);
+    snprintf(m->device, sizeof m->device, "%.120s on %s", info.renderer, info.backend);
+    if (result_to_dump(&res, s, m->engine, &m->dump) != 0) {
+        render_result_free(&res);
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    m->rgba = res.rgba;
+    res.rgba = NULL;                /* kept; the ray state is not */
+    m->seconds = res.seconds;
+    m->work = res.passes;
+    render_result_free(&res);
+    return 0;
+}
+
+int measure_cpu(const struct scene *s, const struct cpu_render_options *o, struct measured *m, char *err,
+                size_t errlen)
+{
+    memset(m, 0, sizeof *m);
+    struct cpu_image img;
+    if (cpu_render(s, o, &img, err, errlen) != 0)
+        return -1;
+    m->dump = img.dump;
+    m->rgba = img.rgba;
+    m->seconds = img.seconds;
+    m->work = img.steps;
+    snprintf(m->engine, sizeof m->engine, "%s", img.dump.engine);
+    snprintf(m->device, sizeof m->device, "%d CPU threads", img.threads);
+    return 0;
+}
+
+void measured_free(struct measured *m)
+{
+    dump_free(&m->dump);
+    free(m->rgba);
+    m->rgba = NULL;
+}

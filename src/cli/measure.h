@@ -1,0 +1,24 @@
+/* One scene through either engine into a per-pixel dump with its time: what `bentray error` and
+ * the accuracy report compare. */
+#ifndef BT_MEASURE_H
+#define BT_MEASURE_H
+#include "ref/engine_cpu.h"
+#include "scene/scene.h"
+
+struct measured {
+    struct dump dump;       /* per-pixel records with colours */
+    unsigned char *rgba;    /* the image (owned) */
+    double seconds;         /* GPU: the passes, glFinish included; CPU: wall time of the render */
+    long work;              /* GPU: quads drawn; CPU: accepted integration steps */
+    char engine[40];        /* "gpu fp32+mrt", "cpu dopri5 rtol 1e-10" */
+    char device[160];       /* GL renderer and back-end, or the CPU thread count */
+};
+
+/* 0, or -1 with err; *bad_input tells a user error (exit 2) from a runtime failure (1). */
+int measure_gpu(const struct scene *s, const char *backend, struct measured *m, char *err, size_t errlen,
+                int *bad_input);
+int measure_cpu(const struct scene *s, const struct cpu_render_options *o, struct measured *m, char *err,
+                size_t errlen);
+void measured_free(struct measured *m);
+
+#endif
