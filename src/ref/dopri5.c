@@ -34,12 +34,14 @@ static void derivative(const struct model *m, const double *y, double *dy)
     dy[5] = a.z;
 }
 
-void dopri5_init(struct dopri5 *d, const struct model *m, double rtol, double atol, vec3d x, vec3d v, double h)
+void dopri5_init(struct dopri5 *d, const struct model *m, double rtol, double atol_x, double atol_v, vec3d x, vec3d v,
+                 double h)
 {
     memset(d, 0, sizeof *d);
     d->model = m;
     d->rtol = rtol;
-    d->atol = atol;
+    for (int c = 0; c < 6; c++)
+        d->atol[c] = c < 3 ? atol_x : atol_v;
     double y[6] = {x.x, x.y, x.z, v.x, v.y, v.z};
     memcpy(d->y, y, sizeof y);
     derivative(m, d->y, d->dy);
@@ -76,7 +78,7 @@ static double attempt(const struct dopri5 *d, double h, double (*k)[6], double *
     double sum = 0.0;
     for (int c = 0; c < 6; c++) {
         double e = h * (E1 * k[0][c] + E3 * k[2][c] + E4 * k[3][c] + E5 * k[4][c] + E6 * k[5][c] + E7 * k[6][c]);
-        double scale = d->atol + d->rtol * fmax(fabs(d->y[c]), fabs(y1[c]));
+        double scale = d->atol[c] + d->rtol * fmax(fabs(d->y[c]), fabs(y1[c]));
         sum += (e / scale) * (e / scale);
         if (!isfinite(y1[c]) || !isfinite(k[6][c]))
             return INFINITY;

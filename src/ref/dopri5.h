@@ -7,7 +7,8 @@
 
 struct dopri5 {
     const struct model *model;
-    double rtol, atol;
+    double rtol;
+    double atol[6];        /* absolute tolerance of each component: position, then velocity */
     double y[6];           /* x, v at lambda */
     double dy[6];          /* derivative at lambda (first same as last) */
     double lambda;
@@ -18,8 +19,10 @@ struct dopri5 {
     double cont[5][6];
 };
 
-/* Start at lambda 0 from x, v; h is the first step to try. */
-void dopri5_init(struct dopri5 *d, const struct model *m, double rtol, double atol, vec3d x, vec3d v, double h);
+/* Start at lambda 0 from x, v; h is the first step to try. Absolute tolerances: atol_x for the
+ * position (a length), atol_v for the velocity (whose scale is |v|, about 1). */
+void dopri5_init(struct dopri5 *d, const struct model *m, double rtol, double atol_x, double atol_v, vec3d x, vec3d v,
+                 double h);
 /* Take one accepted step of at most h_max. Returns 0, or -1 when the step size fell below
  * h_min or the state stopped being finite (d is left at its last good state). */
 int dopri5_step(struct dopri5 *d, double h_max, double h_min, long max_tries);

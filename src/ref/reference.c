@@ -15,6 +15,24 @@
 #define EXTREMUM_ITERATIONS 48
 /* Flat space: one straight segment, ending 1% beyond the bounding sphere as on the GPU. */
 #define FLAT_OVERSHOOT 1.01
+/* Longest step, as a fraction of the distance from the model's centre. Far from a central mass the
+ * force fades (r^-4 for Schwarzschild) and the controller would grow the step until one step
+ * carries the ray past the mass without a stage near it: an error estimate of zero, a deflection
+ * of zero. No step may be longer than this part of the way in. */
+#define CENTRE_STEP_FRACTION 0.25
+/* ... measured from at least this fraction of the bounding radius, so that a ray through the
+ * centre itself is not forced into ever shorter steps. */
+#define CENTRE_FLOOR_FRACTION 1e-3
+
+/* The step limit of CENTRE_STEP_FRACTION at the current state. */
+static double centre_step_limit(const struct dopri5 *d, vec3d centre, double floor_radius)
+{
+    double r = v3_len(v3_sub(v3(d->y[0], d->y[1], d->y[2]), centre));
+    double speed = v3_len(v3(d->y[3], d->y[4], d->y[5]));
+    if (!(speed > 0.0))
+        return INFINITY;
+    return CENTRE_STEP_FRACTION * fmax(r, floor_radius) / speed;
+}
 
 void ref_options_default(struct ref_options *o, const struct scene *s)
 {
@@ -209,7 +227,9 @@ static int search_step(struct tracer *t, struct ref_ray *out)
                 best_k = k;
             }
         }
-        vec3d ra = v3_sub(ch.xa, centre), rb = v3_sub(ch.xb, centre);
+        /* winding and closest approach count the chord only up to where the ray ends */
+        vec3d end = best_k >= 0 ? dopri5_dense_x(d, best) : ch.xb;
+        vec3d ra = v3_sub(ch.xa, centre), rb = v3_sub(end, centre);
         out->winding += atan2(v3_len(v3_cross(ra, rb)), v3_dot(ra, rb));
         double rmin = fmin(v3_len(ra), v3_len(rb));
         out->min_radius = rmin < out->min_radius ? rmin : out->min_radius;
@@ -289,10 +309,12 @@ void ref_trace(const struct scene *s, const struct ref_options *o, vec3d x0, vec
         add_sphere(&t, ROLE_CAPTURE, s->model.center, capture);
 
     double lambda_max = (double)rs->segments * rs->steps_per_segment * rs->step_size;
-    dopri5_init(&t.d, &s->model, o->rtol, o->atol, x0, v0, rs->step_size);
+    dopri5_init(&t.d, &s->model, o->rtol, o->atol, o->rtol * v3_len(v0), x0, v0, rs->step_size);
+    double floor_radius = CENTRE_FLOOR_FRACTION * rs->bound_radius;
     for (;;) {
         long budget = o->max_steps - t.d.steps - t.d.rejected;
-        if (budget <= 0 || dopri5_step(&t.d, lambda_max - t.d.lambda, o->min_step, budget) != 0) {
+        double h_max = fmin(lambda_max - t.d.lambda, centre_step_limit(&t.d, s->model.center, floor_radius));
+        if (budget <= 0 || dopri5_step(&t.d, h_max, o->min_step, budget) != 0) {
             finish(&t, out, DUMP_FAILED, v3(t.d.y[0], t.d.y[1], t.d.y[2]), v3(t.d.y[3], t.d.y[4], t.d.y[5]),
                    t.d.lambda);
             return;
@@ -311,10 +333,12 @@ void ref_trace(const struct scene *s, const struct ref_options *o, vec3d x0, vec
 long ref_integrate(const struct model *m, const struct ref_options *o, double length, vec3d *x, vec3d *v)
 {
     struct dopri5 d;
-    dopri5_init(&d, m, o->rtol, o->atol, *x, *v, fmin(length, 1e-3 * length + 1e-3));
+    dopri5_init(&d, m, o->rtol, o->atol, o->rtol * v3_len(*v), *x, *v, fmin(length, 1e-3 * length + 1e-3));
+    double floor_radius = CENTRE_FLOOR_FRACTION * fmax(v3_len(v3_sub(*x, m->center)), 1.0);
     while (d.lambda < length) {
         long budget = o->max_steps - d.steps - d.rejected;
-        if (budget <= 0 || dopri5_step(&d, length - d.lambda, o->min_step, budget) != 0)
+        double h_max = fmin(length - d.lambda, centre_step_limit(&d, m->center, floor_radius));
+        if (budget <= 0 || dopri5_step(&d, h_max, o->min_step, budget) != 0)
             return -1;
     }
     *x = v3(d.y[0], d.y[1], d.y[2]);

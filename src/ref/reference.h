@@ -15,7 +15,8 @@
 
 struct ref_options {
     double rtol;          /* relative tolerance per step (default REF_DEFAULT_RTOL) */
-    double atol;          /* absolute tolerance, scene length units (default rtol * bound radius) */
+    double atol;          /* absolute tolerance of positions, scene length units (default rtol * bound
+                           * radius); velocities use rtol * |v0| */
     long max_steps;       /* accepted + rejected steps before the ray counts as failed */
     double min_step;      /* smallest step size; a ray that needs less fails (no stall) */
 };

@@ -127,9 +127,11 @@ static void test_hit_independent_of_tolerance(void **state)
         print_message("aim %zu: object %d, steps %ld (1e-12) vs %ld (1e-6), hit moved %.3g\n", k, tight.outcome,
                       tight.steps, loose.steps, moved);
         /* the steps differ by a large factor, the hit only by the integration error of the looser
-         * tolerance: atol = 1e-6 x bound radius 100 = 1e-4 per step, over fewer than ten steps */
+         * tolerance: at most 1e-6 relative of a 40-unit position per step, over fewer than twenty
+         * steps, gives 1e-3; the bound is ten times tighter because the errors of an error-controlled
+         * pair do not all add up (measured: about 1e-8) */
         assert_true(tight.steps > 2 * loose.steps);
-        assert_true(moved <= 1e-3);
+        assert_true(moved <= 1e-4);
     }
 }
 
