@@ -33,20 +33,15 @@ int cmd_error(int argc, char **argv)
     struct common_options o = {.backend = "auto", .both_engines = 1};
     int json = 0;
     for (int i = 1; i < argc; i++) {
-        int c = options_common(&o, "error", argc, argv, &i);
-        if (c < 0)
-            return EXIT_USAGE;
-        if (c > 0)
+        enum option_status c = options_common(&o, "error", argc, argv, &i, usage);
+        if (c == OPTION_CONSUMED)
             continue;
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            usage(stdout);
-            return EXIT_OK;
-        } else if (strcmp(argv[i], "--json") == 0) {
+        if (c != OPTION_NOT_COMMON)
+            return options_exit_code(c);
+        if (strcmp(argv[i], "--json") == 0) {
             json = 1;
         } else {
-            fprintf(stderr, "bentray error: unknown option '%s'\n", argv[i]);
-            usage(stderr);
-            return EXIT_USAGE;
+            return option_unknown("error", argv[i], usage);
         }
     }
     static struct scene s;

@@ -126,15 +126,12 @@ int cmd_render(int argc, char **argv)
     const char *out_path = NULL, *dump_path = NULL;
     int force = 0, quiet = 0;
     for (int i = 1; i < argc; i++) {
-        int c = options_common(&o, "render", argc, argv, &i);
-        if (c < 0)
-            return EXIT_USAGE;
-        if (c > 0)
+        enum option_status c = options_common(&o, "render", argc, argv, &i, usage);
+        if (c == OPTION_CONSUMED)
             continue;
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            usage(stdout);
-            return EXIT_OK;
-        } else if (strcmp(argv[i], "--out") == 0 && i + 1 < argc) {
+        if (c != OPTION_NOT_COMMON)
+            return options_exit_code(c);
+        if (strcmp(argv[i], "--out") == 0 && i + 1 < argc) {
             out_path = argv[++i];
         } else if (strcmp(argv[i], "--dump") == 0 && i + 1 < argc) {
             dump_path = argv[++i];

@@ -133,15 +133,12 @@ int cmd_trace(int argc, char **argv)
     struct common_options o = {.backend = "auto"};
     long px = -1, py = -1;
     for (int i = 1; i < argc; i++) {
-        int c = options_common(&o, "trace", argc, argv, &i);
-        if (c < 0)
-            return EXIT_USAGE;
-        if (c > 0)
+        enum option_status c = options_common(&o, "trace", argc, argv, &i, usage);
+        if (c == OPTION_CONSUMED)
             continue;
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            usage(stdout);
-            return EXIT_OK;
-        } else if (strcmp(argv[i], "--pixel") == 0) {
+        if (c != OPTION_NOT_COMMON)
+            return options_exit_code(c);
+        if (strcmp(argv[i], "--pixel") == 0) {
             if (i + 2 >= argc || option_parse_int(argv[i + 1], 0, SCENE_MAX_SIZE - 1, &px) ||
                 option_parse_int(argv[i + 2], 0, SCENE_MAX_SIZE - 1, &py)) {
                 fprintf(stderr, "bentray trace: --pixel: expected two pixel indices I J\n");
@@ -149,9 +146,7 @@ int cmd_trace(int argc, char **argv)
             }
             i += 2;
         } else {
-            fprintf(stderr, "bentray trace: unknown option '%s'\n", argv[i]);
-            usage(stderr);
-            return EXIT_USAGE;
+            return option_unknown("trace", argv[i], usage);
         }
     }
     if (px < 0) {

@@ -49,63 +49,79 @@ static const char *value_of(const char *cmd, int argc, char **argv, int *i)
     return argv[++*i];
 }
 
-int options_common(struct common_options *o, const char *cmd, int argc, char **argv, int *i)
+int options_exit_code(enum option_status status)
+{
+    return status == OPTION_HELP ? EXIT_OK : EXIT_USAGE;
+}
+
+int option_unknown(const char *cmd, const char *arg, usage_fn usage)
+{
+    fprintf(stderr, "bentray %s: unknown option or missing value: '%s'\n", cmd, arg);
+    usage(stderr);
+    return EXIT_USAGE;
+}
+
+enum option_status options_common(struct common_options *o, const char *cmd, int argc, char **argv, int *i,
+                                  usage_fn usage)
 {
     const char *opt = argv[*i], *v;
-    if (strcmp(opt, "--scene") == 0) {
+    if (strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0) {
+        usage(stdout);
+        return OPTION_HELP;
+    } else if (strcmp(opt, "--scene") == 0) {
         if (!(v = value_of(cmd, argc, argv, i)))
-            return -1;
+            return OPTION_ERROR;
         o->scene_path = v;
     } else if (strcmp(opt, "--backend") == 0) {
         if (!(v = value_of(cmd, argc, argv, i)))
-            return -1;
+            return OPTION_ERROR;
         if (!option_backend_valid(v)) {
             fprintf(stderr, "bentray %s: --backend: unknown back-end '%s' (expected egl, osmesa or auto)\n", cmd, v);
-            return -1;
+            return OPTION_ERROR;
         }
         o->backend = v;
     } else if (strcmp(opt, "--shader-dir") == 0) {
         if (!(v = value_of(cmd, argc, argv, i)))
-            return -1;
+            return OPTION_ERROR;
         o->shader_dir = v;
         shader_set_directory(v);
     } else if (strcmp(opt, "--size") == 0) {
         if (!(v = value_of(cmd, argc, argv, i)))
-            return -1;
+            return OPTION_ERROR;
         if (option_parse_size(v, &o->width, &o->height) != 0) {
             fprintf(stderr, "bentray %s: --size: expected WxH with 1 <= W, H <= %d, got '%s'\n", cmd, SCENE_MAX_SIZE, v);
-            return -1;
+            return OPTION_ERROR;
         }
     } else if (strcmp(opt, "--precision") == 0) {
         if (!(v = value_of(cmd, argc, argv, i)))
-            return -1;
+            return OPTION_ERROR;
         if (strcmp(v, "fp32") && strcmp(v, "fp16") && strcmp(v, "auto")) {
             fprintf(stderr, "bentray %s: --precision: expected fp32, fp16 or auto, got '%s'\n", cmd, v);
-            return -1;
+            return OPTION_ERROR;
         }
         o->precision = v;
     } else if (strcmp(opt, "--no-mrt") == 0) {
         o->no_mrt = 1;
     } else if (strcmp(opt, "--engine") == 0) {
         if (!(v = value_of(cmd, argc, argv, i)))
-            return -1;
+            return OPTION_ERROR;
         if (strcmp(v, "gpu") && strcmp(v, "cpu")) {
             fprintf(stderr, "bentray %s: --engine: expected gpu or cpu, got '%s'\n", cmd, v);
-            return -1;
+            return OPTION_ERROR;
         }
         o->engine = v;
     } else if (strcmp(opt, "--threads") == 0) {
         long n;
         if (!(v = value_of(cmd, argc, argv, i)))
-            return -1;
+            return OPTION_ERROR;
         if (option_parse_int(v, 0, 256, &n) != 0) {
             fprintf(stderr, "bentray %s: --threads: expected 0 (one per core) to 256, got '%s'\n", cmd, v);
-            return -1;
+            return OPTION_ERROR;
         }
         o->threads = (int)n;
     } else if (strcmp(opt, "--rtol") == 0) {
         if (!(v = value_of(cmd, argc, argv, i)))
-            return -1;
+            return OPTION_ERROR;
         char *end;
         errno = 0;
         double r = strtod(v, &end);
@@ -113,21 +129,21 @@ int options_common(struct common_options *o, const char *cmd, int argc, char **a
         if (errno || end == v || *end != '\0' || !(r >= 1e-14 && r <= 1e-2)) {
             fprintf(stderr, "bentray %s: --rtol: expected a relative tolerance from 1e-14 to 1e-2, got '%s'\n",
                     cmd, v);
-            return -1;
+            return OPTION_ERROR;
         }
         o->rtol = r;
     } else if (strcmp(opt, "--set") == 0) {
         if (!(v = value_of(cmd, argc, argv, i)))
-            return -1;
+            return OPTION_ERROR;
         if (o->n_sets == OPTIONS_MAX_SETS) {
             fprintf(stderr, "bentray %s: --set: at most %d overrides\n", cmd, OPTIONS_MAX_SETS);
-            return -1;
+            return OPTION_ERROR;
         }
         o->sets[o->n_sets++] = v;
     } else {
-        return 0;
+        return OPTION_NOT_COMMON;
     }
-    return 1;
+    return OPTION_CONSUMED;
 }
 
 int options_engine_cpu(const struct common_options *o)
@@ -155,7 +171,7 @@ static int check_engine_options(const struct common_options *o, const char *cmd)
         if (o->engine) {
             fprintf(stderr, "bentray %s: --engine: this command runs both engines; GPU and CPU options both "
                             "apply\n", cmd);
-            return -1;
+            return OPTION_ERROR;
         }
     } else if (options_engine_cpu(o)) {
         wrong = o->backend && strcmp(o->backend, "auto") ? "--backend"
@@ -165,13 +181,13 @@ static int check_engine_options(const struct common_options *o, const char *cmd)
                                                          : NULL;
         if (wrong) {
             fprintf(stderr, "bentray %s: %s applies to the GPU engine only, not to --engine cpu\n", cmd, wrong);
-            return -1;
+            return OPTION_ERROR;
         }
     } else {
         wrong = o->threads ? "--threads" : o->rtol > 0.0 ? "--rtol" : NULL;
         if (wrong) {
             fprintf(stderr, "bentray %s: %s applies to the CPU engine only (add --engine cpu)\n", cmd, wrong);
-            return -1;
+            return OPTION_ERROR;
         }
     }
     return 0;

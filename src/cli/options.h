@@ -4,6 +4,7 @@
 #define BT_OPTIONS_H
 #include "ref/engine_cpu.h"
 #include "scene/scene.h"
+#include <stdio.h>
 
 #define OPTIONS_MAX_SETS 64
 
@@ -28,9 +29,17 @@ int option_parse_size(const char *text, int *w, int *h);
 /* Parse a non-negative integer option fully; 0 ok. */
 int option_parse_int(const char *text, long min, long max, long *out);
 
-/* Try to consume argv[*i] (and its value) as a common option. Returns 1 consumed, 0 not a
- * common option, -1 bad value (message printed naming the option). */
-int options_common(struct common_options *o, const char *cmd, int argc, char **argv, int *i);
+enum option_status { OPTION_ERROR = -1, OPTION_NOT_COMMON = 0, OPTION_CONSUMED = 1, OPTION_HELP = 2 };
+typedef void (*usage_fn)(FILE *out);
+
+/* Try to consume argv[*i] (and its value) as a common option or --help (usage printed on
+ * stdout). OPTION_ERROR: bad value, the message names the option. */
+enum option_status options_common(struct common_options *o, const char *cmd, int argc, char **argv, int *i,
+                                  usage_fn usage);
+/* Exit code for OPTION_HELP (0) and OPTION_ERROR (2). */
+int options_exit_code(enum option_status status);
+/* Report an option the command does not know; returns EXIT_USAGE. */
+int option_unknown(const char *cmd, const char *arg, usage_fn usage);
 
 /* Load the scene and apply --size, --precision, --no-mrt and --set. Prints the error
  * (file:line or option) and returns EXIT_USAGE on bad input, 0 on success. */
