@@ -86,7 +86,7 @@ demo: deps
 
 $(BUILD)/tests/%: tests/unit/%.c $(BUILD)/libbentray.a
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(PKG_CFLAGS) -Itests -o $@ $^ $(LDLIBS) $(TEST_LIBS)
+	$(CC) $(CFLAGS) $(PKG_CFLAGS) -Itests -MMD -MP -MF $@.d -o $@ $< $(BUILD)/libbentray.a $(LDLIBS) $(TEST_LIBS)
 
 test: deps
 	@$(MAKE) --no-print-directory test-unit test-render

@@ -12,22 +12,23 @@ uniform vec2 u_yukawa;          // zeta, mu (1 / scene length)
 // <= so that a precision which flushes it to zero still guards r == 0.
 const float MODEL_GUARD_RADIUS = 1e-9;
 
+// Computed for every ray, then selected: see the precision note in common.glsl.
 vec3 model_accel(vec3 x, vec3 v)
 {
     vec3 y = x - u_model_center;
     float r = length(y);
-    if (r <= MODEL_GUARD_RADIUS)
-        return vec3(0.0);
-    vec3 outward = y / r;
+    float safe_r = max(r, MODEL_GUARD_RADIUS);
+    vec3 outward = y / safe_r;
 #ifdef PROFILE_POLYNOMIAL
-    float q = min(r / u_poly_radius, 1.0);   // xi(R) = 0, so clamping gives zero force beyond R
+    float q = min(safe_r / u_poly_radius, 1.0);   // xi(R) = 0, so clamping gives zero force beyond R
     float xi = (2.0 * q - 3.0) * q * q + 1.0;
-    return -u_model_strength * xi * outward;
+    vec3 force = -u_model_strength * xi * outward;
 #else
     // zeta exp(-mu r) (1/r^2 + mu/r) written as (zeta exp(-mu r) / r) (1/r + mu): no r^2 to underflow.
-    float radial = u_yukawa.x * exp(-u_yukawa.y * r) / r * (1.0 / r + u_yukawa.y);
-    return radial * outward;
+    float radial = u_yukawa.x * exp(-u_yukawa.y * safe_r) / safe_r * (1.0 / safe_r + u_yukawa.y);
+    vec3 force = radial * outward;
 #endif
+    return r <= MODEL_GUARD_RADIUS ? vec3(0.0) : force;
 }
 
 vec3 model_initial_velocity(vec3 x, vec3 d)

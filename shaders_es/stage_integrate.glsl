@@ -15,7 +15,9 @@ bool travelling(vec3 x)
 {
     vec3 from_bound = x - u_bound_center;
     vec3 from_mass = x - u_capture_center;
-    return dot(from_bound, from_bound) < u_bound_radius2 && dot(from_mass, from_mass) > u_capture_radius2;
+    // a model without a horizon (capture radius 0) captures nothing, not even a ray at its centre
+    bool captured = u_capture_radius2 > 0.0 && dot(from_mass, from_mass) <= u_capture_radius2;
+    return dot(from_bound, from_bound) < u_bound_radius2 && !captured;
 }
 
 // Finite and not overflowing; NaN fails every comparison, so it fails this one too.

@@ -18,7 +18,7 @@ void main()
     vec3 from_bound = end.xyz - u_bound_center;
     vec3 from_mass = end.xyz - u_capture_center;
     float code = end.w < 0.0 ? CODE_FAILED
-               : dot(from_mass, from_mass) <= u_capture_radius2 ? CODE_CAPTURED
+               : u_capture_radius2 > 0.0 && dot(from_mass, from_mass) <= u_capture_radius2 ? CODE_CAPTURED
                : dot(from_bound, from_bound) >= u_bound_radius2 ? CODE_SKY : 0.0;
     // computed before the select: see the precision note in common.glsl
     vec4 end_hit = vec4(end.xyz, u_segment_index + 1.0);
