@@ -2,10 +2,8 @@
 #include "cli/commands.h"
 #include "cli/options.h"
 #include "io/png_io.h"
-#include "render/frame.h"
-#include <math.h>
+#include "cli/measure.h"
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
@@ -32,92 +30,44 @@ static void usage(FILE *out)
             "exit codes: 0 ok, 1 runtime failure, 2 bad usage or input\n");
 }
 
-/* One rendered frame from either engine: the image, its per-pixel records and a summary line. */
-struct rendered {
-    int width, height;
-    unsigned char *rgba;
-    struct dump dump;
-    long nonfinite;
-    char how[512];
-    struct render_result gpu;
-    struct cpu_image cpu;
-};
-
-static void summarise(const struct rendered *r, const struct scene *s)
+static void summarise(const struct measured *m, const struct scene *s)
 {
     long objects = 0, sky = 0, captured = 0, unfinished = 0, failed = 0;
-    size_t n = (size_t)r->width * r->height;
+    const struct dump *d = &m->dump;
+    size_t n = (size_t)d->width * d->height;
     for (size_t i = 0; i < n; i++) {
-        int32_t o = r->dump.records[i].outcome;
+        int32_t o = d->records[i].outcome;
         objects += o >= 0;
         sky += o == DUMP_SKY;
         captured += o == DUMP_CAPTURED;
         unfinished += o == DUMP_UNFINISHED;
         failed += o == DUMP_FAILED;
     }
-    fprintf(stderr, "%s: %dx%d, %s model, %s\n", s->name, r->width, r->height, model_name(s->model.type), r->how);
+    fprintf(stderr, "%s: %dx%d, %s model, %s\n", s->name, d->width, d->height, model_name(s->model.type), m->how);
     fprintf(stderr, "rays: %ld hit an object, %ld sky, %ld captured, %ld unfinished, %ld failed\n", objects, sky,
             captured, unfinished, failed);
     if (unfinished)
         fprintf(stderr, "note: %ld rays were still travelling after %d segments; they show the sky in their "
                         "last direction (raise render.segments or render.step)\n", unfinished, s->render.segments);
-    if (r->nonfinite)
-        fprintf(stderr, "warning: %ld non-finite values in the ray state\n", r->nonfinite);
+    if (m->nonfinite)
+        fprintf(stderr, "warning: %ld non-finite values in the ray state\n", m->nonfinite);
 }
 
-static long count_nonfinite(const struct render_result *res)
+/* Either engine; returns an exit code, m filled on EXIT_OK. */
+static int render_with(const struct common_options *o, const struct scene *s, struct measured *m)
 {
-    long nonfinite = 0;
-    size_t n = (size_t)res->width * res->height;
-    const float *arrays[4] = {res->position, res->velocity, res->hit, res->image};
-    for (int a = 0; a < 4; a++)
-        for (size_t k = 0; k < 4 * n; k++)
-            nonfinite += !isfinite(arrays[a][k]);
-    return nonfinite;
-}
-
-/* Returns an exit code; r is filled on EXIT_OK. */
-static int render_gpu(const struct scene *s, const char *backend, struct rendered *r)
-{
-    struct frame_info info;
     char err[2048];
-    int bad_input;
-    if (render_frame(s, backend, &r->gpu, 1, &info, err, sizeof err, &bad_input) != 0) {
-        fprintf(stderr, "bentray render: %s\n", err);
-        return bad_input ? EXIT_USAGE : EXIT_RUNTIME;
+    int bad_input = 0;
+    if (options_engine_cpu(o)) {
+        struct cpu_render_options opt;
+        options_cpu(o, s, &opt);
+        if (measure_cpu(s, &opt, m, err, sizeof err) == 0)
+            return EXIT_OK;
+    } else if (measure_gpu(s, o->backend, m, err, sizeof err, &bad_input) == 0) {
+        return EXIT_OK;
     }
-    char engine[32];
-    snprintf(engine, sizeof engine, "gpu %s", info.path_name);
-    if (result_to_dump(&r->gpu, s, engine, &r->dump) != 0) {
-        fprintf(stderr, "bentray render: out of memory\n");
-        return EXIT_RUNTIME;
-    }
-    r->width = r->gpu.width;
-    r->height = r->gpu.height;
-    r->rgba = r->gpu.rgba;
-    r->nonfinite = count_nonfinite(&r->gpu);
-    snprintf(r->how, sizeof r->how, "%s on %s (%s), %.3f s, %ld passes", info.path_description, info.backend,
-             info.renderer, r->gpu.seconds, r->gpu.passes);
-    return EXIT_OK;
-}
-
-static int render_cpu(const struct common_options *o, const struct scene *s, struct rendered *r)
-{
-    struct cpu_render_options opt;
-    char err[1024];
-    options_cpu(o, s, &opt);
-    if (cpu_render(s, &opt, &r->cpu, err, sizeof err) != 0) {
-        fprintf(stderr, "bentray render: %s\n", err);
-        return EXIT_RUNTIME;
-    }
-    r->width = r->cpu.width;
-    r->height = r->cpu.height;
-    r->rgba = r->cpu.rgba;
-    r->dump = r->cpu.dump;
-    r->cpu.dump.records = NULL;    /* now owned by r->dump */
-    snprintf(r->how, sizeof r->how, "CPU reference (Dormand-Prince 5(4), rtol %.0e), %.3f s, %ld steps, %ld rejected",
-             opt.ref.rtol, r->cpu.seconds, r->cpu.steps, r->cpu.rejected);
-    return EXIT_OK;
+    fprintf(stderr, "bentray render: %s\n", err);
+    return bad_input ? EXIT_USAGE : EXIT_RUNTIME;
 }
 
 int cmd_render(int argc, char **argv)
@@ -162,10 +112,11 @@ int cmd_render(int argc, char **argv)
                             "it)\n", k ? "--dump" : "--out", outputs[k]);
             return EXIT_USAGE;
         }
-    struct rendered r = {0};
+    struct measured r = {0};
     char err[2048];
-    rc = options_engine_cpu(&o) ? render_cpu(&o, &s, &r) : render_gpu(&s, o.backend, &r);
-    if (rc == EXIT_OK && png_write_rgba8(out_path, r.width, r.height, r.rgba, force, err, sizeof err) != 0) {
+    rc = render_with(&o, &s, &r);
+    if (rc == EXIT_OK &&
+        png_write_rgba8(out_path, r.dump.width, r.dump.height, r.rgba, force, err, sizeof err) != 0) {
         fprintf(stderr, "bentray render: --out: %s\n", err);
         rc = EXIT_RUNTIME;
     } else if (rc == EXIT_OK && dump_path && dump_write(dump_path, &r.dump, force, err, sizeof err) != 0) {
@@ -177,8 +128,6 @@ int cmd_render(int argc, char **argv)
             summarise(&r, &s);
         printf("%s\n", out_path);
     }
-    dump_free(&r.dump);
-    render_result_free(&r.gpu);
-    cpu_image_free(&r.cpu);
+    measured_free(&r);
     return rc;
 }

@@ -1,8 +1,20 @@
 #include "cli/measure.h"
 #include "render/frame.h"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+static long count_nonfinite(const struct render_result *res)
+{
+    long nonfinite = 0;
+    size_t n = (size_t)res->width * res->height;
+    const float *arrays[4] = {res->position, res->velocity, res->hit, res->image};
+    for (int a = 0; a < 4; a++)
+        for (size_t k = 0; k < 4 * n; k++)
+            nonfinite += !isfinite(arrays[a][k]);
+    return nonfinite;
+}
 
 int measure_gpu(const struct scene *s, const char *backend, struct measured *m, char *err, size_t errlen,
                 int *bad_input)
@@ -23,6 +35,9 @@ int measure_gpu(const struct scene *s, const char *backend, struct measured *m, 
     res.rgba = NULL;                /* kept; the ray state is not */
     m->seconds = res.seconds;
     m->work = res.passes;
+    m->nonfinite = count_nonfinite(&res);
+    snprintf(m->how, sizeof m->how, "%s on %s (%s), %.3f s, %ld passes", info.path_description, info.backend,
+             info.renderer, res.seconds, res.passes);
     render_result_free(&res);
     return 0;
 }
@@ -40,6 +55,8 @@ int measure_cpu(const struct scene *s, const struct cpu_render_options *o, struc
     m->work = img.steps;
     snprintf(m->engine, sizeof m->engine, "%s", img.dump.engine);
     snprintf(m->device, sizeof m->device, "%d CPU threads", img.threads);
+    snprintf(m->how, sizeof m->how, "CPU reference (Dormand-Prince 5(4), rtol %.0e), %.3f s, %ld steps, %ld rejected",
+             o->ref.rtol, img.seconds, img.steps, img.rejected);
     return 0;
 }
 

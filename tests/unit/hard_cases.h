@@ -18,6 +18,7 @@
 #include "render/frame.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
+#include "fixture.h"
 
 /* Critical impact parameter of Schwarzschild photon orbits, in units of M. */
 #define HC_B_CRIT (3.0 * 1.7320508075688772)
@@ -38,18 +39,7 @@ static inline struct gl_context *hc_context(void)
 /* A committed scene at a small size, with optional "section.key=value" overrides. */
 static inline void hc_load(struct scene *s, const char *name, int width, int height, const char *const *sets)
 {
-    char path[256];
-    struct scene_error err;
-    snprintf(path, sizeof path, "assets/scenes/%s.scene", name);
-    if (scene_load(s, path, &err) != 0)
-        fail_msg("%s: %s", err.where, err.message);
-    for (int i = 0; sets && sets[i]; i++)
-        if (scene_set(s, sets[i], &err) != 0)
-            fail_msg("%s: %s", err.where, err.message);
-    s->render.width = width;
-    s->render.height = height;
-    if (scene_validate(s, &err) != 0)
-        fail_msg("%s: %s", err.where, err.message);
+    fixture_load_scene(s, name, width, height, sets);
 }
 
 static inline void hc_validate(const struct scene *s)
@@ -72,19 +62,8 @@ static inline struct object *hc_add_object(struct scene *s, enum primitive_type 
 {
     assert_true(s->n_objects < SCENE_MAX_OBJECTS);
     struct object *o = &s->objects[s->n_objects++];
-    memset(o, 0, sizeof *o);
-    snprintf(o->name, sizeof o->name, "%s", name);
+    scene_object_defaults(o, name);
     o->type = type;
-    o->normal = v3(0.0, 1.0, 0.0);
-    o->pole = v3(0.0, 1.0, 0.0);
-    o->uv[1][0] = 1.0;
-    o->uv[2][1] = 1.0;
-    o->material.color = v3(0.8, 0.8, 0.8);
-    o->material.ambient = 0.2;
-    o->material.diffuse = 0.8;
-    o->material.specular = 0.3;
-    o->material.shininess = 32.0;
-    o->material.texture = -1;
     return o;
 }
 
@@ -155,6 +134,16 @@ static inline void hc_cpu_render(const struct scene *s, struct cpu_image *img)
     ref_options_default(&o.ref, s);
     if (cpu_render(s, &o, img, err, sizeof err) != 0)
         fail_msg("cpu render: %s", err);
+}
+
+/* s at width x height, validated, on both engines. */
+static inline void hc_render_both(struct scene *s, int width, int height, struct cpu_image *cpu, struct hc_gpu *g)
+{
+    s->render.width = width;
+    s->render.height = height;
+    hc_validate(s);
+    hc_cpu_render(s, cpu);
+    hc_gpu_render(s, g);
 }
 
 /* The ray from the camera in viewing direction dir (unit), as cpu_render traces a pixel. */

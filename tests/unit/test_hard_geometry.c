@@ -236,13 +236,9 @@ static void test_segment_joints(void **state)
             o->axis_v = v3(0.0, 1.0, 0.0);
             hc_aim(&s, v3(0.0, 0.0, cam_z[c]), v3(0.0, 0.0, -1.0));
             s.camera.fov_deg = 0.5;
-            s.render.width = W;
-            s.render.height = H;
-            hc_validate(&s);
             struct cpu_image cpu;
             struct hc_gpu g;
-            hc_cpu_render(&s, &cpu);
-            hc_gpu_render(&s, &g);
+            hc_render_both(&s, W, H, &cpu, &g);
             long cracks_cpu = 0, cracks_gpu = 0;
             double off_plane_cpu = 0, off_plane_gpu = 0, depth_cpu = 0, depth_gpu = 0, apart = 0;
             for (int j = 0; j < H; j++)

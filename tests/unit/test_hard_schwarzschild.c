@@ -182,13 +182,9 @@ static void test_observers(void **state)
         empty_hole(&s, w->bound, w->step, w->steps_per_segment, w->segments);
         hc_aim(&s, v3(0.0, 0.0, w->r), w->dir);
         s.camera.fov_deg = w->fov;
-        s.render.width = W;
-        s.render.height = H;
-        hc_validate(&s);
         struct cpu_image cpu;
         struct hc_gpu g;
-        hc_cpu_render(&s, &cpu);
-        hc_gpu_render(&s, &g);
+        hc_render_both(&s, W, H, &cpu, &g);
         int escape = 0, cpu_wrong = 0, gpu_wrong = 0, cpu_skipped = 0, gpu_skipped = 0, gpu_wrong_in_margin = 0;
         int unfinished = 0;
         double nearest = INFINITY;

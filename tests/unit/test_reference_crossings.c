@@ -13,6 +13,7 @@
 #include "ref/dump.h"
 #include "ref/reference.h"
 #include "scene/scene.h"
+#include "scene/scene_keys.h"
 
 /* A weak attractive 1/r potential around the origin: rays are gently curved, so Dormand-Prince
  * takes steps several units long, far longer than the small objects placed on their way. */
@@ -31,23 +32,20 @@ static void weak_field_scene(struct scene *s)
 static void add_sphere(struct scene *s, vec3d c, double r)
 {
     struct object *o = &s->objects[s->n_objects++];
-    memset(o, 0, sizeof *o);
+    scene_object_defaults(o, "sphere");
     o->type = PRIM_SPHERE;
     o->center = c;
     o->radius = r;
-    o->pole = v3(0, 1, 0);
-    o->material.texture = -1;
 }
 
 static void add_triangle(struct scene *s, vec3d a, vec3d b, vec3d c)
 {
     struct object *o = &s->objects[s->n_objects++];
-    memset(o, 0, sizeof *o);
+    scene_object_defaults(o, "triangle");
     o->type = PRIM_TRIANGLE;
     o->vertex[0] = a;
     o->vertex[1] = b;
     o->vertex[2] = c;
-    o->material.texture = -1;
 }
 
 static struct ref_ray trace(const struct scene *s, double rtol, vec3d x0, vec3d dir)

@@ -13,6 +13,7 @@
 #include "io/png_io.h"
 #include "ref/straight.h"
 #include "render/frame.h"
+#include "fixture.h"
 
 #define TEST_WIDTH 64
 #define TEST_HEIGHT 48
@@ -23,18 +24,7 @@ static const char *const scenes[] = {"test", "lorenz", "potential", "refraction"
 
 static void load(struct scene *s, const char *name, const char *const *sets)
 {
-    char path[256];
-    struct scene_error err;
-    snprintf(path, sizeof path, "assets/scenes/%s.scene", name);
-    if (scene_load(s, path, &err) != 0)
-        fail_msg("%s: %s", err.where, err.message);
-    for (int i = 0; sets && sets[i]; i++)
-        if (scene_set(s, sets[i], &err) != 0)
-            fail_msg("%s: %s", err.where, err.message);
-    s->render.width = TEST_WIDTH;
-    s->render.height = TEST_HEIGHT;
-    if (scene_validate(s, &err) != 0)
-        fail_msg("%s: %s", err.where, err.message);
+    fixture_load_scene(s, name, TEST_WIDTH, TEST_HEIGHT, sets);
 }
 
 static void render(const struct scene *s, const char *backend, struct render_result *res, struct dump *d,
