@@ -1,5 +1,5 @@
-// Stage 2, ray integration (paper section 3.2): STEPS_PER_PASS steps of eq. (1) unrolled in
-// one shader. A ray stops moving once it has a hit, has left the bounding sphere, has been
+// Stage 2, ray integration (paper sections 3.2 and 4.2): STEPS_PER_PASS steps of eq. (1) unrolled
+// in one shader, of fixed size or adaptive (the ray's step lives in velocity.w). A ray stops moving once it has a hit, has left the bounding sphere, has been
 // captured, or its state stopped being finite; the last finite state is kept.
 uniform sampler2D u_ray_position;
 uniform sampler2D u_ray_velocity;
@@ -27,10 +27,55 @@ bool finite_state(vec3 x, vec3 v)
 }
 
 #ifndef MODEL_FLAT
-// One step of eq. (1): Euler as the paper's eq. (2), or classical RK4.
+#ifdef METHOD_DOPRI5
+// Dormand and Prince's RK5(4)7M pair (src/physics/model.c has the same tableau as fractions; the
+// decimals are written out because Mesa folds constant expressions such as 7.0/9.0 at 16 bits).
+// x1, v1: the fifth-order solution; ex, ev: its difference to the fourth-order one (the last
+// stage, at the new point, is evaluated only when the error is wanted).
+void dopri5_step(vec3 x, vec3 v, float h, out vec3 x1, out vec3 v1, out vec3 ex, out vec3 ev)
+{
+    vec3 k1x = v;
+    vec3 k1v = model_accel(x, v);
+    vec3 k2x = v + h * (0.2 * k1v);
+    vec3 k2v = model_accel(x + h * (0.2 * k1x), k2x);
+    vec3 k3x = v + h * (0.075 * k1v + 0.225 * k2v);
+    vec3 k3v = model_accel(x + h * (0.075 * k1x + 0.225 * k2x), k3x);
+    vec3 k4x = v + h * (0.9777777777777777 * k1v - 3.7333333333333334 * k2v + 3.5555555555555554 * k3v);
+    vec3 k4v = model_accel(x + h * (0.9777777777777777 * k1x - 3.7333333333333334 * k2x + 3.5555555555555554 * k3x),
+                           k4x);
+    vec3 k5x = v + h * (2.9525986892242035 * k1v - 11.595793324188385 * k2v + 9.822892851699436 * k3v
+                        - 0.2908093278463649 * k4v);
+    vec3 k5v = model_accel(x + h * (2.9525986892242035 * k1x - 11.595793324188385 * k2x + 9.822892851699436 * k3x
+                                    - 0.2908093278463649 * k4x), k5x);
+    vec3 k6x = v + h * (2.8462752525252526 * k1v - 10.757575757575758 * k2v + 8.906422717743473 * k3v
+                        + 0.2784090909090909 * k4v - 0.2735313036020583 * k5v);
+    vec3 k6v = model_accel(x + h * (2.8462752525252526 * k1x - 10.757575757575758 * k2x + 8.906422717743473 * k3x
+                                    + 0.2784090909090909 * k4x - 0.2735313036020583 * k5x), k6x);
+    x1 = x + h * (0.09114583333333333 * k1x + 0.44923629829290207 * k3x + 0.6510416666666666 * k4x
+                  - 0.322376179245283 * k5x + 0.13095238095238096 * k6x);
+    v1 = v + h * (0.09114583333333333 * k1v + 0.44923629829290207 * k3v + 0.6510416666666666 * k4v
+                  - 0.322376179245283 * k5v + 0.13095238095238096 * k6v);
+#ifdef STEP_EMBEDDED
+    vec3 k7x = v1;
+    vec3 k7v = model_accel(x1, v1);
+    ex = h * (0.0012326388888888888 * k1x - 0.004252770290506139 * k3x + 0.036979166666666664 * k4x
+              - 0.05086379716981132 * k5x + 0.0419047619047619 * k6x - 0.025 * k7x);
+    ev = h * (0.0012326388888888888 * k1v - 0.004252770290506139 * k3v + 0.036979166666666664 * k4v
+              - 0.05086379716981132 * k5v + 0.0419047619047619 * k6v - 0.025 * k7v);
+#else
+    ex = vec3(0.0);
+    ev = vec3(0.0);
+#endif
+}
+#endif
+
+// One step of eq. (1): Euler as the paper's eq. (2), classical RK4, or Dormand-Prince 5.
 void model_step(vec3 x, vec3 v, float h, out vec3 x1, out vec3 v1)
 {
-#ifdef METHOD_RK4
+#if defined(METHOD_DOPRI5)
+    vec3 ex, ev;
+    dopri5_step(x, v, h, x1, v1, ex, ev);
+#elif defined(METHOD_RK4)
     vec3 k1x = v;
     vec3 k1v = model_accel(x, v);
     vec3 k2x = v + 0.5 * h * k1v;
@@ -46,6 +91,51 @@ void model_step(vec3 x, vec3 v, float h, out vec3 x1, out vec3 v1)
     v1 = v + h * model_accel(x, v);
 #endif
 }
+
+#if defined(STEP_DOUBLING) || defined(STEP_EMBEDDED)
+uniform float u_tolerance;            // error estimate above which a step is rejected
+uniform float u_grow_below;           // step doubling: error estimate below which the step doubles
+uniform float u_step_min;
+uniform float u_step_max;
+const float ERROR_LIMIT = 1.0e30;     // an estimate beyond this (or NaN) rejects the step
+#endif
+
+// One adaptive (or fixed) step from (x, v) with step h: the new state, whether it is accepted,
+// and the step to take next (paper section 4.2).
+void controlled_step(vec3 x, vec3 v, float h, out vec3 x1, out vec3 v1, out bool accept, out float h_next)
+{
+#if defined(STEP_DOUBLING)
+    // one full step against two half steps; the two half steps are kept
+    vec3 x_full, v_full, x_mid, v_mid;
+    float half_h = 0.5 * h;
+    model_step(x, v, h, x_full, v_full);
+    model_step(x, v, half_h, x_mid, v_mid);
+    model_step(x_mid, v_mid, half_h, x1, v1);
+    float error = length(x1 - x_full) + h * length(v1 - v_full);
+    float shrunk = max(half_h, u_step_min);
+    float grown = min(2.0 * h, u_step_max);
+    bool too_big = (error > u_tolerance || !(error < ERROR_LIMIT)) && h > u_step_min;
+    accept = !too_big;
+    float kept_or_grown = error < u_grow_below ? grown : h;
+    h_next = too_big ? shrunk : kept_or_grown;
+#elif defined(STEP_EMBEDDED)
+    // the usual controller: h * 0.9 (tolerance / error)^(1/5), changing by a factor 0.2 to 5 at most
+    vec3 ex, ev;
+    dopri5_step(x, v, h, x1, v1, ex, ev);
+    float error = length(ex) + h * length(ev);
+    float ratio = u_tolerance / max(error, 1.0e-30);
+    float factor = clamp(0.9 * pow(ratio, 0.2), 0.2, 5.0);
+    float shrunk = max(0.2 * h, u_step_min);
+    float controlled = clamp(h * factor, u_step_min, u_step_max);
+    bool too_big = (error > u_tolerance || !(error < ERROR_LIMIT)) && h > u_step_min;
+    accept = !too_big;
+    h_next = error < ERROR_LIMIT ? controlled : shrunk;
+#else
+    model_step(x, v, h, x1, v1);
+    accept = true;
+    h_next = h;
+#endif
+}
 #endif
 
 // The ray state is updated here, in main, with selects: see the precision note in common.glsl.
@@ -56,6 +146,7 @@ void main()
     vec3 x = position.xyz;
     vec3 v = velocity.xyz;
     float steps = position.w;
+    float h = velocity.w;
     bool running = fetch(u_hit).w >= NO_HIT && steps >= 0.0 && travelling(x);
 #ifdef MODEL_FLAT
     // Flat space is not integrated: one straight segment to where the ray leaves the bounding sphere.
@@ -70,20 +161,22 @@ void main()
     x = running ? exit_point : x;
     steps = running ? next_steps : steps;
 #else
-    float h = velocity.w;
     for (int i = 0; i < STEPS_PER_PASS; i++) {
         vec3 x1, v1;
-        model_step(x, v, h, x1, v1);
-        bool ok = finite_state(x1, v1);
-        bool take = running && ok;
+        bool accept;
+        float h_next;
+        controlled_step(x, v, h, x1, v1, accept, h_next);
+        bool ok = finite_state(x1, v1) || !accept;
+        bool take = running && ok && accept;
         float next_steps = steps + 1.0;
         float failed_steps = -1.0 - steps;
         x = take ? x1 : x;
         v = take ? v1 : v;
-        steps = take ? next_steps : (running ? failed_steps : steps);
-        running = take && travelling(x);
+        steps = take ? next_steps : (running && !ok ? failed_steps : steps);
+        h = running && ok ? h_next : h;
+        running = running && ok && travelling(x);
     }
 #endif
     WRITE_TARGET0(vec4(x, steps));
-    WRITE_TARGET1(vec4(v, velocity.w));
+    WRITE_TARGET1(vec4(v, h));
 }

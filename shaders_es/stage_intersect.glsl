@@ -1,59 +1,109 @@
-// Stage 3, ray-object intersection and local illumination (paper sections 3.3, 3.4): one
-// object against the current segment of every ray. The depth key (segment index + fraction)
-// orders hits along the curved ray; a closer hit replaces the stored one.
+// Stage 3, ray-object intersection and local illumination (paper sections 3.3, 3.4): a batch of
+// BATCH_SIZE objects against the current segment of every ray (batch 1 is the paper's crossbar of
+// one pass per object). The C side lists the batch as BATCH_TESTS, one TEST_<PRIMITIVE>(slot) per
+// object in scene order, and defines HAS_PRIM_<TYPE> for the types present, so the shader holds
+// only the primitives of this batch. The depth key (segment index + fraction) orders hits along the
+// curved ray; a closer hit replaces the stored one, in scene order, exactly as one pass per object
+// would; the closest is shaded once.
 uniform sampler2D u_segment_start;
 uniform sampler2D u_segment_end;
 uniform sampler2D u_hit;
 uniform sampler2D u_image;
 uniform float u_segment_index;
-uniform float u_object_id;
-// Geometry of this object (which fields are used depends on the primitive)
-uniform vec3 u_center;
-uniform float u_radius;
-uniform float u_inner_radius;
-uniform vec3 u_normal;
-uniform vec3 u_axis_u;                // rect: half edge; sphere, disk: texture reference axis
-uniform vec3 u_axis_v;                // rect: half edge; sphere: pole
-uniform vec3 u_vertex0;
-uniform vec3 u_vertex1;
-uniform vec3 u_vertex2;
-uniform vec2 u_uv0;
-uniform vec2 u_uv1;
-uniform vec2 u_uv2;
+// Per slot, five geometry vectors (which depends on the primitive, see src/render/stage_intersect.c)
+// and four material vectors.
+uniform vec4 u_geometry[5 * BATCH_SIZE];
+uniform vec4 u_materials[4 * BATCH_SIZE];
+#ifdef TEXTURED
+uniform sampler2D u_textures[BATCH_SIZE];
+// BATCH_TEXTURES lists SAMPLE_TEXTURE(slot) for the textured objects of the batch
+#define SAMPLE_TEXTURE(n) { vec3 sampled = texture2D(u_textures[n], best.uv).rgb; \
+                            texel = best.slot == float(n) ? sampled : texel; }
+#endif
 
 const float PI = 3.14159265358979;
 
-// Hit of the segment a -> b: fraction t, surface normal and texture coordinates.
-bool hit_object(vec3 a, vec3 b, out float t, out vec3 normal, out vec2 uv)
+#define GEOMETRY(slot, k) u_geometry[5 * (slot) + (k)]
+#define MATERIAL(slot, k) u_materials[4 * (slot) + (k)]
+
+#ifdef HAS_PRIM_SPHERE
+// g0 = centre, radius; g1 = texture reference axis; g2 = pole
+bool object_sphere(vec3 a, vec3 b, vec4 g0, vec4 g1, vec4 g2, out float t, out vec3 normal, out vec2 uv)
 {
-    bool found;
-    vec3 p;
-#if defined(PRIM_SPHERE)
-    found = hit_sphere(a, b, u_center, u_radius, t);
-    p = mix(a, b, t);
-    normal = (p - u_center) / u_radius;
-    vec3 third = cross(u_axis_v, u_axis_u);
-    uv = vec2(atan(dot(normal, third), dot(normal, u_axis_u)) / (2.0 * PI) + 0.5,
-              acos(clamp(dot(normal, u_axis_v), -1.0, 1.0)) / PI);
-#elif defined(PRIM_TRIANGLE)
-    vec2 bary;
-    found = hit_triangle(a, b, u_vertex0, u_vertex1, u_vertex2, t, bary);
-    normal = normalize(cross(u_vertex1 - u_vertex0, u_vertex2 - u_vertex0));
-    uv = (1.0 - bary.x - bary.y) * u_uv0 + bary.x * u_uv1 + bary.y * u_uv2;
-#elif defined(PRIM_DISK)
-    found = hit_disk(a, b, u_center, u_normal, u_inner_radius, u_radius, t);
-    p = mix(a, b, t) - u_center;
-    normal = u_normal;
-    vec3 third = cross(u_normal, u_axis_u);
-    uv = vec2((length(p) - u_inner_radius) / max(u_radius - u_inner_radius, 1e-6),
-              atan(dot(p, third), dot(p, u_axis_u)) / (2.0 * PI) + 0.5);
-#else
-    vec2 s;
-    found = hit_rect(a, b, u_center, u_axis_u, u_axis_v, t, s);
-    normal = normalize(cross(u_axis_u, u_axis_v));
-    uv = 0.5 * (s + 1.0);
-#endif
+    bool found = hit_sphere(a, b, g0.xyz, g0.w, t);
+    vec3 p = mix(a, b, t);
+    normal = (p - g0.xyz) / g0.w;
+    vec3 third = cross(g2.xyz, g1.xyz);
+    uv = vec2(atan(dot(normal, third), dot(normal, g1.xyz)) / (2.0 * PI) + 0.5,
+              acos(clamp(dot(normal, g2.xyz), -1.0, 1.0)) / PI);
     return found;
+}
+#define TEST_SPHERE(slot) consider(object_sphere(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), GEOMETRY(slot, 2), \
+                                                 t, normal, uv), t, normal, uv, float(slot), best);
+#endif
+
+#ifdef HAS_PRIM_TRIANGLE
+// g0, g1, g2 = vertices; g3 = uv0, uv1; g4.xy = uv2
+bool object_triangle(vec3 a, vec3 b, vec4 g0, vec4 g1, vec4 g2, vec4 g3, vec4 g4, out float t, out vec3 normal,
+                     out vec2 uv)
+{
+    vec2 bary;
+    bool found = hit_triangle(a, b, g0.xyz, g1.xyz, g2.xyz, t, bary);
+    normal = normalize(cross(g1.xyz - g0.xyz, g2.xyz - g0.xyz));
+    uv = (1.0 - bary.x - bary.y) * g3.xy + bary.x * g3.zw + bary.y * g4.xy;
+    return found;
+}
+#define TEST_TRIANGLE(slot) consider(object_triangle(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), GEOMETRY(slot, 2), \
+                                                     GEOMETRY(slot, 3), GEOMETRY(slot, 4), t, normal, uv), \
+                                     t, normal, uv, float(slot), best);
+#endif
+
+#ifdef HAS_PRIM_DISK
+// g0 = centre, outer radius; g1 = normal, inner radius; g2 = texture reference axis
+bool object_disk(vec3 a, vec3 b, vec4 g0, vec4 g1, vec4 g2, out float t, out vec3 normal, out vec2 uv)
+{
+    bool found = hit_disk(a, b, g0.xyz, g1.xyz, g1.w, g0.w, t);
+    vec3 p = mix(a, b, t) - g0.xyz;
+    normal = g1.xyz;
+    vec3 third = cross(g1.xyz, g2.xyz);
+    uv = vec2((length(p) - g1.w) / max(g0.w - g1.w, 1e-6), atan(dot(p, third), dot(p, g2.xyz)) / (2.0 * PI) + 0.5);
+    return found;
+}
+#define TEST_DISK(slot) consider(object_disk(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), GEOMETRY(slot, 2), \
+                                             t, normal, uv), t, normal, uv, float(slot), best);
+#endif
+
+#ifdef HAS_PRIM_RECT
+// g0 = centre; g1, g2 = half edges
+bool object_rect(vec3 a, vec3 b, vec4 g0, vec4 g1, vec4 g2, out float t, out vec3 normal, out vec2 uv)
+{
+    vec2 s;
+    bool found = hit_rect(a, b, g0.xyz, g1.xyz, g2.xyz, t, s);
+    normal = normalize(cross(g1.xyz, g2.xyz));
+    uv = 0.5 * (s + 1.0);
+    return found;
+}
+#define TEST_RECT(slot) consider(object_rect(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), GEOMETRY(slot, 2), \
+                                             t, normal, uv), t, normal, uv, float(slot), best);
+#endif
+
+// The closest hit of the batch so far: fraction t, normal, uv; key = depth key; slot < 0: none
+struct candidate {
+    float key, t, slot;
+    vec3 normal;
+    vec2 uv;
+};
+
+// Computed for every object, then selected: see the precision note in common.glsl.
+void consider(bool found, float t, vec3 normal, vec2 uv, float slot, inout candidate best)
+{
+    float key = u_segment_index + t;
+    bool closer = found && key < best.key;
+    best.key = closer ? key : best.key;
+    best.t = closer ? t : best.t;
+    best.slot = closer ? slot : best.slot;
+    best.normal = closer ? normal : best.normal;
+    best.uv = closer ? uv : best.uv;
 }
 
 void main()
@@ -62,18 +112,34 @@ void main()
     vec4 image = fetch(u_image);
     vec3 a = fetch(u_segment_start).xyz;
     vec3 b = fetch(u_segment_end).xyz;
+    candidate best = candidate(hit.w, 0.0, -1.0, vec3(0.0), vec2(0.0));
     float t;
     vec3 normal;
     vec2 uv;
-    bool found = hit_object(a, b, t, normal, uv);
+    BATCH_TESTS
+    // the chosen object's material
+    vec4 color_checker = MATERIAL(0, 0), emission_id = MATERIAL(0, 1), factors = MATERIAL(0, 2),
+         checker_color = MATERIAL(0, 3);
+    for (int i = 1; i < BATCH_SIZE; i++) {
+        bool chosen = best.slot == float(i);
+        color_checker = chosen ? MATERIAL(i, 0) : color_checker;
+        emission_id = chosen ? MATERIAL(i, 1) : emission_id;
+        factors = chosen ? MATERIAL(i, 2) : factors;
+        checker_color = chosen ? MATERIAL(i, 3) : checker_color;
+    }
+    vec3 texel = vec3(1.0);
+#ifdef TEXTURED
+    BATCH_TEXTURES
+#endif
+    vec3 p = mix(a, b, best.t);
+    surface_material m = surface_material(color_checker.rgb * texel, color_checker.w, emission_id.rgb, factors,
+                                        checker_color.rgb);
     // computed before the select: see the precision note in common.glsl
-    float key = u_segment_index + t;
-    vec3 p = mix(a, b, t);
-    vec4 new_hit = vec4(p, key);
-    vec4 new_image = vec4(shade(p, normal, uv, normalize(b - a)), u_object_id);
-    bool closer = found && key < hit.w;
-    hit = closer ? new_hit : hit;
-    image = closer ? new_image : image;
+    vec4 new_hit = vec4(p, best.key);
+    vec4 new_image = vec4(shade(p, best.normal, best.uv, normalize(b - a), m), emission_id.w);
+    bool found = best.slot >= 0.0;
+    hit = found ? new_hit : hit;
+    image = found ? new_image : image;
     WRITE_TARGET0(hit);
     WRITE_TARGET1(image);
 }

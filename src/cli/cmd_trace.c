@@ -169,6 +169,9 @@ int cmd_trace(int argc, char **argv)
         fprintf(stderr, "bentray trace: out of memory\n");
         return EXIT_RUNTIME;
     }
+    /* The per-segment read-back looks at the live ray state, which early ray termination stops
+     * updating once a ray is retired; early-z never changes a ray's path (test_acceleration). */
+    s.render.early_z = 0;
     rc = options_engine_cpu(&o) ? trace_cpu(&o, &s, px, py, &pl) : trace_gpu(&o, &s, px, py, &pl);
     free(pl.points);
     return rc;

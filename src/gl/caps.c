@@ -219,6 +219,18 @@ int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, char *err, si
     c->max_draw_buffers = 1;
     if (!c->is_es || c->major >= 3 || gl_has_extension("GL_EXT_draw_buffers"))
         glGetIntegerv(GL_MAX_DRAW_BUFFERS, &c->max_draw_buffers);
+    /* the batch of objects per intersection pass is bounded by these two */
+    glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_VECTORS, &c->max_fragment_uniform_vectors);
+    if (c->max_fragment_uniform_vectors <= 0) {
+        GLint components = 0;
+        while (glGetError() != GL_NO_ERROR) {
+        }
+        glGetIntegerv(0x8B49 /* GL_MAX_FRAGMENT_UNIFORM_COMPONENTS, desktop GL */, &components);
+        c->max_fragment_uniform_vectors = components > 0 ? components / 4 : 16; /* 16: the GLES2 minimum */
+    }
+    glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &c->max_texture_units);
+    if (c->max_texture_units <= 0)
+        c->max_texture_units = 8;                                               /* the GLES2 minimum */
     GLint range[2] = {0, 0}, precision = 0;
     glGetShaderPrecisionFormat(GL_FRAGMENT_SHADER, GL_HIGH_FLOAT, range, &precision);
     c->fragment_highp_bits = precision;

@@ -24,6 +24,7 @@ struct gl_caps {
     int is_es, major, minor;
     int fragment_highp, fragment_highp_bits;
     int max_texture_size, max_draw_buffers;
+    int max_fragment_uniform_vectors, max_texture_units;
     int mrt_works;
     char mrt_why[160];
     int n_formats;

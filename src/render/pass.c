@@ -38,7 +38,11 @@ int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GL
         }
         if (set_uniforms)
             set_uniforms(prog, arg);
-        quad_draw(prog, 0.0f);
+        if (r->depth_write_last)
+            glDepthMask(k == sp->n_programs - 1 ? GL_TRUE : GL_FALSE);
+        quad_draw(prog, r->quad_z);
+        if (r->depth_write_last)
+            glDepthMask(GL_FALSE);
         r->passes++;
     }
     return 0;

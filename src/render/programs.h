@@ -5,7 +5,7 @@
 #include "gl/shader.h"
 
 #define PROGRAMS_MAX 64
-#define PROGRAMS_KEY_LEN 512
+#define PROGRAMS_KEY_LEN 1280
 
 /* A stage that writes two targets: one program with MRT, or one program per target. */
 struct stage_program {

@@ -19,7 +19,14 @@ int raystate_init(struct raystate *rs, const struct render_path *path, int width
         rs->hit[i] = texture_create_nearest(f->internal_format, f->format, f->type, width, height);
         rs->image[i] = texture_create_nearest(f->internal_format, f->format, f->type, width, height);
     }
+    GLuint *results[4] = {&rs->result_position, &rs->result_velocity, &rs->result_hit, &rs->result_image};
+    for (int i = 0; i < 4; i++)
+        *results[i] = texture_create_nearest(f->internal_format, f->format, f->type, width, height);
     rs->final_color = texture_create_nearest(GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+    /* 16 bits are plenty: the buffer holds only 0 (terminated) and 1, and the quads sit at 0 and 0.5 */
+    glGenRenderbuffers(1, &rs->depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, rs->depth);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT16, width, height);
     return gl_check("allocating the ray-state textures", err, errlen);
 }
 
@@ -31,7 +38,10 @@ void raystate_release(struct raystate *rs)
     glDeleteTextures(2, rs->velocity);
     glDeleteTextures(2, rs->hit);
     glDeleteTextures(2, rs->image);
+    GLuint results[4] = {rs->result_position, rs->result_velocity, rs->result_hit, rs->result_image};
+    glDeleteTextures(4, results);
     glDeleteTextures(1, &rs->final_color);
+    glDeleteRenderbuffers(1, &rs->depth);
     memset(rs, 0, sizeof *rs);
 }
 
@@ -53,6 +63,7 @@ GLuint raystate_fbo(struct raystate *rs, GLuint target0, GLuint target1, char *e
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, target1, 0);
         glDrawBuffers(2, both);    /* draw-buffer state belongs to the framebuffer: set once */
     }
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rs->depth);
     GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         glDeleteFramebuffers(1, &fbo);

@@ -1,6 +1,11 @@
 /* The ray state on the GPU (paper sections 3.1-3.3): float RGBA textures, one texel per pixel.
  * Layout of each texture: shaders_es/common.glsl. Positions are triple-buffered so that the
- * start of a segment survives the integration passes that build it; the rest ping-pong. */
+ * start of a segment survives the integration passes that build it; the rest ping-pong.
+ *
+ * Early ray termination (paper section 4.1) skips finished rays through the early-z test, so
+ * their texels in the ping-pong copies stop being written and go stale. The termination test
+ * therefore copies a ray's final state, once, into the result textures (never read while they
+ * are written), and marks the ray in the depth buffer that every ray-state framebuffer shares. */
 #ifndef BT_RAYSTATE_H
 #define BT_RAYSTATE_H
 #include "gl/gl_api.h"
@@ -18,6 +23,8 @@
 struct raystate {
     int width, height;
     GLuint position[3], velocity[2], hit[2], image[2];
+    GLuint result_position, result_velocity, result_hit, result_image; /* final state of each ray */
+    GLuint depth;                  /* renderbuffer: 0 where a ray has been terminated, 1 elsewhere */
     GLuint final_color;            /* RGBA8 image for presentation and PNG */
     int cur_position, cur_velocity, cur_hit;  /* indices of the current copies */
     struct { GLuint target0, target1, fbo; } fbos[RAYSTATE_MAX_FBOS];
@@ -27,7 +34,8 @@ struct raystate {
 int raystate_init(struct raystate *rs, const struct render_path *path, int width, int height,
                   char *err, size_t errlen);
 void raystate_release(struct raystate *rs);
-/* Framebuffer with target0 (and target1 when nonzero) attached; made once and cached. */
+/* Framebuffer with target0 (and target1 when nonzero) and the shared depth buffer attached;
+ * made once and cached. */
 GLuint raystate_fbo(struct raystate *rs, GLuint target0, GLuint target1, char *err, size_t errlen);
 /* Read one texture back as floats, top row first (image order): w*h*4 floats. */
 int raystate_read(struct raystate *rs, GLuint texture, float *rgba_top_down, char *err, size_t errlen);

@@ -42,9 +42,12 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
         return NULL;
     }
     program_cache_init(&r->programs, &r->caps.shader, r->path.mrt);
-    snprintf(r->model_defines, sizeof r->model_defines, "#define MODEL_%s 1\n#define METHOD_%s 1\n#define STEPS_PER_PASS %d\n%s",
-             scene->model.type == MODEL_FLAT ? "FLAT" : "CURVED",
-             scene->render.method == METHOD_RK4 ? "RK4" : "EULER", scene->render.steps_per_pass,
+    static const char *const method_defines[] = {"EULER", "RK4", "DOPRI5"};
+    static const char *const control_defines[] = {"FIXED", "DOUBLING", "EMBEDDED"};
+    snprintf(r->model_defines, sizeof r->model_defines,
+             "#define MODEL_%s 1\n#define METHOD_%s 1\n#define STEP_%s 1\n#define STEPS_PER_PASS %d\n%s",
+             scene->model.type == MODEL_FLAT ? "FLAT" : "CURVED", method_defines[scene->render.method],
+             control_defines[scene->render.step_control], scene->render.steps_per_pass,
              scene->model.type == MODEL_POTENTIAL && scene->model.profile == PROFILE_POLYNOMIAL
                  ? "#define PROFILE_POLYNOMIAL 1\n" : "");
     if (textures_load(r, err, errlen) != 0) {
@@ -71,25 +74,44 @@ int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int 
     }
     double t0 = now_seconds();
     r->passes = 0;
-    glDisable(GL_DEPTH_TEST);
+    r->quad_z = 0.0f;
+    r->depth_write_last = 0;
     glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
     if (stage_setup(r, origin_x, origin_y, err, errlen) != 0)
         return -1;
+    int early_z = s->render.early_z;
+    if (early_z) {
+        /* every ray-state framebuffer shares the depth buffer: 1 = travelling */
+        GLuint fbo = raystate_fbo(&r->rs, r->rs.result_hit, 0, err, errlen);
+        if (!fbo)
+            return -1;
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        glDepthMask(GL_TRUE);
+        glClearDepthf(1.0f);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        glDepthMask(GL_FALSE);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+    }
     int segments = s->model.type == MODEL_FLAT ? 1 : s->render.segments;
     for (int seg = 0; seg < segments; seg++) {
         int start = r->rs.cur_position;
         if (stage_integrate(r, start, err, errlen) != 0)
             return -1;
-        for (int obj = 0; obj < s->n_objects; obj++)
-            if (stage_intersect(r, obj, seg, start, err, errlen) != 0)
-                return -1;
-        if (gl_check("ray-object intersection", err, errlen) != 0)
+        if (stage_intersect_all(r, seg, start, err, errlen) != 0)
             return -1;
         if (stage_terminate(r, seg, err, errlen) != 0)
+            return -1;
+        if (early_z && (seg + 1) % s->render.termination_interval == 0 && seg + 1 < segments &&
+            stage_retire(r, 0, err, errlen) != 0)
             return -1;
         if (hook && hook(r, seg, hook_arg) != 0)
             return -1;
     }
+    if (stage_retire(r, 1, err, errlen) != 0)
+        return -1;
+    glDisable(GL_DEPTH_TEST);
     if (stage_sky(r, err, errlen) != 0)
         return -1;
     glFinish();
@@ -147,8 +169,7 @@ int renderer_read(struct renderer *r, struct render_result *out, int with_state,
     if (!with_state)
         return 0;
     float **dst[4] = {&out->position, &out->velocity, &out->hit, &out->image};
-    GLuint src[4] = {rs->position[rs->cur_position], rs->velocity[rs->cur_velocity], rs->hit[rs->cur_hit],
-                     rs->image[rs->cur_hit]};
+    GLuint src[4] = {rs->result_position, rs->result_velocity, rs->result_hit, rs->result_image};
     for (int k = 0; k < 4; k++) {
         *dst[k] = malloc(n * 4 * sizeof(float));
         if (!*dst[k]) {

@@ -1,6 +1,8 @@
 /* The GPU pipeline of the paper's Figure 1, as named stages:
- *   setup -> [ integrate (n_integration / K passes) -> intersect (one pass per object)
- *              -> terminate ] x n_segs -> sky
+ *   setup -> [ integrate (n_integration / K passes) -> intersect (one pass per batch of objects)
+ *              -> terminate -> retire (every termination_interval segments) ] x n_segs
+ *   -> retire all -> sky
+ * Retired rays are skipped by the early-z test in every later heavy pass (paper section 4.1).
  * No read-back until the final image, except where a caller asks for one per segment (trace). */
 #ifndef BT_RENDERER_H
 #define BT_RENDERER_H

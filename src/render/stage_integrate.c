@@ -6,8 +6,15 @@
 static void set_integrate(GLuint p, const void *arg)
 {
     const struct scene *s = arg;
+    const struct render_settings *r = &s->render;
     model_set_uniforms(p, &s->model);
     bounds_set_uniforms(p, s);
+    if (r->step_control != STEP_FIXED) {
+        uniform_float(p, "u_tolerance", r->tolerance);
+        uniform_float(p, "u_grow_below", r->grow_fraction * r->tolerance);
+        uniform_float(p, "u_step_min", render_step_min(r));
+        uniform_float(p, "u_step_max", render_step_max(r));
+    }
 }
 
 int stage_integrate(struct renderer *r, int segment_start, char *err, size_t errlen)

@@ -1,63 +1,104 @@
-/* Stage 3, ray-object intersection with local illumination (paper sections 3.3 and 3.4):
- * one pass per object against the current segment of every ray (the paper's crossbar). */
+/* Stage 3, ray-object intersection with local illumination (paper sections 3.3 and 3.4): the
+ * objects in batches of render.batch per pass, in scene order (batch 1 is the paper's crossbar).
+ * A batch holds only the primitive types it contains; its program is cached by that list. */
 #include "render/stages.h"
 #include <stdio.h>
+#include <string.h>
+
+#define GEOMETRY_VECS 5
+#define MATERIAL_VECS 4
+/* uniform vectors a pass needs besides its objects: lights, ambient, segment, sizes (rounded up) */
+#define RESERVED_UNIFORM_VECS (8 + 2 * SCENE_MAX_LIGHTS)
+/* texture units 0-3 carry the ray state; object textures start here */
+#define FIRST_OBJECT_UNIT 4
 
 static const char *const prim_files[PRIM_COUNT] = {"prim_sphere.glsl", "prim_triangle.glsl", "prim_disk.glsl",
                                                    "prim_rect.glsl"};
-static const char *const prim_defines[PRIM_COUNT] = {"PRIM_SPHERE", "PRIM_TRIANGLE", "PRIM_DISK", "PRIM_RECT"};
+static const char *const prim_defines[PRIM_COUNT] = {"SPHERE", "TRIANGLE", "DISK", "RECT"};
 
-struct intersect_args {
+struct batch {
     const struct renderer *r;
-    const struct object *object;
-    int object_id, segment;
+    int first, count;             /* objects first .. first + count - 1 */
+    int segment;
 };
 
-static void set_object(GLuint p, const void *arg)
+static void pack3(float *out, vec3d v, double w)
 {
-    const struct intersect_args *a = arg;
-    const struct object *o = a->object;
-    const struct material *m = &o->material;
-    const struct scene *s = a->r->scene;
-    uniform_float(p, "u_segment_index", a->segment);
-    uniform_float(p, "u_object_id", a->object_id);
-    uniform_vec3(p, "u_center", o->center);
-    uniform_float(p, "u_radius", o->radius);
-    uniform_float(p, "u_inner_radius", o->inner_radius);
+    out[0] = (float)v.x;
+    out[1] = (float)v.y;
+    out[2] = (float)v.z;
+    out[3] = (float)w;
+}
+
+/* The geometry vectors of one object, as shaders_es/stage_intersect.glsl reads them. */
+static void pack_geometry(const struct object *o, float g[GEOMETRY_VECS][4])
+{
+    memset(g, 0, sizeof(float) * GEOMETRY_VECS * 4);
     switch (o->type) {
     case PRIM_SPHERE: {
         vec3d pole = v3_normalize(o->pole);
-        uniform_vec3(p, "u_axis_u", v3_perpendicular(pole));
-        uniform_vec3(p, "u_axis_v", pole);
+        pack3(g[0], o->center, o->radius);
+        pack3(g[1], v3_perpendicular(pole), 0.0);
+        pack3(g[2], pole, 0.0);
         break;
     }
+    case PRIM_TRIANGLE:
+        for (int k = 0; k < 3; k++)
+            pack3(g[k], o->vertex[k], 0.0);
+        g[3][0] = (float)o->uv[0][0], g[3][1] = (float)o->uv[0][1];
+        g[3][2] = (float)o->uv[1][0], g[3][3] = (float)o->uv[1][1];
+        g[4][0] = (float)o->uv[2][0], g[4][1] = (float)o->uv[2][1];
+        break;
     case PRIM_DISK: {
         vec3d n = v3_normalize(o->normal);
-        uniform_vec3(p, "u_normal", n);
-        uniform_vec3(p, "u_axis_u", v3_perpendicular(n));
+        pack3(g[0], o->center, o->radius);
+        pack3(g[1], n, o->inner_radius);
+        pack3(g[2], v3_perpendicular(n), 0.0);
         break;
     }
     case PRIM_RECT:
-        uniform_vec3(p, "u_axis_u", o->axis_u);
-        uniform_vec3(p, "u_axis_v", o->axis_v);
-        break;
-    case PRIM_TRIANGLE:
-        uniform_vec3(p, "u_vertex0", o->vertex[0]);
-        uniform_vec3(p, "u_vertex1", o->vertex[1]);
-        uniform_vec3(p, "u_vertex2", o->vertex[2]);
-        glUniform2f(glGetUniformLocation(p, "u_uv0"), (float)o->uv[0][0], (float)o->uv[0][1]);
-        glUniform2f(glGetUniformLocation(p, "u_uv1"), (float)o->uv[1][0], (float)o->uv[1][1]);
-        glUniform2f(glGetUniformLocation(p, "u_uv2"), (float)o->uv[2][0], (float)o->uv[2][1]);
+        pack3(g[0], o->center, 0.0);
+        pack3(g[1], o->axis_u, 0.0);
+        pack3(g[2], o->axis_v, 0.0);
         break;
     default:
         break;
     }
-    uniform_vec3(p, "u_color", m->color);
-    uniform_vec3(p, "u_emission", m->emission);
-    glUniform4f(glGetUniformLocation(p, "u_material"), (float)m->ambient, (float)m->diffuse, (float)m->specular,
-                (float)m->shininess);
-    uniform_float(p, "u_checker", m->checker);
-    uniform_vec3(p, "u_checker_color", m->checker_color);
+}
+
+static void pack_material(const struct material *m, int object_id, float out[MATERIAL_VECS][4])
+{
+    pack3(out[0], m->color, m->checker);
+    pack3(out[1], m->emission, object_id);
+    out[2][0] = (float)m->ambient, out[2][1] = (float)m->diffuse;
+    out[2][2] = (float)m->specular, out[2][3] = (float)m->shininess;
+    pack3(out[3], m->checker_color, 0.0);
+}
+
+static void set_batch(GLuint p, const void *arg)
+{
+    const struct batch *b = arg;
+    const struct scene *s = b->r->scene;
+    float geometry[SCENE_MAX_BATCH][GEOMETRY_VECS][4], material[SCENE_MAX_BATCH][MATERIAL_VECS][4];
+    GLint units[SCENE_MAX_BATCH];
+    int unit = FIRST_OBJECT_UNIT;
+    for (int i = 0; i < b->count; i++) {
+        const struct object *o = &s->objects[b->first + i];
+        pack_geometry(o, geometry[i]);
+        pack_material(&o->material, b->first + i, material[i]);
+        units[i] = FIRST_OBJECT_UNIT;
+        if (o->material.texture >= 0) {
+            glActiveTexture(GL_TEXTURE0 + unit);
+            glBindTexture(GL_TEXTURE_2D, b->r->textures[o->material.texture]);
+            units[i] = unit++;
+        }
+    }
+    glUniform4fv(glGetUniformLocation(p, "u_geometry"), GEOMETRY_VECS * b->count, &geometry[0][0][0]);
+    glUniform4fv(glGetUniformLocation(p, "u_materials"), MATERIAL_VECS * b->count, &material[0][0][0]);
+    GLint textures = glGetUniformLocation(p, "u_textures");
+    if (textures >= 0)
+        glUniform1iv(textures, b->count, units);
+    uniform_float(p, "u_segment_index", b->segment);
     uniform_vec3(p, "u_ambient_light", s->ambient_light);
     for (int i = 0; i < s->n_lights; i++) {
         char name[48];
@@ -66,25 +107,65 @@ static void set_object(GLuint p, const void *arg)
         snprintf(name, sizeof name, "u_light_color[%d]", i);
         uniform_vec3(p, name, s->lights[i].color);
     }
-    if (m->texture >= 0) {
-        glActiveTexture(GL_TEXTURE0 + UNIT_OBJECT_TEXTURE);
-        glBindTexture(GL_TEXTURE_2D, a->r->textures[m->texture]);
-        glUniform1i(glGetUniformLocation(p, "u_texture"), UNIT_OBJECT_TEXTURE);
-    }
 }
 
-int stage_intersect(struct renderer *r, int object, int segment, int segment_start, char *err, size_t errlen)
+/* Variant defines of a batch: its size, its primitive list in order, its textured slots. */
+static int batch_defines(const struct batch *b, char *out, size_t len)
 {
-    const struct object *o = &r->scene->objects[object];
+    const struct scene *s = b->r->scene;
+    int has[PRIM_COUNT] = {0}, textured = 0;
+    size_t used = (size_t)snprintf(out, len, "#define BATCH_SIZE %d\n#define LIGHT_COUNT %d\n#define BATCH_TESTS",
+                                   b->count, s->n_lights);
+    for (int i = 0; i < b->count && used < len; i++) {
+        const struct object *o = &s->objects[b->first + i];
+        has[o->type] = 1;
+        textured |= o->material.texture >= 0;
+        used += (size_t)snprintf(out + used, len - used, " TEST_%s(%d)", prim_defines[o->type], i);
+    }
+    if (textured && used < len) {
+        used += (size_t)snprintf(out + used, len - used, "\n#define TEXTURED 1\n#define BATCH_TEXTURES");
+        for (int i = 0; i < b->count && used < len; i++)
+            if (s->objects[b->first + i].material.texture >= 0)
+                used += (size_t)snprintf(out + used, len - used, " SAMPLE_TEXTURE(%d)", i);
+    }
+    for (int t = 0; t < PRIM_COUNT && used < len; t++)
+        if (has[t])
+            used += (size_t)snprintf(out + used, len - used, "\n#define HAS_PRIM_%s 1", prim_defines[t]);
+    if (used + 2 >= len)
+        return -1;
+    strcat(out, "\n");
+    return 0;
+}
+
+int intersect_batch_limit(const struct renderer *r)
+{
+    int by_uniforms = (r->caps.max_fragment_uniform_vectors - RESERVED_UNIFORM_VECS) /
+                      (GEOMETRY_VECS + MATERIAL_VECS);
+    int limit = r->scene->render.batch < by_uniforms ? r->scene->render.batch : by_uniforms;
+    return limit < 1 ? 1 : limit;
+}
+
+static int intersect_batch(struct renderer *r, const struct batch *b, int segment_start, char *err, size_t errlen)
+{
     struct raystate *rs = &r->rs;
-    char defines[160];
-    snprintf(defines, sizeof defines, "#define %s 1\n#define LIGHT_COUNT %d\n%s", prim_defines[o->type],
-             r->scene->n_lights, o->material.texture >= 0 ? "#define TEXTURED 1\n" : "");
-    const char *const files[] = {"common.glsl", prim_files[o->type], "shade.glsl", "stage_intersect.glsl", NULL};
+    char defines[1024];
+    if (batch_defines(b, defines, sizeof defines) != 0) {
+        snprintf(err, errlen, "internal: the defines of an object batch do not fit");
+        return -1;
+    }
+    const char *files[PRIM_COUNT + 5] = {"common.glsl"};
+    int n = 1, seen[PRIM_COUNT] = {0};
+    for (int i = 0; i < b->count; i++) {
+        enum primitive_type t = r->scene->objects[b->first + i].type;
+        if (!seen[t]++)
+            files[n++] = prim_files[t];
+    }
+    files[n++] = "shade.glsl";
+    files[n++] = "stage_intersect.glsl";
+    files[n] = NULL;
     const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, err, errlen);
     if (!sp)
         return -1;
-    struct intersect_args a = {r, o, object, segment};
     int out = 1 - rs->cur_hit;
     struct pass_input in[] = {
         {"u_segment_start", rs->position[segment_start]},
@@ -92,8 +173,30 @@ int stage_intersect(struct renderer *r, int object, int segment, int segment_sta
         {"u_hit", rs->hit[rs->cur_hit]},
         {"u_image", rs->image[rs->cur_hit]},
     };
-    if (pass_run(r, sp, rs->hit[out], rs->image[out], in, 4, set_object, &a, err, errlen) != 0)
+    if (pass_run(r, sp, rs->hit[out], rs->image[out], in, 4, set_batch, b, err, errlen) != 0)
         return -1;
     rs->cur_hit = out;
     return 0;
+}
+
+int stage_intersect_all(struct renderer *r, int segment, int segment_start, char *err, size_t errlen)
+{
+    const struct scene *s = r->scene;
+    int limit = intersect_batch_limit(r);
+    int max_textured = r->caps.max_texture_units - FIRST_OBJECT_UNIT;
+    for (int first = 0; first < s->n_objects;) {
+        struct batch b = {r, first, 0, segment};
+        int textured = 0;
+        while (first + b.count < s->n_objects && b.count < limit) {
+            int needs = s->objects[first + b.count].material.texture >= 0;
+            if (textured + needs > max_textured && b.count > 0)
+                break;
+            textured += needs;
+            b.count++;
+        }
+        if (intersect_batch(r, &b, segment_start, err, errlen) != 0)
+            return -1;
+        first += b.count;
+    }
+    return gl_check("ray-object intersection", err, errlen);
 }

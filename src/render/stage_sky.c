@@ -1,4 +1,4 @@
-/* Stage 5, sky and final colour (paper section 4.3). */
+/* Stage 5, sky and final colour (paper section 4.3), from the retired state of every ray. */
 #include "render/stages.h"
 
 static void set_sky(GLuint p, const void *arg)
@@ -22,8 +22,8 @@ int stage_sky(struct renderer *r, char *err, size_t errlen)
     if (!sp)
         return -1;
     struct pass_input in[] = {
-        {"u_image", rs->image[rs->cur_hit]},
-        {"u_ray_velocity", rs->velocity[rs->cur_velocity]},
+        {"u_image", rs->result_image},
+        {"u_ray_velocity", rs->result_velocity},
     };
     if (pass_run(r, sp, rs->final_color, 0, in, 2, set_sky, r, err, errlen) != 0)
         return -1;

@@ -6,7 +6,6 @@
 #include "render/renderer.h"
 
 /* Texture units: ray-state inputs first, then scene textures. */
-#define UNIT_OBJECT_TEXTURE 5
 #define UNIT_SKY 6
 
 struct renderer {
@@ -22,6 +21,8 @@ struct renderer {
     int image_width, image_height;
     long passes;
     double seconds;
+    float quad_z;                 /* NDC depth of the pass quads: 0 (heavy passes), -1 (retire) */
+    int depth_write_last;         /* pass_run writes depth in the last draw of a stage only */
 };
 
 struct pass_input {
@@ -46,8 +47,13 @@ void textures_release(struct renderer *r);
 
 int stage_setup(struct renderer *r, int origin_x, int origin_y, char *err, size_t errlen);
 int stage_integrate(struct renderer *r, int segment_start, char *err, size_t errlen);
-int stage_intersect(struct renderer *r, int object, int segment, int segment_start, char *err, size_t errlen);
+/* Every object against the current segment, render.batch objects per pass. */
+int stage_intersect_all(struct renderer *r, int segment, int segment_start, char *err, size_t errlen);
+/* Objects per intersection pass on this GPU: render.batch, bounded by its uniform vectors. */
+int intersect_batch_limit(const struct renderer *r);
 int stage_terminate(struct renderer *r, int segment, char *err, size_t errlen);
+/* Retire finished rays (all: every ray) into the result textures; mark them for early-z. */
+int stage_retire(struct renderer *r, int all, char *err, size_t errlen);
 int stage_sky(struct renderer *r, char *err, size_t errlen);
 
 #endif

@@ -15,10 +15,14 @@
 #define SCENE_MAX_SEGMENTS 100000
 #define SCENE_MAX_STEPS_PER_SEGMENT 10000
 #define SCENE_MAX_STEPS_PER_PASS 64
+#define SCENE_MAX_BATCH 16          /* objects intersected in one pass */
 
 enum primitive_type { PRIM_SPHERE, PRIM_TRIANGLE, PRIM_DISK, PRIM_RECT, PRIM_COUNT };
 enum precision_choice { PRECISION_AUTO, PRECISION_FP32, PRECISION_FP16 };
 enum mrt_choice { MRT_AUTO, MRT_ON, MRT_OFF };
+/* Step-size control (paper section 4.2): fixed h; step doubling (one step of h against two of h/2);
+ * the error estimate of the embedded Dormand-Prince 5(4) pair (method dopri5 only). */
+enum step_control { STEP_FIXED, STEP_DOUBLING, STEP_EMBEDDED };
 enum sky_type { SKY_COLOR, SKY_CUBEMAP };
 
 struct camera {
@@ -79,7 +83,23 @@ struct render_settings {
     vec3d bound_center;
     enum precision_choice precision;
     enum mrt_choice mrt;
+    /* acceleration (paper section 4): early ray termination through the early-z test, every
+     * termination_interval segments; objects intersected batch at a time */
+    int early_z;
+    int termination_interval;
+    int batch;
+    /* adaptive integration: the step shrinks where the local error estimate exceeds tolerance,
+     * and (step doubling) grows where it is below grow_fraction * tolerance; step_min and
+     * step_max bound it (0: step / 1024 and step * 64) */
+    enum step_control step_control;
+    double tolerance;
+    double grow_fraction;
+    double step_min, step_max;
 };
+
+/* The bounds adaptive steps stay within (the defaults resolved). */
+double render_step_min(const struct render_settings *r);
+double render_step_max(const struct render_settings *r);
 
 struct scene {
     char path[SCENE_PATH_LEN];     /* file it came from */

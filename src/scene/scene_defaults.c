@@ -17,6 +17,24 @@ static void render_defaults(struct render_settings *r)
     r->bound_center = v3(0.0, 0.0, 0.0);
     r->precision = PRECISION_AUTO;
     r->mrt = MRT_AUTO;
+    r->early_z = 1;
+    r->termination_interval = 1;
+    r->batch = 8;
+    r->step_control = STEP_FIXED;
+    r->tolerance = 1e-4;
+    r->grow_fraction = 1.0 / 32.0;
+    r->step_min = 0.0;
+    r->step_max = 0.0;
+}
+
+double render_step_min(const struct render_settings *r)
+{
+    return r->step_min > 0.0 ? r->step_min : r->step_size / 1024.0;
+}
+
+double render_step_max(const struct render_settings *r)
+{
+    return r->step_max > 0.0 ? r->step_max : r->step_size * 64.0;
 }
 
 /* Parameters of every model are kept, not only the flat one's, so that switching model.type with

@@ -16,7 +16,9 @@ static const char *const model_names[] = {
     "flat", "lorenz", "rossler", "potential", "refraction", "schwarzschild", NULL
 };
 static const char *const primitive_names[] = {"sphere", "triangle", "disk", "rect", NULL};
-static const char *const method_names[] = {"euler", "rk4", NULL};
+static const char *const method_names[] = {"euler", "rk4", "dopri5", NULL};
+static const char *const step_control_names[] = {"fixed", "doubling", "embedded", NULL};
+static const char *const switch_names[] = {"off", "on", NULL};
 static const char *const precision_names[] = {"auto", "fp32", "fp16", NULL};
 static const char *const mrt_names[] = {"auto", "on", "off", NULL};
 static const char *const profile_names[] = {"yukawa", "polynomial", NULL};
@@ -156,6 +158,20 @@ static int set_method(struct scene *s, void *t, const union scene_key_value *v, 
     return 0;
 }
 
+static int set_step_control(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
+{
+    (void)t, (void)r, (void)n;
+    s->render.step_control = (enum step_control)v->choice;
+    return 0;
+}
+
+static int set_early_z(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
+{
+    (void)t, (void)r, (void)n;
+    s->render.early_z = v->choice;
+    return 0;
+}
+
 static int set_precision(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
 {
     (void)t, (void)r, (void)n;
@@ -277,6 +293,17 @@ const struct scene_key scene_keys[] = {
     {SECTION_RENDER, "bound_center", KEY_VECTOR, ANY, .offset = AT_SCENE(render.bound_center)},
     {SECTION_RENDER, "precision", CHOICE(precision_names, set_precision)},
     {SECTION_RENDER, "mrt", CHOICE(mrt_names, set_mrt)},
+    {SECTION_RENDER, "early_z", CHOICE(switch_names, set_early_z)},
+    {SECTION_RENDER, "termination_interval", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SEGMENTS,
+     .offset = AT_SCENE(render.termination_interval)},
+    {SECTION_RENDER, "batch", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_BATCH, .offset = AT_SCENE(render.batch)},
+    {SECTION_RENDER, "step_control", CHOICE(step_control_names, set_step_control)},
+    {SECTION_RENDER, "tolerance", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .flags = KEY_ABOVE_LO,
+     .offset = AT_SCENE(render.tolerance)},
+    {SECTION_RENDER, "grow_fraction", KEY_NUMBER, .lo = 0.0, .hi = 1.0, .flags = KEY_ABOVE_LO | KEY_BELOW_HI,
+     .offset = AT_SCENE(render.grow_fraction)},
+    {SECTION_RENDER, "step_min", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .offset = AT_SCENE(render.step_min)},
+    {SECTION_RENDER, "step_max", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .offset = AT_SCENE(render.step_max)},
 
     {SECTION_MODEL, "type", CHOICE(model_names, set_model_type)},
     {SECTION_MODEL, "center", KEY_VECTOR, ANY, .applies = ALL_MODELS_BUT_FLAT,

@@ -57,6 +57,14 @@ static int validate_render(const struct scene *s, struct scene_error *err)
     if (r->steps_per_segment % r->steps_per_pass != 0)
         return invalid(s, err, "render.steps_per_segment (%d) must be a multiple of "
                        "render.steps_per_pass (%d)", r->steps_per_segment, r->steps_per_pass);
+    if (r->step_control == STEP_EMBEDDED && r->method != METHOD_DOPRI5)
+        return invalid(s, err, "render.step_control = embedded needs render.method = dopri5 (the embedded "
+                       "pair gives the error estimate); use step_control = doubling with %s",
+                       method_name(r->method));
+    double lo = render_step_min(r), hi = render_step_max(r);
+    if (r->step_control != STEP_FIXED && !(lo <= r->step_size && r->step_size <= hi))
+        return invalid(s, err, "render.step (%g) must lie within render.step_min (%g) and render.step_max (%g)",
+                       r->step_size, lo, hi);
     return 0;
 }
 

@@ -1,0 +1,221 @@
+/* The acceleration techniques (paper section 4 and beyond): early ray termination, batches of
+ * objects per pass and unrolled steps are exact: they must not change a single bit of any ray.
+ * Adaptive integration changes the rays on purpose: it is tested against the CPU reference. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include "hard_cases.h"
+
+#define W 48
+#define H 36
+
+static void assert_same_rays(const struct hc_gpu *a, const struct hc_gpu *b, const char *what)
+{
+    size_t n = (size_t)a->res.width * a->res.height * 4;
+    const float *fa[4] = {a->res.position, a->res.velocity, a->res.hit, a->res.image};
+    const float *fb[4] = {b->res.position, b->res.velocity, b->res.hit, b->res.image};
+    static const char *const names[4] = {"position", "velocity", "hit", "image"};
+    for (int k = 0; k < 4; k++)
+        if (memcmp(fa[k], fb[k], n * sizeof(float)) != 0) {
+            for (size_t i = 0; i < n; i++)
+                if (memcmp(&fa[k][i], &fb[k][i], sizeof(float)) != 0)
+                    fail_msg("%s: ray state %s differs at pixel %zu component %zu: %.9g vs %.9g", what,
+                             names[k], i / 4, i % 4, fa[k][i], fb[k][i]);
+        }
+    assert_memory_equal(a->res.rgba, b->res.rgba, (size_t)a->res.width * a->res.height * 4);
+}
+
+/* Renders the scene; returns its number of objects. */
+static int render_with(const char *scene, const char *const *sets, struct hc_gpu *g)
+{
+    static struct scene s;
+    hc_load(&s, scene, W, H, sets);
+    hc_gpu_render(&s, g);
+    return s.n_objects;
+}
+
+/* Early-z on (retiring finished rays every segment, or every third), off: the same rays. The
+ * scenes cover hits, sky, capture by a horizon, rays still travelling at the end (Lorenz) and
+ * straight rays (test, flat). */
+static void test_early_z_is_exact(void **state)
+{
+    (void)state;
+    static const char *const scenes[] = {"test", "demo", "schwarzschild", "lorenz", "neutron_star"};
+    static const char *const off[] = {"render.early_z=off", NULL};
+    static const char *const every[] = {"render.early_z=on", "render.termination_interval=1", NULL};
+    static const char *const third[] = {"render.early_z=on", "render.termination_interval=3", NULL};
+    for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; k++) {
+        struct hc_gpu a, b, c;
+        render_with(scenes[k], off, &a);
+        render_with(scenes[k], every, &b);
+        render_with(scenes[k], third, &c);
+        assert_same_rays(&a, &b, scenes[k]);
+        assert_same_rays(&a, &c, scenes[k]);
+        /* early-z skips rays, not passes: the retire passes come on top (straight rays: one segment, none) */
+        assert_true(b.res.passes >= c.res.passes && c.res.passes >= a.res.passes);
+        hc_gpu_free(&a);
+        hc_gpu_free(&b);
+        hc_gpu_free(&c);
+    }
+}
+
+/* Batch 1 (one pass per object, the paper's crossbar), 3 and 16: the same rays, with the passes
+ * that batching saves. demo has spheres, disks and rects, some textured. */
+static void test_batches_are_exact(void **state)
+{
+    (void)state;
+    static const char *const scenes[] = {"test", "schwarzschild", "demo"};
+    static const char *const one[] = {"render.batch=1", NULL};
+    static const char *const three[] = {"render.batch=3", NULL};
+    static const char *const sixteen[] = {"render.batch=16", NULL};
+    for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; k++) {
+        struct hc_gpu a, b, c;
+        int objects = render_with(scenes[k], one, &a);
+        render_with(scenes[k], three, &b);
+        render_with(scenes[k], sixteen, &c);
+        assert_same_rays(&a, &b, scenes[k]);
+        assert_same_rays(&a, &c, scenes[k]);
+        assert_true(objects == 1 || c.res.passes < a.res.passes);
+        hc_gpu_free(&a);
+        hc_gpu_free(&b);
+        hc_gpu_free(&c);
+    }
+}
+
+/* K steps per pass, K = 1 being the paper's scheme: the same arithmetic in fewer passes. */
+static void test_unrolling_is_exact(void **state)
+{
+    (void)state;
+    static const char *const k1[] = {"render.steps_per_pass=1", NULL};
+    static const char *const k5[] = {"render.steps_per_pass=5", NULL};
+    static const char *const k10[] = {"render.steps_per_pass=10", NULL};
+    struct hc_gpu a, b, c;
+    render_with("schwarzschild", k1, &a);
+    render_with("schwarzschild", k5, &b);
+    render_with("schwarzschild", k10, &c);
+    assert_same_rays(&a, &b, "K=5");
+    assert_same_rays(&a, &c, "K=10");
+    assert_true(c.res.passes < b.res.passes && b.res.passes < a.res.passes);
+    hc_gpu_free(&a);
+    hc_gpu_free(&b);
+    hc_gpu_free(&c);
+}
+
+/* A black hole with nothing but sky: rays pass at every distance from the photon sphere. */
+static void load_sky_only(struct scene *s, const char *const *sets)
+{
+    hc_load(s, "schwarzschild", W, H, sets);
+    s->n_objects = 0;
+    hc_validate(s);
+}
+
+static double sky_p99(const struct scene *s, const struct cpu_image *ref, struct hc_gpu *g, long *differ)
+{
+    struct compare_result c;
+    hc_gpu_render(s, g);
+    hc_compare(&g->dump, &ref->dump, &c);
+    *differ = c.outcomes.differ;
+    return c.sky_angle.p99;
+}
+
+/* Step doubling: the step adapts per ray (smaller near the hole), a tighter tolerance gives a
+ * smaller error, and both are measured against the reference. */
+static void test_step_doubling_adapts(void **state)
+{
+    (void)state;
+    static struct scene s;
+    static const char *const loose[] = {"render.step_control=doubling", "render.tolerance=1e-3", NULL};
+    /* A tight tolerance needs more steps (the budget is segments x steps_per_segment steps). 1e-5, not
+     * less: positions near 10 carry fp32 rounding of ~1e-6, a floor that no step size gets under. */
+    static const char *const tight[] = {"render.step_control=doubling", "render.tolerance=1e-5", "render.segments=400",
+                                        NULL};
+    struct cpu_image ref_loose, ref_tight;
+    load_sky_only(&s, loose);
+    hc_cpu_render(&s, &ref_loose);
+    struct hc_gpu a, b;
+    long differ_loose, differ_tight;
+    double err_loose = sky_p99(&s, &ref_loose, &a, &differ_loose);
+    load_sky_only(&s, tight);
+    hc_cpu_render(&s, &ref_tight);
+    double err_tight = sky_p99(&s, &ref_tight, &b, &differ_tight);
+    print_message("step doubling: tolerance 1e-3: %ld outcomes differ, exit direction p99 %.3g rad; "
+                  "1e-5: %ld differ, %.3g rad\n", differ_loose, err_loose, differ_tight, err_tight);
+    assert_true(differ_tight <= differ_loose);
+    assert_int_equal(differ_tight, 0);
+    assert_true(err_tight < err_loose);
+    /* the step kept in velocity.w differs between rays: at least a factor 4 between the smallest and largest */
+    double h_min = INFINITY, h_max = 0.0;
+    for (int i = 0; i < W * H; i++) {
+        double h = b.res.velocity[4 * i + 3];
+        h_min = fmin(h_min, h);
+        h_max = fmax(h_max, h);
+    }
+    print_message("final steps of the rays: %.3g to %.3g\n", h_min, h_max);
+    assert_true(h_max >= 4.0 * h_min);
+    hc_gpu_free(&a);
+    hc_gpu_free(&b);
+    cpu_image_free(&ref_loose);
+    cpu_image_free(&ref_tight);
+}
+
+/* The embedded Dormand-Prince pair: a tolerance of 1e-8 brings every exit direction within 1e-4 rad
+ * of the reference (fp32 positions near r = 10 carry ~1e-6 relative rounding: 1e-4 leaves room for
+ * rounding accumulated over a few hundred steps, not for a wrong controller). */
+static void test_embedded_pair(void **state)
+{
+    (void)state;
+    static struct scene s;
+    static const char *const sets[] = {"render.method=dopri5", "render.step_control=embedded", "render.tolerance=1e-8",
+                                       NULL};
+    struct cpu_image ref;
+    load_sky_only(&s, sets);
+    hc_cpu_render(&s, &ref);
+    struct hc_gpu g;
+    long differ;
+    double err = sky_p99(&s, &ref, &g, &differ);
+    print_message("embedded dopri5, tolerance 1e-8: %ld outcomes differ, exit direction p99 %.3g rad\n", differ, err);
+    assert_int_equal(differ, 0);
+    assert_true(err < 1e-4);
+    hc_gpu_free(&g);
+    cpu_image_free(&ref);
+}
+
+/* Fixed-step Dormand-Prince 5 on the GPU follows the C double version of the same tableau. */
+static void test_dopri5_matches_model_step(void **state)
+{
+    (void)state;
+    static struct scene s;
+    static const char *const sets[] = {"render.method=dopri5", "render.segments=4", NULL};
+    hc_load(&s, "schwarzschild", 1, 1, sets);
+    s.n_objects = 0;
+    vec3d dir = v3_normalize(v3(0.05, -0.02, -1.0));
+    hc_aim(&s, s.camera.position, dir);
+    hc_validate(&s);
+    struct hc_gpu g;
+    hc_gpu_render(&s, &g);
+    vec3d x = s.camera.position, v = model_initial_velocity(&s.model, x, dir);
+    int steps = s.render.segments * s.render.steps_per_segment;
+    for (int i = 0; i < steps; i++)
+        model_step(&s.model, METHOD_DOPRI5, s.render.step_size, &x, &v);
+    double dx = v3_len(v3_sub(hc_gpu_x(&g, 0), x));
+    print_message("dopri5 after %d steps: GPU - CPU position %.3g\n", steps, dx);
+    /* fp32 rounding of positions of size ~10 over 40 steps: a few 1e-6; a wrong coefficient moves it by 1e-3 */
+    assert_true(dx < 2e-5);
+    assert_int_equal(g.dump.records[0].steps, steps);
+    hc_gpu_free(&g);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_early_z_is_exact),
+        cmocka_unit_test(test_batches_are_exact),
+        cmocka_unit_test(test_unrolling_is_exact),
+        cmocka_unit_test(test_step_doubling_adapts),
+        cmocka_unit_test(test_embedded_pair),
+        cmocka_unit_test(test_dopri5_matches_model_step),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
