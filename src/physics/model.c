@@ -38,6 +38,20 @@ const char *method_name(enum integration_method m)
     return "unknown";
 }
 
+int model_is_straight(const struct model *m)
+{
+    switch (m->type) {
+    case MODEL_FLAT: return 1;
+    case MODEL_LORENZ:
+    case MODEL_ROSSLER: return m->strength == 0.0;
+    case MODEL_POTENTIAL: return m->profile == PROFILE_YUKAWA ? m->zeta == 0.0 : m->strength == 0.0;
+    case MODEL_REFRACTION: return m->amplitude == 0.0;
+    case MODEL_SCHWARZSCHILD: return m->mass == 0.0;
+    case MODEL_COUNT: break;
+    }
+    return 0;
+}
+
 static vec3d lorenz_accel(const struct model *m, vec3d y)
 {
     vec3d u = v3_scale(y, 1.0 / m->scale);

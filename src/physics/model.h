@@ -38,6 +38,9 @@ struct model {
 };
 
 const char *model_name(enum model_type t);
+/* Are the rays of this model straight lines: flat space, or a model with every field off (no
+ * strength, no mass, no index change)? Such rays are not integrated but cast in one segment. */
+int model_is_straight(const struct model *m);
 /* f(x, v) of eq. (1). */
 vec3d model_accel(const struct model *m, vec3d x, vec3d v);
 /* Initial ray velocity for a unit viewing direction dir seen by a camera at x. */

@@ -300,7 +300,7 @@ void ref_trace(const struct scene *s, const struct ref_options *o, vec3d x0, vec
         finish(&t, out, DUMP_SKY, x0, v0, 0.0);
         return;
     }
-    if (s->model.type == MODEL_FLAT) {
+    if (model_is_straight(&s->model)) {
         trace_straight(&t, x0, v0, out);
         return;
     }

@@ -42,13 +42,17 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
         return NULL;
     }
     program_cache_init(&r->programs, &r->caps.shader, r->path.mrt);
+    /* a model with its fields off is flat space: nothing is integrated (model_is_straight) */
+    r->straight = model_is_straight(&scene->model);
+    snprintf(r->model_file, sizeof r->model_file, "model_%s.glsl",
+             r->straight ? "flat" : model_name(scene->model.type));
     static const char *const method_defines[] = {"EULER", "RK4", "DOPRI5"};
     static const char *const control_defines[] = {"FIXED", "DOUBLING", "EMBEDDED"};
     snprintf(r->model_defines, sizeof r->model_defines,
              "#define MODEL_%s 1\n#define METHOD_%s 1\n#define STEP_%s 1\n#define STEPS_PER_PASS %d\n%s",
-             scene->model.type == MODEL_FLAT ? "FLAT" : "CURVED", method_defines[scene->render.method],
+             r->straight ? "FLAT" : "CURVED", method_defines[scene->render.method],
              control_defines[scene->render.step_control], scene->render.steps_per_pass,
-             scene->model.type == MODEL_POTENTIAL && scene->model.profile == PROFILE_POLYNOMIAL
+             !r->straight && scene->model.type == MODEL_POTENTIAL && scene->model.profile == PROFILE_POLYNOMIAL
                  ? "#define PROFILE_POLYNOMIAL 1\n" : "");
     if (textures_load(r, err, errlen) != 0) {
         renderer_destroy(r);
@@ -94,7 +98,7 @@ int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int 
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
     }
-    int segments = s->model.type == MODEL_FLAT ? 1 : s->render.segments;
+    int segments = r->straight ? 1 : s->render.segments;
     for (int seg = 0; seg < segments; seg++) {
         int start = r->rs.cur_position;
         if (stage_integrate(r, start, err, errlen) != 0)

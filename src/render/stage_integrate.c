@@ -21,13 +21,11 @@ int stage_integrate(struct renderer *r, int segment_start, char *err, size_t err
 {
     const struct scene *s = r->scene;
     struct raystate *rs = &r->rs;
-    char model_file[64];
-    snprintf(model_file, sizeof model_file, "model_%s.glsl", model_name(s->model.type));
-    const char *const files[] = {"common.glsl", model_file, "stage_integrate.glsl", NULL};
+    const char *const files[] = {"common.glsl", r->model_file, "stage_integrate.glsl", NULL};
     const struct stage_program *sp = program_cache_get(&r->programs, files, r->model_defines, 1, err, errlen);
     if (!sp)
         return -1;
-    int passes = s->model.type == MODEL_FLAT ? 1 : s->render.steps_per_segment / s->render.steps_per_pass;
+    int passes = r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass;
     for (int k = 0; k < passes; k++) {
         /* write to the one position copy that is neither the segment start nor the current one */
         int out_pos = 0;

@@ -42,9 +42,7 @@ int stage_setup(struct renderer *r, int origin_x, int origin_y, char *err, size_
         return -1;
     rs->cur_hit = 0;
 
-    char model_file[64];
-    snprintf(model_file, sizeof model_file, "model_%s.glsl", model_name(s->model.type));
-    const char *const files[] = {"common.glsl", model_file, "stage_setup.glsl", NULL};
+    const char *const files[] = {"common.glsl", r->model_file, "stage_setup.glsl", NULL};
     const struct stage_program *sp = program_cache_get(&r->programs, files, r->model_defines, 1, err, errlen);
     if (!sp)
         return -1;

@@ -18,6 +18,8 @@ struct renderer {
     GLuint textures[SCENE_MAX_TEXTURES];
     GLuint sky_cubemap;
     char model_defines[256];      /* model, method, steps per pass */
+    char model_file[64];          /* model_NAME.glsl; model_flat.glsl for straight rays */
+    int straight;                 /* rays are straight: one segment, not integrated */
     int image_width, image_height;
     long passes;
     double seconds;

@@ -207,6 +207,28 @@ static void test_dopri5_matches_model_step(void **state)
     hc_gpu_free(&g);
 }
 
+/* A model with every field off is flat space: the same rays as model.type = flat, in the same few
+ * passes (one straight segment, nothing integrated). */
+static void test_fields_off_are_not_integrated(void **state)
+{
+    (void)state;
+    static const char *const flat[] = {"model.type=flat", NULL};
+    struct { const char *scene; const char *off; } cases[] = {
+        {"schwarzschild", "model.mass=0"}, {"potential", "model.zeta=0"}, {"lorenz", "model.strength=0"},
+        {"refraction", "model.amplitude=0"}, {"rossler", "model.strength=0"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        const char *const off[] = {cases[k].off, NULL};
+        struct hc_gpu a, b;
+        render_with(cases[k].scene, flat, &a);
+        render_with(cases[k].scene, off, &b);
+        assert_same_rays(&a, &b, cases[k].scene);
+        assert_int_equal(a.res.passes, b.res.passes);
+        hc_gpu_free(&a);
+        hc_gpu_free(&b);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -216,6 +238,7 @@ int main(void)
         cmocka_unit_test(test_step_doubling_adapts),
         cmocka_unit_test(test_embedded_pair),
         cmocka_unit_test(test_dopri5_matches_model_step),
+        cmocka_unit_test(test_fields_off_are_not_integrated),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
