@@ -3,6 +3,7 @@
 #   make demo   build and render the default scene headless to a PNG
 #   make test   build and run every test
 #   make golden re-render the committed golden images (on purpose only; look at them)
+#   make bench  measure speed and speed against error: docs/BENCH.md, docs/bench/ (CSV, PNG plots)
 
 CC      ?= cc
 BUILD   ?= build
@@ -30,7 +31,7 @@ SHADERS   := $(sort $(wildcard shaders_es/*.glsl))
 TEST_SRCS := $(sort $(wildcard tests/unit/test_*.c))
 TEST_BINS := $(TEST_SRCS:tests/unit/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps demo test test-unit test-render golden assets accuracy clean
+.PHONY: all deps deps-bench demo test test-unit test-render golden assets accuracy bench clean
 all: bentray
 
 bentray: $(BUILD)/src/main.o $(BUILD)/libbentray.a
@@ -43,6 +44,11 @@ $(BUILD)/libbentray.a: $(LIB_OBJS)
 $(BUILD)/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(PKG_CFLAGS) -MMD -MP -c -o $@ $<
+
+# The machine's limit for `bentray bench`: the C kernel is vectorised by the compiler for this CPU
+# (gcc 12 leaves it scalar at -O2; sqrtf's errno path blocks vectorisation). No -ffast-math: the
+# arithmetic stays the shader's.
+$(BUILD)/src/bench/cpu_limit.o: CFLAGS += -O3 -march=native -fno-math-errno
 
 # Shaders are compiled into the binary: one table of (file name, text).
 $(BUILD)/tools/embed: src/tools/embed.c
@@ -68,6 +74,18 @@ $(BUILD)/tools/accuracy_report: src/tools/accuracy_report.c $(BUILD)/libbentray.
 accuracy: deps
 	@$(MAKE) --no-print-directory $(BUILD)/tools/accuracy_report
 	$(BUILD)/tools/accuracy_report assets/scenes docs/ACCURACY.md
+
+# gnuplot draws the bench plots; only `make bench` needs it.
+BENCH_PACKAGES := gnuplot-nox
+
+deps-bench:
+	@$(MAKE) --no-print-directory deps DEB_PACKAGES="$(BENCH_PACKAGES)"
+
+# The whole benchmark (about 15 minutes here), then the plots from its gnuplot scripts.
+bench: deps deps-bench
+	@$(MAKE) --no-print-directory bentray
+	./bentray bench --out docs --force
+	cd docs/bench && for g in *.gp; do gnuplot "$$g"; done
 
 deps:
 	@missing=$$(for p in $(DEB_PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \

@@ -14,6 +14,7 @@ static void usage(FILE *out)
             "  info     probe the GL back-ends: versions, float formats, MRT, render path\n"
             "  compare  error metrics of one per-pixel dump against a reference dump\n"
             "  error    render a scene on the GPU and on the CPU reference and compare them\n"
+            "  bench    measure speed, and speed against error, into a report (docs/BENCH.md)\n"
             "\n"
             "bentray COMMAND --help shows the options of a command.\n"
             "exit codes: 0 ok, 1 runtime failure, 2 bad usage or input\n");
@@ -40,6 +41,8 @@ int main(int argc, char **argv)
         return cmd_compare(argc - 1, argv + 1);
     if (strcmp(cmd, "error") == 0)
         return cmd_error(argc - 1, argv + 1);
+    if (strcmp(cmd, "bench") == 0)
+        return cmd_bench(argc - 1, argv + 1);
     fprintf(stderr, "bentray: unknown command '%s'\n", cmd);
     usage(stderr);
     return EXIT_USAGE;

@@ -9,5 +9,6 @@ int cmd_render(int argc, char **argv);
 int cmd_trace(int argc, char **argv);
 int cmd_compare(int argc, char **argv);
 int cmd_error(int argc, char **argv);
+int cmd_bench(int argc, char **argv);
 
 #endif

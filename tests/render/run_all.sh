@@ -64,5 +64,17 @@ check "cpu with gpu option" 2 "--precision applies to the GPU engine" -- $BT ren
 check "rtol without cpu" 2 "--rtol applies to the CPU engine" -- $BT render --scene $S --rtol 1e-8 --out "$TMP/h.png"
 check "bad rtol" 2 "--rtol: expected" -- $BT render --scene $S --engine cpu --rtol 0 --out "$TMP/h.png"
 check "bad engine" 2 "--engine: expected gpu or cpu" -- $BT render --scene $S --engine quantum --out "$TMP/h.png"
+# bench: the tiny configuration proves the command and its report work; it times nothing that matters
+mkdir -p "$TMP/bench"
+check "bench quick" 0 "wrote .*BENCH.md" -- $BT bench --out "$TMP/bench" --quick
+check "bench sections" 0 "^7 sections, table1 13 rows, figure5 3 rows, limit 3 rows, pareto 4 rows$" -- sh -c "
+    printf '%s sections, table1 %s rows, figure5 %s rows, limit %s rows, pareto %s rows\n' \
+      \$(grep -c '^## ' $TMP/bench/BENCH.md) \$(wc -l < $TMP/bench/bench/table1.csv) \
+      \$(wc -l < $TMP/bench/bench/figure5.csv) \$(wc -l < $TMP/bench/bench/limit.csv) \
+      \$(wc -l < $TMP/bench/bench/pareto.csv)"
+check "bench no overwrite" 2 "exists; pass --force" -- $BT bench --out "$TMP/bench" --quick
+check "bench bad section" 2 "--only: unknown section 'speed'" -- $BT bench --out "$TMP/bench" --only speed
+check "bench without out" 2 "--out DIR is required" -- $BT bench --quick
+check "bench bad runs" 2 "--runs: expected an integer from 1 to 63" -- $BT bench --out "$TMP/bench" --runs 0
 echo "command-line tests: $fails failed"
 [ "$fails" = 0 ]

@@ -1,0 +1,68 @@
+/* `bentray bench`: the paper's Table 1 and Figure 5, the benefit of unrolling, batching and
+ * early-z, speed against error, and the machine's limit. Every figure in docs/BENCH.md is written
+ * by this code: times are medians of several runs on one GL context, errors come from the
+ * comparison with the CPU reference (src/ref/compare.c). Never a timed test. */
+#ifndef BT_BENCH_H
+#define BT_BENCH_H
+#include <stdio.h>
+#include "gl/context.h"
+#include "ref/dump.h"
+#include "scene/scene.h"
+
+#define BENCH_PATH_LEN 512
+
+struct bench {
+    struct gl_context *ctx;
+    char renderer[160];          /* GL_RENDERER of the context */
+    char backend[16];
+    int runs;                    /* timed runs per configuration (after one warm-up) */
+    int quick;                   /* tiny sizes: proves the command works, measures nothing */
+    int width, height;           /* the paper's 800x600 unless quick */
+    char out_dir[BENCH_PATH_LEN];
+    char data_dir[BENCH_PATH_LEN]; /* out_dir/bench: CSV files and gnuplot scripts */
+    FILE *md;                    /* BENCH.md being written */
+    int done, total;             /* progress */
+    double started;
+};
+
+struct bench_timing {
+    double median, min, max;     /* seconds per frame */
+    long passes;
+    char path[16];               /* render path, "fp32+mrt" */
+};
+
+double bench_now(void);
+/* Progress on stderr: "[done/total] what (elapsed)". */
+void bench_progress(struct bench *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+/* Render s runs + 1 times on the bench's context (the first, which compiles the shaders, is not
+ * timed); the median frame time. With d, the last frame's per-pixel dump. 0, or -1 with err. */
+int bench_time(struct bench *b, const struct scene *s, struct bench_timing *t, struct dump *d, char *err,
+               size_t errlen);
+
+/* Acceleration presets (the Table 1 columns). */
+enum bench_accel { ACCEL_NONE, ACCEL_PAPER, ACCEL_ALL, ACCEL_COUNT };
+extern const char *const bench_accel_names[ACCEL_COUNT];
+void bench_apply_accel(struct scene *s, enum bench_accel a);
+
+/* The committed scene assets/scenes/NAME.scene at w x h (0 x 0: its own size). 0, or -1 with err. */
+int bench_load_scene(struct scene *s, const char *name, int w, int h, char *err, size_t errlen);
+/* Replace the objects of s by n spheres in view, in a ring around the camera's look_at. */
+void bench_spheres(struct scene *s, int n);
+/* The paper's Table 1 / Figure 5 settings: n_segs segments, n_steps steps in all, the scene's
+ * path length kept (the step is the scene's whole path over n_steps). */
+void bench_paper_steps(struct scene *s, int n_segs, int n_steps);
+
+/* Sections; each writes its part of BENCH.md and its CSV files. 0, or -1 with err. */
+int bench_table1(struct bench *b, char *err, size_t errlen);
+int bench_figure5(struct bench *b, char *err, size_t errlen);
+int bench_unrolling(struct bench *b, char *err, size_t errlen);
+int bench_batching(struct bench *b, char *err, size_t errlen);
+int bench_early_z(struct bench *b, char *err, size_t errlen);
+int bench_pareto(struct bench *b, char *err, size_t errlen);
+int bench_limit(struct bench *b, char *err, size_t errlen);
+
+/* Open out_dir/bench/NAME for writing (CSV, gnuplot script). NULL with err. */
+FILE *bench_data_file(struct bench *b, const char *name, char *err, size_t errlen);
+
+#endif

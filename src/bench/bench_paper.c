@@ -1,0 +1,159 @@
+/* The paper's own measurements, repeated: Table 1 (four models, 10 spheres, 30 segments, 300 steps)
+ * and Figure 5 (Schwarzschild, 50 segments, 500 steps, 1 to 20 spheres), without and with the
+ * acceleration techniques. */
+#include <math.h>
+#include <string.h>
+#include "bench/bench.h"
+#include "ref/compare.h"
+#include "ref/engine_cpu.h"
+
+#define T1_MODELS 4
+static const char *const t1_scene[T1_MODELS] = {"lorenz", "potential", "refraction", "schwarzschild"};
+static const char *const t1_title[T1_MODELS] = {"Lorenz system", "Potential field", "Varying index of refraction",
+                                                "Schwarzschild"};
+/* Weiskopf, Schafhitzel, Ertl 2004, Table 1: seconds per frame on a Radeon 9700 */
+static const double t1_paper[T1_MODELS][2] = {{3.87, 3.13}, {4.22, 1.16}, {3.35, 2.42}, {4.91, 3.79}};
+#define T1_TARGET_SECONDS 0.4
+
+static int table1_scene(struct bench *b, struct scene *s, int k, int w, int h, char *err, size_t errlen)
+{
+    if (bench_load_scene(s, t1_scene[k], w, h, err, errlen) != 0)
+        return -1;
+    bench_spheres(s, b->quick ? 2 : 10);
+    bench_paper_steps(s, 30, 300);
+    return 0;
+}
+
+/* Outcome differences and exit-direction p99 of the configuration against the reference, at a
+ * quarter of the size (the reference at 800x600 would take minutes per model). */
+static int table1_errors(struct bench *b, const struct scene *base, const struct dump *ref, enum bench_accel a,
+                         struct compare_result *c, char *err, size_t errlen)
+{
+    static struct scene s;
+    s = *base;
+    bench_apply_accel(&s, a);
+    struct bench_timing t;
+    struct dump d;
+    int saved = b->runs;
+    b->runs = 1;
+    int rc = bench_time(b, &s, &t, &d, err, errlen);
+    b->runs = saved;
+    if (rc != 0)
+        return -1;
+    rc = compare_dumps(&d, ref, c, err, errlen);
+    dump_free(&d);
+    return rc;
+}
+
+int bench_table1(struct bench *b, char *err, size_t errlen)
+{
+    FILE *csv = bench_data_file(b, "table1.csv", err, errlen);
+    if (!csv)
+        return -1;
+    fprintf(csv, "model,acceleration,median_s,min_s,max_s,passes,outcome_pct,sky_p99_rad\n");
+    fprintf(b->md, "## The paper's Table 1\n\n%dx%d, %d spheres, 30 segments, 300 integration steps (Euler, the "
+                   "paper's integrator), the path length of each model's scene. Columns: **none** is the paper's "
+                   "original scheme (one step per pass, one object per pass, every ray in every pass); **paper** "
+                   "adds the paper's acceleration techniques, early ray termination through the early-z test and "
+                   "step doubling (tolerance 1%% of the fixed step); **all** adds a whole segment per pass and "
+                   "all objects in one pass. Seconds per frame, median of %d runs. The error columns compare "
+                   "each configuration with the CPU reference at %dx%d: the share of pixels whose outcome "
+                   "differs, and the 99th percentile of the exit-direction error of sky pixels.\n\n",
+            b->width, b->height, b->quick ? 2 : 10, b->runs, b->width / 4, b->height / 4);
+    fprintf(b->md, "| model | none (s) | paper (s) | speed-up | all (s) | speed-up | Radeon 9700 none / with (s) | "
+                   "paper's speed-up | differing pixels none / paper / all | exit p99 none / paper / all (rad) |\n"
+                   "|---|---|---|---|---|---|---|---|---|---|\n");
+    int met_time = 1, met_speedup = 1;
+    for (int k = 0; k < T1_MODELS; k++) {
+        static struct scene s, small;
+        if (table1_scene(b, &s, k, b->width, b->height, err, errlen) != 0 ||
+            table1_scene(b, &small, k, b->width / 4, b->height / 4, err, errlen) != 0)
+            return -1;
+        struct cpu_image ref;
+        struct cpu_render_options o = {.threads = 0, .progress = 0};
+        ref_options_default(&o.ref, &small);
+        bench_progress(b, "table 1: %s, CPU reference at %dx%d", t1_scene[k], small.render.width,
+                       small.render.height);
+        if (cpu_render(&small, &o, &ref, err, errlen) != 0)
+            return -1;
+        struct bench_timing t[ACCEL_COUNT];
+        struct compare_result c[ACCEL_COUNT];
+        for (int a = 0; a < ACCEL_COUNT; a++) {
+            static struct scene run;
+            run = s;
+            bench_apply_accel(&run, (enum bench_accel)a);
+            bench_progress(b, "table 1: %s, acceleration %s", t1_scene[k], bench_accel_names[a]);
+            if (bench_time(b, &run, &t[a], NULL, err, errlen) != 0 ||
+                table1_errors(b, &small, &ref.dump, (enum bench_accel)a, &c[a], err, errlen) != 0) {
+                cpu_image_free(&ref);
+                return -1;
+            }
+            b->done++;
+            fprintf(csv, "%s,%s,%.4f,%.4f,%.4f,%ld,%.4f,%.3g\n", t1_scene[k], bench_accel_names[a], t[a].median,
+                    t[a].min, t[a].max, t[a].passes, 100.0 * c[a].outcome_fraction, c[a].sky_angle.p99);
+        }
+        cpu_image_free(&ref);
+        double paper_speedup = t1_paper[k][0] / t1_paper[k][1];
+        double speedup = t[ACCEL_NONE].median / t[ACCEL_ALL].median;
+        met_time &= t[ACCEL_ALL].median <= T1_TARGET_SECONDS;
+        met_speedup &= speedup >= paper_speedup;
+        fprintf(b->md, "| %s | %.3f | %.3f | %.2f | %.3f | %.2f | %.2f / %.2f | %.2f | %.2f%% / %.2f%% / %.2f%% | "
+                       "%.2g / %.2g / %.2g |\n",
+                t1_title[k], t[0].median, t[1].median, t[0].median / t[1].median, t[2].median, speedup,
+                t1_paper[k][0], t1_paper[k][1], paper_speedup, 100.0 * c[0].outcome_fraction,
+                100.0 * c[1].outcome_fraction, 100.0 * c[2].outcome_fraction, c[0].sky_angle.p99,
+                c[1].sky_angle.p99, c[2].sky_angle.p99);
+    }
+    fclose(csv);
+    fprintf(b->md, "\nTarget: with acceleration at most %.1f s per frame for every model: **%s**. "
+                   "Speed-up (none to all) at least the paper's for every model: **%s**.\n\n",
+            T1_TARGET_SECONDS, met_time ? "met" : "missed", met_speedup ? "met" : "missed");
+    return 0;
+}
+
+int bench_figure5(struct bench *b, char *err, size_t errlen)
+{
+    static const int counts_full[] = {1, 2, 5, 10, 15, 20}, counts_quick[] = {1, 2};
+    const int *counts = b->quick ? counts_quick : counts_full;
+    int n = b->quick ? 2 : 6;
+    FILE *csv = bench_data_file(b, "figure5.csv", err, errlen);
+    if (!csv)
+        return -1;
+    fprintf(csv, "spheres,none_s,paper_s,all_s\n");
+    fprintf(b->md, "## The paper's Figure 5\n\nSchwarzschild, %dx%d, 50 segments, 500 steps (Euler), 1 to 20 "
+                   "spheres; seconds per frame (median of %d runs) without acceleration, with the paper's, "
+                   "and with all. Plot: `bench/figure5.png`.\n\n| spheres | none (s) | paper (s) | all (s) |\n"
+                   "|---|---|---|---|\n", b->width, b->height, b->runs);
+    for (int i = 0; i < n; i++) {
+        double sec[ACCEL_COUNT];
+        for (int a = 0; a < ACCEL_COUNT; a++) {
+            static struct scene s;
+            if (bench_load_scene(&s, "schwarzschild", b->width, b->height, err, errlen) != 0)
+                return -1;
+            bench_spheres(&s, counts[i]);
+            bench_paper_steps(&s, 50, 500);
+            bench_apply_accel(&s, (enum bench_accel)a);
+            struct bench_timing t;
+            bench_progress(b, "figure 5: %d spheres, acceleration %s", counts[i], bench_accel_names[a]);
+            if (bench_time(b, &s, &t, NULL, err, errlen) != 0)
+                return -1;
+            b->done++;
+            sec[a] = t.median;
+        }
+        fprintf(csv, "%d,%.4f,%.4f,%.4f\n", counts[i], sec[0], sec[1], sec[2]);
+        fprintf(b->md, "| %d | %.3f | %.3f | %.3f |\n", counts[i], sec[0], sec[1], sec[2]);
+    }
+    fclose(csv);
+    fprintf(b->md, "\n");
+    FILE *gp = bench_data_file(b, "figure5.gp", err, errlen);
+    if (!gp)
+        return -1;
+    fprintf(gp, "set terminal pngcairo size 800,500\nset output 'figure5.png'\nset datafile separator ','\n"
+                "set key autotitle columnhead left top\nset xlabel 'spheres'\nset ylabel 'seconds per frame'\n"
+                "set title 'Schwarzschild, %dx%d, 50 segments, 500 steps (the paper, Figure 5)'\n"
+                "plot 'figure5.csv' using 1:2 with linespoints title 'no acceleration', "
+                "'' using 1:3 with linespoints title 'early-z + step doubling', "
+                "'' using 1:4 with linespoints title 'all techniques'\n", b->width, b->height);
+    fclose(gp);
+    return 0;
+}

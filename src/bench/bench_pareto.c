@@ -1,0 +1,269 @@
+/* Speed against error: for each scene, configurations of method, step, adaptive tolerance,
+ * precision and K, each timed and compared with the CPU reference; the Pareto front and the
+ * cheapest configuration reaching each error level. */
+#include <math.h>
+#include <string.h>
+#include "bench/bench.h"
+#include "ref/compare.h"
+#include "ref/engine_cpu.h"
+
+struct pareto_config {
+    const char *name;
+    enum integration_method method;
+    double step_factor;           /* step = scene step x factor, the segment length kept */
+    enum step_control control;
+    double tolerance;
+    int fp16, k1;
+    int scene_method;             /* keep the scene's method (the variants of the scene default) */
+};
+
+static const struct pareto_config configs[] = {
+    {"scene default", 0, 1.0, STEP_FIXED, 0, 0, 0, 1},
+    {"scene default, K = 1", 0, 1.0, STEP_FIXED, 0, 0, 1, 1},
+    {"scene default, fp16", 0, 1.0, STEP_FIXED, 0, 1, 0, 1},
+    {"euler, step x2", METHOD_EULER, 2.0, STEP_FIXED, 0, 0, 0, 0},
+    {"euler, step x1", METHOD_EULER, 1.0, STEP_FIXED, 0, 0, 0, 0},
+    {"euler, step x0.5", METHOD_EULER, 0.5, STEP_FIXED, 0, 0, 0, 0},
+    {"rk4, step x4", METHOD_RK4, 4.0, STEP_FIXED, 0, 0, 0, 0},
+    {"rk4, step x2", METHOD_RK4, 2.0, STEP_FIXED, 0, 0, 0, 0},
+    {"rk4, step x1", METHOD_RK4, 1.0, STEP_FIXED, 0, 0, 0, 0},
+    {"rk4, step x0.5", METHOD_RK4, 0.5, STEP_FIXED, 0, 0, 0, 0},
+    {"dopri5, step x4", METHOD_DOPRI5, 4.0, STEP_FIXED, 0, 0, 0, 0},
+    {"dopri5, step x2", METHOD_DOPRI5, 2.0, STEP_FIXED, 0, 0, 0, 0},
+    {"rk4 doubling, tol 1e-3", METHOD_RK4, 1.0, STEP_DOUBLING, 1e-3, 0, 0, 0},
+    {"rk4 doubling, tol 1e-4", METHOD_RK4, 1.0, STEP_DOUBLING, 1e-4, 0, 0, 0},
+    {"rk4 doubling, tol 1e-5", METHOD_RK4, 1.0, STEP_DOUBLING, 1e-5, 0, 0, 0},
+    {"dopri5 embedded, tol 1e-4", METHOD_DOPRI5, 1.0, STEP_EMBEDDED, 1e-4, 0, 0, 0},
+    {"dopri5 embedded, tol 1e-6", METHOD_DOPRI5, 1.0, STEP_EMBEDDED, 1e-6, 0, 0, 0},
+    {"dopri5 embedded, tol 1e-8", METHOD_DOPRI5, 1.0, STEP_EMBEDDED, 1e-8, 0, 0, 0},
+};
+#define N_CONFIGS (int)(sizeof configs / sizeof configs[0])
+
+struct pareto_scene {
+    const char *title, *scene;
+    int sky_only, paper_size;     /* objects removed; at the bench's 800x600 instead of the scene's size */
+};
+
+static const struct pareto_scene scenes[] = {
+    {"schwarzschild sky", "schwarzschild", 1, 1},
+    {"schwarzschild", "schwarzschild", 0, 0},
+    {"neutron_star", "neutron_star", 0, 0},
+    {"lorenz", "lorenz", 0, 0},
+    {"rossler", "rossler", 0, 0},
+    {"potential", "potential", 0, 0},
+    {"refraction", "refraction", 0, 0},
+};
+#define N_SCENES (int)(sizeof scenes / sizeof scenes[0])
+
+struct pareto_point {
+    double seconds, outcome_pct, sky_p99, hit_p99;
+    int front;
+};
+
+/* Largest K <= 64 dividing n (a segment ends on a pass boundary). */
+static int unroll_for(int n)
+{
+    for (int k = n < SCENE_MAX_STEPS_PER_PASS ? n : SCENE_MAX_STEPS_PER_PASS; k > 1; k--)
+        if (n % k == 0)
+            return k;
+    return 1;
+}
+
+static void apply_config(struct scene *s, const struct pareto_config *c)
+{
+    struct render_settings *r = &s->render;
+    double segment = r->steps_per_segment * r->step_size;
+    if (!c->scene_method)
+        r->method = c->method;
+    if (c->step_factor != 1.0) {
+        long n = lround(r->steps_per_segment / c->step_factor);
+        r->steps_per_segment = n < 1 ? 1 : (int)n;
+        r->step_size = segment / r->steps_per_segment;
+    }
+    r->step_control = c->control;
+    if (c->control != STEP_FIXED)
+        r->tolerance = c->tolerance;
+    r->early_z = 1;
+    r->batch = SCENE_MAX_BATCH;
+    r->steps_per_pass = c->k1 ? 1 : unroll_for(r->steps_per_segment);
+    if (c->fp16)
+        r->precision = PRECISION_FP16;
+}
+
+static double nan_as_zero(double x)
+{
+    return isnan(x) ? 0.0 : x;
+}
+
+/* i is dominated when another point is no slower and no less accurate in every measure, and
+ * better in one. */
+static void mark_front(struct pareto_point *p, int n)
+{
+    for (int i = 0; i < n; i++) {
+        p[i].front = 1;
+        for (int j = 0; j < n && p[i].front; j++) {
+            if (j == i)
+                continue;
+            double a[4] = {p[j].seconds, p[j].outcome_pct, nan_as_zero(p[j].sky_p99), nan_as_zero(p[j].hit_p99)};
+            double b[4] = {p[i].seconds, p[i].outcome_pct, nan_as_zero(p[i].sky_p99), nan_as_zero(p[i].hit_p99)};
+            int no_worse = 1, better = 0;
+            for (int k = 0; k < 4; k++) {
+                no_worse &= a[k] <= b[k];
+                better |= a[k] < b[k];
+            }
+            if (no_worse && better)
+                p[i].front = 0;
+        }
+    }
+}
+
+static int measure_scene(struct bench *b, int k, struct pareto_point *pts, FILE *csv, char *err, size_t errlen)
+{
+    const struct pareto_scene *ps = &scenes[k];
+    static struct scene base;
+    int w = b->quick ? 32 : ps->paper_size ? b->width : 0, h = b->quick ? 24 : ps->paper_size ? b->height : 0;
+    if (bench_load_scene(&base, ps->scene, w, h, err, errlen) != 0)
+        return -1;
+    if (ps->sky_only)
+        base.n_objects = 0;
+    struct cpu_image ref;
+    struct cpu_render_options o = {.threads = 0, .progress = 0};
+    ref_options_default(&o.ref, &base);
+    bench_progress(b, "speed against error: %s, CPU reference at %dx%d", ps->title, base.render.width,
+                   base.render.height);
+    if (cpu_render(&base, &o, &ref, err, errlen) != 0)
+        return -1;
+    int n = b->quick ? 3 : N_CONFIGS;
+    for (int c = 0; c < n; c++) {
+        static struct scene s;
+        s = base;
+        apply_config(&s, &configs[c]);
+        struct scene_error e;
+        if (scene_validate(&s, &e) != 0) {
+            snprintf(err, errlen, "internal: configuration %s of %s: %s", configs[c].name, ps->title, e.message);
+            cpu_image_free(&ref);
+            return -1;
+        }
+        struct bench_timing t;
+        struct dump d;
+        struct compare_result cr;
+        bench_progress(b, "speed against error: %s, %s", ps->title, configs[c].name);
+        if (bench_time(b, &s, &t, &d, err, errlen) != 0 || compare_dumps(&d, &ref.dump, &cr, err, errlen) != 0) {
+            cpu_image_free(&ref);
+            return -1;
+        }
+        dump_free(&d);
+        b->done++;
+        pts[c] = (struct pareto_point){t.median, 100.0 * cr.outcome_fraction, cr.sky_angle.p99, cr.hit_relative.p99, 0};
+    }
+    cpu_image_free(&ref);
+    mark_front(pts, n);
+    for (int c = 0; c < n; c++)
+        fprintf(csv, "%s,%s,%.5f,%.4f,%.4g,%.4g,%d\n", ps->title, configs[c].name, pts[c].seconds, pts[c].outcome_pct,
+                pts[c].sky_p99, pts[c].hit_p99, pts[c].front);
+    return n;
+}
+
+static int cheapest(const struct pareto_point *p, int n, int sky, double level)
+{
+    int best = -1;
+    for (int c = 0; c < n; c++) {
+        double e = sky ? p[c].sky_p99 : p[c].outcome_pct;
+        if (!(e <= level))
+            continue;
+        if (sky && p[c].outcome_pct > 1.0)   /* a direction error means little with many wrong outcomes */
+            continue;
+        if (best < 0 || p[c].seconds < p[best].seconds)
+            best = c;
+    }
+    return best;
+}
+
+static void print_scene(struct bench *b, int k, const struct pareto_point *p, int n)
+{
+    fprintf(b->md, "### %s\n\n| configuration | seconds | differing pixels | exit p99 (rad) | hit p99 (of size) | "
+                   "front |\n|---|---|---|---|---|---|\n", scenes[k].title);
+    for (int c = 0; c < n; c++)
+        fprintf(b->md, "| %s | %.4f | %.3f%% | %.2g | %.2g | %s |\n", configs[c].name, p[c].seconds, p[c].outcome_pct,
+                p[c].sky_p99, p[c].hit_p99, p[c].front ? "yes" : "" );
+    static const double sky_levels[] = {1e-2, 1e-3, 1e-4}, pct_levels[] = {1.0, 0.1};
+    fprintf(b->md, "\nCheapest configuration reaching: ");
+    for (int i = 0; i < 3; i++) {
+        int c = cheapest(p, n, 1, sky_levels[i]);
+        fprintf(b->md, "exit p99 <= %g rad: %s%s%.4f s%s; ", sky_levels[i], c < 0 ? "none" : configs[c].name,
+                c < 0 ? "" : " (", c < 0 ? 0.0 : p[c].seconds, c < 0 ? "" : ")");
+    }
+    for (int i = 0; i < 2; i++) {
+        int c = cheapest(p, n, 0, pct_levels[i]);
+        fprintf(b->md, "differing pixels <= %g%%: %s%s%.4f s%s%s", pct_levels[i], c < 0 ? "none" : configs[c].name,
+                c < 0 ? "" : " (", c < 0 ? 0.0 : p[c].seconds, c < 0 ? "" : ")", i == 0 ? "; " : ".\n\n");
+    }
+    fprintf(b->md, "The scene's own default is %son the front.\n\n", p[0].front ? "" : "not ");
+}
+
+#define SKY_TARGET_RAD 1e-3
+#define SKY_TARGET_SECONDS 0.1
+
+int bench_pareto(struct bench *b, char *err, size_t errlen)
+{
+    FILE *csv = bench_data_file(b, "pareto.csv", err, errlen);
+    FILE *dat = bench_data_file(b, "pareto.dat", err, errlen);
+    if (!csv || !dat) {
+        if (csv)
+            fclose(csv);
+        return -1;
+    }
+    fprintf(csv, "scene,configuration,seconds,outcome_pct,sky_p99_rad,hit_p99_rel,front\n");
+    fprintf(b->md, "## Speed against error\n\nEach scene at its own size (the Schwarzschild sky at %dx%d, without "
+                   "objects), in every configuration below, early-z on and all objects in one pass, K = the "
+                   "whole segment unless said; median seconds per frame of %d runs, and the error against the "
+                   "CPU reference of the scene default: differing outcomes, the 99th percentile of the exit "
+                   "direction error of sky pixels and of the hit error relative to the object's size. "
+                   "\"step xF\" multiplies the step and keeps the segment length. A configuration is on the "
+                   "front when no other is as fast and as accurate in all three measures and better in one. "
+                   "An adaptive configuration has a budget of steps, not of path; rays it leaves unfinished "
+                   "count as differing. Plot: `bench/pareto.png`.\n\n", b->width, b->height, b->runs);
+    int sky_target_met = 0;
+    double sky_target_seconds = NAN;
+    for (int k = 0; k < N_SCENES; k++) {
+        struct pareto_point pts[N_CONFIGS];
+        int n = measure_scene(b, k, pts, csv, err, errlen);
+        if (n < 0) {
+            fclose(csv);
+            fclose(dat);
+            return -1;
+        }
+        print_scene(b, k, pts, n);
+        fprintf(dat, "# %s\n", scenes[k].title);
+        for (int c = 0; c < n; c++)
+            if (pts[c].sky_p99 > 0.0 && pts[c].front)
+                fprintf(dat, "%.5f %.4g\n", pts[c].seconds, pts[c].sky_p99);
+        fprintf(dat, "\n\n");
+        if (k == 0) {
+            int c = cheapest(pts, n, 1, SKY_TARGET_RAD);
+            if (c >= 0) {
+                sky_target_seconds = pts[c].seconds;
+                sky_target_met = pts[c].seconds <= SKY_TARGET_SECONDS;
+            }
+        }
+        if (b->quick)
+            break;
+    }
+    fclose(csv);
+    fclose(dat);
+    fprintf(b->md, "Target: the Schwarzschild sky at %dx%d with exit-direction p99 at most %g rad in at most "
+                   "%.0f ms: **%s** (%.0f ms).\n\n", b->width, b->height, SKY_TARGET_RAD, 1e3 * SKY_TARGET_SECONDS,
+            sky_target_met ? "met" : "missed", 1e3 * sky_target_seconds);
+    FILE *gp = bench_data_file(b, "pareto.gp", err, errlen);
+    if (!gp)
+        return -1;
+    fprintf(gp, "set terminal pngcairo size 900,600\nset output 'pareto.png'\nset logscale xy\n"
+                "set xlabel 'seconds per frame'\nset ylabel 'exit direction error, p99 (rad)'\n"
+                "set title 'Pareto fronts: speed against error (front configurations only)'\nset key outside right\n"
+                "plot ");
+    for (int k = 0; k < (b->quick ? 1 : N_SCENES); k++)
+        fprintf(gp, "%s'pareto.dat' index %d with linespoints title '%s'", k ? ", " : "", k, scenes[k].title);
+    fprintf(gp, "\n");
+    fclose(gp);
+    return 0;
+}

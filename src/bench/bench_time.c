@@ -1,0 +1,76 @@
+/* Timing one configuration: warm-up, then the median of several frames on one GL context. */
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include "bench/bench.h"
+#include "render/frame.h"
+#include "render/renderer.h"
+
+double bench_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void bench_progress(struct bench *b, const char *fmt, ...)
+{
+    va_list ap;
+    fprintf(stderr, "[%d/%d] ", b->done, b->total);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fprintf(stderr, " (%.0f s)\n", bench_now() - b->started);
+}
+
+static int by_value(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+int bench_time(struct bench *b, const struct scene *s, struct bench_timing *t, struct dump *d, char *err,
+               size_t errlen)
+{
+    int bad;
+    struct renderer *r = renderer_create(b->ctx, s, err, errlen, &bad);
+    if (!r)
+        return -1;
+    double times[64];
+    int runs = b->runs < 64 ? b->runs : 64, rc = 0;
+    for (int k = 0; k <= runs && rc == 0; k++) {
+        rc = renderer_run(r, 0, 0, s->render.width, s->render.height, NULL, NULL, err, errlen);
+        struct render_result res;
+        if (rc == 0 && k > 0)
+            rc = renderer_read(r, &res, d && k == runs, err, errlen);
+        if (rc == 0 && k > 0) {
+            times[k - 1] = res.seconds;
+            t->passes = res.passes;
+            if (d && k == runs && result_to_dump(&res, s, renderer_path(r)->name, d) != 0) {
+                snprintf(err, errlen, "out of memory");
+                rc = -1;
+            }
+            render_result_free(&res);
+        }
+    }
+    snprintf(t->path, sizeof t->path, "%s", renderer_path(r)->name);
+    renderer_destroy(r);
+    if (rc != 0)
+        return -1;
+    qsort(times, (size_t)runs, sizeof times[0], by_value);
+    t->min = times[0];
+    t->max = times[runs - 1];
+    t->median = runs % 2 ? times[runs / 2] : 0.5 * (times[runs / 2 - 1] + times[runs / 2]);
+    return 0;
+}
+
+FILE *bench_data_file(struct bench *b, const char *name, char *err, size_t errlen)
+{
+    char path[BENCH_PATH_LEN + 64];
+    snprintf(path, sizeof path, "%s/%s", b->data_dir, name);
+    FILE *f = fopen(path, "w");
+    if (!f)
+        snprintf(err, errlen, "cannot write %s", path);
+    return f;
+}

@@ -1,0 +1,191 @@
+/* bentray bench: speed and speed against error, written to OUT/BENCH.md with CSV files and gnuplot
+ * scripts in OUT/bench/ (src/bench/). Benchmarks are never timed tests. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include "bench/bench.h"
+#include "cli/commands.h"
+#include "cli/options.h"
+#include "render/renderer.h"
+
+static const char *const section_names[] = {"table1", "figure5", "unrolling", "batching", "early-z", "pareto",
+                                            "limit"};
+#define N_SECTIONS (int)(sizeof section_names / sizeof section_names[0])
+static int (*const sections[N_SECTIONS])(struct bench *, char *, size_t) = {
+    bench_table1, bench_figure5, bench_unrolling, bench_batching, bench_early_z, bench_pareto, bench_limit};
+/* configurations each section times (for the progress count) */
+static const int section_steps[N_SECTIONS] = {12, 18, 5, 4, 6, 7 * 18, 2};
+static const int section_steps_quick[N_SECTIONS] = {12, 6, 5, 4, 6, 3, 2};
+
+static void usage(FILE *out)
+{
+    fprintf(out,
+            "usage: bentray bench --out DIR [options]\n"
+            "Measure the renderer: the paper's Table 1 and Figure 5, unrolling, objects per pass, early-z,\n"
+            "speed against error against the CPU reference, and the machine's limit. Writes DIR/BENCH.md,\n"
+            "and CSV files and gnuplot scripts in DIR/bench/ (`make bench` draws the plots).\n"
+            "  --out DIR            where to write (DIR must exist)\n"
+            "  --force              overwrite an existing DIR/BENCH.md and its data files\n"
+            "  --runs N             timed runs per configuration, the median is reported (1-63, default 3)\n"
+            "  --size WxH           frame size of the paper's measurements (default 800x600)\n"
+            "  --only S[,S...]      sections: table1, figure5, unrolling, batching, early-z, pareto, limit\n"
+            "  --quick              tiny frames and few configurations: proves the command works, measures nothing\n"
+            "  --backend NAME       egl, osmesa or auto (default)\n"
+            "exit codes: 0 ok, 1 runtime failure, 2 bad usage\n");
+}
+
+static int parse_only(const char *list, int *wanted)
+{
+    char buf[256];
+    snprintf(buf, sizeof buf, "%s", list);
+    for (char *save = NULL, *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
+        int found = 0;
+        for (int k = 0; k < N_SECTIONS; k++)
+            if (strcmp(tok, section_names[k]) == 0)
+                wanted[k] = found = 1;
+        if (!found) {
+            fprintf(stderr, "bentray bench: --only: unknown section '%s' (sections: table1, figure5, unrolling, "
+                            "batching, early-z, pareto, limit)\n", tok);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static void machine_line(FILE *md, const struct bench *b)
+{
+    char cpu[256] = "unknown CPU", line[256];
+    FILE *f = fopen("/proc/cpuinfo", "r");
+    while (f && fgets(line, sizeof line, f))
+        if (strncmp(line, "model name", 10) == 0) {
+            const char *colon = strchr(line, ':');
+            snprintf(cpu, sizeof cpu, "%s", colon ? colon + 2 : line);
+            cpu[strcspn(cpu, "\n")] = '\0';
+            break;
+        }
+    if (f)
+        fclose(f);
+    fprintf(md, "Machine: %s, %ld cores. GL: %s on %s. Frame size %dx%d; %d timed runs per configuration "
+                "after one warm-up, median reported. Times on a shared machine are noisy: compare "
+                "configurations within one run of the bench.\n\n",
+            cpu, sysconf(_SC_NPROCESSORS_ONLN), b->renderer, b->backend, b->width, b->height, b->runs);
+}
+
+int cmd_bench(int argc, char **argv)
+{
+    static struct bench b;
+    const char *out = NULL, *backend = "auto";
+    int force = 0, wanted[N_SECTIONS] = {0}, any = 0;
+    long runs = 3;
+    b.width = 800;
+    b.height = 600;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        int has_value = i + 1 < argc;
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            usage(stdout);
+            return EXIT_OK;
+        } else if (strcmp(a, "--force") == 0) {
+            force = 1;
+        } else if (strcmp(a, "--quick") == 0) {
+            b.quick = 1;
+        } else if (strcmp(a, "--out") == 0 && has_value) {
+            out = argv[++i];
+        } else if (strcmp(a, "--backend") == 0 && has_value) {
+            backend = argv[++i];
+            if (!option_backend_valid(backend)) {
+                fprintf(stderr, "bentray bench: --backend: expected egl, osmesa or auto, got '%s'\n", backend);
+                return EXIT_USAGE;
+            }
+        } else if (strcmp(a, "--runs") == 0 && has_value) {
+            if (option_parse_int(argv[++i], 1, 63, &runs) != 0) {
+                fprintf(stderr, "bentray bench: --runs: expected an integer from 1 to 63, got '%s'\n", argv[i]);
+                return EXIT_USAGE;
+            }
+        } else if (strcmp(a, "--size") == 0 && has_value) {
+            if (option_parse_size(argv[++i], &b.width, &b.height) != 0 || b.width < 16 || b.height < 16) {
+                fprintf(stderr, "bentray bench: --size: expected WxH, each from 16 to %d, got '%s'\n",
+                        SCENE_MAX_SIZE, argv[i]);
+                return EXIT_USAGE;
+            }
+        } else if (strcmp(a, "--only") == 0 && has_value) {
+            if (parse_only(argv[++i], wanted) != 0)
+                return EXIT_USAGE;
+            any = 1;
+        } else if (strcmp(a, "--out") == 0 || strcmp(a, "--backend") == 0 || strcmp(a, "--runs") == 0 ||
+                   strcmp(a, "--size") == 0 || strcmp(a, "--only") == 0) {
+            fprintf(stderr, "bentray bench: %s needs a value\n", a);
+            return EXIT_USAGE;
+        } else {
+            return option_unknown("bench", a, usage);
+        }
+    }
+    if (!out) {
+        fprintf(stderr, "bentray bench: --out DIR is required\n");
+        usage(stderr);
+        return EXIT_USAGE;
+    }
+    if (!any)
+        for (int k = 0; k < N_SECTIONS; k++)
+            wanted[k] = 1;
+    b.runs = (int)runs;
+    if (b.quick) {
+        b.width = 32;
+        b.height = 24;
+        b.runs = 1;
+    }
+    char md_path[BENCH_PATH_LEN + 16];
+    snprintf(b.out_dir, sizeof b.out_dir, "%s", out);
+    snprintf(b.data_dir, sizeof b.data_dir, "%s/bench", out);
+    snprintf(md_path, sizeof md_path, "%s/BENCH.md", out);
+    struct stat st;
+    if (stat(out, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        fprintf(stderr, "bentray bench: --out: %s is not a directory\n", out);
+        return EXIT_USAGE;
+    }
+    if (!force && stat(md_path, &st) == 0) {
+        fprintf(stderr, "bentray bench: %s exists; pass --force to overwrite it and its data in %s\n", md_path,
+                b.data_dir);
+        return EXIT_USAGE;
+    }
+    if (mkdir(b.data_dir, 0755) != 0 && errno != EEXIST) {
+        fprintf(stderr, "bentray bench: cannot create %s: %s\n", b.data_dir, strerror(errno));
+        return EXIT_RUNTIME;
+    }
+    char err[2048];
+    b.ctx = gl_context_create(backend, err, sizeof err);
+    if (!b.ctx) {
+        fprintf(stderr, "bentray bench: %s\n", err);
+        return EXIT_RUNTIME;
+    }
+    snprintf(b.backend, sizeof b.backend, "%s", b.ctx->backend);
+    snprintf(b.renderer, sizeof b.renderer, "%s", (const char *)glGetString(GL_RENDERER));
+    b.md = fopen(md_path, "w");
+    if (!b.md) {
+        fprintf(stderr, "bentray bench: cannot write %s: %s\n", md_path, strerror(errno));
+        gl_context_destroy(b.ctx);
+        return EXIT_RUNTIME;
+    }
+    for (int k = 0; k < N_SECTIONS; k++)
+        b.total += wanted[k] ? (b.quick ? section_steps_quick : section_steps)[k] : 0;
+    b.started = bench_now();
+    fprintf(b.md, "# Benchmarks\n\nWritten by `make bench` (`bentray bench --out docs --force`, then gnuplot on "
+                  "the scripts in `docs/bench/`); every figure below comes from that run.%s\n\n",
+            b.quick ? " **Quick mode: tiny frames, the figures mean nothing.**" : "");
+    machine_line(b.md, &b);
+    int rc = EXIT_OK;
+    for (int k = 0; k < N_SECTIONS && rc == EXIT_OK; k++)
+        if (wanted[k] && sections[k](&b, err, sizeof err) != 0) {
+            fprintf(stderr, "bentray bench: %s: %s\n", section_names[k], err);
+            rc = EXIT_RUNTIME;
+        }
+    fprintf(b.md, "Total bench time: %.0f s.\n", bench_now() - b.started);
+    fclose(b.md);
+    gl_context_destroy(b.ctx);
+    if (rc == EXIT_OK)
+        fprintf(stderr, "bentray bench: wrote %s and %s/\n", md_path, b.data_dir);
+    return rc;
+}
