@@ -27,71 +27,83 @@ static int time_one(struct bench *b, const struct scene *s, const char *what, st
 
 #define UNROLL_TARGET 8.0
 
+/* Time the technique scene for each value of one integer setting; the speed-up over the first. */
+struct sweep {
+    const char *csv, *column, *what;   /* CSV file, its first column, the progress label */
+    const int *values;
+    int n, segments;
+    void (*apply)(struct scene *s, int value);
+};
+
+static int run_sweep(struct bench *b, const struct sweep *w, double *speedup, char *err, size_t errlen)
+{
+    FILE *csv = bench_data_file(b, w->csv, err, errlen);
+    if (!csv)
+        return -1;
+    fprintf(csv, "%s,median_s,passes,speedup\n", w->column);
+    fprintf(b->md, "| %s | seconds | passes | speed-up over %d |\n|---|---|---|---|\n", w->column, w->values[0]);
+    double base = 0.0;
+    for (int i = 0; i < w->n; i++) {
+        static struct scene s;
+        if (technique_scene(b, &s, w->segments, err, errlen) != 0) {
+            fclose(csv);
+            return -1;
+        }
+        w->apply(&s, w->values[i]);
+        char what[96];
+        snprintf(what, sizeof what, "%s %d", w->what, w->values[i]);
+        struct bench_timing t;
+        if (time_one(b, &s, what, &t, err, errlen) != 0) {
+            fclose(csv);
+            return -1;
+        }
+        base = i == 0 ? t.median : base;
+        speedup[i] = base / t.median;
+        fprintf(csv, "%d,%.4f,%ld,%.3f\n", w->values[i], t.median, t.passes, speedup[i]);
+        fprintf(b->md, "| %d | %.3f | %ld | %.2f |\n", w->values[i], t.median, t.passes, speedup[i]);
+    }
+    fclose(csv);
+    return 0;
+}
+
+static void apply_unroll(struct scene *s, int k)
+{
+    s->render.steps_per_pass = k;
+    s->render.batch = SCENE_MAX_BATCH;
+}
+
+static void apply_batch(struct scene *s, int batch)
+{
+    s->render.steps_per_pass = 10;
+    s->render.early_z = 1;
+    s->render.batch = batch;
+}
+
 int bench_unrolling(struct bench *b, char *err, size_t errlen)
 {
     static const int ks[] = {1, 4, 10, 30, 60};
-    FILE *csv = bench_data_file(b, "unrolling.csv", err, errlen);
-    if (!csv)
-        return -1;
-    fprintf(csv, "steps_per_pass,median_s,passes,speedup\n");
+    const struct sweep w = {"unrolling.csv", "K", "unrolling: K =", ks, 5, 5, apply_unroll};
+    double speedup[5];
     fprintf(b->md, "## Unrolled integration\n\nK integration steps per pass (K = 1 is the paper's scheme); the "
                    "Table 1 Schwarzschild frame, 5 segments of 60 steps, all objects in one pass, early-z off. "
-                   "Unrolling is exact: the rays are the same for every K (tests/unit/test_acceleration.c).\n\n"
-                   "| K | seconds | passes | speed-up over K = 1 |\n|---|---|---|---|\n");
-    double base = 0.0, at10 = 0.0;
-    for (size_t i = 0; i < sizeof ks / sizeof ks[0]; i++) {
-        static struct scene s;
-        if (technique_scene(b, &s, 5, err, errlen) != 0)
-            return -1;
-        s.render.steps_per_pass = ks[i];
-        s.render.batch = SCENE_MAX_BATCH;
-        char what[64];
-        snprintf(what, sizeof what, "unrolling: K = %d", ks[i]);
-        struct bench_timing t;
-        if (time_one(b, &s, what, &t, err, errlen) != 0)
-            return -1;
-        if (i == 0)
-            base = t.median;
-        if (ks[i] == 10)
-            at10 = base / t.median;
-        fprintf(csv, "%d,%.4f,%ld,%.3f\n", ks[i], t.median, t.passes, base / t.median);
-        fprintf(b->md, "| %d | %.3f | %ld | %.2f |\n", ks[i], t.median, t.passes, base / t.median);
-    }
-    fclose(csv);
+                   "Unrolling is exact: the rays are the same for every K (tests/unit/test_acceleration.c).\n\n");
+    if (run_sweep(b, &w, speedup, err, errlen) != 0)
+        return -1;
     fprintf(b->md, "\nTarget: K = 10 at least %.0f times faster than K = 1: **%s** (%.2f).\n\n", UNROLL_TARGET,
-            at10 >= UNROLL_TARGET ? "met" : "missed", at10);
+            speedup[2] >= UNROLL_TARGET ? "met" : "missed", speedup[2]);
     return 0;
 }
 
 int bench_batching(struct bench *b, char *err, size_t errlen)
 {
     static const int batches[] = {1, 2, 5, 10};
-    FILE *csv = bench_data_file(b, "batching.csv", err, errlen);
-    if (!csv)
-        return -1;
-    fprintf(csv, "batch,median_s,passes,speedup\n");
+    const struct sweep w = {"batching.csv", "objects per pass", "batching: objects per pass", batches, 4, 30,
+                            apply_batch};
+    double speedup[4];
     fprintf(b->md, "## Objects per pass\n\nThe Table 1 Schwarzschild frame (10 spheres, 30 segments of 10 steps, "
-                   "K = 10, early-z on); batch 1 is the paper's one pass per object. Exact for every batch size.\n\n"
-                   "| objects per pass | seconds | passes | speed-up over 1 |\n|---|---|---|---|\n");
-    double base = 0.0;
-    for (size_t i = 0; i < sizeof batches / sizeof batches[0]; i++) {
-        static struct scene s;
-        if (technique_scene(b, &s, 30, err, errlen) != 0)
-            return -1;
-        s.render.steps_per_pass = 10;
-        s.render.early_z = 1;
-        s.render.batch = batches[i];
-        char what[64];
-        snprintf(what, sizeof what, "batching: %d objects per pass", batches[i]);
-        struct bench_timing t;
-        if (time_one(b, &s, what, &t, err, errlen) != 0)
-            return -1;
-        if (i == 0)
-            base = t.median;
-        fprintf(csv, "%d,%.4f,%ld,%.3f\n", batches[i], t.median, t.passes, base / t.median);
-        fprintf(b->md, "| %d | %.3f | %ld | %.2f |\n", batches[i], t.median, t.passes, base / t.median);
-    }
-    fclose(csv);
+                   "K = 10, early-z on); batch 1 is the paper's one pass per object. Exact for every batch size.\n\n");
+    if (run_sweep(b, &w, speedup, err, errlen) != 0)
+        return -1;
     fprintf(b->md, "\n");
     return 0;
 }

@@ -2,6 +2,7 @@
 #ifndef BT_TEST_FIXTURE_H
 #define BT_TEST_FIXTURE_H
 #include <stdio.h>
+#include <string.h>
 #include "scene/scene.h"
 #include "scene/scene_keys.h"
 
@@ -22,6 +23,18 @@ static inline void fixture_load_scene(struct scene *s, const char *name, int wid
     s->render.height = height;
     if (scene_validate(s, &err) != 0)
         fail_msg("%s: %s", err.where, err.message);
+}
+
+/* A model of the given type with scale and strength 1 and every other parameter 0; the caller sets
+ * what its test needs. */
+static inline struct model fixture_model(enum model_type type)
+{
+    struct model m;
+    memset(&m, 0, sizeof m);
+    m.type = type;
+    m.scale = 1.0;
+    m.strength = 1.0;
+    return m;
 }
 
 #endif

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "bench/cpu_limit.h"
+#include "fixture.h"
 
 /* One float step against one double step from the same state, relative to |x| and |v|: the float
  * result is the exact one rounded once (2^-24 = 6e-8, measured 5e-8 to 6e-8 on every model here) plus
@@ -26,20 +27,11 @@
 /* The force must have changed v by this many tolerances, or agreement would prove nothing. */
 #define MIN_BENDING_IN_TOLERANCES 100.0
 
-static struct model model_of(enum model_type type)
-{
-    struct model m;
-    memset(&m, 0, sizeof m);
-    m.type = type;
-    m.scale = 1.0;
-    m.strength = 1.0;
-    return m;
-}
 
 /* assets/scenes/demo.scene and neutron_star.scene */
 static struct model schwarzschild_demo(void)
 {
-    struct model m = model_of(MODEL_SCHWARZSCHILD);
+    struct model m = fixture_model(MODEL_SCHWARZSCHILD);
     m.mass = 1.0;
     return m;
 }
@@ -47,7 +39,7 @@ static struct model schwarzschild_demo(void)
 /* assets/scenes/schwarzschild.scene */
 static struct model schwarzschild_small(void)
 {
-    struct model m = model_of(MODEL_SCHWARZSCHILD);
+    struct model m = fixture_model(MODEL_SCHWARZSCHILD);
     m.center = v3(0.0, 0.3, 4.0);
     m.mass = 0.12;
     return m;
@@ -56,7 +48,7 @@ static struct model schwarzschild_small(void)
 /* assets/scenes/lorenz.scene */
 static struct model lorenz(void)
 {
-    struct model m = model_of(MODEL_LORENZ);
+    struct model m = fixture_model(MODEL_LORENZ);
     m.sigma = 10.0;
     m.rho = 28.0;
     m.beta = 8.0 / 3.0;
@@ -68,7 +60,7 @@ static struct model lorenz(void)
 /* assets/scenes/rossler.scene */
 static struct model rossler(void)
 {
-    struct model m = model_of(MODEL_ROSSLER);
+    struct model m = fixture_model(MODEL_ROSSLER);
     m.ross_a = 0.375;
     m.ross_b = 2.0;
     m.ross_c = 4.0;
@@ -80,7 +72,7 @@ static struct model rossler(void)
 /* assets/scenes/potential.scene */
 static struct model yukawa(void)
 {
-    struct model m = model_of(MODEL_POTENTIAL);
+    struct model m = fixture_model(MODEL_POTENTIAL);
     m.center = v3(0.0, 0.2, 2.5);
     m.profile = PROFILE_YUKAWA;
     m.zeta = -1.5;
@@ -91,7 +83,7 @@ static struct model yukawa(void)
 /* The scene defaults of the polynomial profile: strength 1, range 5. */
 static struct model polynomial(void)
 {
-    struct model m = model_of(MODEL_POTENTIAL);
+    struct model m = fixture_model(MODEL_POTENTIAL);
     m.profile = PROFILE_POLYNOMIAL;
     m.strength = 1.0;
     m.radius = 5.0;
@@ -101,7 +93,7 @@ static struct model polynomial(void)
 /* assets/scenes/refraction.scene */
 static struct model refraction(void)
 {
-    struct model m = model_of(MODEL_REFRACTION);
+    struct model m = fixture_model(MODEL_REFRACTION);
     m.center = v3(0.0, 0.0, 3.0);
     m.amplitude = 0.15;
     m.shell_radius = 1.8;
@@ -208,7 +200,7 @@ static void test_refraction_step(void **state)
 static void test_flat_step_changes_nothing(void **state)
 {
     (void)state;
-    struct model m = model_of(MODEL_FLAT);
+    struct model m = fixture_model(MODEL_FLAT);
     float x[3] = {1, 2, 3}, v[3] = {0, 0, -1};
     cpu_limit_step(&m, METHOD_RK4, 0.1f, x, v);
     assert_true(x[0] == 1.0f && x[1] == 2.0f && x[2] == 3.0f);
@@ -270,7 +262,7 @@ static void test_measure_refuses(void **state)
     (void)state;
     struct cpu_limit_result r;
     char err[256] = "";
-    struct model flat = model_of(MODEL_FLAT);
+    struct model flat = fixture_model(MODEL_FLAT);
     assert_int_equal(cpu_limit_measure(&flat, METHOD_RK4, 100, 1, 1, 0.0, &r, err, sizeof err), -1);
     assert_non_null(strstr(err, "flat"));
     struct model m = schwarzschild_demo();

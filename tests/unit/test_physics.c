@@ -11,6 +11,7 @@
 
 #include "physics/intersect.h"
 #include "physics/model.h"
+#include "fixture.h"
 
 /* Formulas evaluated once in double: only a few roundings separate them from hand values. */
 #define ROUNDING_TOL 1e-12
@@ -32,19 +33,10 @@ static void assert_vec_near(vec3d got, vec3d want, double tol, const char *what)
     assert_near(got.z, want.z, tol, what);
 }
 
-static struct model make_model(enum model_type type)
-{
-    struct model m;
-    memset(&m, 0, sizeof m);
-    m.type = type;
-    m.scale = 1.0;
-    m.strength = 1.0;
-    return m;
-}
 
 static struct model schwarzschild(double mass)
 {
-    struct model m = make_model(MODEL_SCHWARZSCHILD);
+    struct model m = fixture_model(MODEL_SCHWARZSCHILD);
     m.mass = mass;
     return m;
 }
@@ -69,7 +61,7 @@ static void test_names(void **state)
 static void test_flat(void **state)
 {
     (void)state;
-    struct model m = make_model(MODEL_FLAT);
+    struct model m = fixture_model(MODEL_FLAT);
     vec3d dir = v3(0.6, 0.0, 0.8);
     assert_vec_near(model_accel(&m, v3(3, -2, 7), v3(1, 2, 3)), v3(0, 0, 0), 0.0, "flat force");
     assert_vec_near(model_initial_velocity(&m, v3(3, -2, 7), dir), dir, 0.0, "flat velocity");
@@ -80,7 +72,7 @@ static void test_flat(void **state)
 static void test_lorenz_value(void **state)
 {
     (void)state;
-    struct model m = make_model(MODEL_LORENZ);
+    struct model m = fixture_model(MODEL_LORENZ);
     m.center = v3(1, 2, 3);
     m.scale = 2.0;
     m.strength = 0.5;
@@ -97,7 +89,7 @@ static void test_lorenz_value(void **state)
 static void test_rossler_value(void **state)
 {
     (void)state;
-    struct model m = make_model(MODEL_ROSSLER);
+    struct model m = fixture_model(MODEL_ROSSLER);
     m.center = v3(-1, 0, 1);
     m.scale = 0.5;
     m.strength = 2.0;
@@ -111,7 +103,7 @@ static void test_rossler_value(void **state)
 
 static struct model yukawa(double zeta, double mu)
 {
-    struct model m = make_model(MODEL_POTENTIAL);
+    struct model m = fixture_model(MODEL_POTENTIAL);
     m.profile = PROFILE_YUKAWA;
     m.zeta = zeta;
     m.mu = mu;
@@ -160,7 +152,7 @@ static void test_yukawa_is_minus_gradient(void **state)
 static void test_polynomial_profile(void **state)
 {
     (void)state;
-    struct model m = make_model(MODEL_POTENTIAL);
+    struct model m = fixture_model(MODEL_POTENTIAL);
     m.profile = PROFILE_POLYNOMIAL;
     m.strength = 3.0;
     m.radius = 2.0;
@@ -177,7 +169,7 @@ static void test_polynomial_profile(void **state)
 
 static struct model explosion(void)
 {
-    struct model m = make_model(MODEL_REFRACTION);
+    struct model m = fixture_model(MODEL_REFRACTION);
     m.center = v3(0.5, -0.2, 0.1);
     m.amplitude = 0.3;
     m.shell_radius = 2.0;
@@ -420,7 +412,7 @@ static void test_schwarzschild_mass_to_zero(void **state)
 static void test_euler_is_eq2(void **state)
 {
     (void)state;
-    struct model m = make_model(MODEL_LORENZ);
+    struct model m = fixture_model(MODEL_LORENZ);
     m.sigma = 10.0;
     m.rho = 28.0;
     m.beta = 8.0 / 3.0;

@@ -13,18 +13,10 @@
 
 #include "physics/model.h"
 #include "ref/reference.h"
+#include "fixture.h"
 
 static const double pi = 3.14159265358979323846;
 
-static struct model make_model(enum model_type type)
-{
-    struct model m;
-    memset(&m, 0, sizeof m);
-    m.type = type;
-    m.scale = 1.0;
-    m.strength = 1.0;
-    return m;
-}
 
 /* Options as ref_options_default gives them for a scene whose bounding radius is `size`. */
 static struct ref_options options(double rtol, double size)
@@ -47,7 +39,7 @@ static double angle_between(vec3d a, vec3d b)
 
 static struct model coulomb(double zeta, vec3d centre)
 {
-    struct model m = make_model(MODEL_POTENTIAL);
+    struct model m = fixture_model(MODEL_POTENTIAL);
     m.profile = PROFILE_YUKAWA;
     m.zeta = zeta;
     m.mu = 0.0;
@@ -181,7 +173,7 @@ struct flow_case {
 static struct flow_case flow(enum model_type type)
 {
     struct flow_case f;
-    f.model = make_model(type);
+    f.model = fixture_model(type);
     f.model.scale = 10.0;
     if (type == MODEL_LORENZ) {
         f.name = "lorenz";
@@ -296,7 +288,7 @@ struct conv_case {
 static struct conv_case conv_case(enum model_type type)
 {
     struct conv_case c;
-    c.model = make_model(type);
+    c.model = fixture_model(type);
     c.x0 = v3(-4.0, 0.5, 0.3);
     c.v0 = v3(1.0, 0.0, 0.0);
     c.length = 10.0;
