@@ -188,15 +188,15 @@ static void print_scene(struct bench *b, int k, const struct pareto_point *p, in
                 p[c].sky_p99, p[c].hit_p99, p[c].front ? "yes" : "" );
     static const double sky_levels[] = {1e-2, 1e-3, 1e-4}, pct_levels[] = {1.0, 0.1};
     fprintf(b->md, "\nCheapest configuration reaching: ");
-    for (int i = 0; i < 3; i++) {
-        int c = cheapest(p, n, 1, sky_levels[i]);
-        fprintf(b->md, "exit p99 <= %g rad: %s%s%.4f s%s; ", sky_levels[i], c < 0 ? "none" : configs[c].name,
-                c < 0 ? "" : " (", c < 0 ? 0.0 : p[c].seconds, c < 0 ? "" : ")");
-    }
-    for (int i = 0; i < 2; i++) {
-        int c = cheapest(p, n, 0, pct_levels[i]);
-        fprintf(b->md, "differing pixels <= %g%%: %s%s%.4f s%s%s", pct_levels[i], c < 0 ? "none" : configs[c].name,
-                c < 0 ? "" : " (", c < 0 ? 0.0 : p[c].seconds, c < 0 ? "" : ")", i == 0 ? "; " : ".\n\n");
+    for (int i = 0; i < 5; i++) {
+        int sky = i < 3;
+        double level = sky ? sky_levels[i] : pct_levels[i - 3];
+        int c = cheapest(p, n, sky, level);
+        char found[96] = "none";
+        if (c >= 0)
+            snprintf(found, sizeof found, "%s (%.4f s)", configs[c].name, p[c].seconds);
+        fprintf(b->md, sky ? "exit p99 <= %g rad: %s; " : "differing pixels <= %g%%: %s", level, found);
+        fprintf(b->md, "%s", i == 3 ? "; " : i == 4 ? ".\n\n" : "");
     }
     fprintf(b->md, "The scene's own default is %son the front.\n\n", p[0].front ? "" : "not ");
 }
