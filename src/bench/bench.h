@@ -37,7 +37,7 @@ void bench_progress(struct bench *b, const char *fmt, ...) __attribute__((format
 
 /* Render s runs + 1 times on the bench's context (the first, which compiles the shaders, is not
  * timed); the median frame time. With d, the last frame's per-pixel dump. 0, or -1 with err. */
-int bench_time(struct bench *b, const struct scene *s, struct bench_timing *t, struct dump *d, char *err,
+int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_timing *t, struct dump *d, char *err,
                size_t errlen);
 
 /* Acceleration presets (the Table 1 columns). */

@@ -148,7 +148,7 @@ static int measure_scene(struct bench *b, int k, struct pareto_point *pts, FILE 
         struct dump d;
         struct compare_result cr;
         bench_progress(b, "speed against error: %s, %s", ps->title, configs[c].name);
-        if (bench_time(b, &s, &t, &d, err, errlen) != 0 || compare_dumps(&d, &ref.dump, &cr, err, errlen) != 0) {
+        if (bench_time(b, &s, b->runs, &t, &d, err, errlen) != 0 || compare_dumps(&d, &ref.dump, &cr, err, errlen) != 0) {
             cpu_image_free(&ref);
             return -1;
         }

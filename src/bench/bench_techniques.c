@@ -20,7 +20,7 @@ static int time_one(struct bench *b, const struct scene *s, const char *what, st
                     size_t errlen)
 {
     bench_progress(b, "%s", what);
-    int rc = bench_time(b, s, t, NULL, err, errlen);
+    int rc = bench_time(b, s, b->runs, t, NULL, err, errlen);
     b->done++;
     return rc;
 }

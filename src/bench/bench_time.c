@@ -30,7 +30,7 @@ static int by_value(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-int bench_time(struct bench *b, const struct scene *s, struct bench_timing *t, struct dump *d, char *err,
+int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_timing *t, struct dump *d, char *err,
                size_t errlen)
 {
     int bad;
@@ -38,7 +38,8 @@ int bench_time(struct bench *b, const struct scene *s, struct bench_timing *t, s
     if (!r)
         return -1;
     double times[64];
-    int runs = b->runs < 64 ? b->runs : 64, rc = 0;
+    runs = runs < 1 ? 1 : runs < 64 ? runs : 64;
+    int rc = 0;
     for (int k = 0; k <= runs && rc == 0; k++) {
         rc = renderer_run(r, 0, 0, s->render.width, s->render.height, NULL, NULL, err, errlen);
         struct render_result res;
