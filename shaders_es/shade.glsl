@@ -4,6 +4,9 @@ uniform vec3 u_ambient_light;
 #if LIGHT_COUNT > 0
 uniform vec3 u_light_position[LIGHT_COUNT];
 uniform vec3 u_light_color[LIGHT_COUNT];
+#ifdef DOPPLER_COLOUR
+uniform float u_light_temperature[LIGHT_COUNT];   // K; 0: an RGB light
+#endif
 #endif
 
 struct surface_material {
@@ -23,6 +26,13 @@ vec3 shade(vec3 p, vec3 normal, vec2 uv, vec3 ray_direction, surface_material m)
             base = m.checker_color;
     }
     vec3 color = m.emission + m.factors.x * u_ambient_light * base;
+#ifdef DOPPLER_COLOUR
+    // light reaching the observer from a static emitter at e: D = D_kinematic * lapse(e) / lapse(camera)
+    float doppler_at_camera = observer_doppler(observer_view_direction()) / u_observer_lapse;
+    // the paper's reflectance factor f_ar (Eq. 18) takes the grey value of the RGB material
+    float reflectance = 0.5 * (dot(base, vec3(0.3, 0.59, 0.11)) + 1.0);
+    vec3 black_bodies = vec3(0.0);
+#endif
 #if LIGHT_COUNT > 0
     vec3 to_viewer = -ray_direction;
     vec3 n = dot(normal, to_viewer) < 0.0 ? -normal : normal;    // surfaces are two-sided
@@ -31,8 +41,25 @@ vec3 shade(vec3 p, vec3 normal, vec2 uv, vec3 ray_direction, surface_material m)
         float lambert = max(dot(n, to_light), 0.0);
         vec3 halfway = normalize(to_light + to_viewer);
         float specular = lambert > 0.0 ? pow(max(dot(n, halfway), 0.0), m.factors.w) : 0.0;
-        color += u_light_color[i] * (m.factors.y * lambert * base + m.factors.z * specular);
+        vec3 rgb_lit = u_light_color[i] * (m.factors.y * lambert * base + m.factors.z * specular);
+#ifdef DOPPLER_COLOUR
+        float light_doppler = doppler_at_camera * static_lapse(u_light_position[i]);
+        vec3 black_body = u_light_color[i] * reflectance * (m.factors.y * lambert + m.factors.z * specular) *
+                          blackbody_colour(u_light_temperature[i] * light_doppler);
+        bool is_black_body = u_light_temperature[i] > 0.0;
+        black_bodies += is_black_body ? black_body : vec3(0.0);
+        rgb_lit = is_black_body ? vec3(0.0) : rgb_lit;
+#endif
+        color += rgb_lit;
     }
+#endif
+#ifdef SEARCHLIGHT
+    // RGB light has no spectrum to shift: its bolometric radiance scales with D^4
+    float surface_doppler = doppler_at_camera * static_lapse(p);
+    color *= surface_doppler * surface_doppler * surface_doppler * surface_doppler;
+#endif
+#ifdef DOPPLER_COLOUR
+    color += black_bodies;
 #endif
     return color;
 }

@@ -7,6 +7,9 @@ uniform samplerCube u_sky;
 #else
 uniform vec3 u_sky_color;
 #endif
+#ifdef DOPPLER_COLOUR
+uniform float u_sky_temperature;      // K; 0: an RGB sky
+#endif
 
 vec3 sky(vec3 direction)
 {
@@ -21,8 +24,20 @@ void main()
 {
     vec4 image = fetch(u_image);
     vec3 color = image.rgb;
-    if (image.a == CODE_SKY || image.a == CODE_UNFINISHED)
+    if (image.a == CODE_SKY || image.a == CODE_UNFINISHED) {
         color = sky(normalize(fetch(u_ray_velocity).xyz));
+#ifdef DOPPLER_COLOUR
+        // the sky rests at infinity (lapse 1)
+        float doppler = observer_doppler(observer_view_direction()) / u_observer_lapse;
+        vec3 black_body = rgb_luminance(color) * blackbody_colour(u_sky_temperature * doppler);
+#ifdef SEARCHLIGHT
+        vec3 rgb = color * (doppler * doppler * doppler * doppler);
+#else
+        vec3 rgb = color;
+#endif
+        color = u_sky_temperature > 0.0 ? black_body : rgb;
+#endif
+    }
     else if (image.a < -0.5)
         color = vec3(0.0);
     gl_FragColor = vec4(clamp(color, 0.0, 1.0), 1.0);

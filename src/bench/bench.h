@@ -60,6 +60,8 @@ int bench_unrolling(struct bench *b, char *err, size_t errlen);
 int bench_batching(struct bench *b, char *err, size_t errlen);
 int bench_early_z(struct bench *b, char *err, size_t errlen);
 int bench_pareto(struct bench *b, char *err, size_t errlen);
+/* configurations bench_pareto times in all (for the progress count) */
+extern const int bench_pareto_count;
 int bench_limit(struct bench *b, char *err, size_t errlen);
 
 /* Open out_dir/bench/NAME for writing (CSV, gnuplot script). NULL with err. */

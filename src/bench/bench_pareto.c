@@ -6,36 +6,44 @@
 #include "bench/bench.h"
 #include "ref/compare.h"
 #include "ref/engine_cpu.h"
+#include "ref/quality.h"
 
 struct pareto_config {
     const char *name;
     enum integration_method method;
     double step_factor;           /* step = scene step x factor, the segment length kept */
+    double segment_factor;        /* segment = scene segment x factor, the step and the path kept */
     enum step_control control;
     double tolerance;
     int fp16, k1;
     int scene_method;             /* keep the scene's method (the variants of the scene default) */
+    double step_max_factor;       /* adaptive: step_max = scene step x factor (0: the default, x64) */
 };
 
 static const struct pareto_config configs[] = {
-    {"scene default", 0, 1.0, STEP_FIXED, 0, 0, 0, 1},
-    {"scene default, K = 1", 0, 1.0, STEP_FIXED, 0, 0, 1, 1},
-    {"scene default, fp16", 0, 1.0, STEP_FIXED, 0, 1, 0, 1},
-    {"euler, step x2", METHOD_EULER, 2.0, STEP_FIXED, 0, 0, 0, 0},
-    {"euler, step x1", METHOD_EULER, 1.0, STEP_FIXED, 0, 0, 0, 0},
-    {"euler, step x0.5", METHOD_EULER, 0.5, STEP_FIXED, 0, 0, 0, 0},
-    {"rk4, step x4", METHOD_RK4, 4.0, STEP_FIXED, 0, 0, 0, 0},
-    {"rk4, step x2", METHOD_RK4, 2.0, STEP_FIXED, 0, 0, 0, 0},
-    {"rk4, step x1", METHOD_RK4, 1.0, STEP_FIXED, 0, 0, 0, 0},
-    {"rk4, step x0.5", METHOD_RK4, 0.5, STEP_FIXED, 0, 0, 0, 0},
-    {"dopri5, step x4", METHOD_DOPRI5, 4.0, STEP_FIXED, 0, 0, 0, 0},
-    {"dopri5, step x2", METHOD_DOPRI5, 2.0, STEP_FIXED, 0, 0, 0, 0},
-    {"rk4 doubling, tol 1e-3", METHOD_RK4, 1.0, STEP_DOUBLING, 1e-3, 0, 0, 0},
-    {"rk4 doubling, tol 1e-4", METHOD_RK4, 1.0, STEP_DOUBLING, 1e-4, 0, 0, 0},
-    {"rk4 doubling, tol 1e-5", METHOD_RK4, 1.0, STEP_DOUBLING, 1e-5, 0, 0, 0},
-    {"dopri5 embedded, tol 1e-4", METHOD_DOPRI5, 1.0, STEP_EMBEDDED, 1e-4, 0, 0, 0},
-    {"dopri5 embedded, tol 1e-6", METHOD_DOPRI5, 1.0, STEP_EMBEDDED, 1e-6, 0, 0, 0},
-    {"dopri5 embedded, tol 1e-8", METHOD_DOPRI5, 1.0, STEP_EMBEDDED, 1e-8, 0, 0, 0},
+    {"scene default", 0, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 1, 0},
+    {"scene default, K = 1", 0, 1.0, 1.0, STEP_FIXED, 0, 0, 1, 1, 0},
+    {"scene default, fp16", 0, 1.0, 1.0, STEP_FIXED, 0, 1, 0, 1, 0},
+    {"euler, step x2", METHOD_EULER, 2.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
+    {"euler, step x1", METHOD_EULER, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
+    {"euler, step x0.5", METHOD_EULER, 0.5, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
+    {"rk4, step x4", METHOD_RK4, 4.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
+    {"rk4, step x2", METHOD_RK4, 2.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
+    {"rk4, step x1", METHOD_RK4, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
+    {"rk4, step x0.5", METHOD_RK4, 0.5, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
+    {"dopri5, step x4", METHOD_DOPRI5, 4.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
+    {"dopri5, step x2", METHOD_DOPRI5, 2.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
+    {"rk4, segment x0.5", METHOD_RK4, 1.0, 0.5, STEP_FIXED, 0, 0, 0, 0, 0},
+    {"rk4, segment x0.2", METHOD_RK4, 1.0, 0.2, STEP_FIXED, 0, 0, 0, 0, 0},
+    {"rk4, step x2, segment x0.4", METHOD_RK4, 2.0, 0.4, STEP_FIXED, 0, 0, 0, 0, 0},
+    {"rk4 doubling, tol 1e-3", METHOD_RK4, 1.0, 1.0, STEP_DOUBLING, 1e-3, 0, 0, 0, 0},
+    {"rk4 doubling, tol 1e-4", METHOD_RK4, 1.0, 1.0, STEP_DOUBLING, 1e-4, 0, 0, 0, 0},
+    {"rk4 doubling, tol 1e-5", METHOD_RK4, 1.0, 1.0, STEP_DOUBLING, 1e-5, 0, 0, 0, 0},
+    {"dopri5 embedded, tol 1e-4", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-4, 0, 0, 0, 0},
+    {"dopri5 embedded, tol 1e-6", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-6, 0, 0, 0, 0},
+    {"dopri5 embedded, tol 1e-8", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-8, 0, 0, 0, 0},
+    {"dopri5 embedded, tol 1e-6, step max x4", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-6, 0, 0, 0, 4.0},
+    {"dopri5 embedded, tol 1e-8, step max x4", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-8, 0, 0, 0, 4.0},
 };
 #define N_CONFIGS (int)(sizeof configs / sizeof configs[0])
 
@@ -54,6 +62,7 @@ static const struct pareto_scene scenes[] = {
     {"refraction", "refraction", 0, 0},
 };
 #define N_SCENES (int)(sizeof scenes / sizeof scenes[0])
+const int bench_pareto_count = N_SCENES * N_CONFIGS;
 
 struct pareto_point {
     double seconds, outcome_pct, sky_p99, hit_p99;
@@ -80,9 +89,17 @@ static void apply_config(struct scene *s, const struct pareto_config *c)
         r->steps_per_segment = n < 1 ? 1 : (int)n;
         r->step_size = segment / r->steps_per_segment;
     }
+    if (c->segment_factor != 1.0) {
+        long path = (long)r->segments * r->steps_per_segment;
+        long n = lround(r->steps_per_segment * c->segment_factor);
+        r->steps_per_segment = n < 1 ? 1 : (int)n;
+        r->segments = (int)((path + r->steps_per_segment - 1) / r->steps_per_segment);
+    }
     r->step_control = c->control;
     if (c->control != STEP_FIXED)
         r->tolerance = c->tolerance;
+    if (c->step_max_factor > 0)
+        r->step_max = r->step_size * c->step_max_factor;
     r->early_z = 1;
     r->batch = SCENE_MAX_BATCH;
     r->steps_per_pass = c->k1 ? 1 : unroll_for(r->steps_per_segment);
@@ -117,7 +134,8 @@ static void mark_front(struct pareto_point *p, int n)
     }
 }
 
-static int measure_scene(struct bench *b, int k, struct pareto_point *pts, FILE *csv, char *err, size_t errlen)
+static int measure_scene(struct bench *b, int k, struct pareto_point *pts, struct quality_bound *q, FILE *csv,
+                         char *err, size_t errlen)
 {
     const struct pareto_scene *ps = &scenes[k];
     static struct scene base;
@@ -126,6 +144,7 @@ static int measure_scene(struct bench *b, int k, struct pareto_point *pts, FILE 
         return -1;
     if (ps->sky_only)
         base.n_objects = 0;
+    *q = base.quality;
     struct cpu_image ref;
     struct cpu_render_options o = {.threads = 0, .progress = 0};
     ref_options_default(&o.ref, &base);
@@ -159,7 +178,7 @@ static int measure_scene(struct bench *b, int k, struct pareto_point *pts, FILE 
     cpu_image_free(&ref);
     mark_front(pts, n);
     for (int c = 0; c < n; c++)
-        fprintf(csv, "%s,%s,%.5f,%.4f,%.4g,%.4g,%d\n", ps->title, configs[c].name, pts[c].seconds, pts[c].outcome_pct,
+        fprintf(csv, "\"%s\",\"%s\",%.5f,%.4f,%.4g,%.4g,%d\n", ps->title, configs[c].name, pts[c].seconds, pts[c].outcome_pct,
                 pts[c].sky_p99, pts[c].hit_p99, pts[c].front);
     return n;
 }
@@ -179,7 +198,38 @@ static int cheapest(const struct pareto_point *p, int n, int sky, double level)
     return best;
 }
 
-static void print_scene(struct bench *b, int k, const struct pareto_point *p, int n)
+/* 1 when point p is within every bound the scene states in [quality]. */
+static int meets_quality(const struct quality_bound *q, const struct pareto_point *p)
+{
+    struct compare_result r = {.outcome_fraction = p->outcome_pct / 100.0};
+    r.sky_angle.p99 = p->sky_p99;
+    r.hit_relative.p99 = p->hit_p99;
+    char report[512];
+    return quality_check(q, &r, report, sizeof report) == 0;
+}
+
+/* The scene's [quality]: the cheapest configuration within it, and whether the default is. */
+static void print_quality_choice(struct bench *b, const struct quality_bound *q, const struct pareto_point *p, int n)
+{
+    if (!quality_stated(q)) {
+        fprintf(b->md, "The scene file states no [quality].\n\n");
+        return;
+    }
+    int best = -1;
+    for (int c = 0; c < n; c++)
+        if (meets_quality(q, &p[c]) && (best < 0 || p[c].seconds < p[best].seconds))
+            best = c;
+    fprintf(b->md, "The scene file's [quality] (differing pixels <= %g%%, exit p99 <= %g rad, hit p99 <= %g of "
+                   "size; negative: not stated): its default %s it; ", q->differing_percent, q->exit_p99, q->hit_p99,
+            meets_quality(q, &p[0]) ? "meets" : "**misses**");
+    if (best < 0)
+        fprintf(b->md, "no configuration meets it.\n\n");
+    else
+        fprintf(b->md, "the cheapest configuration that meets it is %s (%.4f s, the default %.4f s).\n\n",
+                configs[best].name, p[best].seconds, p[0].seconds);
+}
+
+static void print_scene(struct bench *b, int k, const struct pareto_point *p, int n, const struct quality_bound *q)
 {
     fprintf(b->md, "### %s\n\n| configuration | seconds | differing pixels | exit p99 (rad) | hit p99 (of size) | "
                    "front |\n|---|---|---|---|---|---|\n", scenes[k].title);
@@ -198,7 +248,11 @@ static void print_scene(struct bench *b, int k, const struct pareto_point *p, in
         fprintf(b->md, sky ? "exit p99 <= %g rad: %s; " : "differing pixels <= %g%%: %s", level, found);
         fprintf(b->md, "%s", i == 3 ? "; " : i == 4 ? ".\n\n" : "");
     }
-    fprintf(b->md, "The scene's own default is %son the front.\n\n", p[0].front ? "" : "not ");
+    fprintf(b->md, "The scene's own default is %son the front. ", p[0].front ? "" : "not ");
+    if (scenes[k].sky_only)
+        fprintf(b->md, "This variant of the scene has no [quality] of its own.\n\n");
+    else
+        print_quality_choice(b, q, p, n);
 }
 
 #define SKY_TARGET_RAD 1e-3
@@ -219,7 +273,9 @@ int bench_pareto(struct bench *b, char *err, size_t errlen)
                    "whole segment unless said; median seconds per frame of %d runs, and the error against the "
                    "CPU reference of the scene default: differing outcomes, the 99th percentile of the exit "
                    "direction error of sky pixels and of the hit error relative to the object's size. "
-                   "\"step xF\" multiplies the step and keeps the segment length. A configuration is on the "
+                   "\"step xF\" multiplies the step and keeps the segment length; \"segment xF\" multiplies the "
+                   "segment and keeps the step and the path; \"step max x4\" bounds adaptive steps at 4 times the "
+                   "scene's step. A configuration is on the "
                    "front when no other is as fast and as accurate in all three measures and better in one. "
                    "An adaptive configuration has a budget of steps, not of path; rays it leaves unfinished "
                    "count as differing. Plot: `bench/pareto.png`.\n\n", b->width, b->height, b->runs);
@@ -227,13 +283,14 @@ int bench_pareto(struct bench *b, char *err, size_t errlen)
     double sky_target_seconds = NAN;
     for (int k = 0; k < N_SCENES; k++) {
         struct pareto_point pts[N_CONFIGS];
-        int n = measure_scene(b, k, pts, csv, err, errlen);
+        struct quality_bound q;
+        int n = measure_scene(b, k, pts, &q, csv, err, errlen);
         if (n < 0) {
             fclose(csv);
             fclose(dat);
             return -1;
         }
-        print_scene(b, k, pts, n);
+        print_scene(b, k, pts, n, &q);
         fprintf(dat, "# %s\n", scenes[k].title);
         for (int c = 0; c < n; c++)
             if (pts[c].sky_p99 > 0.0 && pts[c].front)

@@ -4,6 +4,7 @@
 #include "cli/measure.h"
 #include "cli/options.h"
 #include "ref/compare.h"
+#include "ref/quality.h"
 #include <stdio.h>
 #include <string.h>
 
@@ -15,7 +16,10 @@ static void usage(FILE *out)
             "(metrics in docs/ERRORS.md). GPU options: --backend, --precision, --no-mrt, --shader-dir;\n"
             "CPU options: --rtol, --threads; both: --size, --set SECTION.KEY=V.\n"
             "  --json               print JSON instead of the table\n"
-            "exit codes: 0 ok (a large error is not a failure), 1 runtime failure, 2 bad usage or input\n");
+            "  --check              hold the error against the scene's [quality] bounds (stated for its\n"
+            "                       own settings and size); exit 3 when one is missed\n"
+            "exit codes: 0 ok (without --check a large error is not a failure), 1 runtime failure,\n"
+            "2 bad usage or input (--check on a scene without [quality] included), 3 [quality] missed\n");
 }
 
 static void print_times(FILE *f, const struct measured *gpu, const struct measured *cpu, int json)
@@ -31,7 +35,7 @@ static void print_times(FILE *f, const struct measured *gpu, const struct measur
 int cmd_error(int argc, char **argv)
 {
     struct common_options o = {.backend = "auto", .both_engines = 1};
-    int json = 0;
+    int json = 0, check = 0;
     for (int i = 1; i < argc; i++) {
         enum option_status c = options_common(&o, "error", argc, argv, &i, usage);
         if (c == OPTION_CONSUMED)
@@ -40,6 +44,8 @@ int cmd_error(int argc, char **argv)
             return options_exit_code(c);
         if (strcmp(argv[i], "--json") == 0) {
             json = 1;
+        } else if (strcmp(argv[i], "--check") == 0) {
+            check = 1;
         } else {
             return option_unknown("error", argv[i], usage);
         }
@@ -48,6 +54,11 @@ int cmd_error(int argc, char **argv)
     int rc = options_load_scene(&o, "error", &s);
     if (rc)
         return rc;
+    if (check && !quality_stated(&s.quality)) {
+        fprintf(stderr, "bentray error: --check: %s states no [quality] (differing_percent, exit_p99, hit_p99)\n",
+                s.path);
+        return EXIT_USAGE;
+    }
     struct cpu_render_options cpu_opt;
     options_cpu(&o, &s, &cpu_opt);
     struct measured gpu, cpu;
@@ -74,6 +85,15 @@ int cmd_error(int argc, char **argv)
     } else {
         compare_print_table(stdout, &r);
         print_times(stdout, &gpu, &cpu, 0);
+    }
+    if (rc == EXIT_OK && check) {
+        char report[512];
+        int missed = quality_check(&s.quality, &r, report, sizeof report);
+        fprintf(json ? stderr : stdout, "quality of %s:\n%s", s.path, report);
+        if (missed > 0) {
+            fprintf(stderr, "bentray error: %s misses %d of its [quality] bounds\n", s.path, missed);
+            rc = EXIT_QUALITY;
+        }
     }
     measured_free(&gpu);
     measured_free(&cpu);

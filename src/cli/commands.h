@@ -2,7 +2,8 @@
 #ifndef BT_COMMANDS_H
 #define BT_COMMANDS_H
 
-enum exit_code { EXIT_OK = 0, EXIT_RUNTIME = 1, EXIT_USAGE = 2 };
+/* EXIT_QUALITY: `bentray error --check` found the scene missing its own [quality] */
+enum exit_code { EXIT_OK = 0, EXIT_RUNTIME = 1, EXIT_USAGE = 2, EXIT_QUALITY = 3 };
 
 int cmd_info(int argc, char **argv);
 int cmd_render(int argc, char **argv);

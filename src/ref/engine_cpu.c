@@ -58,7 +58,7 @@ static void render_row(struct job *job, int j)
         vec3d v0 = model_initial_velocity(&s->model, x0, camera_ray(s, i, j));
         struct ref_ray ray;
         ref_trace(s, &job->opt->ref, x0, v0, &ray, 0.0, NULL, NULL);
-        cpu_shade(job->materials, &ray, img->rgba + 4 * k);
+        cpu_shade(job->materials, &ray, camera_view_direction(s, i, j), img->rgba + 4 * k);
         ref_ray_to_record(&ray, img->rgba + 4 * k, &img->dump.records[k]);
         steps += ray.steps;
         rejected += ray.rejected;

@@ -1,5 +1,7 @@
 #include "ref/shade_cpu.h"
 #include "io/png_io.h"
+#include "physics/blackbody.h"
+#include "physics/relativity.h"
 #include "ref/dump.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,6 +25,17 @@ int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *e
                 return -1;
         }
     }
+    if (doppler_colour(s)) {
+        struct cpu_texture *t = &mat->blackbody;
+        t->width = BLACKBODY_LUT_SIZE;
+        t->height = 1;
+        t->rgba = malloc(4 * BLACKBODY_LUT_SIZE);
+        if (!t->rgba) {
+            snprintf(err, errlen, "out of memory");
+            return -1;
+        }
+        blackbody_lut_fill(s->observer.effects == EFFECTS_SEARCHLIGHT ? TONE_FIXED_1500K : TONE_LUMINANCE, t->rgba);
+    }
     return 0;
 }
 
@@ -32,6 +45,7 @@ void cpu_materials_free(struct cpu_materials *mat)
         free(mat->textures[i].rgba);
     for (int f = 0; f < 6; f++)
         free(mat->sky[f].rgba);
+    free(mat->blackbody.rgba);
 }
 
 static vec3d texel(const struct cpu_texture *t, int x, int y)
@@ -83,8 +97,36 @@ static vec3d sample_cube(const struct cpu_materials *mat, vec3d d)
 
 static vec3d vmul(vec3d a, vec3d b) { return v3(a.x * b.x, a.y * b.y, a.z * b.z); }
 
+/* blackbody_colour() of shaders_es/observer.glsl: the table at its texel centres, ends clamped */
+static vec3d blackbody_colour(const struct cpu_materials *mat, double temperature)
+{
+    double texel = (BLACKBODY_LUT_SIZE - 1) / log(BLACKBODY_T_MAX_K / BLACKBODY_T_MIN_K) *
+                   (log(fmax(temperature, 1.0)) - log(BLACKBODY_T_MIN_K));
+    texel = texel < 0.0 ? 0.0 : texel > BLACKBODY_LUT_SIZE - 1 ? BLACKBODY_LUT_SIZE - 1 : texel;
+    return sample_bilinear(&mat->blackbody, (texel + 0.5) / BLACKBODY_LUT_SIZE, 0.5);
+}
+
+/* The frequency ratios of observer.glsl: static emitters at p, the observer moving and at rest
+ * in the static frame at the camera. */
+static double static_lapse(const struct scene *s, vec3d p)
+{
+    if (s->model.type != MODEL_SCHWARZSCHILD)
+        return 1.0;
+    double r = fmax(v3_len(v3_sub(p, s->model.center)), 1e-9);
+    return sqrt(fmax(1.0 - 2.0 * s->model.mass / r, 0.0));
+}
+
+static double doppler_at_camera(const struct scene *s, vec3d view)
+{
+    return doppler_observer(s->observer.velocity, view) / static_lapse(s, s->camera.position);
+}
+
+static double rgb_luminance(vec3d c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+
+static double pow4(double x) { return x * x * x * x; }
+
 /* shade() of shaders_es/shade.glsl */
-static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray *ray)
+static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray *ray, vec3d view)
 {
     const struct scene *s = mat->scene;
     const struct material *m = &s->objects[ray->outcome].material;
@@ -99,6 +141,10 @@ static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray
     vec3d color = v3_add(m->emission, v3_scale(vmul(s->ambient_light, base), m->ambient));
     vec3d to_viewer = v3_scale(v3_normalize(ray->velocity), -1.0);
     vec3d n = v3_dot(ray->normal, to_viewer) < 0.0 ? v3_scale(ray->normal, -1.0) : ray->normal;
+    int doppler = doppler_colour(s);
+    double camera_doppler = doppler ? doppler_at_camera(s, view) : 1.0;
+    double reflectance = 0.5 * (0.3 * base.x + 0.59 * base.y + 0.11 * base.z + 1.0);   /* Eq. 18 */
+    vec3d black_bodies = v3(0.0, 0.0, 0.0);
     for (int i = 0; i < s->n_lights; i++) {
         vec3d to_light = v3_normalize(v3_sub(s->lights[i].position, ray->hit));
         double lambert = fmax(v3_dot(n, to_light), 0.0);
@@ -106,9 +152,18 @@ static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray
         double specular = lambert > 0.0 ? pow(fmax(v3_dot(n, halfway), 0.0), m->shininess) : 0.0;
         vec3d lit = v3_add(v3_scale(base, m->diffuse * lambert), v3(m->specular * specular, m->specular * specular,
                                                                      m->specular * specular));
-        color = v3_add(color, vmul(s->lights[i].color, lit));
+        if (doppler && s->lights[i].temperature > 0.0) {
+            double d = camera_doppler * static_lapse(s, s->lights[i].position);
+            double f = reflectance * (m->diffuse * lambert + m->specular * specular);
+            vec3d c = blackbody_colour(mat, s->lights[i].temperature * d);
+            black_bodies = v3_add(black_bodies, v3_scale(vmul(s->lights[i].color, c), f));
+        } else {
+            color = v3_add(color, vmul(s->lights[i].color, lit));
+        }
     }
-    return color;
+    if (s->observer.effects == EFFECTS_SEARCHLIGHT)
+        color = v3_scale(color, pow4(camera_doppler * static_lapse(s, ray->hit)));
+    return v3_add(color, black_bodies);
 }
 
 static unsigned char to_unorm8(double c)
@@ -117,13 +172,26 @@ static unsigned char to_unorm8(double c)
     return (unsigned char)lrint(c * 255.0);
 }
 
-void cpu_shade(const struct cpu_materials *mat, const struct ref_ray *ray, unsigned char rgba[4])
+/* stage_sky.glsl: an RGB sky, or black bodies at infinity lent their luminance by the sky's texels */
+static vec3d shade_sky(const struct cpu_materials *mat, const struct ref_ray *ray, vec3d view)
+{
+    const struct scene *s = mat->scene;
+    vec3d c = mat->has_sky_cubemap ? sample_cube(mat, v3_normalize(ray->velocity)) : s->sky.color;
+    if (!doppler_colour(s))
+        return c;
+    double d = doppler_at_camera(s, view);
+    if (s->sky.temperature > 0.0)
+        return v3_scale(blackbody_colour(mat, s->sky.temperature * d), rgb_luminance(c));
+    return s->observer.effects == EFFECTS_SEARCHLIGHT ? v3_scale(c, pow4(d)) : c;
+}
+
+void cpu_shade(const struct cpu_materials *mat, const struct ref_ray *ray, vec3d view, unsigned char rgba[4])
 {
     vec3d c = v3(0.0, 0.0, 0.0);
     if (ray->outcome >= 0)
-        c = shade_surface(mat, ray);
+        c = shade_surface(mat, ray, view);
     else if (ray->outcome == DUMP_SKY || ray->outcome == DUMP_UNFINISHED)
-        c = mat->has_sky_cubemap ? sample_cube(mat, v3_normalize(ray->velocity)) : mat->scene->sky.color;
+        c = shade_sky(mat, ray, view);
     rgba[0] = to_unorm8(c.x);
     rgba[1] = to_unorm8(c.y);
     rgba[2] = to_unorm8(c.z);

@@ -16,12 +16,13 @@ struct cpu_materials {
     struct cpu_texture textures[SCENE_MAX_TEXTURES];
     struct cpu_texture sky[6];    /* +x, -x, +y, -y, +z, -z */
     int has_sky_cubemap;
+    struct cpu_texture blackbody; /* the GPU's black-body table (Doppler colour effects only) */
 };
 
 /* Load the scene's textures and sky faces. 0, or -1 with err naming the file. */
 int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *err, size_t errlen);
 void cpu_materials_free(struct cpu_materials *mat);
-/* Final RGBA8 colour of a ray's result. */
-void cpu_shade(const struct cpu_materials *mat, const struct ref_ray *ray, unsigned char rgba[4]);
+/* Final RGBA8 colour of a ray's result; view is the direction the observer looked in (its own frame). */
+void cpu_shade(const struct cpu_materials *mat, const struct ref_ray *ray, vec3d view, unsigned char rgba[4]);
 
 #endif

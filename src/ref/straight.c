@@ -1,9 +1,10 @@
 #include "ref/straight.h"
 #include "physics/intersect.h"
+#include "physics/relativity.h"
 #include <math.h>
 #include <stdlib.h>
 
-vec3d camera_ray(const struct scene *s, int i, int j)
+vec3d camera_view_direction(const struct scene *s, int i, int j)
 {
     const struct camera *c = &s->camera;
     int w = s->render.width, h = s->render.height;
@@ -15,6 +16,12 @@ vec3d camera_ray(const struct scene *s, int i, int j)
     double ndc_y = ((h - 1 - j + 0.5) / h) * 2.0 - 1.0;   /* image rows run top-down, GL rows bottom-up */
     vec3d d = v3_add(forward, v3_add(v3_scale(right, ndc_x * tan_half * w / h), v3_scale(up, ndc_y * tan_half)));
     return v3_normalize(d);
+}
+
+vec3d camera_ray(const struct scene *s, int i, int j)
+{
+    vec3d d = camera_view_direction(s, i, j);
+    return observer_moving(s) ? v3_normalize(aberrate_to_scene(s->observer.velocity, d)) : d;
 }
 
 int straight_first_hit(const struct scene *s, vec3d a, vec3d b, double *t_hit)

@@ -5,7 +5,10 @@
 #include "scene/scene.h"
 #include <stdint.h>
 
-/* Camera ray of pixel (i, j), j counted from the top row; pixel centres at (i + 0.5) / W. */
+/* Direction the observer looks in through pixel (i, j), in the observer's own frame; j counted from
+ * the top row; pixel centres at (i + 0.5) / W. */
+vec3d camera_view_direction(const struct scene *s, int i, int j);
+/* The same viewing ray in the scene's frame (aberrated when the observer moves): where rays start. */
 vec3d camera_ray(const struct scene *s, int i, int j);
 /* Index of the object the segment a -> b hits first, with its fraction t along the segment, or -1. */
 int straight_first_hit(const struct scene *s, vec3d a, vec3d b, double *t);

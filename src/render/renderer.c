@@ -54,7 +54,10 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
              control_defines[scene->render.step_control], scene->render.steps_per_pass,
              !r->straight && scene->model.type == MODEL_POTENTIAL && scene->model.profile == PROFILE_POLYNOMIAL
                  ? "#define PROFILE_POLYNOMIAL 1\n" : "");
-    if (textures_load(r, err, errlen) != 0) {
+    int defines_fit = observer_defines(scene, r->observer_defines, sizeof r->observer_defines) == 0;
+    if (!defines_fit)
+        snprintf(err, errlen, "internal: the observer's defines do not fit");
+    if (!defines_fit || observer_lut_load(r, err, errlen) != 0 || textures_load(r, err, errlen) != 0) {
         renderer_destroy(r);
         return NULL;
     }
@@ -82,7 +85,9 @@ int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int 
     r->depth_write_last = 0;
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
-    if (stage_setup(r, origin_x, origin_y, err, errlen) != 0)
+    r->origin_x = origin_x;
+    r->origin_y = origin_y;
+    if (stage_setup(r, err, errlen) != 0)
         return -1;
     int early_z = s->render.early_z;
     if (early_z) {
@@ -203,6 +208,7 @@ void renderer_destroy(struct renderer *r)
     if (r->have_state)
         raystate_release(&r->rs);
     textures_release(r);
+    observer_lut_release(r);
     program_cache_release(&r->programs);
     quad_release();
     free(r);

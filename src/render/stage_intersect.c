@@ -9,8 +9,9 @@
 #define MATERIAL_VECS 4
 /* uniform vectors a pass needs besides its objects: lights, ambient, segment, sizes (rounded up) */
 #define RESERVED_UNIFORM_VECS (8 + 2 * SCENE_MAX_LIGHTS)
-/* texture units 0-3 carry the ray state; object textures start here */
-#define FIRST_OBJECT_UNIT 4
+/* texture units 0-3 carry the ray state, the black-body table UNIT_BLACKBODY (4); object textures
+ * start here */
+#define FIRST_OBJECT_UNIT 5
 
 static const char *const prim_files[PRIM_COUNT] = {"prim_sphere.glsl", "prim_triangle.glsl", "prim_disk.glsl",
                                                    "prim_rect.glsl"};
@@ -100,12 +101,16 @@ static void set_batch(GLuint p, const void *arg)
         glUniform1iv(textures, b->count, units);
     uniform_float(p, "u_segment_index", b->segment);
     uniform_vec3(p, "u_ambient_light", s->ambient_light);
+    if (doppler_colour(s))
+        observer_set_uniforms(p, b->r);
     for (int i = 0; i < s->n_lights; i++) {
         char name[48];
         snprintf(name, sizeof name, "u_light_position[%d]", i);
         uniform_vec3(p, name, s->lights[i].position);
         snprintf(name, sizeof name, "u_light_color[%d]", i);
         uniform_vec3(p, name, s->lights[i].color);
+        snprintf(name, sizeof name, "u_light_temperature[%d]", i);
+        uniform_float(p, name, s->lights[i].temperature);
     }
 }
 
@@ -131,6 +136,8 @@ static int batch_defines(const struct batch *b, char *out, size_t len)
     for (int t = 0; t < PRIM_COUNT && used < len; t++)
         if (has[t])
             used += (size_t)snprintf(out + used, len - used, "\n#define HAS_PRIM_%s 1", prim_defines[t]);
+    if (used < len)
+        used += (size_t)snprintf(out + used, len - used, "\n%s", b->r->observer_defines);
     if (used + 2 >= len)
         return -1;
     strcat(out, "\n");
@@ -153,13 +160,14 @@ static int intersect_batch(struct renderer *r, const struct batch *b, int segmen
         snprintf(err, errlen, "internal: the defines of an object batch do not fit");
         return -1;
     }
-    const char *files[PRIM_COUNT + 5] = {"common.glsl"};
+    const char *files[PRIM_COUNT + 6] = {"common.glsl"};
     int n = 1, seen[PRIM_COUNT] = {0};
     for (int i = 0; i < b->count; i++) {
         enum primitive_type t = r->scene->objects[b->first + i].type;
         if (!seen[t]++)
             files[n++] = prim_files[t];
     }
+    files[n++] = "observer.glsl";
     files[n++] = "shade.glsl";
     files[n++] = "stage_intersect.glsl";
     files[n] = NULL;

@@ -1,9 +1,14 @@
 /* Stage 5, sky and final colour (paper section 4.3), from the retired state of every ray. */
 #include "render/stages.h"
+#include <stdio.h>
 
 static void set_sky(GLuint p, const void *arg)
 {
     const struct renderer *r = arg;
+    if (doppler_colour(r->scene)) {
+        observer_set_uniforms(p, r);
+        uniform_float(p, "u_sky_temperature", r->scene->sky.temperature);
+    }
     if (r->sky_cubemap) {
         glActiveTexture(GL_TEXTURE0 + UNIT_SKY);
         glBindTexture(GL_TEXTURE_CUBE_MAP, r->sky_cubemap);
@@ -15,10 +20,11 @@ static void set_sky(GLuint p, const void *arg)
 
 int stage_sky(struct renderer *r, char *err, size_t errlen)
 {
-    static const char *const files[] = {"common.glsl", "stage_sky.glsl", NULL};
+    static const char *const files[] = {"common.glsl", "observer.glsl", "stage_sky.glsl", NULL};
     struct raystate *rs = &r->rs;
-    const struct stage_program *sp =
-        program_cache_get(&r->programs, files, r->sky_cubemap ? "#define SKY_CUBEMAP 1\n" : "", 0, err, errlen);
+    char defines[sizeof r->observer_defines + 32];
+    snprintf(defines, sizeof defines, "%s%s", r->sky_cubemap ? "#define SKY_CUBEMAP 1\n" : "", r->observer_defines);
+    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 0, err, errlen);
     if (!sp)
         return -1;
     struct pass_input in[] = {

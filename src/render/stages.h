@@ -7,6 +7,8 @@
 
 /* Texture units: ray-state inputs first, then scene textures. */
 #define UNIT_SKY 6
+/* the black-body table: below the object textures, which start at FIRST_OBJECT_UNIT (intersect) */
+#define UNIT_BLACKBODY 4
 
 struct renderer {
     const struct scene *scene;
@@ -17,6 +19,9 @@ struct renderer {
     int have_state;
     GLuint textures[SCENE_MAX_TEXTURES];
     GLuint sky_cubemap;
+    GLuint blackbody_lut;         /* Doppler colour effects only */
+    char observer_defines[128];   /* OBSERVER_MOVING, DOPPLER_COLOUR, SEARCHLIGHT */
+    int origin_x, origin_y;       /* image pixel of ray-state texel (0, 0) */
     char model_defines[256];      /* model, method, steps per pass */
     char model_file[64];          /* model_NAME.glsl; model_flat.glsl for straight rays */
     int straight;                 /* rays are straight: one segment, not integrated */
@@ -45,9 +50,14 @@ void uniform_vec3(GLuint program, const char *name, vec3d v);
 void uniform_float(GLuint program, const char *name, double v);
 
 int textures_load(struct renderer *r, char *err, size_t errlen);
+/* shaders_es/observer.glsl: camera, observer velocity, black-body table (observer.c) */
+int observer_defines(const struct scene *s, char *out, size_t len);
+void observer_set_uniforms(GLuint program, const struct renderer *r);
+int observer_lut_load(struct renderer *r, char *err, size_t errlen);
+void observer_lut_release(struct renderer *r);
 void textures_release(struct renderer *r);
 
-int stage_setup(struct renderer *r, int origin_x, int origin_y, char *err, size_t errlen);
+int stage_setup(struct renderer *r, char *err, size_t errlen);
 int stage_integrate(struct renderer *r, int segment_start, char *err, size_t errlen);
 /* Every object against the current segment, render.batch objects per pass. */
 int stage_intersect_all(struct renderer *r, int segment, int segment_start, char *err, size_t errlen);

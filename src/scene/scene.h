@@ -63,6 +63,7 @@ struct object {
 struct light {
     vec3d position;
     vec3d color;
+    double temperature;            /* K; > 0: a black body (colour from its apparent temperature) */
     char name[SCENE_NAME_LEN];     /* from [light NAME]: lets --set light.NAME.key find it */
 };
 
@@ -70,6 +71,20 @@ struct sky {
     enum sky_type type;
     vec3d color;             /* SKY_COLOR */
     char cubemap[SCENE_PATH_LEN]; /* SKY_CUBEMAP: path prefix, faces are PREFIX_{px,nx,py,ny,pz,nz}.png */
+    double temperature;      /* K; > 0: every texel a black body, its luminance from the texel */
+};
+
+/* Relativistic effects shown (Müller, Grottel and Weiskopf 2010): aberration only; black-body
+ * colour from the Doppler-shifted temperature, each temperature at its own luminance (Figure 6
+ * left); the same at one fixed luminance scale with the logarithmic curve, which keeps the
+ * searchlight's brightening (Figure 6 right). */
+enum relativity_effects { EFFECTS_GEOMETRY, EFFECTS_DOPPLER, EFFECTS_SEARCHLIGHT };
+
+/* The camera's motion: velocity in units of c relative to the scene's rest frame (flat space) or to
+ * the static observer at the camera (Schwarzschild). */
+struct observer {
+    vec3d velocity;
+    enum relativity_effects effects;
 };
 
 struct render_settings {
@@ -101,12 +116,24 @@ struct render_settings {
 double render_step_min(const struct render_settings *r);
 double render_step_max(const struct render_settings *r);
 
+/* What the scene's own settings reach against the CPU reference at the scene's own size
+ * ([quality], each an upper bound; negative where the file states none): the percentage of
+ * pixels whose outcome differs, the 99th percentiles of the exit-direction error of sky pixels
+ * (radians) and of the hit error relative to the object's size (docs/ERRORS.md). Checked by
+ * `bentray error --check`. */
+struct quality_bound {
+    double differing_percent;
+    double exit_p99;
+    double hit_p99;
+};
+
 struct scene {
     char path[SCENE_PATH_LEN];     /* file it came from */
     char dir[SCENE_PATH_LEN];      /* its directory: relative asset paths resolve against it */
     char name[SCENE_NAME_LEN];
     char description[256];
     struct camera camera;
+    struct observer observer;
     struct model model;
     struct render_settings render;
     struct sky sky;
@@ -117,7 +144,12 @@ struct scene {
     struct light lights[SCENE_MAX_LIGHTS];
     int n_textures;
     char textures[SCENE_MAX_TEXTURES][SCENE_PATH_LEN]; /* resolved paths of PNG textures */
+    struct quality_bound quality;
 };
+
+/* 1 when the observer moves (the setup stage aberrates); 1 when colours follow the Doppler factor. */
+int observer_moving(const struct scene *s);
+int doppler_colour(const struct scene *s);
 
 /* Error from loading or overriding a scene: where and what. */
 struct scene_error {

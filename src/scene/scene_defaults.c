@@ -64,6 +64,16 @@ static void model_defaults(struct model *m)
     m->mass = 1.0;
 }
 
+int observer_moving(const struct scene *s)
+{
+    return v3_dot(s->observer.velocity, s->observer.velocity) > 0.0;
+}
+
+int doppler_colour(const struct scene *s)
+{
+    return s->observer.effects != EFFECTS_GEOMETRY;
+}
+
 void scene_defaults(struct scene *s)
 {
     memset(s, 0, sizeof *s);
@@ -78,6 +88,7 @@ void scene_defaults(struct scene *s)
     s->sky.type = SKY_COLOR;
     s->sky.color = v3(0.02, 0.02, 0.05);
     s->ambient_light = v3(1.0, 1.0, 1.0);
+    s->quality = (struct quality_bound){-1.0, -1.0, -1.0};
 }
 
 void scene_object_defaults(struct object *o, const char *name)

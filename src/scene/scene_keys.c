@@ -23,6 +23,7 @@ static const char *const precision_names[] = {"auto", "fp32", "fp16", NULL};
 static const char *const mrt_names[] = {"auto", "on", "off", NULL};
 static const char *const profile_names[] = {"yukawa", "polynomial", NULL};
 static const char *const sky_names[] = {"color", "cubemap", NULL};
+static const char *const effects_names[] = {"geometry", "doppler", "searchlight", NULL};
 
 _Static_assert(sizeof model_names / sizeof model_names[0] == MODEL_COUNT + 1,
                "one name per model type");
@@ -48,12 +49,14 @@ static const struct {
 } sections[SECTION_COUNT] = {
     [SECTION_SCENE] = {"scene", 0, 0},
     [SECTION_CAMERA] = {"camera", 0, 0},
+    [SECTION_OBSERVER] = {"observer", 0, 0},
     [SECTION_RENDER] = {"render", 0, 0},
     [SECTION_MODEL] = {"model", 0, 1},
     [SECTION_LIGHTING] = {"lighting", 0, 0},
     [SECTION_LIGHT] = {"light", 1, 0},
     [SECTION_SKY] = {"sky", 0, 0},
     [SECTION_OBJECT] = {"object", 1, 1},
+    [SECTION_QUALITY] = {"quality", 0, 0},
 };
 
 const char *scene_section_name(enum scene_section_kind section) { return sections[section].name; }
@@ -70,7 +73,7 @@ int scene_section_find(const char *name)
 
 const char *scene_section_list(void)
 {
-    return "scene, camera, render, model, lighting, light NAME, sky, object NAME";
+    return "scene, camera, observer, render, model, lighting, light NAME, sky, object NAME, quality";
 }
 
 void scene_section_label(const struct scene *s, enum scene_section_kind section, int instance,
@@ -186,6 +189,13 @@ static int set_mrt(struct scene *s, void *t, const union scene_key_value *v, cha
     return 0;
 }
 
+static int set_effects(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
+{
+    (void)t, (void)r, (void)n;
+    s->observer.effects = (enum relativity_effects)v->choice;
+    return 0;
+}
+
 static int set_sky_type(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
 {
     (void)t, (void)r, (void)n;
@@ -259,6 +269,8 @@ static int set_cubemap(struct scene *s, void *t, const union scene_key_value *v,
 #define POSITIVE .lo = 0.0, .hi = INFINITY, .flags = KEY_ABOVE_LO
 #define NON_NEGATIVE .lo = 0.0, .hi = INFINITY
 #define COLOR_RANGE .lo = 0.0, .hi = 1000.0
+/* 0 is "not a black body"; hotter than any star's surface is a typo */
+#define TEMPERATURE_RANGE .lo = 0.0, .hi = 1e6
 #define CHOICE(names, setter) .kind = KEY_CHOICE, .choices = names, .set = setter
 
 #define FOR_MODEL(t) (1u << (t))
@@ -277,6 +289,9 @@ const struct scene_key scene_keys[] = {
     {SECTION_CAMERA, "up", KEY_VECTOR, ANY, .flags = KEY_NONZERO, .offset = AT_SCENE(camera.up)},
     {SECTION_CAMERA, "fov", KEY_NUMBER, .lo = 0.0, .hi = 180.0, .flags = KEY_ABOVE_LO | KEY_BELOW_HI,
      .offset = AT_SCENE(camera.fov_deg)},
+
+    {SECTION_OBSERVER, "velocity", KEY_VECTOR, ANY, .offset = AT_SCENE(observer.velocity)},
+    {SECTION_OBSERVER, "effects", CHOICE(effects_names, set_effects)},
 
     {SECTION_RENDER, "width", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .offset = AT_SCENE(render.width)},
     {SECTION_RENDER, "height", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .offset = AT_SCENE(render.height)},
@@ -351,10 +366,12 @@ const struct scene_key scene_keys[] = {
 
     {SECTION_LIGHT, "position", KEY_VECTOR, ANY, .offset = AT_LIGHT(position)},
     {SECTION_LIGHT, "color", KEY_COLOR, COLOR_RANGE, .offset = AT_LIGHT(color)},
+    {SECTION_LIGHT, "temperature", KEY_NUMBER, TEMPERATURE_RANGE, .offset = AT_LIGHT(temperature)},
 
     {SECTION_SKY, "type", CHOICE(sky_names, set_sky_type)},
     {SECTION_SKY, "color", KEY_COLOR, COLOR_RANGE, .offset = AT_SCENE(sky.color)},
     {SECTION_SKY, "cubemap", KEY_PATH, .set = set_cubemap},
+    {SECTION_SKY, "temperature", KEY_NUMBER, TEMPERATURE_RANGE, .offset = AT_SCENE(sky.temperature)},
 
     {SECTION_OBJECT, "type", CHOICE(primitive_names, set_object_type)},
     {SECTION_OBJECT, "center", KEY_VECTOR, ANY,
@@ -394,6 +411,11 @@ const struct scene_key scene_keys[] = {
     {SECTION_OBJECT, "texture", KEY_PATH, .set = set_texture},
     {SECTION_OBJECT, "checker", KEY_NUMBER, NON_NEGATIVE, .offset = AT_OBJECT(material.checker)},
     {SECTION_OBJECT, "checker_color", KEY_COLOR, COLOR_RANGE, .offset = AT_OBJECT(material.checker_color)},
+
+    {SECTION_QUALITY, "differing_percent", KEY_NUMBER, .lo = 0.0, .hi = 100.0,
+     .offset = AT_SCENE(quality.differing_percent)},
+    {SECTION_QUALITY, "exit_p99", KEY_NUMBER, .lo = 0.0, .hi = 3.15, .offset = AT_SCENE(quality.exit_p99)},
+    {SECTION_QUALITY, "hit_p99", KEY_NUMBER, .lo = 0.0, .hi = 1000.0, .offset = AT_SCENE(quality.hit_p99)},
 };
 
 const int scene_key_count = (int)(sizeof scene_keys / sizeof scene_keys[0]);

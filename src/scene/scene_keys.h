@@ -16,12 +16,14 @@
 enum scene_section_kind {
     SECTION_SCENE,
     SECTION_CAMERA,
+    SECTION_OBSERVER,
     SECTION_RENDER,
     SECTION_MODEL,
     SECTION_LIGHTING,
     SECTION_LIGHT,      /* named: [light NAME] */
     SECTION_SKY,
     SECTION_OBJECT,     /* named: [object NAME] */
+    SECTION_QUALITY,
     SECTION_COUNT
 };
 

@@ -6,6 +6,7 @@
 #include <string.h>
 #include "scene/scene.h"
 #include "scene/scene_keys.h"
+#include "physics/relativity.h"
 
 /* Below this the up vector is taken as parallel to the view direction (sine of their angle). */
 #define CAMERA_UP_MIN_SINE 1e-6
@@ -88,10 +89,32 @@ static int validate_objects(const struct scene *s, struct scene_error *err)
     return 0;
 }
 
+static int has_black_body(const struct scene *s)
+{
+    int found = s->sky.temperature > 0.0;
+    for (int i = 0; i < s->n_lights; i++)
+        found |= s->lights[i].temperature > 0.0;
+    return found;
+}
+
+static int validate_observer(const struct scene *s, struct scene_error *err)
+{
+    double speed = v3_len(s->observer.velocity);
+    if (!(speed <= BETA_MAX))
+        return invalid(s, err, "observer.velocity has speed %g c; it must stay below %g c (gamma %.0f)", speed,
+                       BETA_MAX, 1.0 / sqrt(1.0 - BETA_MAX * BETA_MAX));
+    if (s->observer.effects != EFFECTS_GEOMETRY && !has_black_body(s))
+        return invalid(s, err, "observer.effects = %s colours black bodies, but nothing in the scene is one: "
+                       "give [sky] or a [light] a temperature (K)",
+                       s->observer.effects == EFFECTS_DOPPLER ? "doppler" : "searchlight");
+    return 0;
+}
+
 int scene_validate(const struct scene *s, struct scene_error *err)
 {
     memset(err, 0, sizeof *err);
-    if (validate_camera(s, err) || validate_render(s, err) || validate_objects(s, err))
+    if (validate_camera(s, err) || validate_observer(s, err) || validate_render(s, err) ||
+        validate_objects(s, err))
         return -1;
     if (s->sky.type == SKY_CUBEMAP && s->sky.cubemap[0] == '\0')
         return invalid(s, err, "[sky] type is cubemap but no cubemap is given: add cubemap = PREFIX "

@@ -64,6 +64,20 @@ check "cpu with gpu option" 2 "--precision applies to the GPU engine" -- $BT ren
 check "rtol without cpu" 2 "--rtol applies to the CPU engine" -- $BT render --scene $S --rtol 1e-8 --out "$TMP/h.png"
 check "bad rtol" 2 "--rtol: expected" -- $BT render --scene $S --engine cpu --rtol 0 --out "$TMP/h.png"
 check "bad engine" 2 "--engine: expected gpu or cpu" -- $BT render --scene $S --engine quantum --out "$TMP/h.png"
+# every scene meets its own [quality] at its own settings and size (the error is deterministic on
+# one Mesa; the bounds leave a margin over what docs/BENCH.md measured); a missed bound is exit 3
+for f in assets/scenes/*.scene; do
+    check "quality $(basename "$f")" 0 ": met$" -- $BT error --scene "$f" --check
+done
+check "quality missed" 3 "MISSED" -- $BT error --scene assets/scenes/schwarzschild.scene --check --set render.method=euler
+sed -e '/^\[quality\]/,$d' -e "s#\.\./#$PWD/assets/#" assets/scenes/test.scene > "$TMP/unstated.scene"
+check "quality not stated" 2 "states no \[quality\]" -- $BT error --scene "$TMP/unstated.scene" --check
+# relativity: the observer's speed and the effects are checked
+check "observer too fast" 2 "observer.velocity has speed 1.2 c" -- $BT render --scene $S --set observer.velocity="0 0 1.2" --out "$TMP/r.png"
+check "effects without black body" 2 "nothing in the scene is one" -- $BT render --scene $S --set observer.effects=doppler --out "$TMP/r.png"
+check "starflight egl" 0 "76800 sky" -- $BT render --scene assets/scenes/starflight.scene --backend egl --out "$TMP/sf_egl.png"
+check "starflight osmesa" 0 "76800 sky" -- $BT render --scene assets/scenes/starflight.scene --backend osmesa --out "$TMP/sf_osm.png"
+check "starflight backends agree" 0 "outcome differs: 0 of" -- sh -c "$BT render --scene assets/scenes/starflight.scene --size 64x48 --backend egl --out $TMP/a1.png --dump $TMP/a1.dump >/dev/null && $BT render --scene assets/scenes/starflight.scene --size 64x48 --backend osmesa --out $TMP/a2.png --dump $TMP/a2.dump >/dev/null && $BT compare $TMP/a1.dump $TMP/a2.dump"
 # bench: the tiny configuration proves the command and its report work; it times nothing that matters
 mkdir -p "$TMP/bench"
 check "bench quick" 0 "wrote .*BENCH.md" -- $BT bench --out "$TMP/bench" --quick

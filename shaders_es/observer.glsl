@@ -1,0 +1,79 @@
+// The camera and its motion (Müller, Grottel and Weiskopf 2010, section 3.1): the direction a pixel
+// looks in, in the observer's frame and in the scene's frame, and the frequency ratio of the light
+// it receives (docs/RELATIVITY.md).
+uniform vec3 u_camera_position;
+uniform vec3 u_camera_forward;        // unit view direction
+uniform vec3 u_camera_right;          // scaled by tan(fov / 2) * aspect
+uniform vec3 u_camera_up;             // scaled by tan(fov / 2)
+uniform vec2 u_pixel_origin;          // image pixel of ray-state texel (0, 0); (0, 0) for a full frame
+uniform vec2 u_image_size;
+#ifdef OBSERVER_MOVING
+uniform vec3 u_observer_beta;         // velocity / c in the scene's (or the static observer's) frame
+uniform float u_observer_gamma;
+#endif
+
+// Pixel centres at (i + 0.5) / W (paper 004's eye rays).
+vec3 observer_view_direction()
+{
+    vec2 pixel_centre = u_pixel_origin + gl_FragCoord.xy;
+    vec2 ndc = pixel_centre / u_image_size * 2.0 - 1.0;
+    return normalize(u_camera_forward + ndc.x * u_camera_right + ndc.y * u_camera_up);
+}
+
+// Aberration, Eq. 3-4: the photon's four-momentum boosted from the observer's frame to the scene's.
+// The factor 1 / (gamma (1 - beta.d)) of the exact formula only scales, so normalize() is exact.
+vec3 observer_scene_direction(vec3 d)
+{
+#ifdef OBSERVER_MOVING
+    float g = u_observer_gamma;
+    float along = dot(u_observer_beta, d);
+    float boost = g * g / (g + 1.0) * along - g;
+    return normalize(d + boost * u_observer_beta);
+#else
+    return d;
+#endif
+}
+
+#ifdef DOPPLER_COLOUR
+uniform sampler2D u_blackbody;        // sRGB of black bodies, temperatures log-spaced
+uniform float u_blackbody_log_min;    // ln(T) of the first texel
+uniform float u_blackbody_texels;     // texels per unit of ln(T)
+uniform float u_blackbody_size;       // texels
+uniform vec3 u_gravity_center;
+uniform float u_gravity_mass;         // Schwarzschild M; 0 without gravity
+uniform float u_observer_lapse;       // sqrt(1 - 2M/r) at the camera; 1 without gravity
+
+// nu_observer / nu_scene of light arriving along the view direction d: 1 / (gamma (1 - beta.d)).
+float observer_doppler(vec3 d)
+{
+#ifdef OBSERVER_MOVING
+    float approach = 1.0 - dot(u_observer_beta, d);
+    return 1.0 / (u_observer_gamma * approach);
+#else
+    return 1.0;
+#endif
+}
+
+// sqrt(1 - 2M/r) of a static emitter at p; the frequency ratio between static observers is the
+// ratio of their lapses.
+float static_lapse(vec3 p)
+{
+    float r = max(length(p - u_gravity_center), 1e-9);
+    return sqrt(max(1.0 - 2.0 * u_gravity_mass / r, 0.0));
+}
+
+// The display colour of a black body at its apparent temperature: texel centres at
+// (0.5 + u_blackbody_texels * (ln T - ln T_min)) / size, clamped to the table's ends.
+vec3 blackbody_colour(float temperature)
+{
+    float texel = u_blackbody_texels * (log(max(temperature, 1.0)) - u_blackbody_log_min);
+    float s = (clamp(texel, 0.0, u_blackbody_size - 1.0) + 0.5) / u_blackbody_size;
+    return texture2D(u_blackbody, vec2(s, 0.5)).rgb;
+}
+
+// 0.2126 R + 0.7152 G + 0.0722 B: the luminance an RGB texel lends a black-body emitter.
+float rgb_luminance(vec3 c)
+{
+    return dot(c, vec3(0.2126, 0.7152, 0.0722));
+}
+#endif

@@ -1,0 +1,172 @@
+/* Colour of black-body radiation (Müller, Grottel and Weiskopf 2010, section 3.3), in double
+ * precision on the CPU; the shaders only sample the table made here. */
+#include "physics/blackbody.h"
+
+#include <math.h>
+
+/* CODATA 2018 exact SI values. */
+#define PLANCK_H_J_S 6.62607015e-34
+#define SPEED_OF_LIGHT_M_S 299792458.0
+#define BOLTZMANN_K_J_PER_K 1.380649e-23
+
+/* The range over which the CIE 1931 tables are defined; outside it the observer sees nothing. */
+#define VISIBLE_MIN_NM 360.0
+#define VISIBLE_MAX_NM 830.0
+/* Simpson's rule with 1 nm steps: the colour-matching lobes are tens of nm wide and the Planck
+ * factor varies slowly across 1 nm, so the quadrature error is far below the fit's own. */
+#define XYZ_STEP_NM 1.0
+#define NM_TO_M 1e-9
+
+/* The fixed exposure of TONE_FIXED_1500K: a 1500 K body has luminance 1 before the curve. */
+#define FIXED_EXPOSURE_T_K 1500.0
+/* The paper's global curve C_sRGB -> 0.6 log10(C_sRGB + 1); it reaches 1 at 10^(1/0.6) - 1. */
+#define LOG_CURVE_GAIN 0.6
+
+/* sRGB transfer function, Eq. 13. */
+#define SRGB_LINEAR_LIMIT 0.0031308
+#define SRGB_LINEAR_SLOPE 12.92
+#define SRGB_OFFSET 0.055
+#define SRGB_GAMMA 2.4
+
+double planck_radiance(double wavelength_m, double temperature_k)
+{
+    const double h = PLANCK_H_J_S, c = SPEED_OF_LIGHT_M_S, k = BOLTZMANN_K_J_PER_K;
+    double l5 = pow(wavelength_m, 5.0);
+    /* expm1: at the Rayleigh-Jeans end (hc/kTλ << 1) exp(x) - 1 would lose most of its digits. */
+    return 2.0 * h * c * c / (l5 * expm1(h * c / (k * temperature_k * wavelength_m)));
+}
+
+/* Wyman, Sloan and Shirley, "Simple Analytic Approximations to the CIE XYZ Color Matching
+ * Functions", JCGT 2(2), 2013: their multi-lobe piecewise-Gaussian fit, coefficients as published.
+ * Each lobe is wider on one side of its peak than the other, as the CIE curves are. */
+static double lobe(double nm, double peak_nm, double width_below_nm, double width_above_nm)
+{
+    double t = (nm - peak_nm) / (nm < peak_nm ? width_below_nm : width_above_nm);
+    return exp(-0.5 * t * t);
+}
+
+double cie_x_bar(double nm)
+{
+    return 1.056 * lobe(nm, 599.8, 37.9, 31.0) + 0.362 * lobe(nm, 442.0, 16.0, 26.7)
+         - 0.065 * lobe(nm, 501.1, 20.4, 26.2);
+}
+
+double cie_y_bar(double nm)
+{
+    return 0.821 * lobe(nm, 568.8, 46.9, 40.5) + 0.286 * lobe(nm, 530.9, 16.3, 31.1);
+}
+
+double cie_z_bar(double nm)
+{
+    return 1.217 * lobe(nm, 437.0, 11.8, 36.0) + 0.681 * lobe(nm, 459.0, 26.0, 13.8);
+}
+
+void blackbody_xyz(double temperature_k, double xyz[3])
+{
+    /* Simpson needs an even count: 470. */
+    int intervals = (int)lround((VISIBLE_MAX_NM - VISIBLE_MIN_NM) / XYZ_STEP_NM);
+    double sum[3] = {0.0, 0.0, 0.0};
+    for (int i = 0; i <= intervals; i++) {
+        double nm = VISIBLE_MIN_NM + i * XYZ_STEP_NM;
+        double weight = (i == 0 || i == intervals) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+        double radiance = weight * planck_radiance(nm * NM_TO_M, temperature_k);
+        sum[0] += radiance * cie_x_bar(nm);
+        sum[1] += radiance * cie_y_bar(nm);
+        sum[2] += radiance * cie_z_bar(nm);
+    }
+    for (int j = 0; j < 3; j++)
+        xyz[j] = sum[j] * XYZ_STEP_NM * NM_TO_M / 3.0;
+}
+
+void xyz_to_linear_bt709(const double xyz[3], double rgb[3])
+{
+    static const double m[3][3] = {{3.2405, -1.5372, -0.4985},
+                                   {-0.9693, 1.8760, 0.0416},
+                                   {0.0556, -0.2040, 1.0573}};
+    for (int i = 0; i < 3; i++)
+        rgb[i] = m[i][0] * xyz[0] + m[i][1] * xyz[1] + m[i][2] * xyz[2];
+}
+
+/* Eq. 13 without the clamp: the power branch continues smoothly above 1. */
+static double srgb_transfer(double linear)
+{
+    if (linear <= SRGB_LINEAR_LIMIT)
+        return SRGB_LINEAR_SLOPE * linear;
+    return (1.0 + SRGB_OFFSET) * pow(linear, 1.0 / SRGB_GAMMA) - SRGB_OFFSET;
+}
+
+double srgb_encode(double linear)
+{
+    return srgb_transfer(fmin(fmax(linear, 0.0), 1.0));
+}
+
+void blackbody_srgb(double temperature_k, enum blackbody_tone tone, double srgb[3])
+{
+    double xyz[3], rgb[3], luminance = 0.0;
+    blackbody_xyz(temperature_k, xyz);
+    /* Cold enough (a few tens of K) that no visible photon is left in double: black, not 0/0. */
+    if (!(xyz[1] > 0.0)) {
+        srgb[0] = srgb[1] = srgb[2] = 0.0;
+        return;
+    }
+    if (tone == TONE_LUMINANCE) {
+        luminance = xyz[1];
+    } else {
+        double fixed[3];
+        blackbody_xyz(FIXED_EXPOSURE_T_K, fixed);
+        luminance = fixed[1];
+    }
+    for (int j = 0; j < 3; j++)
+        xyz[j] /= luminance;
+    xyz_to_linear_bt709(xyz, rgb);
+    /* Black bodies below about 1900 K lie outside the BT.709 gamut (too saturated a red): the
+     * negative primary cannot be shown and becomes 0. */
+    for (int j = 0; j < 3; j++)
+        rgb[j] = fmax(rgb[j], 0.0);
+    if (tone == TONE_LUMINANCE) {
+        /* Scaling down by the largest primary keeps the hue where clipping each one would turn
+         * every low temperature the same yellow (the paper's complaint about the plain mapping). */
+        double largest = fmax(rgb[0], fmax(rgb[1], rgb[2]));
+        for (int j = 0; j < 3; j++)
+            rgb[j] = largest > 1.0 ? rgb[j] / largest : rgb[j];
+        for (int j = 0; j < 3; j++)
+            srgb[j] = srgb_encode(rgb[j]);
+    } else {
+        /* As the paper writes it: the curve acts on C_sRGB, the transfer function taken past 1
+         * unclipped. Only after the curve is the value clipped, at C_sRGB = 10^(1/0.6) - 1
+         * (linear about 8000 times the luminance of 1500 K): the searchlight's brightening
+         * survives, and the paper's 1500 K dark red and white above 3600 K come out. */
+        for (int j = 0; j < 3; j++)
+            srgb[j] = fmin(LOG_CURVE_GAIN * log10(srgb_transfer(rgb[j]) + 1.0), 1.0);
+    }
+}
+
+double doppler_temperature(double temperature_k, double doppler_factor)
+{
+    return temperature_k * doppler_factor;
+}
+
+double blackbody_lut_temperature(int i)
+{
+    double u = (double)i / (BLACKBODY_LUT_SIZE - 1);
+    return BLACKBODY_T_MIN_K * pow(BLACKBODY_T_MAX_K / BLACKBODY_T_MIN_K, u);
+}
+
+double blackbody_lut_coordinate(double temperature_k)
+{
+    /* Also catches T <= 0 and NaN (log gives -inf / NaN; fmax(NaN, 0) is 0): the coldest colour. */
+    double u = log(temperature_k / BLACKBODY_T_MIN_K) / log(BLACKBODY_T_MAX_K / BLACKBODY_T_MIN_K);
+    u = fmin(fmax(u, 0.0), 1.0);
+    return (0.5 + (BLACKBODY_LUT_SIZE - 1) * u) / BLACKBODY_LUT_SIZE;
+}
+
+void blackbody_lut_fill(enum blackbody_tone tone, unsigned char rgba[4 * BLACKBODY_LUT_SIZE])
+{
+    for (int i = 0; i < BLACKBODY_LUT_SIZE; i++) {
+        double srgb[3];
+        blackbody_srgb(blackbody_lut_temperature(i), tone, srgb);
+        for (int j = 0; j < 3; j++)
+            rgba[4 * i + j] = (unsigned char)lround(255.0 * srgb[j]);
+        rgba[4 * i + 3] = 255;
+    }
+}

@@ -1,0 +1,58 @@
+/* Colour of black-body radiation (Müller, Grottel and Weiskopf 2010, section 3.3): Planck's law,
+ * the CIE 1931 colour-matching functions, XYZ -> BT.709 -> sRGB, the two tone mappings of their
+ * Figure 6, and the lookup table over temperature that the shaders sample. */
+#ifndef BT_BLACKBODY_H
+#define BT_BLACKBODY_H
+
+/* The table spans from a dull red glow to well into the blue-white saturation of hot stars;
+ * temperatures are spaced logarithmically because colour changes with ratios of T, not with
+ * differences. */
+#define BLACKBODY_LUT_SIZE 256
+#define BLACKBODY_T_MIN_K 500.0
+#define BLACKBODY_T_MAX_K 60000.0
+
+enum blackbody_tone {
+    /* XYZ / Y(T): hue only, every temperature equally bright (no searchlight effect). */
+    TONE_LUMINANCE,
+    /* XYZ / Y(1500 K), then a log curve on the sRGB values: brightness grows with T (the
+     * searchlight effect is kept). */
+    TONE_FIXED_1500K,
+};
+
+/* Spectral radiance of a black body, W sr^-1 m^-3 (per metre of wavelength), Eq. 10. */
+double planck_radiance(double wavelength_m, double temperature_k);
+
+/* CIE 1931 2-degree colour-matching functions, wavelength in nm (analytic fit, see the .c file). */
+double cie_x_bar(double wavelength_nm);
+double cie_y_bar(double wavelength_nm);
+double cie_z_bar(double wavelength_nm);
+
+/* Tristimulus values of a black body, Eq. 11, absolute: integral of radiance times x̄, ȳ, z̄ over
+ * 360..830 nm, in W sr^-1 m^-2. Y grows with temperature; nothing is normalised here. */
+void blackbody_xyz(double temperature_k, double xyz[3]);
+
+/* Linear BT.709 RGB from XYZ, Eq. 12 (may leave [0,1]: nothing is clamped). */
+void xyz_to_linear_bt709(const double xyz[3], double rgb[3]);
+
+/* The sRGB transfer function, Eq. 13; the input is clamped to [0,1] first. */
+double srgb_encode(double linear);
+
+/* Display colour (sRGB-encoded, each in [0,1]) of a black body under a tone mapping. */
+void blackbody_srgb(double temperature_k, enum blackbody_tone tone, double srgb[3]);
+
+/* Apparent temperature T D of a black body seen with Doppler factor D (frequency ratio, above 1
+ * when approaching): a Planck spectrum shifted by D and scaled by the searchlight factor D^5 of
+ * Eq. 9 is again a Planck spectrum. */
+double doppler_temperature(double temperature_k, double doppler_factor);
+
+/* Temperature of texel i (0..BLACKBODY_LUT_SIZE-1). */
+double blackbody_lut_temperature(int i);
+
+/* Texture coordinate s of a temperature: texel centres, clamped to the first and last one so that
+ * temperatures outside the table take its end colours. */
+double blackbody_lut_coordinate(double temperature_k);
+
+/* The table: 8-bit sRGB of blackbody_srgb at each texel temperature, rounded, alpha 255. */
+void blackbody_lut_fill(enum blackbody_tone tone, unsigned char rgba[4 * BLACKBODY_LUT_SIZE]);
+
+#endif

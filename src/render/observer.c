@@ -1,0 +1,78 @@
+/* The camera and its motion on the GPU: the uniforms of shaders_es/observer.glsl, its variant
+ * defines, and the black-body lookup table of the Doppler colour effects. */
+#include "physics/blackbody.h"
+#include "physics/relativity.h"
+#include "render/stages.h"
+#include <math.h>
+#include <stdio.h>
+
+int observer_defines(const struct scene *s, char *out, size_t len)
+{
+    int n = snprintf(out, len, "%s%s%s", observer_moving(s) ? "#define OBSERVER_MOVING 1\n" : "",
+                     doppler_colour(s) ? "#define DOPPLER_COLOUR 1\n" : "",
+                     s->observer.effects == EFFECTS_SEARCHLIGHT ? "#define SEARCHLIGHT 1\n" : "");
+    return n < 0 || (size_t)n >= len ? -1 : 0;
+}
+
+/* The gravitating mass the frequency shift between static observers follows; 0 without one. */
+static double gravity_mass(const struct scene *s)
+{
+    return s->model.type == MODEL_SCHWARZSCHILD ? s->model.mass : 0.0;
+}
+
+void observer_set_uniforms(GLuint p, const struct renderer *r)
+{
+    const struct scene *s = r->scene;
+    vec3d forward = v3_normalize(v3_sub(s->camera.look_at, s->camera.position));
+    vec3d right = v3_normalize(v3_cross(forward, s->camera.up));
+    vec3d up = v3_cross(right, forward);
+    double tan_half = tan(s->camera.fov_deg * PI_D / 360.0);
+    double aspect = (double)s->render.width / (double)s->render.height;
+    uniform_vec3(p, "u_camera_position", s->camera.position);
+    uniform_vec3(p, "u_camera_forward", forward);
+    uniform_vec3(p, "u_camera_right", v3_scale(right, tan_half * aspect));
+    uniform_vec3(p, "u_camera_up", v3_scale(up, tan_half));
+    glUniform2f(glGetUniformLocation(p, "u_pixel_origin"), (float)r->origin_x, (float)r->origin_y);
+    glUniform2f(glGetUniformLocation(p, "u_image_size"), (float)s->render.width, (float)s->render.height);
+    if (observer_moving(s)) {
+        uniform_vec3(p, "u_observer_beta", s->observer.velocity);
+        uniform_float(p, "u_observer_gamma", lorentz_gamma(s->observer.velocity));
+    }
+    if (!doppler_colour(s))
+        return;
+    glActiveTexture(GL_TEXTURE0 + UNIT_BLACKBODY);
+    glBindTexture(GL_TEXTURE_2D, r->blackbody_lut);
+    glUniform1i(glGetUniformLocation(p, "u_blackbody"), UNIT_BLACKBODY);
+    uniform_float(p, "u_blackbody_log_min", log(BLACKBODY_T_MIN_K));
+    uniform_float(p, "u_blackbody_texels", (BLACKBODY_LUT_SIZE - 1) / log(BLACKBODY_T_MAX_K / BLACKBODY_T_MIN_K));
+    uniform_float(p, "u_blackbody_size", BLACKBODY_LUT_SIZE);
+    double mass = gravity_mass(s);
+    uniform_vec3(p, "u_gravity_center", s->model.center);
+    uniform_float(p, "u_gravity_mass", mass);
+    uniform_float(p, "u_observer_lapse", 1.0 / gravitational_shift(mass, INFINITY, v3_len(v3_sub(s->camera.position,
+                                                                                                   s->model.center))));
+}
+
+int observer_lut_load(struct renderer *r, char *err, size_t errlen)
+{
+    if (!doppler_colour(r->scene))
+        return 0;
+    unsigned char rgba[4 * BLACKBODY_LUT_SIZE];
+    blackbody_lut_fill(r->scene->observer.effects == EFFECTS_SEARCHLIGHT ? TONE_FIXED_1500K : TONE_LUMINANCE, rgba);
+    glGenTextures(1, &r->blackbody_lut);
+    glBindTexture(GL_TEXTURE_2D, r->blackbody_lut);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, BLACKBODY_LUT_SIZE, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    return gl_check("uploading the black-body table", err, errlen);
+}
+
+void observer_lut_release(struct renderer *r)
+{
+    if (r->blackbody_lut)
+        glDeleteTextures(1, &r->blackbody_lut);
+    r->blackbody_lut = 0;
+}
