@@ -9,6 +9,20 @@ uniform float u_light_temperature[LIGHT_COUNT];   // K; 0: an RGB light
 #endif
 #endif
 
+#ifdef MOVING_OBJECTS
+// beta, gamma of the surface being shaded (beta 0 for one at rest): it is lit in its rest frame
+vec4 surface_motion;
+
+// A photon travelling along unit k in the scene frame travels along this in the frame moving with
+// beta (Eq. 4 the other way round).
+vec3 propagation_in_frame(vec3 k, vec4 beta_gamma)
+{
+    float g = beta_gamma.w;
+    float along = dot(beta_gamma.xyz, k);
+    return normalize(k + (g * g / (g + 1.0) * along - g) * beta_gamma.xyz);
+}
+#endif
+
 struct surface_material {
     vec3 base;                 // colour, already modulated by the texture
     float checker;             // squares per unit texture coordinate; 0: none
@@ -26,6 +40,7 @@ vec3 shade(vec3 p, vec3 normal, vec2 uv, vec3 ray_direction, surface_material m)
             base = m.checker_color;
     }
     vec3 color = m.emission + m.factors.x * u_ambient_light * base;
+    vec3 v_out = -ray_direction;                                 // the photon's way to the eye
 #ifdef DOPPLER_COLOUR
     // light reaching the observer from a static emitter at e: D = D_kinematic * lapse(e) / lapse(camera)
     float doppler_at_camera = observer_doppler(observer_view_direction()) / u_observer_lapse;
@@ -34,16 +49,30 @@ vec3 shade(vec3 p, vec3 normal, vec2 uv, vec3 ray_direction, surface_material m)
     vec3 black_bodies = vec3(0.0);
 #endif
 #if LIGHT_COUNT > 0
-    vec3 to_viewer = -ray_direction;
+#ifdef MOVING_OBJECTS
+    vec3 to_viewer = propagation_in_frame(v_out, surface_motion);
+#else
+    vec3 to_viewer = v_out;
+#endif
     vec3 n = dot(normal, to_viewer) < 0.0 ? -normal : normal;    // surfaces are two-sided
     for (int i = 0; i < LIGHT_COUNT; i++) {
         vec3 to_light = normalize(u_light_position[i] - p);
+#ifdef MOVING_OBJECTS
+        vec3 v_in = -to_light;
+        to_light = -propagation_in_frame(v_in, surface_motion);
+#endif
         float lambert = max(dot(n, to_light), 0.0);
         vec3 halfway = normalize(to_light + to_viewer);
         float specular = lambert > 0.0 ? pow(max(dot(n, halfway), 0.0), m.factors.w) : 0.0;
         vec3 rgb_lit = u_light_color[i] * (m.factors.y * lambert * base + m.factors.z * specular);
 #ifdef DOPPLER_COLOUR
+#ifdef MOVING_OBJECTS
+        // Eq. 17: reflected by a moving surface, nu_out / nu_in = (1 - beta.v_in) / (1 - beta.v_out)
+        float reflected = (1.0 - dot(surface_motion.xyz, v_in)) / (1.0 - dot(surface_motion.xyz, v_out));
+        float light_doppler = doppler_at_camera * reflected;
+#else
         float light_doppler = doppler_at_camera * static_lapse(u_light_position[i]);
+#endif
         vec3 black_body = u_light_color[i] * reflectance * (m.factors.y * lambert + m.factors.z * specular) *
                           blackbody_colour(u_light_temperature[i] * light_doppler);
         bool is_black_body = u_light_temperature[i] > 0.0;
@@ -55,7 +84,12 @@ vec3 shade(vec3 p, vec3 normal, vec2 uv, vec3 ray_direction, surface_material m)
 #endif
 #ifdef SEARCHLIGHT
     // RGB light has no spectrum to shift: its bolometric radiance scales with D^4
+#ifdef MOVING_OBJECTS
+    float surface_doppler = doppler_at_camera /
+                            (surface_motion.w * (1.0 - dot(surface_motion.xyz, v_out)));
+#else
     float surface_doppler = doppler_at_camera * static_lapse(p);
+#endif
     color *= surface_doppler * surface_doppler * surface_doppler * surface_doppler;
 #endif
 #ifdef DOPPLER_COLOUR

@@ -23,6 +23,30 @@ uniform sampler2D u_textures[BATCH_SIZE];
 
 const float PI = 3.14159265358979;
 
+#ifdef MOVING_OBJECTS
+// Objects moving near light speed in flat space (docs/RELATIVITY.md): per slot beta, gamma and the
+// rest frame's origin; zero velocity for the slots at rest. The C side wraps the test of a moving
+// slot as MOVING_TEST(slot, TEST_<PRIMITIVE>(slot)): the segment's end events, Poincaré
+// transformed into the object's rest frame, are tested against its rest-frame geometry; the
+// fraction of a hit is the same in both frames (the transformation is affine along the photon).
+uniform vec4 u_motion[2 * BATCH_SIZE];
+uniform float u_observer_time;
+#define MOTION(slot, k) u_motion[2 * (slot) + (k)]
+
+// The event where the photon passed x on its straight path from the camera (scene time
+// t_obs - |x - camera|), in the rest frame, relative to the frame origin.
+vec3 rest_position(vec3 x, vec4 beta_gamma, vec4 origin)
+{
+    float t = u_observer_time - length(x - u_camera_position);
+    vec3 r = x - origin.xyz;
+    float g = beta_gamma.w;
+    return r + (g * g / (g + 1.0) * dot(beta_gamma.xyz, r) - g * t) * beta_gamma.xyz;
+}
+#define MOVING_TEST(slot, test) { vec3 a_scene = a; vec3 b_scene = b; \
+    { vec3 a = rest_position(a_scene, MOTION(slot, 0), MOTION(slot, 1)); \
+      vec3 b = rest_position(b_scene, MOTION(slot, 0), MOTION(slot, 1)); test } }
+#endif
+
 #define GEOMETRY(slot, k) u_geometry[5 * (slot) + (k)]
 #define MATERIAL(slot, k) u_materials[4 * (slot) + (k)]
 
@@ -120,8 +144,14 @@ void main()
     // the chosen object's material
     vec4 color_checker = MATERIAL(0, 0), emission_id = MATERIAL(0, 1), factors = MATERIAL(0, 2),
          checker_color = MATERIAL(0, 3);
+#ifdef MOVING_OBJECTS
+    surface_motion = MOTION(0, 0);
+#endif
     for (int i = 1; i < BATCH_SIZE; i++) {
         bool chosen = best.slot == float(i);
+#ifdef MOVING_OBJECTS
+        surface_motion = chosen ? MOTION(i, 0) : surface_motion;
+#endif
         color_checker = chosen ? MATERIAL(i, 0) : color_checker;
         emission_id = chosen ? MATERIAL(i, 1) : emission_id;
         factors = chosen ? MATERIAL(i, 2) : factors;

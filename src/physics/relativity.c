@@ -33,6 +33,28 @@ double doppler_observer(vec3d beta, vec3d d_observer)
     return 1.0 / (lorentz_gamma(beta) * (1.0 - v3_dot(beta, d_observer)));
 }
 
+vec3d rest_position(const struct object_motion *m, double t, vec3d x)
+{
+    vec3d r = v3_sub(x, m->origin);
+    double g = m->gamma;
+    return v3_axpy(g * g / (g + 1.0) * v3_dot(m->beta, r) - g * t, m->beta, r);
+}
+
+vec3d propagation_in_frame(vec3d beta, vec3d k)
+{
+    return v3_normalize(boost_direction(beta, k));
+}
+
+double reflection_doppler(vec3d beta, vec3d v_in, vec3d v_out)
+{
+    return (1.0 - v3_dot(beta, v_in)) / (1.0 - v3_dot(beta, v_out));
+}
+
+double emission_doppler(vec3d beta, vec3d v_out)
+{
+    return 1.0 / (lorentz_gamma(beta) * (1.0 - v3_dot(beta, v_out)));
+}
+
 /* the lapse sqrt(1 - 2M/r) of a static observer; 1 at infinity and without mass (also at r = 0) */
 static double lapse(double mass, double r)
 {

@@ -26,6 +26,32 @@ vec3d aberrate_to_observer(vec3d beta, vec3d d_scene);
  * Doppler factor 1 / (gamma (1 - beta·d')): above 1 (blue) looking forward. */
 double doppler_observer(vec3d beta, vec3d d_observer);
 
+/* An object moving with constant velocity beta: its rest frame S' has its origin at `origin` at
+ * scene time t = t' = 0 (Müller, Grottel and Weiskopf 2010, Eq. 1 with a = (0, origin)). */
+struct object_motion {
+    vec3d beta;
+    double gamma;
+    vec3d origin;
+};
+
+/* The rest-frame position (relative to the origin) of the event (t, x) of the scene frame: the
+ * spatial part of the Poincaré transformation x' = Lambda(-beta) (x - a). */
+vec3d rest_position(const struct object_motion *m, double t, vec3d x);
+
+/* A photon travelling along unit vector k in the scene frame travels along the returned unit vector
+ * in the frame that moves with beta (the aberration of Eq. 4, the other way round). */
+vec3d propagation_in_frame(vec3d beta, vec3d k);
+
+/* Frequency ratio nu_out / nu_in, both measured in the scene frame, of light reflected by a surface
+ * moving with beta: arriving along v_in, leaving along v_out (propagation directions). The
+ * reflection keeps the frequency in the surface's rest frame, so this is
+ * (1 - beta·v_in) / (1 - beta·v_out): above 1 when the surface approaches the receiver (Eq. 17). */
+double reflection_doppler(vec3d beta, vec3d v_in, vec3d v_out);
+
+/* Frequency ratio nu_scene / nu_rest of light emitted along v_out by a source moving with beta:
+ * 1 / (gamma (1 - beta·v_out)). */
+double emission_doppler(vec3d beta, vec3d v_out);
+
 /* Frequency ratio nu_to / nu_from of light travelling from a static emitter at Schwarzschild radius
  * r_from to a static receiver at r_to: sqrt((1 - 2M/r_from) / (1 - 2M/r_to)). Either radius may be
  * INFINITY (1 there). Both must lie outside the horizon. */

@@ -270,7 +270,7 @@ static void trace_straight(struct tracer *t, vec3d x0, vec3d v0, struct ref_ray 
     }
     vec3d p = v3_add(x0, v3_scale(v3_sub(end, x0), th));
     out->hit = p;
-    surface_shading(&t->surfaces[k], p, &out->normal, out->uv);
+    surface_shading(&t->surfaces[k], straight_rest_point(t->scene, k, x0, end, th), &out->normal, out->uv);
     finish(t, out, k, p, v0, th * seg_len);
     out->depth = th;
 }
@@ -283,8 +283,14 @@ void ref_trace(const struct scene *s, const struct ref_options *o, vec3d x0, vec
     out->min_radius = INFINITY;
     struct tracer t = {.scene = s, .opt = o, .sample_interval = sample_interval, .next_sample = sample_interval,
                        .sample = sample, .sample_arg = arg};
+    struct object rest[SCENE_MAX_OBJECTS];      /* rest-frame geometry of the moving objects only */
     for (int k = 0; k < s->n_objects; k++) {
-        surface_init(&t.surfaces[k], &s->objects[k]);
+        const struct object *obj = &s->objects[k];
+        if (v3_dot(obj->velocity, obj->velocity) > 0.0) {
+            object_rest_geometry(obj, &rest[k]);
+            obj = &rest[k];
+        }
+        surface_init(&t.surfaces[k], obj);
         t.roles[k] = ROLE_OBJECT;
     }
     t.n_surfaces = s->n_objects;

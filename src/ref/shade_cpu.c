@@ -139,7 +139,12 @@ static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray
             base = m->checker_color;
     }
     vec3d color = v3_add(m->emission, v3_scale(vmul(s->ambient_light, base), m->ambient));
-    vec3d to_viewer = v3_scale(v3_normalize(ray->velocity), -1.0);
+    /* a moving surface is lit in its rest frame (Eq. 17): the directions of the light arriving and
+     * leaving are aberrated into it, and its normal is a rest-frame normal */
+    struct object_motion motion;
+    int moving = object_motion(&s->objects[ray->outcome], &motion);
+    vec3d v_out = v3_scale(v3_normalize(ray->velocity), -1.0);
+    vec3d to_viewer = moving ? propagation_in_frame(motion.beta, v_out) : v_out;
     vec3d n = v3_dot(ray->normal, to_viewer) < 0.0 ? v3_scale(ray->normal, -1.0) : ray->normal;
     int doppler = doppler_colour(s);
     double camera_doppler = doppler ? doppler_at_camera(s, view) : 1.0;
@@ -147,13 +152,17 @@ static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray
     vec3d black_bodies = v3(0.0, 0.0, 0.0);
     for (int i = 0; i < s->n_lights; i++) {
         vec3d to_light = v3_normalize(v3_sub(s->lights[i].position, ray->hit));
+        vec3d v_in = v3_scale(to_light, -1.0);
+        if (moving)
+            to_light = v3_scale(propagation_in_frame(motion.beta, v_in), -1.0);
         double lambert = fmax(v3_dot(n, to_light), 0.0);
         vec3d halfway = v3_normalize(v3_add(to_light, to_viewer));
         double specular = lambert > 0.0 ? pow(fmax(v3_dot(n, halfway), 0.0), m->shininess) : 0.0;
         vec3d lit = v3_add(v3_scale(base, m->diffuse * lambert), v3(m->specular * specular, m->specular * specular,
                                                                      m->specular * specular));
         if (doppler && s->lights[i].temperature > 0.0) {
-            double d = camera_doppler * static_lapse(s, s->lights[i].position);
+            double d = camera_doppler * (moving ? reflection_doppler(motion.beta, v_in, v_out)
+                                                : static_lapse(s, s->lights[i].position));
             double f = reflectance * (m->diffuse * lambert + m->specular * specular);
             vec3d c = blackbody_colour(mat, s->lights[i].temperature * d);
             black_bodies = v3_add(black_bodies, v3_scale(vmul(s->lights[i].color, c), f));
@@ -162,7 +171,8 @@ static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray
         }
     }
     if (s->observer.effects == EFFECTS_SEARCHLIGHT)
-        color = v3_scale(color, pow4(camera_doppler * static_lapse(s, ray->hit)));
+        color = v3_scale(color, pow4(camera_doppler * (moving ? emission_doppler(motion.beta, v_out)
+                                                              : static_lapse(s, ray->hit))));
     return v3_add(color, black_bodies);
 }
 

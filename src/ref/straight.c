@@ -24,18 +24,38 @@ vec3d camera_ray(const struct scene *s, int i, int j)
     return observer_moving(s) ? v3_normalize(aberrate_to_scene(s->observer.velocity, d)) : d;
 }
 
+vec3d straight_rest_point(const struct scene *s, int k, vec3d a, vec3d b, double t)
+{
+    struct object_motion m;
+    vec3d p = v3_add(a, v3_scale(v3_sub(b, a), t));
+    if (!object_motion(&s->objects[k], &m))
+        return p;
+    /* the photon passed p at scene time t_obs - |p - a|: light from the camera's past */
+    return rest_position(&m, s->observer.time - v3_len(v3_sub(p, a)), p);
+}
+
 int straight_first_hit(const struct scene *s, vec3d a, vec3d b, double *t_hit)
 {
     int best = -1;
     double best_t = INFINITY, t, p, q;
     for (int k = 0; k < s->n_objects; k++) {
+        /* a moving object: the segment's end events in its rest frame; the fraction of a hit is
+         * the same in both frames, since the Poincaré transformation is affine along the photon */
         const struct object *o = &s->objects[k];
+        struct object rest;
+        int moving = v3_dot(o->velocity, o->velocity) > 0.0;
+        if (moving) {
+            object_rest_geometry(o, &rest);
+            o = &rest;
+        }
+        vec3d ra = moving ? straight_rest_point(s, k, a, b, 0.0) : a;
+        vec3d rb = moving ? straight_rest_point(s, k, a, b, 1.0) : b;
         int found = 0;
         switch (o->type) {
-        case PRIM_SPHERE: found = intersect_sphere(a, b, o->center, o->radius, &t); break;
-        case PRIM_TRIANGLE: found = intersect_triangle(a, b, o->vertex[0], o->vertex[1], o->vertex[2], &t, &p, &q); break;
-        case PRIM_DISK: found = intersect_disk(a, b, o->center, o->normal, o->inner_radius, o->radius, &t); break;
-        case PRIM_RECT: found = intersect_rect(a, b, o->center, o->axis_u, o->axis_v, &t, &p, &q); break;
+        case PRIM_SPHERE: found = intersect_sphere(ra, rb, o->center, o->radius, &t); break;
+        case PRIM_TRIANGLE: found = intersect_triangle(ra, rb, o->vertex[0], o->vertex[1], o->vertex[2], &t, &p, &q); break;
+        case PRIM_DISK: found = intersect_disk(ra, rb, o->center, o->normal, o->inner_radius, o->radius, &t); break;
+        case PRIM_RECT: found = intersect_rect(ra, rb, o->center, o->axis_u, o->axis_v, &t, &p, &q); break;
         default: break;
         }
         if (found && t < best_t) {

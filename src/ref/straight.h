@@ -10,7 +10,12 @@
 vec3d camera_view_direction(const struct scene *s, int i, int j);
 /* The same viewing ray in the scene's frame (aberrated when the observer moves): where rays start. */
 vec3d camera_ray(const struct scene *s, int i, int j);
-/* Index of the object the segment a -> b hits first, with its fraction t along the segment, or -1. */
+/* Where the point at fraction t of the straight segment a -> b (a: the camera) lies in the rest frame
+ * of object k (the point itself for an object at rest): the event on the photon's path, Poincaré
+ * transformed (docs/RELATIVITY.md). */
+vec3d straight_rest_point(const struct scene *s, int k, vec3d a, vec3d b, double t);
+/* Index of the object the segment a -> b (a: the camera) hits first, with its fraction t along the
+ * segment, or -1. Moving objects are intersected in their rest frames. */
 int straight_first_hit(const struct scene *s, vec3d a, vec3d b, double *t);
 /* Object index hit first by each pixel's straight ray, or -1 (sky): width * height, top row first. */
 void straight_cast(const struct scene *s, int32_t *ids);

@@ -1,14 +1,17 @@
 /* Stage 3, ray-object intersection with local illumination (paper sections 3.3 and 3.4): the
  * objects in batches of render.batch per pass, in scene order (batch 1 is the paper's crossbar).
  * A batch holds only the primitive types it contains; its program is cached by that list. */
+#include "physics/relativity.h"
 #include "render/stages.h"
 #include <stdio.h>
 #include <string.h>
 
 #define GEOMETRY_VECS 5
 #define MATERIAL_VECS 4
-/* uniform vectors a pass needs besides its objects: lights, ambient, segment, sizes (rounded up) */
-#define RESERVED_UNIFORM_VECS (8 + 2 * SCENE_MAX_LIGHTS)
+#define MOTION_VECS 2
+/* uniform vectors a pass needs besides its objects: lights, ambient, segment, sizes, camera, observer
+ * and black-body table (rounded up) */
+#define RESERVED_UNIFORM_VECS (20 + 3 * SCENE_MAX_LIGHTS)
 /* texture units 0-3 carry the ray state, the black-body table UNIT_BLACKBODY (4); object textures
  * start here */
 #define FIRST_OBJECT_UNIT 5
@@ -76,16 +79,39 @@ static void pack_material(const struct material *m, int object_id, float out[MAT
     pack3(out[3], m->checker_color, 0.0);
 }
 
+/* beta, gamma and the rest frame's origin (shaders_es/stage_intersect.glsl); gamma 1 at rest */
+static int pack_motion(const struct object *o, float out[MOTION_VECS][4])
+{
+    struct object_motion m = {{0.0, 0.0, 0.0}, 1.0, {0.0, 0.0, 0.0}};
+    int moving = object_motion(o, &m);
+    pack3(out[0], m.beta, m.gamma);
+    pack3(out[1], m.origin, 0.0);
+    return moving;
+}
+
+static int batch_moves(const struct batch *b)
+{
+    struct object_motion m;
+    for (int i = 0; i < b->count; i++)
+        if (object_motion(&b->r->scene->objects[b->first + i], &m))
+            return 1;
+    return 0;
+}
+
 static void set_batch(GLuint p, const void *arg)
 {
     const struct batch *b = arg;
     const struct scene *s = b->r->scene;
     float geometry[SCENE_MAX_BATCH][GEOMETRY_VECS][4], material[SCENE_MAX_BATCH][MATERIAL_VECS][4];
+    float motion[SCENE_MAX_BATCH][MOTION_VECS][4];
     GLint units[SCENE_MAX_BATCH];
     int unit = FIRST_OBJECT_UNIT;
     for (int i = 0; i < b->count; i++) {
         const struct object *o = &s->objects[b->first + i];
-        pack_geometry(o, geometry[i]);
+        struct object rest;
+        object_rest_geometry(o, &rest);
+        pack_geometry(&rest, geometry[i]);
+        pack_motion(o, motion[i]);
         pack_material(&o->material, b->first + i, material[i]);
         units[i] = FIRST_OBJECT_UNIT;
         if (o->material.texture >= 0) {
@@ -96,13 +122,16 @@ static void set_batch(GLuint p, const void *arg)
     }
     glUniform4fv(glGetUniformLocation(p, "u_geometry"), GEOMETRY_VECS * b->count, &geometry[0][0][0]);
     glUniform4fv(glGetUniformLocation(p, "u_materials"), MATERIAL_VECS * b->count, &material[0][0][0]);
+    if (batch_moves(b)) {
+        glUniform4fv(glGetUniformLocation(p, "u_motion"), MOTION_VECS * b->count, &motion[0][0][0]);
+        uniform_float(p, "u_observer_time", s->observer.time);
+    }
     GLint textures = glGetUniformLocation(p, "u_textures");
     if (textures >= 0)
         glUniform1iv(textures, b->count, units);
     uniform_float(p, "u_segment_index", b->segment);
     uniform_vec3(p, "u_ambient_light", s->ambient_light);
-    if (doppler_colour(s))
-        observer_set_uniforms(p, b->r);
+    observer_set_uniforms(p, b->r);
     for (int i = 0; i < s->n_lights; i++) {
         char name[48];
         snprintf(name, sizeof name, "u_light_position[%d]", i);
@@ -121,12 +150,19 @@ static int batch_defines(const struct batch *b, char *out, size_t len)
     int has[PRIM_COUNT] = {0}, textured = 0;
     size_t used = (size_t)snprintf(out, len, "#define BATCH_SIZE %d\n#define LIGHT_COUNT %d\n#define BATCH_TESTS",
                                    b->count, s->n_lights);
+    struct object_motion m;
     for (int i = 0; i < b->count && used < len; i++) {
         const struct object *o = &s->objects[b->first + i];
         has[o->type] = 1;
         textured |= o->material.texture >= 0;
-        used += (size_t)snprintf(out + used, len - used, " TEST_%s(%d)", prim_defines[o->type], i);
+        if (object_motion(o, &m))
+            used += (size_t)snprintf(out + used, len - used, " MOVING_TEST(%d, TEST_%s(%d))", i,
+                                     prim_defines[o->type], i);
+        else
+            used += (size_t)snprintf(out + used, len - used, " TEST_%s(%d)", prim_defines[o->type], i);
     }
+    if (batch_moves(b) && used < len)
+        used += (size_t)snprintf(out + used, len - used, "\n#define MOVING_OBJECTS 1");
     if (textured && used < len) {
         used += (size_t)snprintf(out + used, len - used, "\n#define TEXTURED 1\n#define BATCH_TEXTURES");
         for (int i = 0; i < b->count && used < len; i++)
@@ -146,8 +182,8 @@ static int batch_defines(const struct batch *b, char *out, size_t len)
 
 int intersect_batch_limit(const struct renderer *r)
 {
-    int by_uniforms = (r->caps.max_fragment_uniform_vectors - RESERVED_UNIFORM_VECS) /
-                      (GEOMETRY_VECS + MATERIAL_VECS);
+    int per_object = GEOMETRY_VECS + MATERIAL_VECS + (scene_has_moving_objects(r->scene) ? MOTION_VECS : 0);
+    int by_uniforms = (r->caps.max_fragment_uniform_vectors - RESERVED_UNIFORM_VECS) / per_object;
     int limit = r->scene->render.batch < by_uniforms ? r->scene->render.batch : by_uniforms;
     return limit < 1 ? 1 : limit;
 }

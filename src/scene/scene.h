@@ -58,6 +58,12 @@ struct object {
     double uv[3][2];         /* triangle texture coordinates */
     vec3d pole;              /* sphere: north axis for texture coordinates */
     struct material material;
+    /* Motion (flat space only): velocity in units of c. The geometry above is the object's shape
+     * in its rest frame, placed so that at scene time t = 0 the point frame_origin is where it is
+     * written; objects with the same velocity and frame_origin move as one rigid body. */
+    vec3d velocity;
+    vec3d frame_origin;
+    int frame_origin_given;  /* 0: the object's reference point (centre, or a triangle's centroid) */
 };
 
 struct light {
@@ -85,6 +91,7 @@ enum relativity_effects { EFFECTS_GEOMETRY, EFFECTS_DOPPLER, EFFECTS_SEARCHLIGHT
 struct observer {
     vec3d velocity;
     enum relativity_effects effects;
+    double time;             /* scene time of the observation, length units (c = 1) */
 };
 
 struct render_settings {
@@ -150,6 +157,13 @@ struct scene {
 /* 1 when the observer moves (the setup stage aberrates); 1 when colours follow the Doppler factor. */
 int observer_moving(const struct scene *s);
 int doppler_colour(const struct scene *s);
+/* 1 when the object has a velocity; then m holds its motion (physics/relativity.h). */
+struct object_motion;
+int object_motion(const struct object *o, struct object_motion *m);
+/* The object's geometry in its rest frame, coordinates relative to its frame origin. */
+void object_rest_geometry(const struct object *o, struct object *rest);
+/* 1 when any object moves. */
+int scene_has_moving_objects(const struct scene *s);
 
 /* Error from loading or overriding a scene: where and what. */
 struct scene_error {

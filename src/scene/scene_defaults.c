@@ -2,6 +2,7 @@
  * documented in docs/SCENES.md: change both together. */
 #include <string.h>
 #include "scene/scene.h"
+#include "physics/relativity.h"
 #include "scene/scene_keys.h"
 
 static void render_defaults(struct render_settings *r)
@@ -72,6 +73,44 @@ int observer_moving(const struct scene *s)
 int doppler_colour(const struct scene *s)
 {
     return s->observer.effects != EFFECTS_GEOMETRY;
+}
+
+/* The point an object's rest frame is placed by when no frame_origin is given. */
+static vec3d reference_point(const struct object *o)
+{
+    if (o->type == PRIM_TRIANGLE)
+        return v3_scale(v3_add(o->vertex[0], v3_add(o->vertex[1], o->vertex[2])), 1.0 / 3.0);
+    return o->center;
+}
+
+int object_motion(const struct object *o, struct object_motion *m)
+{
+    if (!(v3_dot(o->velocity, o->velocity) > 0.0))
+        return 0;
+    m->beta = o->velocity;
+    m->gamma = lorentz_gamma(o->velocity);
+    m->origin = o->frame_origin_given ? o->frame_origin : reference_point(o);
+    return 1;
+}
+
+void object_rest_geometry(const struct object *o, struct object *rest)
+{
+    *rest = *o;
+    struct object_motion m;
+    if (!object_motion(o, &m))
+        return;
+    rest->center = v3_sub(o->center, m.origin);
+    for (int k = 0; k < 3; k++)
+        rest->vertex[k] = v3_sub(o->vertex[k], m.origin);
+}
+
+int scene_has_moving_objects(const struct scene *s)
+{
+    struct object_motion m;
+    for (int i = 0; i < s->n_objects; i++)
+        if (object_motion(&s->objects[i], &m))
+            return 1;
+    return 0;
 }
 
 void scene_defaults(struct scene *s)

@@ -196,6 +196,15 @@ static int set_effects(struct scene *s, void *t, const union scene_key_value *v,
     return 0;
 }
 
+static int set_frame_origin(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
+{
+    (void)s, (void)r, (void)n;
+    struct object *o = t;
+    o->frame_origin = v->vector;
+    o->frame_origin_given = 1;
+    return 0;
+}
+
 static int set_sky_type(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
 {
     (void)t, (void)r, (void)n;
@@ -292,6 +301,7 @@ const struct scene_key scene_keys[] = {
 
     {SECTION_OBSERVER, "velocity", KEY_VECTOR, ANY, .offset = AT_SCENE(observer.velocity)},
     {SECTION_OBSERVER, "effects", CHOICE(effects_names, set_effects)},
+    {SECTION_OBSERVER, "time", KEY_NUMBER, .lo = -1e9, .hi = 1e9, .offset = AT_SCENE(observer.time)},
 
     {SECTION_RENDER, "width", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .offset = AT_SCENE(render.width)},
     {SECTION_RENDER, "height", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .offset = AT_SCENE(render.height)},
@@ -411,6 +421,8 @@ const struct scene_key scene_keys[] = {
     {SECTION_OBJECT, "texture", KEY_PATH, .set = set_texture},
     {SECTION_OBJECT, "checker", KEY_NUMBER, NON_NEGATIVE, .offset = AT_OBJECT(material.checker)},
     {SECTION_OBJECT, "checker_color", KEY_COLOR, COLOR_RANGE, .offset = AT_OBJECT(material.checker_color)},
+    {SECTION_OBJECT, "velocity", KEY_VECTOR, ANY, .offset = AT_OBJECT(velocity)},
+    {SECTION_OBJECT, "frame_origin", KEY_VECTOR, ANY, .set = set_frame_origin},
 
     {SECTION_QUALITY, "differing_percent", KEY_NUMBER, .lo = 0.0, .hi = 100.0,
      .offset = AT_SCENE(quality.differing_percent)},

@@ -82,6 +82,13 @@ static int validate_objects(const struct scene *s, struct scene_error *err)
             return invalid(s, err, "[object %s]: inner_radius (%g) must be smaller than radius (%g)",
                            o->name, o->inner_radius, o->radius);
         }
+        double speed = v3_len(o->velocity);
+        if (!(speed <= BETA_MAX))
+            return invalid(s, err, "[object %s]: velocity has speed %g c; it must stay below %g c", o->name, speed,
+                           BETA_MAX);
+        if (speed > 0.0 && !model_is_straight(&s->model))
+            return invalid(s, err, "[object %s] moves, but light is bent here (model %s): moving objects are "
+                           "traced in flat space only", o->name, model_name(s->model.type));
         if (o->material.texture >= s->n_textures)
             return invalid(s, err, "[object %s]: texture index %d, but the scene has %d textures",
                            o->name, o->material.texture, s->n_textures);

@@ -19,7 +19,8 @@
 #define TEST_HEIGHT 48
 
 static const char *const scenes[] = {"test", "lorenz", "potential", "refraction", "schwarzschild", "neutron_star",
-                                     "demo", "rossler", "starflight", "blackhole_flight"};
+                                     "demo", "rossler", "starflight", "blackhole_flight", "cube_approach",
+                                     "three_ships"};
 #define N_SCENES (sizeof scenes / sizeof scenes[0])
 
 static void load(struct scene *s, const char *name, const char *const *sets)

@@ -446,6 +446,8 @@ static const struct {
     {"observer_too_fast", 0, "speed 1.13137 c; it must stay below 0.999 c"},
     {"effects_without_black_body", 0, "give [sky] or a [light] a temperature"},
     {"temperature_negative", 2, "from 0 to 1000000"},
+    {"moving_in_curved_space", 0, "[object ball] moves, but light is bent here (model schwarzschild)"},
+    {"object_too_fast", 0, "[object ball]: velocity has speed 1 c"},
     {"rect_not_orthogonal", 0, "orthogonal"},
     {"disk_inner_too_large", 0, "smaller than radius"},
     {"sky_cubemap_without_prefix", 0, "no cubemap"},
