@@ -7,6 +7,7 @@ uniform vec3 u_camera_right;          // scaled by tan(fov / 2) * aspect
 uniform vec3 u_camera_up;             // scaled by tan(fov / 2)
 uniform vec2 u_pixel_origin;          // image pixel of ray-state texel (0, 0); (0, 0) for a full frame
 uniform vec2 u_image_size;
+uniform float u_observer_time;        // scene time of the picture (c = 1)
 #ifdef OBSERVER_MOVING
 uniform vec3 u_observer_beta;         // velocity / c in the scene's (or the static observer's) frame
 uniform float u_observer_gamma;

@@ -23,6 +23,29 @@ vec3 propagation_in_frame(vec3 k, vec4 beta_gamma)
 }
 #endif
 
+#ifdef CLOCKS
+// turns of the clock hand of the surface being shaded; negative: it has no clock
+float surface_clock_turns;
+
+// The clock face of relativity.c's clock_face_mark(): a ring and one hand in texture space.
+bool clock_face_mark(vec2 uv, float turns)
+{
+    vec2 q = uv - 0.5;
+    float angle = 6.28318530718 * fract(turns);
+    vec2 hand = vec2(sin(angle), cos(angle));
+    float along = dot(q, hand);
+    float across = abs(q.x * hand.y - q.y * hand.x);
+    bool on_hand = along >= 0.0 && along <= 0.38 && across <= 0.025;
+    bool on_ring = abs(length(q) - 0.45) <= 0.02;
+    return on_hand || on_ring;
+}
+#endif
+
+#ifdef DOPPLER_COLOUR
+// K; above 0 the surface's emission is a black body whose luminance the RGB emission gives
+float surface_emission_temperature;
+#endif
+
 struct surface_material {
     vec3 base;                 // colour, already modulated by the texture
     float checker;             // squares per unit texture coordinate; 0: none
@@ -39,6 +62,10 @@ vec3 shade(vec3 p, vec3 normal, vec2 uv, vec3 ray_direction, surface_material m)
         if (mod(square.x + square.y, 2.0) >= 1.0)
             base = m.checker_color;
     }
+#ifdef CLOCKS
+    if (surface_clock_turns >= 0.0 && clock_face_mark(uv, surface_clock_turns))
+        base = vec3(0.05);
+#endif
     vec3 color = m.emission + m.factors.x * u_ambient_light * base;
     vec3 v_out = -ray_direction;                                 // the photon's way to the eye
 #ifdef DOPPLER_COLOUR
@@ -47,6 +74,16 @@ vec3 shade(vec3 p, vec3 normal, vec2 uv, vec3 ray_direction, surface_material m)
     // the paper's reflectance factor f_ar (Eq. 18) takes the grey value of the RGB material
     float reflectance = 0.5 * (dot(base, vec3(0.3, 0.59, 0.11)) + 1.0);
     vec3 black_bodies = vec3(0.0);
+    // light the surface sends itself: D = D_kinematic * lapse(p) / lapse(camera), or its motion's
+#ifdef MOVING_OBJECTS
+    float emitted_doppler = doppler_at_camera / (surface_motion.w * (1.0 - dot(surface_motion.xyz, v_out)));
+#else
+    float emitted_doppler = doppler_at_camera * static_lapse(p);
+#endif
+    vec3 glow = rgb_luminance(m.emission) * blackbody_colour(surface_emission_temperature * emitted_doppler);
+    bool glows = surface_emission_temperature > 0.0;
+    black_bodies += glows ? glow : vec3(0.0);
+    color -= glows ? m.emission : vec3(0.0);
 #endif
 #if LIGHT_COUNT > 0
 #ifdef MOVING_OBJECTS
@@ -84,13 +121,7 @@ vec3 shade(vec3 p, vec3 normal, vec2 uv, vec3 ray_direction, surface_material m)
 #endif
 #ifdef SEARCHLIGHT
     // RGB light has no spectrum to shift: its bolometric radiance scales with D^4
-#ifdef MOVING_OBJECTS
-    float surface_doppler = doppler_at_camera /
-                            (surface_motion.w * (1.0 - dot(surface_motion.xyz, v_out)));
-#else
-    float surface_doppler = doppler_at_camera * static_lapse(p);
-#endif
-    color *= surface_doppler * surface_doppler * surface_doppler * surface_doppler;
+    color *= emitted_doppler * emitted_doppler * emitted_doppler * emitted_doppler;
 #endif
 #ifdef DOPPLER_COLOUR
     color += black_bodies;

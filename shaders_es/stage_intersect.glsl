@@ -11,9 +11,9 @@ uniform sampler2D u_hit;
 uniform sampler2D u_image;
 uniform float u_segment_index;
 // Per slot, five geometry vectors (which depends on the primitive, see src/render/stage_intersect.c)
-// and four material vectors.
+// and five material vectors.
 uniform vec4 u_geometry[5 * BATCH_SIZE];
-uniform vec4 u_materials[4 * BATCH_SIZE];
+uniform vec4 u_materials[5 * BATCH_SIZE];
 #ifdef TEXTURED
 uniform sampler2D u_textures[BATCH_SIZE];
 // BATCH_TEXTURES lists SAMPLE_TEXTURE(slot) for the textured objects of the batch
@@ -30,7 +30,6 @@ const float PI = 3.14159265358979;
 // transformed into the object's rest frame, are tested against its rest-frame geometry; the
 // fraction of a hit is the same in both frames (the transformation is affine along the photon).
 uniform vec4 u_motion[2 * BATCH_SIZE];
-uniform float u_observer_time;
 #define MOTION(slot, k) u_motion[2 * (slot) + (k)]
 
 // The event where the photon passed x on its straight path from the camera (scene time
@@ -48,7 +47,7 @@ vec3 rest_position(vec3 x, vec4 beta_gamma, vec4 origin)
 #endif
 
 #define GEOMETRY(slot, k) u_geometry[5 * (slot) + (k)]
-#define MATERIAL(slot, k) u_materials[4 * (slot) + (k)]
+#define MATERIAL(slot, k) u_materials[5 * (slot) + (k)]
 
 #ifdef HAS_PRIM_SPHERE
 // g0 = centre, radius; g1 = texture reference axis; g2 = pole
@@ -143,25 +142,43 @@ void main()
     BATCH_TESTS
     // the chosen object's material
     vec4 color_checker = MATERIAL(0, 0), emission_id = MATERIAL(0, 1), factors = MATERIAL(0, 2),
-         checker_color = MATERIAL(0, 3);
+         checker_color = MATERIAL(0, 3), emitter = MATERIAL(0, 4);
 #ifdef MOVING_OBJECTS
     surface_motion = MOTION(0, 0);
+    vec4 surface_origin = MOTION(0, 1);
 #endif
     for (int i = 1; i < BATCH_SIZE; i++) {
         bool chosen = best.slot == float(i);
 #ifdef MOVING_OBJECTS
         surface_motion = chosen ? MOTION(i, 0) : surface_motion;
+        surface_origin = chosen ? MOTION(i, 1) : surface_origin;
 #endif
         color_checker = chosen ? MATERIAL(i, 0) : color_checker;
         emission_id = chosen ? MATERIAL(i, 1) : emission_id;
         factors = chosen ? MATERIAL(i, 2) : factors;
         checker_color = chosen ? MATERIAL(i, 3) : checker_color;
+        emitter = chosen ? MATERIAL(i, 4) : emitter;
     }
     vec3 texel = vec3(1.0);
 #ifdef TEXTURED
     BATCH_TEXTURES
 #endif
     vec3 p = mix(a, b, best.t);
+#ifdef DOPPLER_COLOUR
+    surface_emission_temperature = emitter.x;
+#endif
+#ifdef CLOCKS
+    // the clock shows its proper time when the light left it: scene time t_obs - |p - camera| on
+    // the straight ray, gamma (t - beta.(p - origin)) in its rest frame
+    float emitted = u_observer_time - length(p - u_camera_position);
+#ifdef MOVING_OBJECTS
+    float proper = surface_motion.w * (emitted - dot(surface_motion.xyz, p - surface_origin.xyz));
+#else
+    float proper = emitted;
+#endif
+    float period = checker_color.w;
+    surface_clock_turns = period > 0.0 ? proper / period : -1.0;
+#endif
     surface_material m = surface_material(color_checker.rgb * texel, color_checker.w, emission_id.rgb, factors,
                                         checker_color.rgb);
     // computed before the select: see the precision note in common.glsl

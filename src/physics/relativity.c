@@ -40,6 +40,22 @@ vec3d rest_position(const struct object_motion *m, double t, vec3d x)
     return v3_axpy(g * g / (g + 1.0) * v3_dot(m->beta, r) - g * t, m->beta, r);
 }
 
+double proper_time(const struct object_motion *m, double t, vec3d x)
+{
+    return m->gamma * (t - v3_dot(m->beta, v3_sub(x, m->origin)));
+}
+
+int clock_face_mark(double u, double v, double turns)
+{
+    double qx = u - 0.5, qy = v - 0.5;
+    double angle = 2.0 * PI_D * (turns - floor(turns));
+    double hx = sin(angle), hy = cos(angle);
+    double along = qx * hx + qy * hy, across = fabs(qx * hy - qy * hx);
+    int on_hand = along >= 0.0 && along <= CLOCK_HAND_LENGTH && across <= CLOCK_HAND_HALF_WIDTH;
+    int on_ring = fabs(sqrt(qx * qx + qy * qy) - CLOCK_RING_RADIUS) <= CLOCK_RING_HALF_WIDTH;
+    return on_hand || on_ring;
+}
+
 vec3d propagation_in_frame(vec3d beta, vec3d k)
 {
     return v3_normalize(boost_direction(beta, k));

@@ -38,6 +38,21 @@ struct object_motion {
  * spatial part of the Poincaré transformation x' = Lambda(-beta) (x - a). */
 vec3d rest_position(const struct object_motion *m, double t, vec3d x);
 
+/* The clock face, in units of texture coordinates (shaders_es/shade.glsl has the same numbers). */
+#define CLOCK_RING_RADIUS 0.45
+#define CLOCK_RING_HALF_WIDTH 0.02
+#define CLOCK_HAND_LENGTH 0.38
+#define CLOCK_HAND_HALF_WIDTH 0.025
+
+/* The proper time of a body with this motion at the event (t, x) on its worldline, counted from the
+ * event (0, origin): t' = gamma (t - beta·(x - origin)). */
+double proper_time(const struct object_motion *m, double t, vec3d x);
+
+/* Where the hand of a clock face in texture space points: 1 on the dial or the hand, else 0. The
+ * dial is a ring of radius 0.45 about uv (0.5, 0.5); the hand, 0.38 long, turns clockwise from +v
+ * once per unit of `turns`. shaders_es/shade.glsl draws the same. */
+int clock_face_mark(double u, double v, double turns);
+
 /* A photon travelling along unit vector k in the scene frame travels along the returned unit vector
  * in the frame that moves with beta (the aberration of Eq. 4, the other way round). */
 vec3d propagation_in_frame(vec3d beta, vec3d k);

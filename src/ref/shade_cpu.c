@@ -138,6 +138,14 @@ static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray
         if (fmod(sx + sy, 2.0) != 0.0)
             base = m->checker_color;
     }
+    if (m->clock_period > 0.0) {
+        /* proper time when the light left the clock (straight rays: flat space only) */
+        struct object_motion clock = {{0.0, 0.0, 0.0}, 1.0, {0.0, 0.0, 0.0}};
+        object_motion(&s->objects[ray->outcome], &clock);
+        double emitted = s->observer.time - v3_len(v3_sub(ray->hit, s->camera.position));
+        if (clock_face_mark(ray->uv[0], ray->uv[1], proper_time(&clock, emitted, ray->hit) / m->clock_period))
+            base = v3(0.05, 0.05, 0.05);
+    }
     vec3d color = v3_add(m->emission, v3_scale(vmul(s->ambient_light, base), m->ambient));
     /* a moving surface is lit in its rest frame (Eq. 17): the directions of the light arriving and
      * leaving are aberrated into it, and its normal is a rest-frame normal */
@@ -150,6 +158,12 @@ static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray
     double camera_doppler = doppler ? doppler_at_camera(s, view) : 1.0;
     double reflectance = 0.5 * (0.3 * base.x + 0.59 * base.y + 0.11 * base.z + 1.0);   /* Eq. 18 */
     vec3d black_bodies = v3(0.0, 0.0, 0.0);
+    /* the light the surface sends itself */
+    double emitted = camera_doppler * (moving ? emission_doppler(motion.beta, v_out) : static_lapse(s, ray->hit));
+    if (doppler && m->temperature > 0.0) {
+        color = v3_sub(color, m->emission);
+        black_bodies = v3_scale(blackbody_colour(mat, m->temperature * emitted), rgb_luminance(m->emission));
+    }
     for (int i = 0; i < s->n_lights; i++) {
         vec3d to_light = v3_normalize(v3_sub(s->lights[i].position, ray->hit));
         vec3d v_in = v3_scale(to_light, -1.0);
@@ -171,8 +185,7 @@ static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray
         }
     }
     if (s->observer.effects == EFFECTS_SEARCHLIGHT)
-        color = v3_scale(color, pow4(camera_doppler * (moving ? emission_doppler(motion.beta, v_out)
-                                                              : static_lapse(s, ray->hit))));
+        color = v3_scale(color, pow4(emitted));
     return v3_add(color, black_bodies);
 }
 

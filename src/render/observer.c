@@ -34,6 +34,7 @@ void observer_set_uniforms(GLuint p, const struct renderer *r)
     uniform_vec3(p, "u_camera_up", v3_scale(up, tan_half));
     glUniform2f(glGetUniformLocation(p, "u_pixel_origin"), (float)r->origin_x, (float)r->origin_y);
     glUniform2f(glGetUniformLocation(p, "u_image_size"), (float)s->render.width, (float)s->render.height);
+    uniform_float(p, "u_observer_time", s->observer.time);
     if (observer_moving(s)) {
         uniform_vec3(p, "u_observer_beta", s->observer.velocity);
         uniform_float(p, "u_observer_gamma", lorentz_gamma(s->observer.velocity));

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #define GEOMETRY_VECS 5
-#define MATERIAL_VECS 4
+#define MATERIAL_VECS 5
 #define MOTION_VECS 2
 /* uniform vectors a pass needs besides its objects: lights, ambient, segment, sizes, camera, observer
  * and black-body table (rounded up) */
@@ -76,7 +76,8 @@ static void pack_material(const struct material *m, int object_id, float out[MAT
     pack3(out[1], m->emission, object_id);
     out[2][0] = (float)m->ambient, out[2][1] = (float)m->diffuse;
     out[2][2] = (float)m->specular, out[2][3] = (float)m->shininess;
-    pack3(out[3], m->checker_color, 0.0);
+    pack3(out[3], m->checker_color, m->clock_period);
+    out[4][0] = (float)m->temperature, out[4][1] = out[4][2] = out[4][3] = 0.0f;
 }
 
 /* beta, gamma and the rest frame's origin (shaders_es/stage_intersect.glsl); gamma 1 at rest */
@@ -124,7 +125,6 @@ static void set_batch(GLuint p, const void *arg)
     glUniform4fv(glGetUniformLocation(p, "u_materials"), MATERIAL_VECS * b->count, &material[0][0][0]);
     if (batch_moves(b)) {
         glUniform4fv(glGetUniformLocation(p, "u_motion"), MOTION_VECS * b->count, &motion[0][0][0]);
-        uniform_float(p, "u_observer_time", s->observer.time);
     }
     GLint textures = glGetUniformLocation(p, "u_textures");
     if (textures >= 0)
@@ -163,6 +163,11 @@ static int batch_defines(const struct batch *b, char *out, size_t len)
     }
     if (batch_moves(b) && used < len)
         used += (size_t)snprintf(out + used, len - used, "\n#define MOVING_OBJECTS 1");
+    int clocks = 0;
+    for (int i = 0; i < b->count; i++)
+        clocks |= s->objects[b->first + i].material.clock_period > 0.0;
+    if (clocks && used < len)
+        used += (size_t)snprintf(out + used, len - used, "\n#define CLOCKS 1");
     if (textured && used < len) {
         used += (size_t)snprintf(out + used, len - used, "\n#define TEXTURED 1\n#define BATCH_TEXTURES");
         for (int i = 0; i < b->count && used < len; i++)

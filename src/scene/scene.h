@@ -43,6 +43,8 @@ struct material {
     int texture;             /* index into scene.textures, -1 for none */
     double checker;          /* >0: procedural checkerboard with this many squares per unit texcoord */
     vec3d checker_color;     /* second colour of the checkerboard */
+    double clock_period;     /* > 0: a clock face in texture space, one turn per period of proper time */
+    double temperature;      /* K; > 0: the emission is a black body, its luminance from `emission` */
 };
 
 /* Geometry of one object. Which fields are used depends on the primitive. */

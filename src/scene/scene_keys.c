@@ -421,6 +421,8 @@ const struct scene_key scene_keys[] = {
     {SECTION_OBJECT, "texture", KEY_PATH, .set = set_texture},
     {SECTION_OBJECT, "checker", KEY_NUMBER, NON_NEGATIVE, .offset = AT_OBJECT(material.checker)},
     {SECTION_OBJECT, "checker_color", KEY_COLOR, COLOR_RANGE, .offset = AT_OBJECT(material.checker_color)},
+    {SECTION_OBJECT, "temperature", KEY_NUMBER, TEMPERATURE_RANGE, .offset = AT_OBJECT(material.temperature)},
+    {SECTION_OBJECT, "clock_period", KEY_NUMBER, .lo = 0.0, .hi = 1e9, .offset = AT_OBJECT(material.clock_period)},
     {SECTION_OBJECT, "velocity", KEY_VECTOR, ANY, .offset = AT_OBJECT(velocity)},
     {SECTION_OBJECT, "frame_origin", KEY_VECTOR, ANY, .set = set_frame_origin},
 

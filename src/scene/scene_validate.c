@@ -86,6 +86,10 @@ static int validate_objects(const struct scene *s, struct scene_error *err)
         if (!(speed <= BETA_MAX))
             return invalid(s, err, "[object %s]: velocity has speed %g c; it must stay below %g c", o->name, speed,
                            BETA_MAX);
+        if (o->material.clock_period > 0.0 && !model_is_straight(&s->model))
+            return invalid(s, err, "[object %s] carries a clock, but light is bent here (model %s): clocks show "
+                           "the light-travel time of straight rays, in flat space only", o->name,
+                           model_name(s->model.type));
         if (speed > 0.0 && !model_is_straight(&s->model))
             return invalid(s, err, "[object %s] moves, but light is bent here (model %s): moving objects are "
                            "traced in flat space only", o->name, model_name(s->model.type));
@@ -101,6 +105,8 @@ static int has_black_body(const struct scene *s)
     int found = s->sky.temperature > 0.0;
     for (int i = 0; i < s->n_lights; i++)
         found |= s->lights[i].temperature > 0.0;
+    for (int i = 0; i < s->n_objects; i++)
+        found |= s->objects[i].material.temperature > 0.0;
     return found;
 }
 
@@ -112,7 +118,7 @@ static int validate_observer(const struct scene *s, struct scene_error *err)
                        BETA_MAX, 1.0 / sqrt(1.0 - BETA_MAX * BETA_MAX));
     if (s->observer.effects != EFFECTS_GEOMETRY && !has_black_body(s))
         return invalid(s, err, "observer.effects = %s colours black bodies, but nothing in the scene is one: "
-                       "give [sky] or a [light] a temperature (K)",
+                       "give [sky], a [light] or an emitting [object] a temperature (K)",
                        s->observer.effects == EFFECTS_DOPPLER ? "doppler" : "searchlight");
     return 0;
 }

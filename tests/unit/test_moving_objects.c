@@ -208,6 +208,118 @@ static void test_reflection_doppler(void **state)
     assert_true(fabs(q.z - lorentz_gamma(beta)) <= 1e-12);
 }
 
+/* The reading of a clock face seen along the view axis at observation time t_obs: the proper time
+ * of the event where the centre ray hit it (the traced hit, not a formula). */
+static double clock_seen(struct scene *s, double t_obs)
+{
+    s->observer.time = t_obs;
+    struct ref_ray ray;
+    hc_cpu_ray(s, v3(0, 0, -1), &ray);
+    assert_int_equal(ray.outcome, 0);
+    struct object_motion m;
+    assert_true(object_motion(&s->objects[0], &m));
+    double emitted = t_obs - v3_len(v3_sub(ray.hit, s->camera.position));
+    return proper_time(&m, emitted, ray.hit);
+}
+
+/* The temporal Doppler effect: a clock coming straight at the observer is seen to run fast by
+ * D = sqrt((1 + beta) / (1 - beta)), one going away slow by 1/D; each is slow by 1/gamma in the
+ * scene frame, and the light-travel time makes the difference. Exact for uniform motion along the
+ * line of sight: 1e-9 relative. */
+static void test_clock_rate_is_doppler(void **state)
+{
+    (void)state;
+    static const double betas[] = {0.5, -0.5, 0.9};
+    for (int k = 0; k < 3; k++) {
+        static struct scene s;
+        moving_sphere(&s, 32, 24, v3(0, 0, 0), 0.0);
+        struct object *o = &s.objects[0];
+        o->type = PRIM_RECT;
+        o->center = v3(0, 0, -30);
+        o->axis_u = v3(1, 0, 0);
+        o->axis_v = v3(0, 1, 0);
+        o->velocity = v3(0, 0, betas[k]);       /* + is towards the camera */
+        o->material.clock_period = 10.0;
+        hc_validate(&s);
+        double rate = (clock_seen(&s, 27.0) - clock_seen(&s, 25.0)) / 2.0;
+        double b = betas[k], want = sqrt((1.0 + b) / (1.0 - b));
+        print_message("beta %+.1f towards the eye: the clock is seen to run at %.9f, Doppler factor %.9f\n", b, rate,
+                      want);
+        assert_true(fabs(rate / want - 1.0) <= 1e-9);
+    }
+}
+
+/* The clocks scene on both engines: the same hands (colours within a level on average), and the
+ * hands turn between two observation times. */
+static void test_clock_faces_agree_and_turn(void **state)
+{
+    (void)state;
+    static const char *const later[] = {"observer.time=14", NULL};
+    static struct scene s, t;
+    hc_load(&s, "clocks", 96, 72, NULL);
+    struct cpu_image cpu;
+    struct hc_gpu g, gl;
+    hc_render_both(&s, 96, 72, &cpu, &g);
+    struct compare_result r;
+    hc_compare(&g.dump, &cpu.dump, &r);
+    double mean = (r.mean_abs_diff[0] + r.mean_abs_diff[1] + r.mean_abs_diff[2]) / 3.0;
+    hc_load(&t, "clocks", 96, 72, later);
+    hc_gpu_render(&t, &gl);
+    int turned = 0;
+    for (int i = 0; i < 96 * 72; i++)
+        turned += memcmp(g.res.rgba + 4 * i, gl.res.rgba + 4 * i, 3) != 0;
+    print_message("clocks: GPU vs CPU mean difference %.3f levels; %d pixels changed 2 time units later\n", mean,
+                  turned);
+    assert_true(mean <= 1.0);
+    assert_true(turned >= 20);
+    cpu_image_free(&cpu);
+    hc_gpu_free(&g);
+    hc_gpu_free(&gl);
+}
+
+/* Black-body emitters moving towards and away from the eye: the approaching one is hotter (bluer),
+ * the receding one cooler (redder), on both engines alike. */
+static void test_emitters_shift(void **state)
+{
+    (void)state;
+    enum { W = 64, H = 48 };
+    static struct scene s;
+    moving_sphere(&s, W, H, v3(0, 0, 0), 0.0);
+    s.observer.effects = EFFECTS_DOPPLER;
+    struct object *o = &s.objects[0];
+    o->center = v3(-1.5, 0, -10);
+    o->velocity = v3(0, 0, 0.5);             /* towards the eye */
+    o->material.emission = v3(1, 1, 1);
+    o->material.temperature = 4000.0;
+    o->material.ambient = o->material.diffuse = o->material.specular = 0.0;
+    struct object *away = hc_add_object(&s, PRIM_SPHERE, "away");
+    *away = *o;
+    snprintf(away->name, sizeof away->name, "away");
+    away->center = v3(1.5, 0, -10);
+    away->velocity = v3(0, 0, -0.5);
+    struct cpu_image cpu;
+    struct hc_gpu g;
+    hc_render_both(&s, W, H, &cpu, &g);
+    struct compare_result r;
+    hc_compare(&g.dump, &cpu.dump, &r);
+    double mean = (r.mean_abs_diff[0] + r.mean_abs_diff[1] + r.mean_abs_diff[2]) / 3.0;
+    int blue[2] = {0, 0}, n[2] = {0, 0};
+    for (int i = 0; i < W * H; i++) {
+        int id = g.dump.records[i].outcome;
+        if (id >= 0) {
+            blue[id] += g.res.rgba[4 * i + 2] - g.res.rgba[4 * i];
+            n[id]++;
+        }
+    }
+    print_message("emitters: GPU vs CPU mean difference %.3f levels; blue minus red: approaching %.0f, receding %.0f "
+                  "(%d and %d pixels)\n", mean, (double)blue[0] / n[0], (double)blue[1] / n[1], n[0], n[1]);
+    assert_true(mean <= 1.0);
+    assert_true(n[0] > 10 && n[1] > 10);
+    assert_true((double)blue[0] / n[0] > (double)blue[1] / n[1] + 50.0);
+    cpu_image_free(&cpu);
+    hc_gpu_free(&g);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -215,6 +327,9 @@ int main(void)
         cmocka_unit_test(test_gpu_outline_within_half_a_pixel),
         cmocka_unit_test(test_later_is_further),
         cmocka_unit_test(test_reflection_doppler),
+        cmocka_unit_test(test_clock_rate_is_doppler),
+        cmocka_unit_test(test_clock_faces_agree_and_turn),
+        cmocka_unit_test(test_emitters_shift),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
