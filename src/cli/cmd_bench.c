@@ -12,26 +12,29 @@
 #include "render/renderer.h"
 
 static const char *const section_names[] = {"table1", "figure5", "unrolling", "batching", "early-z", "pareto",
-                                            "limit"};
+                                            "limit", "relativity"};
 #define N_SECTIONS (int)(sizeof section_names / sizeof section_names[0])
 static int (*const sections[N_SECTIONS])(struct bench *, char *, size_t) = {
-    bench_table1, bench_figure5, bench_unrolling, bench_batching, bench_early_z, bench_pareto, bench_limit};
+    bench_table1, bench_figure5, bench_unrolling, bench_batching, bench_early_z, bench_pareto, bench_limit,
+    bench_relativity};
 /* configurations each section times (for the progress count) */
-static int section_steps[N_SECTIONS] = {12, 12, 5, 4, 6, 0 /* bench_pareto_count */, 2};
-static const int section_steps_quick[N_SECTIONS] = {12, 6, 5, 4, 6, 3, 2};
+static int section_steps[N_SECTIONS] = {12, 12, 5, 4, 6, 0 /* bench_pareto_count */, 2, 9};
+static const int section_steps_quick[N_SECTIONS] = {12, 6, 5, 4, 6, 3, 2, 4};
 
 static void usage(FILE *out)
 {
     fprintf(out,
             "usage: bentray bench --out DIR [options]\n"
             "Measure the renderer: the paper's Table 1 and Figure 5, unrolling, objects per pass, early-z,\n"
-            "speed against error against the CPU reference, and the machine's limit. Writes DIR/BENCH.md,\n"
+            "speed against error against the CPU reference, the machine's limit, and relativity (moving\n"
+            "objects as rays and as polygons, the observer's effects). Writes DIR/BENCH.md,\n"
             "and CSV files and gnuplot scripts in DIR/bench/ (`make bench` draws the plots).\n"
             "  --out DIR            where to write (DIR must exist)\n"
             "  --force              overwrite an existing DIR/BENCH.md and its data files\n"
             "  --runs N             timed runs per configuration, the median is reported (1-63, default 3)\n"
             "  --size WxH           frame size of the paper's measurements (default 800x600)\n"
-            "  --only S[,S...]      sections: table1, figure5, unrolling, batching, early-z, pareto, limit\n"
+            "  --only S[,S...]      sections: table1, figure5, unrolling, batching, early-z, pareto, limit,\n"
+            "                       relativity\n"
             "  --quick              tiny frames and few configurations: proves the command works, measures nothing\n"
             "  --backend NAME       egl, osmesa or auto (default)\n"
             "exit codes: 0 ok, 1 runtime failure, 2 bad usage\n");

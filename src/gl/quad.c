@@ -20,6 +20,15 @@ void quad_release(void)
     quad_buffer = 0;
 }
 
+void quad_bind(void)
+{
+    glBindBuffer(GL_ARRAY_BUFFER, quad_buffer);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, 0);
+    glEnableVertexAttribArray(0);
+    for (GLuint a = 1; a < 8; a++)     /* GLES2 guarantees 8 attributes; meshes used 1 and 2 */
+        glDisableVertexAttribArray(a);
+}
+
 void quad_draw(GLuint program, float z)
 {
     GLint loc = glGetUniformLocation(program, "u_quad_depth");

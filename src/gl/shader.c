@@ -146,6 +146,7 @@ GLuint shader_program_build(const struct shader_target *target, const char *defi
     glAttachShader(prog, vs);
     glAttachShader(prog, fs);
     glBindAttribLocation(prog, 0, "a_corner");
+    glBindAttribLocation(prog, 0, "a_rest_position");   /* a mesh's first attribute (stage_polygons.c) */
     glLinkProgram(prog);
     glDeleteShader(vs);
     glDeleteShader(fs);

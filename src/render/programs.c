@@ -20,9 +20,17 @@ void program_cache_release(struct program_cache *pc)
 const struct stage_program *program_cache_get(struct program_cache *pc, const char *const *fragment_files,
                                               const char *defines, int two_targets, char *err, size_t errlen)
 {
-    static const char *const vertex[] = {"quad_vertex.glsl", NULL};
+    return program_cache_get_vertex(pc, NULL, fragment_files, defines, two_targets, err, errlen);
+}
+
+const struct stage_program *program_cache_get_vertex(struct program_cache *pc, const char *const *vertex_files,
+                                                     const char *const *fragment_files, const char *defines,
+                                                     int two_targets, char *err, size_t errlen)
+{
+    static const char *const quad_vertex[] = {"quad_vertex.glsl", NULL};
+    const char *const *vertex = vertex_files ? vertex_files : quad_vertex;
     char key[PROGRAMS_KEY_LEN];
-    size_t used = snprintf(key, sizeof key, "%d|%s|", two_targets, defines);
+    size_t used = snprintf(key, sizeof key, "%d|%s|%s|", two_targets, defines, vertex[0]);
     for (int i = 0; fragment_files[i] && used < sizeof key; i++)
         used += snprintf(key + used, sizeof key - used, "%s,", fragment_files[i]);
     if (used >= sizeof key) {

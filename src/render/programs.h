@@ -26,5 +26,9 @@ void program_cache_release(struct program_cache *pc);
  * two_targets: 0 for stages that write one colour (sky). NULL with err on failure. */
 const struct stage_program *program_cache_get(struct program_cache *pc, const char *const *fragment_files,
                                               const char *defines, int two_targets, char *err, size_t errlen);
+/* The same with vertex files of its own (NULL: the pass quad's). */
+const struct stage_program *program_cache_get_vertex(struct program_cache *pc, const char *const *vertex_files,
+                                                     const char *const *fragment_files, const char *defines,
+                                                     int two_targets, char *err, size_t errlen);
 
 #endif

@@ -57,7 +57,8 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
     int defines_fit = observer_defines(scene, r->observer_defines, sizeof r->observer_defines) == 0;
     if (!defines_fit)
         snprintf(err, errlen, "internal: the observer's defines do not fit");
-    if (!defines_fit || observer_lut_load(r, err, errlen) != 0 || textures_load(r, err, errlen) != 0) {
+    if (!defines_fit || observer_lut_load(r, err, errlen) != 0 || textures_load(r, err, errlen) != 0 ||
+        polygons_load(r, err, errlen) != 0) {
         renderer_destroy(r);
         return NULL;
     }
@@ -118,7 +119,7 @@ int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int 
         if (hook && hook(r, seg, hook_arg) != 0)
             return -1;
     }
-    if (stage_retire(r, 1, err, errlen) != 0)
+    if (stage_retire(r, 1, err, errlen) != 0 || stage_polygons(r, err, errlen) != 0)
         return -1;
     glDisable(GL_DEPTH_TEST);
     if (stage_sky(r, err, errlen) != 0)
@@ -209,6 +210,7 @@ void renderer_destroy(struct renderer *r)
         raystate_release(&r->rs);
     textures_release(r);
     observer_lut_release(r);
+    polygons_release(r);
     program_cache_release(&r->programs);
     quad_release();
     free(r);

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #define GEOMETRY_VECS 5
-#define MATERIAL_VECS 5
+#define MATERIAL_VECS 5         /* stages.h: intersect_pack_material */
 #define MOTION_VECS 2
 /* uniform vectors a pass needs besides its objects: lights, ambient, segment, sizes, camera, observer
  * and black-body table (rounded up) */
@@ -22,7 +22,8 @@ static const char *const prim_defines[PRIM_COUNT] = {"SPHERE", "TRIANGLE", "DISK
 
 struct batch {
     const struct renderer *r;
-    int first, count;             /* objects first .. first + count - 1 */
+    int object[SCENE_MAX_BATCH];  /* scene indices, in scene order */
+    int count;
     int segment;
 };
 
@@ -70,7 +71,7 @@ static void pack_geometry(const struct object *o, float g[GEOMETRY_VECS][4])
     }
 }
 
-static void pack_material(const struct material *m, int object_id, float out[MATERIAL_VECS][4])
+void intersect_pack_material(const struct material *m, int object_id, float out[MATERIAL_VECS][4])
 {
     pack3(out[0], m->color, m->checker);
     pack3(out[1], m->emission, object_id);
@@ -94,7 +95,7 @@ static int batch_moves(const struct batch *b)
 {
     struct object_motion m;
     for (int i = 0; i < b->count; i++)
-        if (object_motion(&b->r->scene->objects[b->first + i], &m))
+        if (object_motion(&b->r->scene->objects[b->object[i]], &m))
             return 1;
     return 0;
 }
@@ -108,12 +109,12 @@ static void set_batch(GLuint p, const void *arg)
     GLint units[SCENE_MAX_BATCH];
     int unit = FIRST_OBJECT_UNIT;
     for (int i = 0; i < b->count; i++) {
-        const struct object *o = &s->objects[b->first + i];
+        const struct object *o = &s->objects[b->object[i]];
         struct object rest;
         object_rest_geometry(o, &rest);
         pack_geometry(&rest, geometry[i]);
         pack_motion(o, motion[i]);
-        pack_material(&o->material, b->first + i, material[i]);
+        intersect_pack_material(&o->material, b->object[i], material[i]);
         units[i] = FIRST_OBJECT_UNIT;
         if (o->material.texture >= 0) {
             glActiveTexture(GL_TEXTURE0 + unit);
@@ -152,7 +153,7 @@ static int batch_defines(const struct batch *b, char *out, size_t len)
                                    b->count, s->n_lights);
     struct object_motion m;
     for (int i = 0; i < b->count && used < len; i++) {
-        const struct object *o = &s->objects[b->first + i];
+        const struct object *o = &s->objects[b->object[i]];
         has[o->type] = 1;
         textured |= o->material.texture >= 0;
         if (object_motion(o, &m))
@@ -165,13 +166,13 @@ static int batch_defines(const struct batch *b, char *out, size_t len)
         used += (size_t)snprintf(out + used, len - used, "\n#define MOVING_OBJECTS 1");
     int clocks = 0;
     for (int i = 0; i < b->count; i++)
-        clocks |= s->objects[b->first + i].material.clock_period > 0.0;
+        clocks |= s->objects[b->object[i]].material.clock_period > 0.0;
     if (clocks && used < len)
         used += (size_t)snprintf(out + used, len - used, "\n#define CLOCKS 1");
     if (textured && used < len) {
         used += (size_t)snprintf(out + used, len - used, "\n#define TEXTURED 1\n#define BATCH_TEXTURES");
         for (int i = 0; i < b->count && used < len; i++)
-            if (s->objects[b->first + i].material.texture >= 0)
+            if (s->objects[b->object[i]].material.texture >= 0)
                 used += (size_t)snprintf(out + used, len - used, " SAMPLE_TEXTURE(%d)", i);
     }
     for (int t = 0; t < PRIM_COUNT && used < len; t++)
@@ -204,7 +205,7 @@ static int intersect_batch(struct renderer *r, const struct batch *b, int segmen
     const char *files[PRIM_COUNT + 6] = {"common.glsl"};
     int n = 1, seen[PRIM_COUNT] = {0};
     for (int i = 0; i < b->count; i++) {
-        enum primitive_type t = r->scene->objects[b->first + i].type;
+        enum primitive_type t = r->scene->objects[b->object[i]].type;
         if (!seen[t]++)
             files[n++] = prim_files[t];
     }
@@ -233,19 +234,21 @@ int stage_intersect_all(struct renderer *r, int segment, int segment_start, char
     const struct scene *s = r->scene;
     int limit = intersect_batch_limit(r);
     int max_textured = r->caps.max_texture_units - FIRST_OBJECT_UNIT;
-    for (int first = 0; first < s->n_objects;) {
-        struct batch b = {r, first, 0, segment};
+    int next = 0;
+    while (next < s->n_objects) {
+        struct batch b = {.r = r, .count = 0, .segment = segment};
         int textured = 0;
-        while (first + b.count < s->n_objects && b.count < limit) {
-            int needs = s->objects[first + b.count].material.texture >= 0;
+        for (; next < s->n_objects && b.count < limit; next++) {
+            if (polygons_draw_object(r, next))
+                continue;          /* drawn as transformed triangles after the rays (stage_polygons.c) */
+            int needs = s->objects[next].material.texture >= 0;
             if (textured + needs > max_textured && b.count > 0)
                 break;
             textured += needs;
-            b.count++;
+            b.object[b.count++] = next;
         }
-        if (intersect_batch(r, &b, segment_start, err, errlen) != 0)
+        if (b.count > 0 && intersect_batch(r, &b, segment_start, err, errlen) != 0)
             return -1;
-        first += b.count;
     }
     return gl_check("ray-object intersection", err, errlen);
 }

@@ -21,6 +21,8 @@ struct renderer {
     GLuint sky_cubemap;
     GLuint blackbody_lut;         /* Doppler colour effects only */
     char observer_defines[128];   /* OBSERVER_MOVING, DOPPLER_COLOUR, SEARCHLIGHT */
+    GLuint mesh_buffers[SCENE_MAX_OBJECTS][2];   /* render.moving_objects = polygons: vertices, indices */
+    int mesh_indices[SCENE_MAX_OBJECTS];
     int origin_x, origin_y;       /* image pixel of ray-state texel (0, 0) */
     char model_defines[256];      /* model, method, steps per pass */
     char model_file[64];          /* model_NAME.glsl; model_flat.glsl for straight rays */
@@ -67,5 +69,13 @@ int stage_terminate(struct renderer *r, int segment, char *err, size_t errlen);
 /* Retire finished rays (all: every ray) into the result textures; mark them for early-z. */
 int stage_retire(struct renderer *r, int all, char *err, size_t errlen);
 int stage_sky(struct renderer *r, char *err, size_t errlen);
+/* The polygon method for moving objects (stage_polygons.c): which objects it draws, their meshes,
+ * and the stage that rasterises them into the results. */
+int polygons_draw_object(const struct renderer *r, int k);
+int polygons_load(struct renderer *r, char *err, size_t errlen);
+void polygons_release(struct renderer *r);
+int stage_polygons(struct renderer *r, char *err, size_t errlen);
+/* One object's material vectors as the intersection and polygon shaders read them. */
+void intersect_pack_material(const struct material *m, int object_id, float out[5][4]);
 
 #endif

@@ -16,6 +16,7 @@
 #define SCENE_MAX_STEPS_PER_SEGMENT 10000
 #define SCENE_MAX_STEPS_PER_PASS 64
 #define SCENE_MAX_BATCH 16          /* objects intersected in one pass */
+#define SCENE_MAX_SUBDIVISION 128   /* a sphere's mesh then has 129 x 257 vertices: 16-bit indices */
 
 enum primitive_type { PRIM_SPHERE, PRIM_TRIANGLE, PRIM_DISK, PRIM_RECT, PRIM_COUNT };
 enum precision_choice { PRECISION_AUTO, PRECISION_FP32, PRECISION_FP16 };
@@ -24,6 +25,9 @@ enum mrt_choice { MRT_AUTO, MRT_ON, MRT_OFF };
  * the error estimate of the embedded Dormand-Prince 5(4) pair (method dopri5 only). */
 enum step_control { STEP_FIXED, STEP_DOUBLING, STEP_EMBEDDED };
 enum sky_type { SKY_COLOR, SKY_CUBEMAP };
+/* How moving objects are drawn: traced per pixel in their rest frames (exact), or as the paper's
+ * comparison, their tessellated surface's vertices transformed and the triangles rasterised. */
+enum moving_objects_method { MOVING_RAYS, MOVING_POLYGONS };
 
 struct camera {
     vec3d position;
@@ -119,6 +123,8 @@ struct render_settings {
     double tolerance;
     double grow_fraction;
     double step_min, step_max;
+    enum moving_objects_method moving_objects;
+    int polygon_subdivision;  /* MOVING_POLYGONS: segments along each edge of a primitive's mesh */
 };
 
 /* The bounds adaptive steps stay within (the defaults resolved). */

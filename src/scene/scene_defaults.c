@@ -7,6 +7,7 @@
 
 static void render_defaults(struct render_settings *r)
 {
+    r->polygon_subdivision = 16;
     r->width = 320;
     r->height = 240;
     r->method = METHOD_RK4;

@@ -24,6 +24,7 @@ static const char *const mrt_names[] = {"auto", "on", "off", NULL};
 static const char *const profile_names[] = {"yukawa", "polynomial", NULL};
 static const char *const sky_names[] = {"color", "cubemap", NULL};
 static const char *const effects_names[] = {"geometry", "doppler", "searchlight", NULL};
+static const char *const moving_names[] = {"rays", "polygons", NULL};
 
 _Static_assert(sizeof model_names / sizeof model_names[0] == MODEL_COUNT + 1,
                "one name per model type");
@@ -196,6 +197,13 @@ static int set_effects(struct scene *s, void *t, const union scene_key_value *v,
     return 0;
 }
 
+static int set_moving_objects(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
+{
+    (void)t, (void)r, (void)n;
+    s->render.moving_objects = (enum moving_objects_method)v->choice;
+    return 0;
+}
+
 static int set_frame_origin(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
 {
     (void)s, (void)r, (void)n;
@@ -329,6 +337,9 @@ const struct scene_key scene_keys[] = {
      .offset = AT_SCENE(render.grow_fraction)},
     {SECTION_RENDER, "step_min", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .offset = AT_SCENE(render.step_min)},
     {SECTION_RENDER, "step_max", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .offset = AT_SCENE(render.step_max)},
+    {SECTION_RENDER, "moving_objects", CHOICE(moving_names, set_moving_objects)},
+    {SECTION_RENDER, "polygon_subdivision", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SUBDIVISION,
+     .offset = AT_SCENE(render.polygon_subdivision)},
 
     {SECTION_MODEL, "type", CHOICE(model_names, set_model_type)},
     {SECTION_MODEL, "center", KEY_VECTOR, ANY, .applies = ALL_MODELS_BUT_FLAT,
