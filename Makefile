@@ -9,6 +9,9 @@ CC      ?= cc
 BUILD   ?= build
 CFLAGS  ?= -O2 -g
 CFLAGS  += -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes -Isrc -I$(BUILD)/gen
+# make test-sanitize builds everything again under build/asan with these
+CFLAGS  += $(SANITIZE)
+BIN     ?= bentray
 PKGS    := egl inih libpng
 HAVE_OSMESA := $(shell pkg-config --exists osmesa 2>/dev/null && echo 1)
 ifeq ($(HAVE_OSMESA),1)
@@ -31,10 +34,10 @@ SHADERS   := $(sort $(wildcard shaders_es/*.glsl))
 TEST_SRCS := $(sort $(wildcard tests/unit/test_*.c))
 TEST_BINS := $(TEST_SRCS:tests/unit/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps deps-bench demo test test-unit test-render golden assets accuracy bench clean
-all: bentray
+.PHONY: all deps deps-bench demo test test-unit test-render test-sanitize golden assets accuracy bench clean
+all: $(BIN)
 
-bentray: $(BUILD)/src/main.o $(BUILD)/libbentray.a
+$(BIN): $(BUILD)/src/main.o $(BUILD)/libbentray.a
 	$(CC) $(CFLAGS) -o $@ $^ $(LDLIBS)
 
 $(BUILD)/libbentray.a: $(LIB_OBJS)
@@ -107,14 +110,33 @@ $(BUILD)/tests/%: tests/unit/%.c $(BUILD)/libbentray.a
 	$(CC) $(CFLAGS) $(PKG_CFLAGS) -Itests -MMD -MP -MF $@.d -o $@ $< $(BUILD)/libbentray.a $(LDLIBS) $(TEST_LIBS)
 
 test: deps
-	@$(MAKE) --no-print-directory test-unit test-render
+	@$(MAKE) --no-print-directory test-unit test-render test-sanitize
 
 test-unit: $(TEST_BINS)
 	@set -e; for t in $(TEST_BINS); do echo "== $$t"; $$t; done
 
 # the report tool is built here too, so that it cannot rot between runs of `make accuracy`
-test-render: bentray $(BUILD)/tools/accuracy_report
-	@tests/render/run_all.sh
+test-render: $(BIN) $(BUILD)/tools/accuracy_report
+	@BT=./$(BIN) tests/render/run_all.sh
+
+# The unit and command-line tests again, built with AddressSanitizer and UndefinedBehaviorSanitizer:
+# an invalid access or an undefined operation fails the test that caused it, and so does a leak in
+# the tests that open no GL context. Those that do (GL_TESTS, found by what they include) and the
+# command-line tests run without leak detection: Mesa unloads its driver before LeakSanitizer looks,
+# so the driver's allocations can no longer be told from ours.
+SANITIZE_FLAGS := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+ASAN_BINS := $(TEST_BINS:$(BUILD)/%=build/asan/%)
+GL_TESTS  := $(basename $(notdir $(shell grep -l 'hard_cases.h\|gl_context_create\|render_frame' $(TEST_SRCS))))
+test-sanitize:
+	@$(MAKE) --no-print-directory BUILD=build/asan BIN=build/asan/bentray SANITIZE="$(SANITIZE_FLAGS)" \
+	    build/asan/bentray $(ASAN_BINS)
+	@set -e; export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1; \
+	  for t in $(ASAN_BINS); do \
+	    case " $(GL_TESTS) " in *" $$(basename $$t) "*) leaks=0;; *) leaks=1;; esac; \
+	    echo "== $$t (sanitized, leak detection $$leaks)"; \
+	    ASAN_OPTIONS=detect_leaks=$$leaks $$t > build/asan/last.log 2>&1 || { cat build/asan/last.log; exit 1; }; \
+	  done; \
+	  ASAN_OPTIONS=detect_leaks=0 BT=build/asan/bentray tests/render/run_all.sh
 
 golden: bentray
 	tests/render/make_golden.sh

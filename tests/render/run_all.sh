@@ -3,7 +3,7 @@
 # need a different GL environment (GLES 2.0, missing extensions), both back-ends.
 set -u
 cd "$(dirname "$0")/../.."
-BT=./bentray
+BT=${BT:-./bentray}
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 fails=0

@@ -1,0 +1,177 @@
+/* The exhibition kiosk's configuration: which scenes it shows, how it draws them, and which knobs
+ * and buttons drive it. Read from an INI file (kiosk/kiosk.conf documents every key) by
+ * kiosk_config_load(), then checked as a whole by kiosk_config_check(): the kiosk runs unattended,
+ * so anything doubtful is refused at start with FILE:LINE rather than guessed at. */
+#ifndef BT_KIOSK_CONFIG_H
+#define BT_KIOSK_CONFIG_H
+#include <stdint.h>
+
+#define KIOSK_MAX_SCENES 32
+#define KIOSK_MAX_BUTTONS 16
+#define KIOSK_MAX_INPUTS 16
+#define KIOSK_NAME_LEN 64            /* section names, GPIO chips and line names, connectors */
+#define KIOSK_PATH_LEN 512           /* every stored path, after joining the config's directory */
+/* Capacity of the record of where each key was set; kiosk_config_keys.c checks its table fits. */
+#define KIOSK_KEY_TABLE_MAX 96
+/* One record per section instance: the five single sections, then buttons, then inputs. */
+#define KIOSK_SINGLE_SECTIONS 5
+#define KIOSK_SLOTS (KIOSK_SINGLE_SECTIONS + KIOSK_MAX_BUTTONS + KIOSK_MAX_INPUTS)
+
+/* Griffin PowerMate's USB ids, the defaults of a powermate input. */
+#define KIOSK_POWERMATE_VID 0x077d
+#define KIOSK_POWERMATE_PID 0x0410
+
+/* The HUD's font where Debian's fonts-dejavu-core puts it. */
+#define KIOSK_DEFAULT_FONT "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
+
+/* Knob limits. Speeds are fractions of c: 0.99 c is gamma 7, and c itself is out of reach for an
+ * observer. Masses are in the scene's unit (the horizon radius is 2 x mass). */
+#define KIOSK_SPEED_MAX 0.99
+#define KIOSK_MASS_MAX 10.0
+
+/* Frame sizes (preview, refined, display mode), pixels per side. */
+#define KIOSK_MIN_SIZE 16
+#define KIOSK_MAX_SIZE 8192
+
+enum kiosk_backend { KIOSK_BACKEND_AUTO, KIOSK_BACKEND_KMS, KIOSK_BACKEND_X11, KIOSK_BACKEND_HEADLESS };
+
+/* How a knob's counts move its value. linear: step is in the value's own unit. rapidity (speed):
+ * step is in rapidity, atanh(v/c), so equal turns give equal boosts and gamma grows without the
+ * knob slowing to a crawl near c. log (mass): step is in ln(mass), each count multiplies. */
+enum kiosk_curve { KIOSK_CURVE_LINEAR, KIOSK_CURVE_RAPIDITY, KIOSK_CURVE_LOG };
+
+enum kiosk_action {
+    KIOSK_ACTION_NEXT_SCENE,
+    KIOSK_ACTION_PREVIOUS_SCENE,
+    KIOSK_ACTION_CYCLE_EFFECTS,
+    KIOSK_ACTION_RESET,
+    KIOSK_ACTION_PIPELINE_VIEW,
+    KIOSK_ACTION_COUNT
+};
+
+enum kiosk_input_type {
+    KIOSK_INPUT_POWERMATE,           /* Griffin PowerMate: a USB knob with one push button */
+    KIOSK_INPUT_HID,                 /* any HID device, its report layout given in the file */
+    KIOSK_INPUT_GPIO_ENCODER,        /* quadrature encoder on two GPIO lines */
+    KIOSK_INPUT_GPIO_BUTTON,         /* push button on one GPIO line */
+    KIOSK_INPUT_KEYBOARD,            /* the program's fixed key mapping, for service and tests */
+    KIOSK_INPUT_SCRIPT,              /* a file of timestamped events, replayed */
+    KIOSK_INPUT_TYPE_COUNT
+};
+
+enum kiosk_axis_mode { KIOSK_AXIS_RELATIVE, KIOSK_AXIS_ABSOLUTE };
+
+/* [kiosk] */
+struct kiosk_main {
+    char scenes[KIOSK_MAX_SCENES][KIOSK_PATH_LEN];   /* joined with the config's directory */
+    int n_scenes;
+    int start_scene;                 /* index into scenes */
+    char start_scene_name[KIOSK_NAME_LEN];   /* as written: an index or a scene's name, or "" */
+    int idle_seconds;                /* s without input before attract mode */
+    int preview_width, preview_height;   /* px, drawn while a knob moves */
+    int width, height;               /* px, the refined frame */
+    int refine_frames;               /* frames from preview to full quality */
+    int hud;                         /* 1: draw the values on screen */
+    char font[KIOSK_PATH_LEN];
+    char log[KIOSK_PATH_LEN];        /* a file, or "stderr" */
+    char assets_root[KIOSK_PATH_LEN];    /* "": scenes may be anywhere */
+};
+
+/* [display] */
+struct kiosk_display {
+    enum kiosk_backend backend;
+    char drm_device[KIOSK_PATH_LEN]; /* "": the first card that drives a display */
+    char connector[KIOSK_NAME_LEN];  /* "": the first connected one */
+    int mode_width, mode_height;     /* px; 0: the connector's preferred mode */
+    int vsync;
+    char headless_out[KIOSK_PATH_LEN];   /* directory for PNG frames */
+    int headless_frames;             /* frames to write before exiting; 0: until stopped */
+};
+
+/* [speed] and [mass]. speed: fractions of c; mass: the scene's mass unit (M = 1: horizon at 2). */
+struct kiosk_knob {
+    char input[KIOSK_NAME_LEN];      /* name of the [input NAME] that turns it */
+    double min, max;
+    double step;                     /* per detent or count, in the curve's unit */
+    enum kiosk_curve curve;
+    double start;                    /* value at start and after reset; min when not given */
+};
+
+/* [button NAME] */
+struct kiosk_button {
+    char name[KIOSK_NAME_LEN];
+    enum kiosk_action action;
+    char input[KIOSK_NAME_LEN];
+    int bit;                         /* hid: button bit 0..7; -1 for other input types */
+};
+
+/* [input NAME]: fields apply by type, as the comments say; the others keep their defaults. */
+struct kiosk_input {
+    char name[KIOSK_NAME_LEN];
+    enum kiosk_input_type type;
+    int vid, pid;                    /* powermate, hid: USB vendor and product */
+    int report_id;                   /* hid: 0 for devices without numbered reports */
+    int report_length;               /* hid: bytes, the report id byte included */
+    int axis_offset, axis_size;      /* hid: byte offset and width (1, 2, 4) of the knob's value */
+    int axis_signed;
+    enum kiosk_axis_mode axis_mode;  /* relative: counts per report; absolute: a position */
+    int64_t axis_min, axis_max;      /* hid, absolute: raw values at the two ends of the knob */
+    int button_offset, buttons;      /* hid: byte holding the button bits, how many bits */
+    char chip[KIOSK_NAME_LEN];       /* gpio_*: "gpiochip0" */
+    int line_a, line_b;              /* gpio_encoder: line offsets, -1 when given by name */
+    char line_a_name[KIOSK_NAME_LEN], line_b_name[KIOSK_NAME_LEN];
+    int counts_per_detent;           /* gpio_encoder: 1, 2 or 4 */
+    int line;                        /* gpio_button: line offset, -1 when given by name */
+    char line_name[KIOSK_NAME_LEN];
+    int active_low;                  /* gpio_button */
+    int debounce_ms;                 /* gpio_button, ms */
+    char path[KIOSK_PATH_LEN];       /* script */
+};
+
+/* [attract] */
+struct kiosk_attract {
+    int enabled;
+    char script[KIOSK_PATH_LEN];
+};
+
+/* Where each key was set, for the messages of kiosk_config_check(); 0 where it was not. Filled by
+ * kiosk_config_load(); a configuration built in code has none, and its messages name no line. */
+struct kiosk_config_source {
+    int header[KIOSK_SLOTS];
+    int key[KIOSK_SLOTS][KIOSK_KEY_TABLE_MAX];
+};
+
+struct kiosk_config {
+    char path[KIOSK_PATH_LEN];       /* the file read, "" for defaults */
+    char dir[KIOSK_PATH_LEN];        /* its directory: relative paths in it start here */
+    struct kiosk_main kiosk;
+    struct kiosk_display display;
+    struct kiosk_knob speed, mass;
+    struct kiosk_attract attract;
+    struct kiosk_button buttons[KIOSK_MAX_BUTTONS];
+    int n_buttons;
+    struct kiosk_input inputs[KIOSK_MAX_INPUTS];
+    int n_inputs;
+    struct kiosk_config_source source;
+};
+
+/* where: "FILE:LINE", or FILE alone for a problem with the whole file. */
+struct kiosk_config_error {
+    char where[600];
+    char message[512];
+};
+
+void kiosk_config_defaults(struct kiosk_config *c);
+/* Defaults, then the file at PATH. 0, or -1 with the first error in ERR. Values are checked one
+ * by one here; call kiosk_config_check() for what involves several keys. */
+int kiosk_config_load(struct kiosk_config *c, const char *path, struct kiosk_config_error *err);
+/* Checks across keys and sections: references between sections, one knob's range and start,
+ * frame sizes, an input's settings against its type and its use. 0, or -1 with ERR. */
+int kiosk_config_check(const struct kiosk_config *c, struct kiosk_config_error *err);
+
+/* The input called NAME, NULL if there is none. */
+const struct kiosk_input *kiosk_config_input(const struct kiosk_config *c, const char *name);
+const char *kiosk_action_name(enum kiosk_action action);
+const char *kiosk_input_type_name(enum kiosk_input_type type);
+
+#endif
