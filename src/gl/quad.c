@@ -1,10 +1,16 @@
 #include "gl/quad.h"
 
 static GLuint quad_buffer;
+/* renderers sharing the current context share the quad: the last one to go deletes it */
+static int quad_users;
 
 int quad_init(void)
 {
     static const GLfloat corners[] = {-1, -1, 1, -1, -1, 1, 1, 1};
+    if (quad_users++ > 0) {
+        quad_bind();
+        return glGetError() == GL_NO_ERROR ? 0 : -1;
+    }
     glGenBuffers(1, &quad_buffer);
     glBindBuffer(GL_ARRAY_BUFFER, quad_buffer);
     glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
@@ -15,6 +21,8 @@ int quad_init(void)
 
 void quad_release(void)
 {
+    if (quad_users > 0 && --quad_users > 0)
+        return;
     if (quad_buffer)
         glDeleteBuffers(1, &quad_buffer);
     quad_buffer = 0;

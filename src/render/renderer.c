@@ -14,6 +14,32 @@ static double now_seconds(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* The variant of the scene as it is now: a knob may have switched the field off (flat space, not
+ * integrated) or on, set the observer moving, or changed the effects between two frames. The
+ * programs of every variant stay cached; only the black-body table is rebuilt when the tone
+ * mapping changes. */
+static int renderer_follow_scene(struct renderer *r, char *err, size_t errlen)
+{
+    const struct scene *scene = r->scene;
+    /* a model with its fields off is flat space: nothing is integrated (model_is_straight) */
+    r->straight = model_is_straight(&scene->model);
+    snprintf(r->model_file, sizeof r->model_file, "model_%s.glsl",
+             r->straight ? "flat" : model_name(scene->model.type));
+    static const char *const method_defines[] = {"EULER", "RK4", "DOPRI5"};
+    static const char *const control_defines[] = {"FIXED", "DOUBLING", "EMBEDDED"};
+    snprintf(r->model_defines, sizeof r->model_defines,
+             "#define MODEL_%s 1\n#define METHOD_%s 1\n#define STEP_%s 1\n#define STEPS_PER_PASS %d\n%s",
+             r->straight ? "FLAT" : "CURVED", method_defines[scene->render.method],
+             control_defines[scene->render.step_control], scene->render.steps_per_pass,
+             !r->straight && scene->model.type == MODEL_POTENTIAL && scene->model.profile == PROFILE_POLYNOMIAL
+                 ? "#define PROFILE_POLYNOMIAL 1\n" : "");
+    if (observer_defines(scene, r->observer_defines, sizeof r->observer_defines) != 0) {
+        snprintf(err, errlen, "internal: the observer's defines do not fit");
+        return -1;
+    }
+    return observer_lut_load(r, err, errlen);
+}
+
 struct renderer *renderer_create(const struct gl_context *ctx, const struct scene *scene, char *err,
                                  size_t errlen, int *bad_input)
 {
@@ -42,22 +68,7 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
         return NULL;
     }
     program_cache_init(&r->programs, &r->caps.shader, r->path.mrt);
-    /* a model with its fields off is flat space: nothing is integrated (model_is_straight) */
-    r->straight = model_is_straight(&scene->model);
-    snprintf(r->model_file, sizeof r->model_file, "model_%s.glsl",
-             r->straight ? "flat" : model_name(scene->model.type));
-    static const char *const method_defines[] = {"EULER", "RK4", "DOPRI5"};
-    static const char *const control_defines[] = {"FIXED", "DOUBLING", "EMBEDDED"};
-    snprintf(r->model_defines, sizeof r->model_defines,
-             "#define MODEL_%s 1\n#define METHOD_%s 1\n#define STEP_%s 1\n#define STEPS_PER_PASS %d\n%s",
-             r->straight ? "FLAT" : "CURVED", method_defines[scene->render.method],
-             control_defines[scene->render.step_control], scene->render.steps_per_pass,
-             !r->straight && scene->model.type == MODEL_POTENTIAL && scene->model.profile == PROFILE_POLYNOMIAL
-                 ? "#define PROFILE_POLYNOMIAL 1\n" : "");
-    int defines_fit = observer_defines(scene, r->observer_defines, sizeof r->observer_defines) == 0;
-    if (!defines_fit)
-        snprintf(err, errlen, "internal: the observer's defines do not fit");
-    if (!defines_fit || observer_lut_load(r, err, errlen) != 0 || textures_load(r, err, errlen) != 0 ||
+    if (renderer_follow_scene(r, err, errlen) != 0 || textures_load(r, err, errlen) != 0 ||
         polygons_load(r, err, errlen) != 0) {
         renderer_destroy(r);
         return NULL;
@@ -80,6 +91,8 @@ int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int 
             return -1;
         r->have_state = 1;
     }
+    if (renderer_follow_scene(r, err, errlen) != 0)
+        return -1;
     double t0 = now_seconds();
     r->passes = 0;
     r->quad_z = 0.0f;

@@ -170,6 +170,8 @@ struct object_motion;
 int object_motion(const struct object *o, struct object_motion *m);
 /* The object's geometry in its rest frame, coordinates relative to its frame origin. */
 void object_rest_geometry(const struct object *o, struct object *rest);
+/* 1 when the sky, a light or an object is a black body: the Doppler effects have something to colour. */
+int scene_has_black_body(const struct scene *s);
 /* 1 when any object moves. */
 int scene_has_moving_objects(const struct scene *s);
 

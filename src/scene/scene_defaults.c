@@ -105,6 +105,16 @@ void object_rest_geometry(const struct object *o, struct object *rest)
         rest->vertex[k] = v3_sub(o->vertex[k], m.origin);
 }
 
+int scene_has_black_body(const struct scene *s)
+{
+    int found = s->sky.temperature > 0.0;
+    for (int i = 0; i < s->n_lights; i++)
+        found |= s->lights[i].temperature > 0.0;
+    for (int i = 0; i < s->n_objects; i++)
+        found |= s->objects[i].material.temperature > 0.0;
+    return found;
+}
+
 int scene_has_moving_objects(const struct scene *s)
 {
     struct object_motion m;

@@ -100,23 +100,13 @@ static int validate_objects(const struct scene *s, struct scene_error *err)
     return 0;
 }
 
-static int has_black_body(const struct scene *s)
-{
-    int found = s->sky.temperature > 0.0;
-    for (int i = 0; i < s->n_lights; i++)
-        found |= s->lights[i].temperature > 0.0;
-    for (int i = 0; i < s->n_objects; i++)
-        found |= s->objects[i].material.temperature > 0.0;
-    return found;
-}
-
 static int validate_observer(const struct scene *s, struct scene_error *err)
 {
     double speed = v3_len(s->observer.velocity);
     if (!(speed <= BETA_MAX))
         return invalid(s, err, "observer.velocity has speed %g c; it must stay below %g c (gamma %.0f)", speed,
                        BETA_MAX, 1.0 / sqrt(1.0 - BETA_MAX * BETA_MAX));
-    if (s->observer.effects != EFFECTS_GEOMETRY && !has_black_body(s))
+    if (s->observer.effects != EFFECTS_GEOMETRY && !scene_has_black_body(s))
         return invalid(s, err, "observer.effects = %s colours black bodies, but nothing in the scene is one: "
                        "give [sky], a [light] or an emitting [object] a temperature (K)",
                        s->observer.effects == EFFECTS_DOPPLER ? "doppler" : "searchlight");

@@ -1,0 +1,77 @@
+/* The visitor's settings and how they make the scene that is drawn. */
+#include "kiosk/kiosk_state.h"
+#include <math.h>
+#include <string.h>
+
+static double clamp(double x, double lo, double hi)
+{
+    return x < lo ? lo : x > hi ? hi : x;
+}
+
+double knob_turn(const struct kiosk_knob *k, double value, long counts)
+{
+    double v;
+    switch (k->curve) {
+    case KIOSK_CURVE_RAPIDITY:
+        /* equal turns give equal boosts: rapidities add, speeds do not */
+        v = tanh(atanh(clamp(value, -KIOSK_SPEED_MAX, KIOSK_SPEED_MAX)) + k->step * (double)counts);
+        break;
+    case KIOSK_CURVE_LOG: {
+        double from = value > 0.0 ? value : k->min > 0.0 ? k->min : exp(k->step) * 1e-3;
+        v = counts == 0 ? value : from * exp(k->step * (double)counts);
+        break;
+    }
+    default:
+        v = value + k->step * (double)counts;
+        break;
+    }
+    return clamp(v, k->min, k->max);
+}
+
+void kiosk_state_reset(struct kiosk_state *st, const struct kiosk_config *c)
+{
+    memset(st, 0, sizeof *st);
+    st->scene = c->kiosk.start_scene;
+    st->speed = c->speed.start;
+    st->mass = c->mass.start;
+    st->effects = EFFECTS_GEOMETRY;
+}
+
+void kiosk_state_action(struct kiosk_state *st, const struct kiosk_config *c, const struct scene *scene,
+                        enum kiosk_action action)
+{
+    int n = c->kiosk.n_scenes;
+    switch (action) {
+    case KIOSK_ACTION_NEXT_SCENE:
+        st->scene = (st->scene + 1) % n;
+        st->effects = EFFECTS_GEOMETRY;
+        break;
+    case KIOSK_ACTION_PREVIOUS_SCENE:
+        st->scene = (st->scene + n - 1) % n;
+        st->effects = EFFECTS_GEOMETRY;
+        break;
+    case KIOSK_ACTION_CYCLE_EFFECTS:
+        st->effects = scene_has_black_body(scene) ? (enum relativity_effects)((st->effects + 1) % 3) : EFFECTS_GEOMETRY;
+        break;
+    case KIOSK_ACTION_RESET:
+        kiosk_state_reset(st, c);
+        break;
+    case KIOSK_ACTION_PIPELINE_VIEW:
+        st->pipeline_view = !st->pipeline_view;
+        break;
+    default:
+        break;
+    }
+}
+
+int kiosk_state_apply(const struct kiosk_state *st, const struct scene *base, struct scene *out,
+                      struct scene_error *err)
+{
+    *out = *base;
+    vec3d view = v3_normalize(v3_sub(base->camera.look_at, base->camera.position));
+    out->observer.velocity = v3_scale(view, st->speed);
+    out->observer.effects = st->effects;
+    if (out->model.type == MODEL_SCHWARZSCHILD)
+        out->model.mass = st->mass;
+    return scene_validate(out, err);
+}

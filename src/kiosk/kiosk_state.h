@@ -1,0 +1,38 @@
+/* What the visitor has set: the scene shown, the two knobs' values, the effects, the pipeline view;
+ * and how knob counts, button actions and a scene file combine into the scene that is drawn. Pure:
+ * the loop, the inputs and the display live elsewhere. */
+#ifndef BT_KIOSK_STATE_H
+#define BT_KIOSK_STATE_H
+#include "kiosk/kiosk_config.h"
+#include "scene/scene.h"
+
+struct kiosk_state {
+    int scene;                       /* index into the configuration's scenes */
+    double speed;                    /* observer speed, fraction of c */
+    double mass;                     /* central mass, the scene's unit */
+    enum relativity_effects effects;
+    int pipeline_view;               /* 1: show the renderer's stages instead of the image */
+};
+
+/* The value a knob reaches after `counts` detents from `value`, along its curve (linear in the
+ * value, in rapidity atanh(v) for speed, in ln(mass) for log), clamped to [min, max]. A log knob
+ * leaving 0 starts at min, or at exp(step) times its smallest positive value. */
+double knob_turn(const struct kiosk_knob *k, double value, long counts);
+
+/* The start: the configured start scene and knob starts, geometry only, no pipeline view. */
+void kiosk_state_reset(struct kiosk_state *st, const struct kiosk_config *c);
+
+/* A button's action. Cycling effects steps geometry -> doppler -> searchlight -> geometry on a
+ * scene that has a black body, and leaves geometry alone on one that has none (scene: the scene
+ * being shown). */
+void kiosk_state_action(struct kiosk_state *st, const struct kiosk_config *c, const struct scene *scene,
+                        enum kiosk_action action);
+
+/* The scene to draw: base (the scene file as loaded) with the observer moving at st->speed along
+ * the camera's view direction, the black hole's mass set to st->mass (0: flat space, the camera
+ * stays where it is, so the shadow grows with the mass), and the effects. A scene without a black
+ * hole keeps its model. 0, or -1 with the reason (the mass puts the camera inside the horizon). */
+int kiosk_state_apply(const struct kiosk_state *st, const struct scene *base, struct scene *out,
+                      struct scene_error *err);
+
+#endif

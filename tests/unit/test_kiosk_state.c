@@ -1,0 +1,208 @@
+/* The kiosk's state: knob curves (speed in rapidity, so gamma 7 is a few turns away), button
+ * actions, how the state makes the drawn scene, the scripted-input file, and one renderer that
+ * follows the scene as the knobs change it (the same image as a fresh renderer, bit for bit). */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include "hard_cases.h"
+#include "kiosk/kiosk_state.h"
+#include "kiosk/script.h"
+
+static struct kiosk_config config;
+
+static void load_example(void)
+{
+    struct kiosk_config_error e;
+    if (kiosk_config_load(&config, "kiosk/kiosk.conf", &e) != 0 || kiosk_config_check(&config, &e) != 0)
+        fail_msg("%s: %s", e.where, e.message);
+}
+
+/* Rapidities add: equal turns give equal boosts, gamma 7 (0.99 c) is reached within a few turns of
+ * a 24-detent knob, and turning back returns to rest. */
+static void test_speed_knob_in_rapidity(void **state)
+{
+    (void)state;
+    struct kiosk_knob k = {.min = 0.0, .max = 0.99, .step = 0.05, .curve = KIOSK_CURVE_RAPIDITY};
+    double v = 0.0;
+    int detents = 0;
+    while (v < 0.99 && detents < 1000) {
+        double next = knob_turn(&k, v, 1);
+        assert_true(next > v);
+        assert_true(fabs(atanh(fmin(next, 0.98999999)) - atanh(v) - 0.05) <= 1e-9 || next == 0.99);
+        v = next;
+        detents++;
+    }
+    print_message("0.99 c (gamma %.1f) after %d detents of 0.05 in rapidity\n", 1.0 / sqrt(1.0 - v * v), detents);
+    assert_true(detents <= 3 * 24);
+    assert_true(v == 0.99);                                   /* clamped at max */
+    assert_true(knob_turn(&k, v, 5) == 0.99);
+    assert_true(fabs(knob_turn(&k, knob_turn(&k, 0.0, 17), -17)) <= 1e-12);
+    assert_true(knob_turn(&k, 0.3, -1000) == 0.0);            /* clamped at min */
+}
+
+static void test_mass_knob(void **state)
+{
+    (void)state;
+    struct kiosk_knob lin = {.min = 0.0, .max = 2.0, .step = 0.1, .curve = KIOSK_CURVE_LINEAR};
+    assert_true(fabs(knob_turn(&lin, 0.5, 3) - 0.8) <= 1e-12);
+    assert_true(knob_turn(&lin, 0.5, 100) == 2.0);
+    assert_true(knob_turn(&lin, 0.5, -100) == 0.0);
+    struct kiosk_knob lg = {.min = 0.01, .max = 5.0, .step = log(2.0), .curve = KIOSK_CURVE_LOG};
+    assert_true(fabs(knob_turn(&lg, 0.25, 2) - 1.0) <= 1e-12);   /* each count doubles */
+    assert_true(fabs(knob_turn(&lg, 0.0, 1) - 0.02) <= 1e-12);   /* from 0: starts at min */
+    assert_true(knob_turn(&lg, 1.0, 0) == 1.0);
+}
+
+static void test_actions(void **state)
+{
+    (void)state;
+    load_example();
+    static struct scene with_black_body, without;
+    hc_load(&with_black_body, "starflight", 16, 12, NULL);
+    hc_load(&without, "schwarzschild", 16, 12, NULL);
+    struct kiosk_state st;
+    kiosk_state_reset(&st, &config);
+    int n = config.kiosk.n_scenes;
+    assert_int_equal(st.scene, config.kiosk.start_scene);
+    kiosk_state_action(&st, &config, &without, KIOSK_ACTION_PREVIOUS_SCENE);
+    assert_int_equal(st.scene, (config.kiosk.start_scene + n - 1) % n);
+    kiosk_state_action(&st, &config, &without, KIOSK_ACTION_NEXT_SCENE);
+    assert_int_equal(st.scene, config.kiosk.start_scene);
+    kiosk_state_action(&st, &config, &without, KIOSK_ACTION_CYCLE_EFFECTS);
+    assert_int_equal(st.effects, EFFECTS_GEOMETRY);                /* nothing to colour */
+    kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_CYCLE_EFFECTS);
+    assert_int_equal(st.effects, EFFECTS_DOPPLER);
+    kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_CYCLE_EFFECTS);
+    assert_int_equal(st.effects, EFFECTS_SEARCHLIGHT);
+    kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_CYCLE_EFFECTS);
+    assert_int_equal(st.effects, EFFECTS_GEOMETRY);
+    kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_PIPELINE_VIEW);
+    assert_true(st.pipeline_view);
+    st.speed = 0.7;
+    kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_RESET);
+    assert_true(st.speed == config.speed.start && !st.pipeline_view);
+}
+
+/* Speed along the view, the black hole's mass (0: flat space, not integrated), the camera kept. */
+static void test_apply(void **state)
+{
+    (void)state;
+    static struct scene base, out;
+    hc_load(&base, "schwarzschild", 16, 12, NULL);
+    struct kiosk_state st = {.speed = 0.6, .mass = 0.5, .effects = EFFECTS_GEOMETRY};
+    struct scene_error e;
+    assert_int_equal(kiosk_state_apply(&st, &base, &out, &e), 0);
+    vec3d view = v3_normalize(v3_sub(base.camera.look_at, base.camera.position));
+    assert_true(fabs(v3_len(out.observer.velocity) - 0.6) <= 1e-12);
+    assert_true(v3_dot(v3_normalize(out.observer.velocity), view) >= 1.0 - 1e-12);
+    assert_true(out.model.mass == 0.5);
+    assert_true(v3_len(v3_sub(out.camera.position, base.camera.position)) == 0.0);
+    st.mass = 0.0;
+    assert_int_equal(kiosk_state_apply(&st, &base, &out, &e), 0);
+    assert_true(model_is_straight(&out.model));
+    st.mass = 10.0;                                 /* horizon radius 20: the camera is inside */
+    assert_int_not_equal(kiosk_state_apply(&st, &base, &out, &e), 0);
+    assert_non_null(strstr(e.message, "horizon"));
+}
+
+static void write_file(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    fclose(f);
+}
+
+static void test_script(void **state)
+{
+    (void)state;
+    static struct script sc;
+    char err[600];
+    write_file("build/test_script_good.txt", "# a tour\n0 turn speed +3\n0.5 turn mass -2\n\n1 press next_scene\n"
+                                              "1 frame\n  2.25 press cycle_effects\n");
+    assert_int_equal(script_load(&sc, "build/test_script_good.txt", err, sizeof err), 0);
+    assert_int_equal(sc.n, 5);
+    assert_true(sc.events[0].kind == SCRIPT_TURN && sc.events[0].knob == SCRIPT_KNOB_SPEED && sc.events[0].counts == 3);
+    assert_true(sc.events[1].knob == SCRIPT_KNOB_MASS && sc.events[1].counts == -2);
+    assert_true(sc.events[2].kind == SCRIPT_PRESS && sc.events[2].action == KIOSK_ACTION_NEXT_SCENE);
+    assert_true(sc.events[3].kind == SCRIPT_FRAME && sc.events[3].t == 1.0);
+    assert_true(sc.events[4].action == KIOSK_ACTION_CYCLE_EFFECTS && sc.events[4].line == 7);
+    static const struct { const char *text, *want; } bad[] = {
+        {"1 turn speed +3\n0.5 frame\n", ":2: time 0.5 goes back"},
+        {"1 jump\n", ":1: unknown event \"jump\""},
+        {"nan frame\n", ":1: expected a time"},
+        {"-1 frame\n", ":1: expected a time"},
+        {"1 turn speed +5000\n", ":1: turn speed: expected counts from -1000 to +1000"},
+        {"1 turn volume 3\n", ":1: turn: expected the knob speed or mass"},
+        {"1 press launch\n", ":1: press: expected next_scene"},
+        {"1 frame now\n", ":1: unexpected \"now\""},
+        {"1\n", ":1: expected an event"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        write_file("build/test_script_bad.txt", bad[i].text);
+        assert_int_equal(script_load(&sc, "build/test_script_bad.txt", err, sizeof err), -1);
+        if (!strstr(err, bad[i].want))
+            fail_msg("script \"%s\": got \"%s\", want \"%s\"", bad[i].text, err, bad[i].want);
+    }
+    assert_int_equal(script_load(&sc, "build/no_such_script.txt", err, sizeof err), -1);
+    assert_non_null(strstr(err, "no_such_script.txt: cannot read"));
+}
+
+/* One renderer whose scene the knobs change between frames draws what a fresh renderer draws, while
+ * other renderers come and go on the same context (the fresh ones here). */
+static void test_renderer_follows_the_scene(void **state)
+{
+    (void)state;
+    enum { W = 40, H = 30 };
+    static struct scene base, live, fresh;
+    hc_load(&base, "blackhole_flight", W, H, NULL);
+    static const struct kiosk_state states[] = {
+        {.speed = 0.0, .mass = 0.12, .effects = EFFECTS_GEOMETRY},
+        {.speed = 0.0, .mass = 0.12, .effects = EFFECTS_GEOMETRY},
+        {.speed = 0.0, .mass = 0.0, .effects = EFFECTS_GEOMETRY},
+        {.speed = 0.5, .mass = 0.12, .effects = EFFECTS_GEOMETRY},
+        {.speed = 0.5, .mass = 0.12, .effects = EFFECTS_DOPPLER},
+        {.speed = 0.5, .mass = 0.0, .effects = EFFECTS_DOPPLER},
+        {.speed = 0.8, .mass = 0.3, .effects = EFFECTS_SEARCHLIGHT},
+        {.speed = 0.0, .mass = 0.12, .effects = EFFECTS_GEOMETRY},
+    };
+    struct scene_error e;
+    char err[2048];
+    int bad;
+    struct renderer *r = renderer_create(hc_context(), &live, err, sizeof err, &bad);
+    for (size_t k = 0; k < sizeof states / sizeof states[0]; k++) {
+        if (kiosk_state_apply(&states[k], &base, &live, &e) != 0)
+            fail_msg("%s", e.message);
+        if (k == 0) {
+            renderer_destroy(r);
+            r = renderer_create(hc_context(), &live, err, sizeof err, &bad);
+            assert_non_null(r);
+        }
+        struct render_result a;
+        if (renderer_run(r, 0, 0, W, H, NULL, NULL, err, sizeof err) != 0 || renderer_read(r, &a, 0, err, sizeof err))
+            fail_msg("%s", err);
+        fresh = live;
+        struct hc_gpu g;
+        hc_gpu_render(&fresh, &g);
+        if (memcmp(a.rgba, g.res.rgba, 4 * W * H) != 0)
+            fail_msg("state %zu: the renderer that followed the knobs draws another image", k);
+        render_result_free(&a);
+        hc_gpu_free(&g);
+    }
+    renderer_destroy(r);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_speed_knob_in_rapidity),
+        cmocka_unit_test(test_mass_knob),
+        cmocka_unit_test(test_actions),
+        cmocka_unit_test(test_apply),
+        cmocka_unit_test(test_script),
+        cmocka_unit_test(test_renderer_follows_the_scene),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
