@@ -11,6 +11,7 @@
 #include <ini.h>
 #include "kiosk/kiosk_config.h"
 #include "kiosk/kiosk_config_keys.h"
+#include "io/text_file.h"
 
 /* inih wants room for '\r', '\n' and '\0' in its line buffer. */
 #define LINE_RESERVE 3
@@ -195,8 +196,8 @@ static char *continue_list(struct reader *r, char *line)
 static char *next_line(char *buf, int size, void *stream)
 {
     struct reader *r = stream;
-    const char *start, *newline;
-    size_t raw, len;
+    const char *start;
+    size_t len;
     int limit = size - LINE_RESERVE, indented;
 
     if (r->failed || r->at_end)
@@ -206,26 +207,19 @@ static char *next_line(char *buf, int size, void *stream)
         finish_section(r);
         return NULL;
     }
-    start = r->text + r->pos;
-    newline = memchr(start, '\n', r->len - r->pos);
-    raw = newline ? (size_t)(newline - start) : r->len - r->pos;
-    r->pos += raw + (newline ? 1 : 0);
-    r->line++;
-    len = raw;
-    if (len > 0 && start[len - 1] == '\r')
-        len--;
-    if (memchr(start, '\0', len)) {
-        fail(r, r->line, "the line holds a NUL byte: is this a text file?");
+    struct text_lines lines = {r->text, r->len, r->pos, r->line};
+    char why[128];
+    int got = text_lines_next(&lines, &start, &len, why, sizeof why);
+    r->pos = lines.pos;
+    r->line = lines.line;
+    if (got < 0) {
+        fail(r, r->line, "%s", why);
         return NULL;
     }
     if (len > (size_t)limit) {
         fail(r, r->line, "line is %zu characters long, at most %d are allowed: shorten it "
              "(a long 'scenes' list goes on over indented lines)", len, limit);
         return NULL;
-    }
-    if (r->line == 1 && len >= 3 && memcmp(start, "\xEF\xBB\xBF", 3) == 0) {
-        start += 3;
-        len -= 3;
     }
     indented = len > 0 && (*start == ' ' || *start == '\t');
     /* Without leading blanks inih never takes a line for the continuation of the previous value,
@@ -294,39 +288,6 @@ static int on_pair(void *user, const char *inih_section, const char *name, const
 }
 
 /* The whole file at once: its size is bounded, and lines then come without further I/O errors. */
-static char *read_file(const char *path, size_t *len, struct kiosk_config_error *err)
-{
-    FILE *f = fopen(path, "rb");
-    char *text;
-    size_t n;
-    if (!f) {
-        snprintf(err->message, sizeof err->message, "cannot open the kiosk configuration: %s",
-                 strerror(errno));
-        return NULL;
-    }
-    text = malloc(KIOSK_MAX_FILE_BYTES + 1);
-    if (!text) {
-        fclose(f);
-        snprintf(err->message, sizeof err->message, "out of memory reading the kiosk configuration");
-        return NULL;
-    }
-    n = fread(text, 1, KIOSK_MAX_FILE_BYTES + 1, f);
-    if (ferror(f)) {
-        snprintf(err->message, sizeof err->message, "cannot read the kiosk configuration: %s",
-                 strerror(errno));
-        free(text);
-        text = NULL;
-    } else if (n > KIOSK_MAX_FILE_BYTES) {
-        snprintf(err->message, sizeof err->message, "the file is larger than %ld bytes: not a kiosk "
-                 "configuration?", KIOSK_MAX_FILE_BYTES);
-        free(text);
-        text = NULL;
-    }
-    fclose(f);
-    *len = n;
-    return text;
-}
-
 static void set_dir(struct kiosk_config *c, const char *path)
 {
     const char *slash = strrchr(path, '/');
@@ -390,7 +351,8 @@ int kiosk_config_load(struct kiosk_config *c, const char *path, struct kiosk_con
     memcpy(err->where, path, path_len + 1);
     set_dir(c, path);
 
-    text = read_file(path, &len, err);
+    text = text_file_read(path, KIOSK_MAX_FILE_BYTES, "kiosk configuration", &len, err->message,
+                          sizeof err->message);
     if (!text)
         return -1;
     r = calloc(1, sizeof *r);

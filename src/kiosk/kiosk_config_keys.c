@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "kiosk/kiosk_config_keys.h"
+#include "io/text_file.h"
 
 /* ---- choices, and the names of enumerations ------------------------------------------------ */
 
@@ -93,7 +94,7 @@ const char *kiosk_section_guess(const char *name)
     const char *best = NULL;
     int best_d = 3;
     for (int i = 0; i < KSEC_COUNT; i++) {
-        int d = kiosk_edit_distance(name, sections[i].name);
+        int d = edit_distance(name, sections[i].name, KIOSK_NAME_LEN);
         if (d < best_d && (size_t)d < strlen(name)) {
             best_d = d;
             best = sections[i].name;

@@ -105,7 +105,6 @@ int kiosk_path_inside(const char *path, const char *root, char *reason, size_t l
 /* Index of the scene called NAME (its file name without the extension), -1 if none is, -2 if
  * more than one is. */
 int kiosk_scene_find(const struct kiosk_config *c, const char *name);
-int kiosk_edit_distance(const char *a, const char *b);
 
 /* The table's setters (kiosk_config_values.c, kiosk_config_paths.c). */
 int kiosk_set_scenes(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len);

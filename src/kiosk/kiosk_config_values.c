@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "kiosk/kiosk_config_keys.h"
+#include "io/text_file.h"
 
 /* Values are quoted back as given, shortened: a whole line of junk helps nobody. */
 #define QUOTE_MAX 80
@@ -136,31 +137,6 @@ static void describe_expected(const struct kiosk_key *k, char *buf, size_t len)
     }
 }
 
-int kiosk_edit_distance(const char *a, const char *b)
-{
-    int row[KIOSK_NAME_LEN + 1];
-    size_t na = strlen(a), nb = strlen(b);
-    if (na > KIOSK_NAME_LEN || nb > KIOSK_NAME_LEN)
-        return 1000;
-    for (size_t j = 0; j <= nb; j++)
-        row[j] = (int)j;
-    for (size_t i = 1; i <= na; i++) {
-        int diag = row[0];
-        row[0] = (int)i;
-        for (size_t j = 1; j <= nb; j++) {
-            int up = row[j];
-            int best = diag + (a[i - 1] != b[j - 1]);
-            if (up + 1 < best)
-                best = up + 1;
-            if (row[j - 1] + 1 < best)
-                best = row[j - 1] + 1;
-            row[j] = best;
-            diag = up;
-        }
-    }
-    return row[nb];
-}
-
 static int applies_to(const struct kiosk_key *k, unsigned type_bit)
 {
     return k->applies == 0 || type_bit == 0 || (k->applies & type_bit);
@@ -176,7 +152,7 @@ static const char *closest_key(enum kiosk_section section, const char *name, uns
         const struct kiosk_key *k = &kiosk_keys[i];
         if (k->section != section)
             continue;
-        int d = kiosk_edit_distance(name, k->name), fits = applies_to(k, type_bit);
+        int d = edit_distance(name, k->name, KIOSK_NAME_LEN), fits = applies_to(k, type_bit);
         if (d > GUESS_MAX_EDITS || (size_t)d >= strlen(name))
             continue;
         if (d < best_d || (d == best_d && fits && !best_fits)) {

@@ -9,6 +9,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "scene/scene_keys.h"
+#include "io/text_file.h"
 
 /* ---- names of enumerations, in enum order ------------------------------------------------- */
 
@@ -654,31 +655,6 @@ static void describe_expected(const struct scene_key *k, char *buf, size_t len)
     }
 }
 
-static int edit_distance(const char *a, const char *b)
-{
-    int row[SCENE_NAME_LEN + 1];
-    size_t na = strlen(a), nb = strlen(b);
-    if (na > SCENE_NAME_LEN || nb > SCENE_NAME_LEN)
-        return 1000;
-    for (size_t j = 0; j <= nb; j++)
-        row[j] = (int)j;
-    for (size_t i = 1; i <= na; i++) {
-        int diag = row[0];
-        row[0] = (int)i;
-        for (size_t j = 1; j <= nb; j++) {
-            int up = row[j];
-            int best = diag + (a[i - 1] != b[j - 1]);
-            if (up + 1 < best)
-                best = up + 1;
-            if (row[j - 1] + 1 < best)
-                best = row[j - 1] + 1;
-            row[j] = best;
-            diag = up;
-        }
-    }
-    return row[nb];
-}
-
 /* A near miss of a real key is nearly always a typo; naming the key saves a trip to the docs. */
 static const char *closest_key(enum scene_section_kind section, const char *name)
 {
@@ -687,7 +663,7 @@ static const char *closest_key(enum scene_section_kind section, const char *name
     for (int i = 0; i < scene_key_count; i++) {
         if (scene_keys[i].section != section)
             continue;
-        int d = edit_distance(name, scene_keys[i].name);
+        int d = edit_distance(name, scene_keys[i].name, SCENE_NAME_LEN);
         if (d < best_d && (size_t)d < strlen(name)) {
             best_d = d;
             best = scene_keys[i].name;

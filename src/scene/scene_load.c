@@ -11,6 +11,7 @@
 #include <ini.h>
 #include "scene/scene.h"
 #include "scene/scene_keys.h"
+#include "io/text_file.h"
 
 /* inih wants room for '\r', '\n' and '\0' in its line buffer. */
 #define LINE_RESERVE 3
@@ -154,8 +155,8 @@ static int read_header(struct scene_reader *r, char *line)
 static char *next_line(char *buf, int size, void *stream)
 {
     struct scene_reader *r = stream;
-    const char *start, *newline;
-    size_t raw, len;
+    const char *start;
+    size_t len;
     int limit = size - LINE_RESERVE;
 
     if (r->failed || r->at_end)
@@ -165,25 +166,18 @@ static char *next_line(char *buf, int size, void *stream)
         finish_section(r);
         return NULL;
     }
-    start = r->text + r->pos;
-    newline = memchr(start, '\n', r->len - r->pos);
-    raw = newline ? (size_t)(newline - start) : r->len - r->pos;
-    r->pos += raw + (newline ? 1 : 0);
-    r->line++;
-    len = raw;
-    if (len > 0 && start[len - 1] == '\r')
-        len--;
-    if (memchr(start, '\0', len)) {
-        fail(r, r->line, "the line holds a NUL byte: is this a text file?");
+    struct text_lines lines = {r->text, r->len, r->pos, r->line};
+    char why[128];
+    int got = text_lines_next(&lines, &start, &len, why, sizeof why);
+    r->pos = lines.pos;
+    r->line = lines.line;
+    if (got < 0) {
+        fail(r, r->line, "%s", why);
         return NULL;
     }
     if (len > (size_t)limit) {
         fail(r, r->line, "line is %zu characters long, at most %d are allowed", len, limit);
         return NULL;
-    }
-    if (r->line == 1 && len >= 3 && memcmp(start, "\xEF\xBB\xBF", 3) == 0) {
-        start += 3;
-        len -= 3;
     }
     /* Without leading blanks inih never takes a line for the continuation of the previous value,
      * so indentation is only layout. */
@@ -245,38 +239,6 @@ static int on_pair(void *user, const char *inih_section, const char *name, const
 }
 
 /* The whole file at once: its size is bounded, and lines then come without further I/O errors. */
-static char *read_file(const char *path, size_t *len, struct scene_error *err)
-{
-    FILE *f = fopen(path, "rb");
-    char *text;
-    size_t n;
-    if (!f) {
-        snprintf(err->message, sizeof err->message, "cannot open the scene file: %s", strerror(errno));
-        return NULL;
-    }
-    text = malloc(SCENE_MAX_FILE_BYTES + 1);
-    if (!text) {
-        fclose(f);
-        snprintf(err->message, sizeof err->message, "out of memory reading the scene file");
-        return NULL;
-    }
-    n = fread(text, 1, SCENE_MAX_FILE_BYTES + 1, f);
-    if (ferror(f)) {
-        snprintf(err->message, sizeof err->message, "cannot read the scene file: %s", strerror(errno));
-        n = 0;
-        free(text);
-        text = NULL;
-    } else if (n > SCENE_MAX_FILE_BYTES) {
-        snprintf(err->message, sizeof err->message,
-                 "the file is larger than %ld bytes: not a scene file?", SCENE_MAX_FILE_BYTES);
-        free(text);
-        text = NULL;
-    }
-    fclose(f);
-    *len = n;
-    return text;
-}
-
 /* Directory and base name of the scene file: assets resolve against the first, the second names
  * the scene until [scene] name says otherwise. */
 static void split_path(struct scene *s, const char *path)
@@ -320,7 +282,7 @@ int scene_load(struct scene *s, const char *path, struct scene_error *err)
     memcpy(err->where, path, path_len + 1);
     split_path(s, path);
 
-    text = read_file(path, &len, err);
+    text = text_file_read(path, SCENE_MAX_FILE_BYTES, "scene file", &len, err->message, sizeof err->message);
     if (!text)
         return -1;
     r = calloc(1, sizeof *r);

@@ -1,0 +1,90 @@
+/* Whole-file reading, line splitting and edit distance for the INI readers (scene, kiosk). */
+#include "io/text_file.h"
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* edit_distance() keeps one row of this many columns on the stack */
+#define EDIT_MAX_LEN 256
+#define EDIT_TOO_FAR 1000
+
+char *text_file_read(const char *path, long max_bytes, const char *what, size_t *len, char *msg, size_t msglen)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(msg, msglen, "cannot open the %s: %s", what, strerror(errno));
+        return NULL;
+    }
+    char *text = malloc((size_t)max_bytes + 2);
+    if (!text) {
+        fclose(f);
+        snprintf(msg, msglen, "out of memory reading the %s", what);
+        return NULL;
+    }
+    size_t n = fread(text, 1, (size_t)max_bytes + 1, f);
+    if (ferror(f)) {
+        snprintf(msg, msglen, "cannot read the %s: %s", what, strerror(errno));
+        free(text);
+        text = NULL;
+    } else if (n > (size_t)max_bytes) {
+        snprintf(msg, msglen, "the file is larger than %ld bytes: not a %s?", max_bytes, what);
+        free(text);
+        text = NULL;
+    } else {
+        text[n] = '\0';
+    }
+    fclose(f);
+    *len = n;
+    return text;
+}
+
+int text_lines_next(struct text_lines *t, const char **start, size_t *n, char *msg, size_t msglen)
+{
+    if (t->pos >= t->len)
+        return 0;
+    const char *s = t->text + t->pos;
+    const char *newline = memchr(s, '\n', t->len - t->pos);
+    size_t raw = newline ? (size_t)(newline - s) : t->len - t->pos;
+    t->pos += raw + (newline ? 1 : 0);
+    t->line++;
+    size_t len = raw;
+    if (len > 0 && s[len - 1] == '\r')
+        len--;
+    if (memchr(s, '\0', len)) {
+        snprintf(msg, msglen, "the line holds a NUL byte: is this a text file?");
+        return -1;
+    }
+    if (t->line == 1 && len >= 3 && memcmp(s, "\xEF\xBB\xBF", 3) == 0) {
+        s += 3;
+        len -= 3;
+    }
+    *start = s;
+    *n = len;
+    return 1;
+}
+
+int edit_distance(const char *a, const char *b, size_t max_len)
+{
+    int row[EDIT_MAX_LEN + 1];
+    size_t na = strlen(a), nb = strlen(b);
+    if (na > max_len || nb > max_len || na > EDIT_MAX_LEN || nb > EDIT_MAX_LEN)
+        return EDIT_TOO_FAR;
+    for (size_t j = 0; j <= nb; j++)
+        row[j] = (int)j;
+    for (size_t i = 1; i <= na; i++) {
+        int diag = row[0];
+        row[0] = (int)i;
+        for (size_t j = 1; j <= nb; j++) {
+            int up = row[j];
+            int best = diag + (a[i - 1] != b[j - 1]);
+            if (up + 1 < best)
+                best = up + 1;
+            if (row[j - 1] + 1 < best)
+                best = row[j - 1] + 1;
+            row[j] = best;
+            diag = up;
+        }
+    }
+    return row[nb];
+}
