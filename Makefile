@@ -138,6 +138,97 @@ test-sanitize:
 	  done; \
 	  ASAN_OPTIONS=detect_leaks=0 BT=build/asan/bentray tests/render/run_all.sh
 
+# Fuzzing (libFuzzer; clang only, so not part of `make test`): the parsers of what exhibition staff
+# edit (scene files, the kiosk configuration), the dump reader and the input decoders, each harness
+# (tests/fuzz/fuzz_TARGET.c) with AddressSanitizer and UndefinedBehaviorSanitizer. The seeds
+# (tests/fuzz/seeds/TARGET/, never written to) are copied into a working corpus,
+# build/fuzz/corpus/TARGET, which grows from run to run.
+#   make fuzz [FUZZ_SECONDS=60]  each harness for FUZZ_SECONDS, then docs/RELIABILITY.md and the
+#                                running totals in docs/fuzz_totals.csv (tests/fuzz/report.sh)
+#   make fuzz-smoke              each harness for 5 seconds, nothing written outside build/ (for CI)
+# A crash, a leak, a timeout or an out-of-memory fails the target and prints its reproducer,
+# build/fuzz/crashes/TARGET/...: `build/fuzz/fuzz_TARGET FILE` runs that input again.
+FUZZ_PACKAGES := clang libclang-rt-14-dev
+FUZZ_CC       ?= clang
+FUZZ_SECONDS  ?= 60
+FUZZ_TARGETS  := scene kiosk_config dump hid gpio
+FUZZ_DIR      := $(BUILD)/fuzz
+# -fno-sanitize-recover: undefined behaviour stops the run, so that libFuzzer keeps the input
+FUZZ_CFLAGS   := -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes \
+                 -Isrc -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined \
+                 -fno-omit-frame-pointer $(shell pkg-config --cflags inih libpng egl 2>/dev/null)
+FUZZ_LIBS     := $(shell pkg-config --libs inih 2>/dev/null) -lm
+# Only what each harness calls: no GL code, no PNG reading. The loaders share src/io/text_file.c.
+FUZZ_SRCS_text         := $(wildcard src/io/text_file.c)
+FUZZ_SRCS_scene        := $(FUZZ_SRCS_text) src/scene/scene_defaults.c src/scene/scene_keys.c \
+                          src/scene/scene_load.c src/scene/scene_validate.c src/physics/model.c \
+                          src/physics/relativity.c
+FUZZ_SRCS_kiosk_config := $(FUZZ_SRCS_text) src/kiosk/kiosk_config.c src/kiosk/kiosk_config_check.c \
+                          src/kiosk/kiosk_config_keys.c src/kiosk/kiosk_config_paths.c \
+                          src/kiosk/kiosk_config_values.c src/kiosk/hid_report.c src/kiosk/quadrature.c \
+                          src/kiosk/debounce.c
+FUZZ_SRCS_dump         := src/ref/dump.c
+FUZZ_SRCS_hid          := src/kiosk/hid_report.c
+FUZZ_SRCS_gpio         := src/kiosk/quadrature.c src/kiosk/debounce.c src/kiosk/event_merge.c
+FUZZ_BINS     := $(FUZZ_TARGETS:%=$(FUZZ_DIR)/fuzz_%)
+# Where the harnesses write their input as a file: from tree/scenes, a scene's ../textures and
+# ../sky, and from tree/kiosk, the configuration's ../assets, are the project's, as from
+# assets/scenes and kiosk/.
+FUZZ_TREE     := $(FUZZ_DIR)/tree
+
+.PHONY: deps-fuzz fuzz fuzz-smoke fuzz-build fuzz-run
+
+deps-fuzz:
+	@$(MAKE) --no-print-directory deps DEB_PACKAGES="$(FUZZ_PACKAGES)"
+
+$(FUZZ_DIR)/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -MMD -MP -c -o $@ $<
+
+define FUZZ_HARNESS
+$(FUZZ_DIR)/fuzz_$(1): tests/fuzz/fuzz_$(1).c $(FUZZ_SRCS_$(1):%.c=$(FUZZ_DIR)/%.o)
+	@mkdir -p $$(dir $$@)
+	$$(FUZZ_CC) $$(FUZZ_CFLAGS) -fsanitize=fuzzer -MMD -MP -MF $$@.d -o $$@ $$< $$(filter %.o,$$^) $$(FUZZ_LIBS)
+endef
+$(foreach t,$(FUZZ_TARGETS),$(eval $(call FUZZ_HARNESS,$(t))))
+
+fuzz-build: $(FUZZ_BINS)
+
+fuzz: deps deps-fuzz
+	@$(MAKE) --no-print-directory fuzz-run FUZZ_REPORT=1
+
+fuzz-smoke: deps deps-fuzz
+	@$(MAKE) --no-print-directory fuzz-run FUZZ_SECONDS=5 FUZZ_REPORT=0
+
+fuzz-run: $(FUZZ_BINS)
+	@rm -rf $(FUZZ_DIR)/logs $(FUZZ_TREE)
+	@mkdir -p $(FUZZ_DIR)/logs $(FUZZ_TREE)/scenes $(FUZZ_TREE)/kiosk
+	@ln -s $(CURDIR)/assets $(FUZZ_TREE)/assets
+	@ln -s $(CURDIR)/assets/textures $(FUZZ_TREE)/textures
+	@ln -s $(CURDIR)/assets/sky $(FUZZ_TREE)/sky
+	@status=0; for t in $(FUZZ_TARGETS); do \
+	  corpus=$(FUZZ_DIR)/corpus/$$t; crashes=$(FUZZ_DIR)/crashes/$$t; log=$(FUZZ_DIR)/logs/$$t.log; \
+	  case $$t in scene) tmp=$(FUZZ_TREE)/scenes;; kiosk_config) tmp=$(FUZZ_TREE)/kiosk;; *) tmp=$(FUZZ_TREE);; esac; \
+	  mkdir -p $$corpus $$crashes; \
+	  for s in tests/fuzz/seeds/$$t/*; do [ -f "$$s" ] && cp -n "$$s" $$corpus/; done; \
+	  echo "== fuzz_$$t: $(FUZZ_SECONDS) s, corpus $$corpus ($$(ls $$corpus | wc -l) inputs)"; \
+	  BT_FUZZ_TMPDIR=$$tmp UBSAN_OPTIONS=print_stacktrace=1 \
+	    $(FUZZ_DIR)/fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -timeout=10 -print_final_stats=1 \
+	    -artifact_prefix=$$crashes/ $$corpus > $$log 2>&1; \
+	  rc=$$?; echo $$rc > $(FUZZ_DIR)/logs/$$t.rc; \
+	  rm -f $$tmp/bt_fuzz_*; \
+	  if [ $$rc -eq 0 ]; then \
+	    sed -n 's/^stat::number_of_executed_units: */   executions: /p' $$log; \
+	  else \
+	    status=1; grep -m1 -A12 'ERROR\|runtime error\|deadly signal' $$log; \
+	    repro=$$(sed -n 's/^.*Test unit written to //p' $$log | tail -n 1); \
+	    echo "fuzz_$$t FAILED (exit $$rc), reproducer: $${repro:-none written, see $$log}"; \
+	    [ -z "$$repro" ] || echo "  run it again: $(FUZZ_DIR)/fuzz_$$t $$repro"; \
+	  fi; \
+	done; \
+	if [ "$(FUZZ_REPORT)" = 1 ]; then tests/fuzz/report.sh $(FUZZ_DIR) $(FUZZ_SECONDS) $(FUZZ_TARGETS) || status=1; fi; \
+	exit $$status
+
 golden: bentray
 	tests/render/make_golden.sh
 

@@ -156,6 +156,21 @@ int dump_read(const char *path, struct dump *d, char *err, size_t errlen)
         d->object_size[i] = get_f32(size);
     }
     size_t n = (size_t)w * h;
+    /* the records the header promises must be in the file before memory is asked for them: a
+     * damaged header must not cost gigabytes */
+    long here = ftell(f);
+    if (here < 0 || fseek(f, 0, SEEK_END) != 0) {
+        fclose(f);
+        snprintf(err, errlen, "cannot seek in %s: %s", path, strerror(errno));
+        return -1;
+    }
+    long size = ftell(f);
+    if (size < here || (unsigned long)(size - here) / DUMP_RECORD_SIZE < n || fseek(f, here, SEEK_SET) != 0) {
+        fclose(f);
+        snprintf(err, errlen, "%s is truncated: %ld of %zu records", path,
+                 size < here ? 0L : (size - here) / DUMP_RECORD_SIZE, n);
+        return -1;
+    }
     d->records = malloc(n * sizeof *d->records);
     if (!d->records) {
         fclose(f);
