@@ -95,9 +95,11 @@ static void apply_config(struct scene *s, const struct pareto_config *c)
         r->steps_per_segment = n < 1 ? 1 : (int)n;
         r->segments = (int)((path + r->steps_per_segment - 1) / r->steps_per_segment);
     }
-    r->step_control = c->control;
-    if (c->control != STEP_FIXED)
-        r->tolerance = c->tolerance;
+    if (!c->scene_method) {       /* the scene default's variants keep its step control too */
+        r->step_control = c->control;
+        if (c->control != STEP_FIXED)
+            r->tolerance = c->tolerance;
+    }
     if (c->step_max_factor > 0)
         r->step_max = r->step_size * c->step_max_factor;
     r->early_z = 1;
