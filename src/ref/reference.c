@@ -283,14 +283,8 @@ void ref_trace(const struct scene *s, const struct ref_options *o, vec3d x0, vec
     out->min_radius = INFINITY;
     struct tracer t = {.scene = s, .opt = o, .sample_interval = sample_interval, .next_sample = sample_interval,
                        .sample = sample, .sample_arg = arg};
-    struct object rest[SCENE_MAX_OBJECTS];      /* rest-frame geometry of the moving objects only */
     for (int k = 0; k < s->n_objects; k++) {
-        const struct object *obj = &s->objects[k];
-        if (v3_dot(obj->velocity, obj->velocity) > 0.0) {
-            object_rest_geometry(obj, &rest[k]);
-            obj = &rest[k];
-        }
-        surface_init(&t.surfaces[k], obj);
+        surface_init(&t.surfaces[k], &s->objects[k]);
         t.roles[k] = ROLE_OBJECT;
     }
     t.n_surfaces = s->n_objects;

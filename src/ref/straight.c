@@ -30,8 +30,10 @@ vec3d straight_rest_point(const struct scene *s, int k, vec3d a, vec3d b, double
     vec3d p = v3_add(a, v3_scale(v3_sub(b, a), t));
     if (!object_motion(&s->objects[k], &m))
         return p;
-    /* the photon passed p at scene time t_obs - |p - a|: light from the camera's past */
-    return rest_position(&m, s->observer.time - v3_len(v3_sub(p, a)), p);
+    /* the photon passed p at scene time t_obs - |p - a|: light from the camera's past; the rest
+     * frame's coordinates are placed back at the frame origin, where the object's keys put its
+     * shape, so that its written geometry serves in both frames */
+    return v3_add(rest_position(&m, s->observer.time - v3_len(v3_sub(p, a)), p), m.origin);
 }
 
 int straight_first_hit(const struct scene *s, vec3d a, vec3d b, double *t_hit)
@@ -42,12 +44,7 @@ int straight_first_hit(const struct scene *s, vec3d a, vec3d b, double *t_hit)
         /* a moving object: the segment's end events in its rest frame; the fraction of a hit is
          * the same in both frames, since the Poincaré transformation is affine along the photon */
         const struct object *o = &s->objects[k];
-        struct object rest;
         int moving = v3_dot(o->velocity, o->velocity) > 0.0;
-        if (moving) {
-            object_rest_geometry(o, &rest);
-            o = &rest;
-        }
         vec3d ra = moving ? straight_rest_point(s, k, a, b, 0.0) : a;
         vec3d rb = moving ? straight_rest_point(s, k, a, b, 1.0) : b;
         int found = 0;

@@ -10,9 +10,10 @@
 vec3d camera_view_direction(const struct scene *s, int i, int j);
 /* The same viewing ray in the scene's frame (aberrated when the observer moves): where rays start. */
 vec3d camera_ray(const struct scene *s, int i, int j);
-/* Where the point at fraction t of the straight segment a -> b (a: the camera) lies in the rest frame
- * of object k (the point itself for an object at rest): the event on the photon's path, Poincaré
- * transformed (docs/RELATIVITY.md). */
+/* Where the point at fraction t of the straight segment a -> b (a: the camera) lies on object k's
+ * rest-frame shape (the point itself for an object at rest): the event on the photon's path,
+ * Poincaré transformed (docs/RELATIVITY.md), in the coordinates the object's keys are written in,
+ * so that its scene geometry serves for intersection and shading alike. */
 vec3d straight_rest_point(const struct scene *s, int k, vec3d a, vec3d b, double t);
 /* Index of the object the segment a -> b (a: the camera) hits first, with its fraction t along the
  * segment, or -1. Moving objects are intersected in their rest frames. */

@@ -100,6 +100,14 @@ static int batch_moves(const struct batch *b)
     return 0;
 }
 
+static int batch_clocks(const struct batch *b)
+{
+    int clocks = 0;
+    for (int i = 0; i < b->count; i++)
+        clocks |= b->r->scene->objects[b->object[i]].material.clock_period > 0.0;
+    return clocks;
+}
+
 static void set_batch(GLuint p, const void *arg)
 {
     const struct batch *b = arg;
@@ -132,7 +140,9 @@ static void set_batch(GLuint p, const void *arg)
         glUniform1iv(textures, b->count, units);
     uniform_float(p, "u_segment_index", b->segment);
     uniform_vec3(p, "u_ambient_light", s->ambient_light);
-    observer_set_uniforms(p, b->r);
+    /* the camera and the time: for the Doppler colours, moving objects and clocks only */
+    if (doppler_colour(s) || batch_moves(b) || batch_clocks(b))
+        observer_set_uniforms(p, b->r);
     for (int i = 0; i < s->n_lights; i++) {
         char name[48];
         snprintf(name, sizeof name, "u_light_position[%d]", i);
@@ -164,10 +174,7 @@ static int batch_defines(const struct batch *b, char *out, size_t len)
     }
     if (batch_moves(b) && used < len)
         used += (size_t)snprintf(out + used, len - used, "\n#define MOVING_OBJECTS 1");
-    int clocks = 0;
-    for (int i = 0; i < b->count; i++)
-        clocks |= s->objects[b->object[i]].material.clock_period > 0.0;
-    if (clocks && used < len)
+    if (batch_clocks(b) && used < len)
         used += (size_t)snprintf(out + used, len - used, "\n#define CLOCKS 1");
     if (textured && used < len) {
         used += (size_t)snprintf(out + used, len - used, "\n#define TEXTURED 1\n#define BATCH_TEXTURES");

@@ -37,30 +37,14 @@
 #include "kiosk/event_merge.h"
 #include "kiosk/quadrature.h"
 
+#include "fuzz_bytes.h"
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 /* Each step of the clock is at most 2^48 ns, so all times of one input lie within 2^60 ns of each
  * other: well inside the 2^63 over which the decoders order times. */
 #define MAX_EVENTS 4096
 
-struct bytes {
-    const uint8_t *p;
-    size_t n;
-};
-
-static uint64_t take(struct bytes *b, int count)
-{
-    uint64_t v = 0;
-    for (int i = 0; i < count; i++) {
-        uint64_t byte = 0;
-        if (b->n > 0) {
-            byte = *b->p++;
-            b->n--;
-        }
-        v |= byte << (8 * i);
-    }
-    return v;
-}
 
 static int64_t as_int64(uint64_t u)
 {

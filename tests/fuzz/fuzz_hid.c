@@ -22,26 +22,10 @@
 #include <string.h>
 #include "kiosk/hid_report.h"
 
+#include "fuzz_bytes.h"
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
-struct bytes {
-    const uint8_t *p;
-    size_t n;
-};
-
-static uint64_t take(struct bytes *b, int count)
-{
-    uint64_t v = 0;
-    for (int i = 0; i < count; i++) {
-        uint64_t byte = 0;
-        if (b->n > 0) {
-            byte = *b->p++;
-            b->n--;
-        }
-        v |= byte << (8 * i);
-    }
-    return v;
-}
 
 /* the int64_t with these two's-complement bits, without an implementation-defined conversion */
 static int64_t as_signed(uint64_t u, int bits)
