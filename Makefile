@@ -12,7 +12,7 @@ CFLAGS  += -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Wshadow -Ws
 # make test-sanitize builds everything again under build/asan with these
 CFLAGS  += $(SANITIZE)
 BIN     ?= bentray
-PKGS    := egl inih libpng
+PKGS    := egl inih libpng freetype2 hidapi-libusb libgpiod x11 gbm libdrm libsystemd
 HAVE_OSMESA := $(shell pkg-config --exists osmesa 2>/dev/null && echo 1)
 ifeq ($(HAVE_OSMESA),1)
 PKGS    += osmesa
@@ -26,7 +26,9 @@ TEST_LIBS := -lcmocka $(shell pkg-config --libs gsl 2>/dev/null)
 
 # Debian packages: build tools, GL stacks (EGL surfaceless + OSMesa on Mesa), libraries, test tools.
 DEB_PACKAGES := make gcc pkg-config libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri \
-                libosmesa6-dev libinih-dev libpng-dev libcmocka-dev libgsl-dev
+                libosmesa6-dev libinih-dev libpng-dev libcmocka-dev libgsl-dev \
+                libhidapi-dev libgpiod-dev libsystemd-dev libfreetype-dev fonts-dejavu-core \
+                libgbm-dev libdrm-dev libx11-dev xvfb xauth valgrind
 
 LIB_SRCS  := $(shell find src -name '*.c' ! -path 'src/tools/*' ! -name main.c | sort)
 LIB_OBJS  := $(LIB_SRCS:%.c=$(BUILD)/%.o) $(BUILD)/gen/shaders_embedded.o

@@ -15,6 +15,7 @@ static void usage(FILE *out)
             "  compare  error metrics of one per-pixel dump against a reference dump\n"
             "  error    render a scene on the GPU and on the CPU reference and compare them\n"
             "  bench    measure speed, and speed against error, into a report (docs/BENCH.md)\n"
+            "  kiosk    the exhibition kiosk: knobs, buttons, preview and refined frames, HUD\n"
             "\n"
             "bentray COMMAND --help shows the options of a command.\n"
             "exit codes: 0 ok, 1 runtime failure, 2 bad usage or input\n");
@@ -43,6 +44,8 @@ int main(int argc, char **argv)
         return cmd_error(argc - 1, argv + 1);
     if (strcmp(cmd, "bench") == 0)
         return cmd_bench(argc - 1, argv + 1);
+    if (strcmp(cmd, "kiosk") == 0)
+        return cmd_kiosk(argc - 1, argv + 1);
     fprintf(stderr, "bentray: unknown command '%s'\n", cmd);
     usage(stderr);
     return EXIT_USAGE;

@@ -65,6 +65,8 @@ extern const int bench_pareto_count;
 int bench_limit(struct bench *b, char *err, size_t errlen);
 /* the observer's effects and moving objects, rays against polygons (bench_relativity.c) */
 int bench_relativity(struct bench *b, char *err, size_t errlen);
+/* the kiosk's previews and refined frames (bench_kiosk.c) */
+int bench_kiosk(struct bench *b, char *err, size_t errlen);
 
 /* Open out_dir/bench/NAME for writing (CSV, gnuplot script). NULL with err. */
 FILE *bench_data_file(struct bench *b, const char *name, char *err, size_t errlen);

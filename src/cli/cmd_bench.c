@@ -12,14 +12,14 @@
 #include "render/renderer.h"
 
 static const char *const section_names[] = {"table1", "figure5", "unrolling", "batching", "early-z", "pareto",
-                                            "limit", "relativity"};
+                                            "limit", "relativity", "kiosk"};
 #define N_SECTIONS (int)(sizeof section_names / sizeof section_names[0])
 static int (*const sections[N_SECTIONS])(struct bench *, char *, size_t) = {
     bench_table1, bench_figure5, bench_unrolling, bench_batching, bench_early_z, bench_pareto, bench_limit,
-    bench_relativity};
+    bench_relativity, bench_kiosk};
 /* configurations each section times (for the progress count) */
-static int section_steps[N_SECTIONS] = {12, 12, 5, 4, 6, 0 /* bench_pareto_count */, 2, 9};
-static const int section_steps_quick[N_SECTIONS] = {12, 6, 5, 4, 6, 3, 2, 4};
+static int section_steps[N_SECTIONS] = {12, 12, 5, 4, 6, 0 /* bench_pareto_count */, 2, 9, 5};
+static const int section_steps_quick[N_SECTIONS] = {12, 6, 5, 4, 6, 3, 2, 4, 1};
 
 static void usage(FILE *out)
 {
@@ -34,7 +34,9 @@ static void usage(FILE *out)
             "  --runs N             timed runs per configuration, the median is reported (1-63, default 3)\n"
             "  --size WxH           frame size of the paper's measurements (default 800x600)\n"
             "  --only S[,S...]      sections: table1, figure5, unrolling, batching, early-z, pareto, limit,\n"
-            "                       relativity\n"
+            "                       relativity, kiosk\n"
+            "  --kiosk              the kiosk's section alone (previews per second, time to the refined\n"
+            "                       frame); without --out its table goes to standard output, no file written\n"
             "  --quick              tiny frames and few configurations: proves the command works, measures nothing\n"
             "  --backend NAME       egl, osmesa or auto (default)\n"
             "exit codes: 0 ok, 1 runtime failure, 2 bad usage\n");
@@ -51,7 +53,7 @@ static int parse_only(const char *list, int *wanted)
                 wanted[k] = found = 1;
         if (!found) {
             fprintf(stderr, "bentray bench: --only: unknown section '%s' (sections: table1, figure5, unrolling, "
-                            "batching, early-z, pareto, limit)\n", tok);
+                            "batching, early-z, pareto, limit, relativity, kiosk)\n", tok);
             return -1;
         }
     }
@@ -77,11 +79,34 @@ static void machine_line(FILE *md, const struct bench *b)
             cpu, sysconf(_SC_NPROCESSORS_ONLN), b->renderer, b->backend, b->width, b->height, b->runs);
 }
 
+/* DIR/BENCH.md and DIR/bench/: checked, and the data directory made. */
+static int prepare_out(struct bench *b, const char *out, int force, char *md_path, size_t md_len)
+{
+    snprintf(b->out_dir, sizeof b->out_dir, "%s", out);
+    snprintf(b->data_dir, sizeof b->data_dir, "%s/bench", out);
+    snprintf(md_path, md_len, "%s/BENCH.md", out);
+    struct stat st;
+    if (stat(out, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        fprintf(stderr, "bentray bench: --out: %s is not a directory\n", out);
+        return EXIT_USAGE;
+    }
+    if (!force && stat(md_path, &st) == 0) {
+        fprintf(stderr, "bentray bench: %s exists; pass --force to overwrite it and its data in %s\n", md_path,
+                b->data_dir);
+        return EXIT_USAGE;
+    }
+    if (mkdir(b->data_dir, 0755) != 0 && errno != EEXIST) {
+        fprintf(stderr, "bentray bench: cannot create %s: %s\n", b->data_dir, strerror(errno));
+        return EXIT_RUNTIME;
+    }
+    return EXIT_OK;
+}
+
 int cmd_bench(int argc, char **argv)
 {
     static struct bench b;
     const char *out = NULL, *backend = "auto";
-    int force = 0, wanted[N_SECTIONS] = {0}, any = 0;
+    int force = 0, wanted[N_SECTIONS] = {0}, any = 0, kiosk_only = 0;
     long runs = 3;
     b.width = 800;
     b.height = 600;
@@ -95,6 +120,8 @@ int cmd_bench(int argc, char **argv)
             force = 1;
         } else if (strcmp(a, "--quick") == 0) {
             b.quick = 1;
+        } else if (strcmp(a, "--kiosk") == 0) {
+            wanted[N_SECTIONS - 1] = any = kiosk_only = 1;
         } else if (strcmp(a, "--out") == 0 && has_value) {
             out = argv[++i];
         } else if (strcmp(a, "--backend") == 0 && has_value) {
@@ -126,7 +153,7 @@ int cmd_bench(int argc, char **argv)
             return option_unknown("bench", a, usage);
         }
     }
-    if (!out) {
+    if (!out && !kiosk_only) {
         fprintf(stderr, "bentray bench: --out DIR is required\n");
         usage(stderr);
         return EXIT_USAGE;
@@ -140,24 +167,10 @@ int cmd_bench(int argc, char **argv)
         b.height = 24;
         b.runs = 1;
     }
-    char md_path[BENCH_PATH_LEN + 16];
-    snprintf(b.out_dir, sizeof b.out_dir, "%s", out);
-    snprintf(b.data_dir, sizeof b.data_dir, "%s/bench", out);
-    snprintf(md_path, sizeof md_path, "%s/BENCH.md", out);
-    struct stat st;
-    if (stat(out, &st) != 0 || !S_ISDIR(st.st_mode)) {
-        fprintf(stderr, "bentray bench: --out: %s is not a directory\n", out);
-        return EXIT_USAGE;
-    }
-    if (!force && stat(md_path, &st) == 0) {
-        fprintf(stderr, "bentray bench: %s exists; pass --force to overwrite it and its data in %s\n", md_path,
-                b.data_dir);
-        return EXIT_USAGE;
-    }
-    if (mkdir(b.data_dir, 0755) != 0 && errno != EEXIST) {
-        fprintf(stderr, "bentray bench: cannot create %s: %s\n", b.data_dir, strerror(errno));
-        return EXIT_RUNTIME;
-    }
+    char md_path[BENCH_PATH_LEN + 16] = "";
+    int prepared = out ? prepare_out(&b, out, force, md_path, sizeof md_path) : EXIT_OK;
+    if (prepared != EXIT_OK)
+        return prepared;
     char err[2048];
     b.ctx = gl_context_create(backend, err, sizeof err);
     if (!b.ctx) {
@@ -166,7 +179,7 @@ int cmd_bench(int argc, char **argv)
     }
     snprintf(b.backend, sizeof b.backend, "%s", b.ctx->backend);
     snprintf(b.renderer, sizeof b.renderer, "%s", (const char *)glGetString(GL_RENDERER));
-    b.md = fopen(md_path, "w");
+    b.md = out ? fopen(md_path, "w") : stdout;
     if (!b.md) {
         fprintf(stderr, "bentray bench: cannot write %s: %s\n", md_path, strerror(errno));
         gl_context_destroy(b.ctx);
@@ -187,9 +200,10 @@ int cmd_bench(int argc, char **argv)
             rc = EXIT_RUNTIME;
         }
     fprintf(b.md, "Total bench time: %.0f s.\n", bench_now() - b.started);
-    fclose(b.md);
+    if (out)
+        fclose(b.md);
     gl_context_destroy(b.ctx);
-    if (rc == EXIT_OK)
+    if (rc == EXIT_OK && out)
         fprintf(stderr, "bentray bench: wrote %s and %s/\n", md_path, b.data_dir);
     return rc;
 }

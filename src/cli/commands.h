@@ -11,5 +11,6 @@ int cmd_trace(int argc, char **argv);
 int cmd_compare(int argc, char **argv);
 int cmd_error(int argc, char **argv);
 int cmd_bench(int argc, char **argv);
+int cmd_kiosk(int argc, char **argv);
 
 #endif

@@ -20,6 +20,7 @@
     X(void, BindFramebuffer, (GLenum target, GLuint framebuffer)) \
     X(void, BindRenderbuffer, (GLenum target, GLuint renderbuffer)) \
     X(void, BindTexture, (GLenum target, GLuint texture)) \
+    X(void, BlendFunc, (GLenum sfactor, GLenum dfactor)) \
     X(void, BufferData, (GLenum target, GLsizeiptr size, const void *data, GLenum usage)) \
     X(GLenum, CheckFramebufferStatus, (GLenum target)) \
     X(void, Clear, (GLbitfield mask)) \
@@ -63,6 +64,7 @@
     X(void, ShaderSource, (GLuint shader, GLsizei count, const GLchar *const *string, const GLint *length)) \
     X(void, TexImage2D, (GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height, GLint border, GLenum format, GLenum type, const void *pixels)) \
     X(void, TexParameteri, (GLenum target, GLenum pname, GLint param)) \
+    X(void, TexSubImage2D, (GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width, GLsizei height, GLenum format, GLenum type, const void *pixels)) \
     X(void, Uniform1f, (GLint location, GLfloat v0)) \
     X(void, Uniform1i, (GLint location, GLint v0)) \
     X(void, Uniform2f, (GLint location, GLfloat v0, GLfloat v1)) \
@@ -92,6 +94,7 @@ const char *gl_api_load(void *(*get_proc)(const char *name));
 #define glBindFramebuffer bt_gl.BindFramebuffer
 #define glBindRenderbuffer bt_gl.BindRenderbuffer
 #define glBindTexture bt_gl.BindTexture
+#define glBlendFunc bt_gl.BlendFunc
 #define glBufferData bt_gl.BufferData
 #define glCheckFramebufferStatus bt_gl.CheckFramebufferStatus
 #define glClear bt_gl.Clear
@@ -135,6 +138,7 @@ const char *gl_api_load(void *(*get_proc)(const char *name));
 #define glRenderbufferStorage bt_gl.RenderbufferStorage
 #define glShaderSource bt_gl.ShaderSource
 #define glTexImage2D bt_gl.TexImage2D
+#define glTexSubImage2D bt_gl.TexSubImage2D
 #define glTexParameteri bt_gl.TexParameteri
 #define glUniform1f bt_gl.Uniform1f
 #define glUniform1i bt_gl.Uniform1i

@@ -28,6 +28,19 @@ double knob_turn(const struct kiosk_knob *k, double value, long counts)
     return clamp(v, k->min, k->max);
 }
 
+double knob_position(const struct kiosk_knob *k, double p)
+{
+    p = clamp(p, 0.0, 1.0);
+    switch (k->curve) {
+    case KIOSK_CURVE_RAPIDITY:
+        return tanh(atanh(k->min) + p * (atanh(k->max) - atanh(k->min)));
+    case KIOSK_CURVE_LOG:
+        return k->min * exp(p * log(k->max / k->min));
+    default:
+        return k->min + p * (k->max - k->min);
+    }
+}
+
 void kiosk_state_reset(struct kiosk_state *st, const struct kiosk_config *c)
 {
     memset(st, 0, sizeof *st);

@@ -19,6 +19,9 @@ struct kiosk_state {
  * leaving 0 starts at min, or at exp(step) times its smallest positive value. */
 double knob_turn(const struct kiosk_knob *k, double value, long counts);
 
+/* The value of an absolute knob at position p (0: one end, 1: the other), evenly along its curve. */
+double knob_position(const struct kiosk_knob *k, double p);
+
 /* The start: the configured start scene and knob starts, geometry only, no pipeline view. */
 void kiosk_state_reset(struct kiosk_state *st, const struct kiosk_config *c);
 

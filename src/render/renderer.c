@@ -205,6 +205,20 @@ int renderer_read(struct renderer *r, struct render_result *out, int with_state,
     return 0;
 }
 
+void renderer_textures(const struct renderer *r, struct renderer_textures *out)
+{
+    memset(out, 0, sizeof *out);
+    if (!r->have_state)
+        return;
+    out->width = r->rs.width;
+    out->height = r->rs.height;
+    out->image = r->rs.final_color;
+    out->position = r->rs.result_position;
+    out->velocity = r->rs.result_velocity;
+    out->hit = r->rs.result_hit;
+    out->outcome = r->rs.result_image;
+}
+
 void render_result_free(struct render_result *res)
 {
     free(res->rgba);

@@ -8,6 +8,7 @@
 #define BT_RENDERER_H
 #include "gl/caps.h"
 #include "gl/context.h"
+#include "gl/gl_api.h"
 #include "render/path.h"
 #include "scene/scene.h"
 
@@ -40,6 +41,14 @@ int renderer_read(struct renderer *r, struct render_result *out, int with_state,
 /* Position of the ray of texel (x, y) (GL order) right now: for per-segment hooks. */
 int renderer_read_position(struct renderer *r, int x, int y, float xyzw[4], char *err, size_t errlen);
 void render_result_free(struct render_result *res);
+/* The textures of the last run, on the GPU, for a display to draw from (the kiosk's compositor and
+ * pipeline view): the final image (RGBA8) and each ray's final state (layout: common.glsl).
+ * Valid until the next run or renderer_destroy; all 0 before the first run. */
+struct renderer_textures {
+    int width, height;
+    GLuint image, position, velocity, hit, outcome;
+};
+void renderer_textures(const struct renderer *r, struct renderer_textures *out);
 void renderer_destroy(struct renderer *r);
 
 #endif

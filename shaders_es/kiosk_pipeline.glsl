@@ -1,0 +1,49 @@
+// The pipeline view: the renderer's own ray state after the last pass, one panel per quantity
+// (layout of the textures: common.glsl).
+//   u_panel 0  ray positions: xyz / bound radius mapped to colour
+//   u_panel 1  ray directions: the unit velocity mapped to colour
+//   u_panel 2  depth: the segment index of the hit, blue (first) to red (last); grey: no hit
+//   u_panel 3  step size: log2 of h against the scene's step, blue (shorter) to red (longer)
+//   u_panel 4  outcome: objects green, sky blue, captured black, unfinished red, failed magenta
+uniform sampler2D u_position;
+uniform sampler2D u_velocity;
+uniform sampler2D u_hit;
+uniform sampler2D u_outcome;
+uniform float u_panel;
+uniform float u_bound_radius;
+uniform float u_segments;
+uniform float u_step;
+varying vec2 v_uv;
+
+const float PIPELINE_NO_HIT = 60000.0;
+
+vec3 ramp(float t)
+{
+    t = clamp(t, 0.0, 1.0);
+    return vec3(smoothstep(0.4, 0.9, t), sin(3.14159265 * t), 1.0 - smoothstep(0.1, 0.6, t));
+}
+
+void main()
+{
+    vec3 c;
+    if (u_panel < 0.5) {
+        c = 0.5 + 0.5 * texture2D(u_position, v_uv).xyz / u_bound_radius;
+    } else if (u_panel < 1.5) {
+        vec3 v = texture2D(u_velocity, v_uv).xyz;
+        float len = length(v);
+        c = len > 0.0 ? 0.5 + 0.5 * v / len : vec3(0.0);
+    } else if (u_panel < 2.5) {
+        float depth = texture2D(u_hit, v_uv).w;
+        c = depth < PIPELINE_NO_HIT ? ramp(depth / u_segments) : vec3(0.25);
+    } else if (u_panel < 3.5) {
+        float h = abs(texture2D(u_velocity, v_uv).w);
+        c = h > 0.0 ? ramp(0.5 + 0.125 * log2(h / u_step)) : vec3(0.0);
+    } else {
+        float code = texture2D(u_outcome, v_uv).a;
+        c = code > -0.5 ? vec3(0.2, 0.8, 0.3)
+          : code > -1.5 ? vec3(0.3, 0.5, 1.0)
+          : code > -2.5 ? vec3(0.0)
+          : code > -3.5 ? vec3(0.9, 0.1, 0.1) : vec3(0.9, 0.1, 0.9);
+    }
+    gl_FragColor = vec4(c, 1.0);
+}

@@ -1,0 +1,154 @@
+/* The kiosk's responsiveness: how many previews a second a turning knob gets, and how long the
+ * refined frame takes once the knob rests, for each scene of the example configuration
+ * (kiosk/kiosk.conf), measured through the kiosk's own view and compositor on the bench's context.
+ * Targets: at least 25 previews a second at 320x180, a refined 1280x720 frame within 0.5 s. */
+#include "bench/bench.h"
+#include "kiosk/kiosk_view.h"
+#include <stdlib.h>
+#include <string.h>
+
+#define KIOSK_CONFIG "kiosk/kiosk.conf"
+#define KIOSK_TARGET_PREVIEW_FPS 25.0
+#define KIOSK_TARGET_REFINED_SECONDS 0.5
+#define KIOSK_BENCH_PREVIEWS 8       /* knob detents timed per scene */
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* A screen of the refined frame's size on the bench's context, as the headless kiosk has. */
+struct bench_screen {
+    struct screen s;
+    GLuint color;
+};
+
+static int screen_make(struct bench_screen *bs, int w, int h, char *err, size_t errlen)
+{
+    memset(bs, 0, sizeof *bs);
+    bs->s.width = w;
+    bs->s.height = h;
+    glGenRenderbuffers(1, &bs->color);
+    glBindRenderbuffer(GL_RENDERBUFFER, bs->color);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8_OES, w, h);
+    glGenFramebuffers(1, &bs->s.framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, bs->s.framebuffer);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, bs->color);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        snprintf(err, errlen, "the bench's %dx%d screen framebuffer is incomplete", w, h);
+        return -1;
+    }
+    return 0;
+}
+
+static void screen_free(struct bench_screen *bs)
+{
+    glDeleteFramebuffers(1, &bs->s.framebuffer);
+    glDeleteRenderbuffers(1, &bs->color);
+}
+
+struct kiosk_timing {
+    double preview_median;           /* s per preview, on screen */
+    double refined;                  /* s from the knob at rest to the refined frame on screen */
+    int bands;
+};
+
+static int time_scene(struct kiosk_view *v, const struct kiosk_config *c, struct bench_screen *bs, int scene,
+                      struct kiosk_timing *t, char *err, size_t errlen)
+{
+    if (kiosk_view_load(v, scene, err, errlen) != 0)
+        return -1;
+    struct kiosk_state st;
+    kiosk_state_reset(&st, c);
+    st.scene = scene;
+    /* the first preview compiles the scene's programs: not timed */
+    if (kiosk_view_preview(v, &st, err, errlen) != 0)
+        return -1;
+    double times[KIOSK_BENCH_PREVIEWS];
+    for (int i = 0; i < KIOSK_BENCH_PREVIEWS; i++) {
+        st.speed = knob_turn(&c->speed, st.speed, 1);
+        double t0 = bench_now();
+        if (kiosk_view_preview(v, &st, err, errlen) != 0 || compositor_draw(&v->comp, &bs->s, err, errlen) != 0)
+            return -1;
+        glFinish();
+        times[i] = bench_now() - t0;
+    }
+    qsort(times, KIOSK_BENCH_PREVIEWS, sizeof times[0], cmp_double);
+    t->preview_median = times[KIOSK_BENCH_PREVIEWS / 2];
+    /* the first band of a refinement makes the band-sized ray state; that is part of the wait */
+    double t0 = bench_now();
+    t->bands = 0;
+    while (!kiosk_view_refined(v)) {
+        if (kiosk_view_refine(v, err, errlen) != 0 || compositor_draw(&v->comp, &bs->s, err, errlen) != 0)
+            return -1;
+        t->bands++;
+    }
+    glFinish();
+    t->refined = bench_now() - t0;
+    return 0;
+}
+
+int bench_kiosk(struct bench *b, char *err, size_t errlen)
+{
+    static struct kiosk_config c;
+    struct kiosk_config_error e;
+    if (kiosk_config_load(&c, KIOSK_CONFIG, &e) != 0 || kiosk_config_check(&c, &e) != 0) {
+        snprintf(err, errlen, "%s: %s", e.where, e.message);
+        return -1;
+    }
+    if (b->quick) {
+        c.kiosk.preview_width = 32;
+        c.kiosk.preview_height = 18;
+        c.kiosk.width = 64;
+        c.kiosk.height = 36;
+    }
+    int n = b->quick ? 1 : c.kiosk.n_scenes;
+    static struct kiosk_view v;
+    struct bench_screen bs;
+    if (kiosk_view_init(&v, &c, b->ctx, err, errlen) != 0)
+        return -1;
+    if (screen_make(&bs, c.kiosk.width, c.kiosk.height, err, errlen) != 0) {
+        kiosk_view_release(&v);
+        return -1;
+    }
+    /* bentray bench --kiosk without --out: the table alone, on standard output */
+    FILE *csv = b->data_dir[0] ? bench_data_file(b, "kiosk.csv", err, errlen) : fopen("/dev/null", "w");
+    if (!csv) {
+        screen_free(&bs);
+        kiosk_view_release(&v);
+        return -1;
+    }
+    fprintf(csv, "scene,preview_seconds,previews_per_second,refined_seconds,bands\n");
+    fprintf(b->md, "## Kiosk: previews and refined frames\n\n`bentray bench --kiosk`: the scenes of `%s` "
+                   "through the kiosk's own view and compositor (src/kiosk/kiosk_view.c): the median of %d "
+                   "previews at %dx%d, each after one detent of the speed knob and put on a %dx%d screen; then "
+                   "the time from the knob at rest to the refined %dx%d frame on screen, in bands of %d rows. "
+                   "Targets: at least %.0f previews a second, the refined frame within %.1f s.\n\n"
+                   "| scene | preview s | previews/s | target | refined s | bands | target |\n"
+                   "|---|---|---|---|---|---|---|\n",
+            KIOSK_CONFIG, KIOSK_BENCH_PREVIEWS, c.kiosk.preview_width, c.kiosk.preview_height, c.kiosk.width,
+            c.kiosk.height, c.kiosk.width, c.kiosk.height, v.band_rows, KIOSK_TARGET_PREVIEW_FPS,
+            KIOSK_TARGET_REFINED_SECONDS);
+    int rc = 0;
+    for (int i = 0; i < n && rc == 0; i++) {
+        const char *name = strrchr(c.kiosk.scenes[i], '/');
+        name = name ? name + 1 : c.kiosk.scenes[i];
+        bench_progress(b, "kiosk: %s", name);
+        struct kiosk_timing t;
+        rc = time_scene(&v, &c, &bs, i, &t, err, errlen);
+        b->done++;
+        if (rc != 0)
+            break;
+        double fps = 1.0 / t.preview_median;
+        fprintf(b->md, "| %s | %.3f | %.1f | %s | %.2f | %d | %s |\n", name, t.preview_median, fps,
+                fps >= KIOSK_TARGET_PREVIEW_FPS ? "met" : "MISSED", t.refined, t.bands,
+                t.refined <= KIOSK_TARGET_REFINED_SECONDS ? "met" : "MISSED");
+        fprintf(csv, "\"%s\",%.5f,%.2f,%.4f,%d\n", name, t.preview_median, fps, t.refined, t.bands);
+    }
+    fprintf(b->md, "\n");
+    fclose(csv);
+    screen_free(&bs);
+    kiosk_view_release(&v);
+    return rc;
+}

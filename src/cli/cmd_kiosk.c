@@ -1,0 +1,127 @@
+/* bentray kiosk: the exhibition kiosk (src/kiosk/), or a check of its inputs. */
+#include "cli/commands.h"
+#include "cli/options.h"
+#include "kiosk/keymap.h"
+#include "kiosk/kiosk_loop.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define KIOSK_DEFAULT_CONFIG "/etc/bentray/kiosk.conf"
+
+static void usage(FILE *out)
+{
+    fprintf(out,
+            "usage: bentray kiosk [--config FILE] [--display auto|kms|x11|headless] [--backend egl|osmesa|auto]\n"
+            "                     [--out DIR] [--frames N] [--force] [--check-inputs]\n"
+            "Run the exhibition kiosk: knobs for the observer's speed and the central mass, buttons for\n"
+            "scenes and effects, a preview while a knob turns and the refined frame once it rests.\n"
+            "  --config FILE    the kiosk's configuration (every key: kiosk/kiosk.conf); default %s\n"
+            "  --display NAME   overrides [display] backend\n"
+            "  --backend NAME   GL back-end of the headless screen (default auto: EGL, then OSMesa)\n"
+            "  --out DIR        headless: overrides [display] headless_out\n"
+            "  --frames N       headless: overrides [display] headless_frames\n"
+            "  --force          headless: frames may replace the files of an earlier run\n"
+            "  --check-inputs   print every event of every configured input, one line each, and one\n"
+            "                   line per missing device; no display. Stops on Ctrl-C or SIGTERM.\n"
+            "%s"
+            "exit codes: 0 stopped, 1 failure while running, 2 bad configuration or option\n",
+            KIOSK_DEFAULT_CONFIG, keymap_help);
+}
+
+static int parse_display(const char *name, enum kiosk_backend *out)
+{
+    static const char *const names[] = {"auto", "kms", "x11", "headless"};
+    for (int i = 0; i < 4; i++)
+        if (strcmp(name, names[i]) == 0) {
+            *out = (enum kiosk_backend)i;
+            return 0;
+        }
+    return -1;
+}
+
+int cmd_kiosk(int argc, char **argv)
+{
+    const char *config = KIOSK_DEFAULT_CONFIG, *display = NULL, *out_dir = NULL, *backend = "auto";
+    long frames = -1;
+    int force = 0, check_inputs = 0;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        int has_value = i + 1 < argc;
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            usage(stdout);
+            return EXIT_OK;
+        } else if (strcmp(a, "--config") == 0 && has_value) {
+            config = argv[++i];
+        } else if (strcmp(a, "--display") == 0 && has_value) {
+            display = argv[++i];
+        } else if (strcmp(a, "--backend") == 0 && has_value) {
+            backend = argv[++i];
+        } else if (strcmp(a, "--out") == 0 && has_value) {
+            out_dir = argv[++i];
+        } else if (strcmp(a, "--frames") == 0 && has_value) {
+            if (option_parse_int(argv[++i], 0, 1000000, &frames) != 0) {
+                fprintf(stderr, "bentray kiosk: --frames: expected a whole number from 0 to 1000000, got '%s'\n",
+                        argv[i]);
+                return EXIT_USAGE;
+            }
+        } else if (strcmp(a, "--force") == 0) {
+            force = 1;
+        } else if (strcmp(a, "--check-inputs") == 0) {
+            check_inputs = 1;
+        } else if (strncmp(a, "--", 2) == 0 && !has_value &&
+                   (strcmp(a, "--config") == 0 || strcmp(a, "--display") == 0 || strcmp(a, "--backend") == 0 ||
+                    strcmp(a, "--out") == 0 || strcmp(a, "--frames") == 0)) {
+            fprintf(stderr, "bentray kiosk: %s needs a value\n", a);
+            return EXIT_USAGE;
+        } else {
+            return option_unknown("kiosk", a, usage);
+        }
+    }
+    if (!option_backend_valid(backend)) {
+        fprintf(stderr, "bentray kiosk: --backend: unknown back-end '%s' (expected egl, osmesa or auto)\n", backend);
+        return EXIT_USAGE;
+    }
+    static struct kiosk_config c;
+    struct kiosk_config_error e;
+    if (kiosk_config_load(&c, config, &e) != 0) {
+        fprintf(stderr, "bentray kiosk: %s: %s\n", e.where, e.message);
+        return EXIT_USAGE;
+    }
+    if (display && parse_display(display, &c.display.backend) != 0) {
+        fprintf(stderr, "bentray kiosk: --display: unknown display '%s' (expected auto, kms, x11 or headless)\n",
+                display);
+        return EXIT_USAGE;
+    }
+    if (out_dir) {
+        if (strlen(out_dir) >= sizeof c.display.headless_out) {
+            fprintf(stderr, "bentray kiosk: --out: the path is longer than %zu characters\n",
+                    sizeof c.display.headless_out - 1);
+            return EXIT_USAGE;
+        }
+        snprintf(c.display.headless_out, sizeof c.display.headless_out, "%s", out_dir);
+    }
+    if (frames >= 0)
+        c.display.headless_frames = (int)frames;
+    /* after the options, which stand in for keys of the file */
+    if (kiosk_config_check(&c, &e) != 0) {
+        fprintf(stderr, "bentray kiosk: %s: %s\n", e.where, e.message);
+        return EXIT_USAGE;
+    }
+    if (check_inputs)
+        return kiosk_check_inputs(&c, stdout, stderr);
+    FILE *log = stderr;
+    if (strcmp(c.kiosk.log, "stderr") != 0) {
+        log = fopen(c.kiosk.log, "a");
+        if (!log) {
+            fprintf(stderr, "bentray kiosk: %s: [kiosk] log: cannot open %s for appending\n", c.path, c.kiosk.log);
+            return EXIT_USAGE;
+        }
+    }
+    setvbuf(log, NULL, _IOLBF, 0);
+    struct kiosk_run_options o = {.gl_backend = backend, .force = force, .log = log};
+    int rc = kiosk_run(&c, &o);
+    if (log != stderr)
+        fclose(log);
+    return rc;
+}

@@ -1,0 +1,220 @@
+/* Canvas, bands, letterbox and HUD: the kiosk's frames assembled on the GPU. */
+#include "kiosk/compositor.h"
+#include "gl/caps.h"
+#include "gl/quad.h"
+#include "gl/shader.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static GLuint linear_texture(int width, int height)
+{
+    GLuint tex;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    return tex;
+}
+
+int compositor_init(struct compositor *c, const struct gl_context *gl, int width, int height, char *err,
+                    size_t errlen)
+{
+    memset(c, 0, sizeof *c);
+    c->width = width;
+    c->height = height;
+    /* the probe also takes this compositor's share of the pass quadrilateral (gl/quad.h) */
+    struct gl_caps caps;
+    if (gl_caps_probe(&caps, gl, err, errlen) != 0) {
+        quad_release();
+        return -1;
+    }
+    c->has_quad = 1;
+    static const char *const vertex[] = {"kiosk_vertex.glsl", NULL};
+    static const char *const blit[] = {"kiosk_blit.glsl", NULL};
+    static const char *const pipeline[] = {"kiosk_pipeline.glsl", NULL};
+    c->blit = shader_program_build(&caps.shader, "", vertex, blit, err, errlen);
+    c->pipeline = c->blit ? shader_program_build(&caps.shader, "", vertex, pipeline, err, errlen) : 0;
+    if (!c->pipeline) {
+        compositor_release(c);
+        return -1;
+    }
+    c->canvas = linear_texture(width, height);
+    glGenFramebuffers(1, &c->canvas_fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, c->canvas_fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, c->canvas, 0);
+    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        snprintf(err, errlen, "the %dx%d RGBA8 canvas framebuffer is incomplete (status 0x%x)", width, height,
+                 status);
+        compositor_release(c);
+        return -1;
+    }
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    return gl_check("making the compositor", err, errlen);
+}
+
+void compositor_release(struct compositor *c)
+{
+    if (c->canvas_fbo)
+        glDeleteFramebuffers(1, &c->canvas_fbo);
+    if (c->canvas)
+        glDeleteTextures(1, &c->canvas);
+    if (c->hud)
+        glDeleteTextures(1, &c->hud);
+    if (c->blit)
+        glDeleteProgram(c->blit);
+    if (c->pipeline)
+        glDeleteProgram(c->pipeline);
+    if (c->has_quad)
+        quad_release();
+    memset(c, 0, sizeof *c);
+}
+
+static void set_uv_rect(GLuint program, float u0, float v0, float du, float dv)
+{
+    glUniform4f(glGetUniformLocation(program, "u_uv_rect"), u0, v0, du, dv);
+}
+
+static void bind_sampler(GLuint program, const char *name, int unit, GLuint tex)
+{
+    glActiveTexture(GL_TEXTURE0 + (GLenum)unit);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glUniform1i(glGetUniformLocation(program, name), unit);
+}
+
+/* tex drawn with the blit program into the bound framebuffer's viewport, filtered as asked */
+static void blit(struct compositor *c, GLuint tex, GLint filter, float u0, float v0, float du, float dv)
+{
+    glUseProgram(c->blit);
+    quad_bind();
+    bind_sampler(c->blit, "u_image", 0, tex);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    set_uv_rect(c->blit, u0, v0, du, dv);
+    quad_draw(c->blit, 0.0f);
+}
+
+static void to_canvas(struct compositor *c, int x, int y, int w, int h)
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, c->canvas_fbo);
+    glViewport(x, y, w, h);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+}
+
+int compositor_put_preview(struct compositor *c, GLuint image, char *err, size_t errlen)
+{
+    to_canvas(c, 0, 0, c->width, c->height);
+    blit(c, image, GL_LINEAR, 0, 0, 1, 1);
+    /* the renderer's image keeps its own nearest filtering: its passes read it texel for texel */
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return gl_check("drawing the preview into the canvas", err, errlen);
+}
+
+int compositor_put_band(struct compositor *c, GLuint image, int band_height, int y0, int rows, char *err,
+                        size_t errlen)
+{
+    to_canvas(c, 0, y0, c->width, rows);
+    blit(c, image, GL_NEAREST, 0, 0, 1, (float)rows / (float)band_height);
+    return gl_check("drawing a refined band into the canvas", err, errlen);
+}
+
+int compositor_put_pipeline(struct compositor *c, const struct renderer_textures *t, double bound_radius,
+                            int segments, double step, char *err, size_t errlen)
+{
+    int pw = c->width / 3, ph = c->height / 2;
+    to_canvas(c, 0, 0, c->width, c->height);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    /* top row: image, positions, directions; bottom row: segment index, step size, outcome */
+    glViewport(0, ph, pw, ph);
+    blit(c, t->image, GL_NEAREST, 0, 0, 1, 1);
+    GLuint p = c->pipeline;
+    glUseProgram(p);
+    bind_sampler(p, "u_position", 0, t->position);
+    bind_sampler(p, "u_velocity", 1, t->velocity);
+    bind_sampler(p, "u_hit", 2, t->hit);
+    bind_sampler(p, "u_outcome", 3, t->outcome);
+    glActiveTexture(GL_TEXTURE0);
+    set_uv_rect(p, 0, 0, 1, 1);
+    glUniform1f(glGetUniformLocation(p, "u_bound_radius"), (float)bound_radius);
+    glUniform1f(glGetUniformLocation(p, "u_segments"), (float)(segments > 0 ? segments : 1));
+    glUniform1f(glGetUniformLocation(p, "u_step"), (float)step);
+    static const int cells[5][2] = {{1, 1}, {2, 1}, {0, 0}, {1, 0}, {2, 0}};
+    for (int k = 0; k < 5; k++) {
+        glViewport(cells[k][0] * pw, cells[k][1] * ph, pw, ph);
+        glUniform1f(glGetUniformLocation(p, "u_panel"), (float)k);
+        quad_draw(p, 0.0f);
+    }
+    return gl_check("drawing the pipeline view", err, errlen);
+}
+
+int compositor_set_hud(struct compositor *c, const unsigned char *rgba, int width, int height, char *err,
+                       size_t errlen)
+{
+    if (!rgba) {
+        c->hud_valid = 0;
+        return 0;
+    }
+    if (!c->hud || c->hud_width != width || c->hud_height != height) {
+        if (c->hud)
+            glDeleteTextures(1, &c->hud);
+        c->hud = linear_texture(width, height);
+        c->hud_width = width;
+        c->hud_height = height;
+    }
+    glBindTexture(GL_TEXTURE_2D, c->hud);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    c->hud_valid = 1;
+    return gl_check("uploading the HUD", err, errlen);
+}
+
+int compositor_draw(struct compositor *c, const struct screen *s, char *err, size_t errlen)
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, s->framebuffer);
+    glViewport(0, 0, s->width, s->height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    /* letterbox: the canvas keeps its aspect ratio, centred */
+    double scale_x = (double)s->width / c->width, scale_y = (double)s->height / c->height;
+    double scale = scale_x < scale_y ? scale_x : scale_y;
+    int w = (int)(c->width * scale + 0.5), h = (int)(c->height * scale + 0.5);
+    glViewport((s->width - w) / 2, (s->height - h) / 2, w, h);
+    blit(c, c->canvas, w == c->width && h == c->height ? GL_NEAREST : GL_LINEAR, 0, 0, 1, 1);
+    if (c->hud_valid) {
+        glViewport(0, 0, s->width, s->height);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        /* the HUD's rows are top-down: flip */
+        blit(c, c->hud, c->hud_width == s->width && c->hud_height == s->height ? GL_NEAREST : GL_LINEAR, 0, 1, 1,
+             -1);
+        glDisable(GL_BLEND);
+    }
+    return gl_check("drawing the frame on the screen", err, errlen);
+}
+
+int compositor_read_screen(const struct screen *s, unsigned char *rgba, char *err, size_t errlen)
+{
+    size_t row = (size_t)s->width * 4;
+    unsigned char *rows = malloc(row * (size_t)s->height);
+    if (!rows) {
+        snprintf(err, errlen, "out of memory reading the screen back");
+        return -1;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, s->framebuffer);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, s->width, s->height, GL_RGBA, GL_UNSIGNED_BYTE, rows);
+    for (int y = 0; y < s->height; y++)
+        memcpy(rgba + (size_t)(s->height - 1 - y) * row, rows + (size_t)y * row, row);
+    free(rows);
+    return gl_check("reading the screen back", err, errlen);
+}

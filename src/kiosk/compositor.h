@@ -1,0 +1,42 @@
+/* The kiosk's compositor: a canvas of the refined frame's size that previews (upscaled) and
+ * refined bands are drawn into, and the step that puts the canvas on the screen, letterboxed,
+ * with the HUD blended over it. The renderer never draws to the screen itself, so a frame on
+ * screen is always whole: the last preview with the bands refined so far over it. */
+#ifndef BT_KIOSK_COMPOSITOR_H
+#define BT_KIOSK_COMPOSITOR_H
+#include <stddef.h>
+#include "kiosk/screen.h"
+#include "render/renderer.h"
+
+struct compositor {
+    int width, height;               /* the canvas: the refined frame */
+    GLuint canvas, canvas_fbo;
+    GLuint hud;                      /* RGBA8 texture of the screen's size, top row first */
+    int hud_width, hud_height, hud_valid;
+    GLuint blit, pipeline;           /* programs */
+    int has_quad;                    /* holds a share of the pass quadrilateral */
+};
+
+int compositor_init(struct compositor *c, const struct gl_context *gl, int width, int height, char *err,
+                    size_t errlen);
+void compositor_release(struct compositor *c);
+
+/* A whole frame rendered at lower resolution, upscaled over the whole canvas. */
+int compositor_put_preview(struct compositor *c, GLuint image, char *err, size_t errlen);
+/* Rows [0, rows) of a band rendered at full width, into canvas rows [y0, y0 + rows) (GL order,
+ * bottom-up); band_height: the height of the band's texture. */
+int compositor_put_band(struct compositor *c, GLuint image, int band_height, int y0, int rows, char *err,
+                        size_t errlen);
+/* The pipeline view of a run's ray state: five panels (positions, directions, segment index of
+ * the hit, step size, outcome) and the image, in a 3 x 2 grid over the canvas. */
+int compositor_put_pipeline(struct compositor *c, const struct renderer_textures *t, double bound_radius,
+                            int segments, double step, char *err, size_t errlen);
+/* The HUD image (screen-sized, top row first, straight alpha), or NULL for none. */
+int compositor_set_hud(struct compositor *c, const unsigned char *rgba, int width, int height, char *err,
+                       size_t errlen);
+/* Canvas, letterboxed into the screen, then the HUD; the screen's present() is left to the caller. */
+int compositor_draw(struct compositor *c, const struct screen *s, char *err, size_t errlen);
+/* The screen's framebuffer as RGBA8, top row first (w x h x 4 bytes), for PNG files. */
+int compositor_read_screen(const struct screen *s, unsigned char *rgba, char *err, size_t errlen);
+
+#endif

@@ -1,0 +1,319 @@
+/* The HUD's words and its layout. Every length is a fraction of the screen's height, so that the
+ * HUD covers the same share of the picture at 720p and at 1080p and reads the same from the
+ * visitor's distance. */
+#include "kiosk/hud.h"
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+#include "physics/relativity.h"
+
+/* Text heights as fractions of the screen's height: body text h/30 is 24 px at 720p, 36 at 1080p. */
+#define BODY_TEXT_DIVISOR 30
+#define TITLE_TEXT_DIVISOR 20
+/* Below this FreeType's glyphs stop being legible; a tiny preview window still gets text. */
+#define MIN_TEXT_PX 8
+/* Row pitch over text height: room for descenders (DejaVu's reach 0.24 em) and a gap. */
+#define ROW_PITCH_NUM 4
+#define ROW_PITCH_DEN 3
+/* A long explanation wraps into this many rows at most, for the whole block. */
+#define MAX_ROWS (2 * HUD_MAX_LINES)
+
+/* The indicator: a bar a third of the screen wide, its bottom a tenth of the height up. */
+#define BAR_WIDTH_DIVISOR 3
+#define BAR_HEIGHT_DIVISOR 72
+#define BAR_LIFT_DIVISOR 10
+
+/* Straight-alpha colours. The band is dark and translucent: the picture shows through, the text
+ * stays legible over a bright star or the accretion disc. */
+static const unsigned char band_color[4] = {8, 10, 16, 170};
+static const unsigned char title_color[4] = {255, 228, 170, 255};
+static const unsigned char body_color[4] = {235, 238, 245, 255};
+static const unsigned char notice_color[4] = {255, 170, 90, 255};
+static const unsigned char track_color[4] = {70, 74, 86, 230};
+static const unsigned char fill_color[4] = {120, 200, 255, 255};
+
+enum line_kind { LINE_TITLE, LINE_BODY, LINE_NOTICE };
+
+/* Formats one line; when it is cut at HUD_LINE_LEN, a character split by the cut is dropped whole,
+ * so the line stays valid UTF-8. */
+static void put_line(char *line, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int n = vsnprintf(line, HUD_LINE_LEN, fmt, ap);
+    va_end(ap);
+    if (n < HUD_LINE_LEN)
+        return;
+    size_t end = strlen(line);
+    size_t start = end;
+    while (start > 0 && ((unsigned char)line[start - 1] & 0xC0) == 0x80)
+        start--;
+    if (start == 0)
+        return;
+    unsigned lead = (unsigned char)line[start - 1];
+    size_t need = lead >= 0xF0 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC0 ? 2 : 1;
+    if (end - (start - 1) < need)
+        line[start - 1] = '\0';
+}
+
+static int present(const char *s)
+{
+    return s && s[0];
+}
+
+/* v/c with as many decimals as it takes not to read as c itself: 0.995 c is not "1.00 c". */
+static void format_speed(char *out, size_t len, double v)
+{
+    int decimals = 2;
+    while (decimals < 6 && fabs(v) < 1.0 && fabs(v) >= 1.0 - 0.5 * pow(10.0, -decimals))
+        decimals++;
+    snprintf(out, len, "%.*f", decimals, v);
+}
+
+/* "v = 0.90 c   γ = 2.29": the Lorentz factor is what the visitor sees change (time dilation,
+ * aberration), v alone hides how close 0.99 c is to c. */
+static void format_speed_pair(char *out, size_t len, double v)
+{
+    char vs[16];
+    format_speed(vs, sizeof vs, v);
+    if (fabs(v) < 1.0)
+        snprintf(out, len, "v = %s c   γ = %.2f", vs, lorentz_gamma(v3(v, 0.0, 0.0)));
+    else
+        snprintf(out, len, "v = %s c   (nothing with mass reaches c)", vs);
+}
+
+/* A mass or a length in the scene's unit: two decimals, more significant digits when small. */
+static void format_amount(char *out, size_t len, double x)
+{
+    if (fabs(x) >= 0.1 || x == 0.0)
+        snprintf(out, len, "%.2f", x);
+    else
+        snprintf(out, len, "%.2g", x);
+}
+
+static int collect_lines(const struct hud_view *v, char lines[][HUD_LINE_LEN], enum line_kind *kinds, int max)
+{
+    int n = 0;
+    char a[32], b[32];
+#define LINE(kind, ...)                                        \
+    do {                                                       \
+        if (n < max) {                                         \
+            put_line(lines[n], __VA_ARGS__);                   \
+            if (kinds)                                         \
+                kinds[n] = (kind);                             \
+            n++;                                               \
+        }                                                      \
+    } while (0)
+    if (present(v->title))
+        LINE(LINE_TITLE, "%s", v->title);
+    if (present(v->explanation))
+        LINE(LINE_BODY, "%s", v->explanation);
+    if (v->has_speed) {
+        char pair[96];
+        format_speed_pair(pair, sizeof pair, v->speed);
+        LINE(LINE_BODY, "%s", pair);
+    }
+    if (v->has_mass) {
+        format_amount(b, sizeof b, v->camera_distance);
+        if (v->mass == 0.0) {
+            LINE(LINE_BODY, "M = 0: flat space, no horizon, light goes straight   camera at distance %s", b);
+        } else {
+            /* the camera stays put while M changes: the shadow (edge at 3√3 M) grows on screen */
+            format_amount(a, sizeof a, v->mass);
+            char rs[32];
+            format_amount(rs, sizeof rs, 2.0 * v->mass);
+            LINE(LINE_BODY, "M = %s   horizon r_s = 2M = %s   camera at r = %s (fixed: the shadow grows with M)", a,
+                 rs, b);
+        }
+    }
+    if (v->effects)
+        LINE(LINE_BODY, "effects: %s", v->effects);
+    if (v->fps >= 0.0 && v->refining)
+        LINE(LINE_BODY, "%.1f frames/s   refining...", v->fps);
+    else if (v->fps >= 0.0)
+        LINE(LINE_BODY, "%.1f frames/s", v->fps);
+    else if (v->refining)
+        LINE(LINE_BODY, "refining...");
+    if (present(v->notice))
+        LINE(LINE_NOTICE, "%s", v->notice);
+#undef LINE
+    return n;
+}
+
+int hud_lines(const struct hud_view *v, char lines[][HUD_LINE_LEN], int max)
+{
+    if (!v || !lines || max <= 0)
+        return 0;
+    return collect_lines(v, lines, NULL, max);
+}
+
+/* h / divisor rounded, never below legibility */
+static int scaled(int h, int divisor)
+{
+    int px = (h + divisor / 2) / divisor;
+    return px < MIN_TEXT_PX ? MIN_TEXT_PX : px;
+}
+
+/* Writes colour over the rectangle's pixels inside the image (no blending: the HUD is drawn
+ * back to front on a cleared image, each layer opaque over the one below or precomposed). */
+static void fill_rect(unsigned char *rgba, int w, int h, int x0, int y0, int x1, int y1, const unsigned char c[4])
+{
+    x0 = x0 < 0 ? 0 : x0;
+    y0 = y0 < 0 ? 0 : y0;
+    x1 = x1 > w ? w : x1;
+    y1 = y1 > h ? h : y1;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++)
+            memcpy(rgba + ((size_t)y * (size_t)w + (size_t)x) * 4, c, 4);
+}
+
+struct row {
+    char text[HUD_LINE_LEN];
+    int px;
+    const unsigned char *color;
+    int width;
+};
+
+/* Bytes of text that fit in avail pixels: up to a space where one does, otherwise as many whole
+ * characters as fit, and always at least one, so that wrapping moves on. */
+static size_t fitting_head(struct hud_font *font, int px, const char *text, int avail)
+{
+    char head[HUD_LINE_LEN];
+    size_t len = strlen(text), best = 0;
+    if (hud_text_width(font, px, text) <= avail)
+        return len;
+    for (size_t i = 1; i < len; i++) {
+        if (text[i] != ' ')
+            continue;
+        memcpy(head, text, i);
+        head[i] = '\0';
+        if (hud_text_width(font, px, head) > avail)
+            break;
+        best = i;
+    }
+    if (best > 0)
+        return best;
+    for (size_t i = 1; i <= len; i++) {
+        if (i < len && ((unsigned char)text[i] & 0xC0) == 0x80)
+            continue;   /* inside a character */
+        memcpy(head, text, i);
+        head[i] = '\0';
+        if (hud_text_width(font, px, head) > avail)
+            break;
+        best = i;
+    }
+    if (best > 0)
+        return best;
+    size_t one = 1;
+    while (one < len && ((unsigned char)text[one] & 0xC0) == 0x80)
+        one++;
+    return one;
+}
+
+/* Lines into rows no wider than avail pixels, wrapped at spaces; returns the number of rows. */
+static int wrap_rows(struct hud_font *font, const struct hud_view *v, int h, int avail, struct row *rows)
+{
+    char lines[HUD_MAX_LINES][HUD_LINE_LEN];
+    enum line_kind kinds[HUD_MAX_LINES];
+    int n_lines = collect_lines(v, lines, kinds, HUD_MAX_LINES), n = 0;
+    for (int l = 0; l < n_lines && n < MAX_ROWS; l++) {
+        int px = scaled(h, kinds[l] == LINE_TITLE ? TITLE_TEXT_DIVISOR : BODY_TEXT_DIVISOR);
+        const unsigned char *color = kinds[l] == LINE_TITLE    ? title_color
+                                     : kinds[l] == LINE_NOTICE ? notice_color
+                                                               : body_color;
+        const char *rest = lines[l];
+        while (*rest && n < MAX_ROWS) {
+            size_t take = fitting_head(font, px, rest, avail);
+            struct row *r = &rows[n++];
+            memcpy(r->text, rest, take);
+            r->text[take] = '\0';
+            r->px = px;
+            r->color = color;
+            r->width = hud_text_width(font, px, r->text);
+            rest += take;
+            while (*rest == ' ')
+                rest++;
+        }
+    }
+    return n;
+}
+
+/* The block of lines in the top-left corner, on its band. */
+static void draw_lines(struct hud_font *font, unsigned char *rgba, int w, int h, const struct hud_view *v)
+{
+    int body_px = scaled(h, BODY_TEXT_DIVISOR);
+    int margin = body_px / 2, pad = body_px / 2;
+    struct row rows[MAX_ROWS];
+    int n = wrap_rows(font, v, h, w - 2 * margin - 2 * pad, rows);
+    if (n == 0)
+        return;
+    int widest = 0, height = 0;
+    for (int i = 0; i < n; i++) {
+        widest = rows[i].width > widest ? rows[i].width : widest;
+        height += rows[i].px * ROW_PITCH_NUM / ROW_PITCH_DEN;
+    }
+    fill_rect(rgba, w, h, margin, margin, margin + widest + 2 * pad, margin + height + 2 * pad, band_color);
+    int top = margin + pad;
+    for (int i = 0; i < n; i++) {
+        /* DejaVu's ascent is 0.93 em: a baseline one text height down clears the row's top */
+        hud_text_draw(font, rgba, w, h, margin + pad, top + rows[i].px, rows[i].px, rows[i].text, rows[i].color);
+        top += rows[i].px * ROW_PITCH_NUM / ROW_PITCH_DEN;
+    }
+}
+
+/* The knob just turned: its name and value above a bar from indicator_min to indicator_max, with
+ * the two range numbers at the bar's ends. */
+static void draw_indicator(struct hud_font *font, unsigned char *rgba, int w, int h, const struct hud_view *v)
+{
+    char label[HUD_LINE_LEN], lo[48], hi[48], value[96], number[32];
+    if (v->indicator == HUD_KNOB_SPEED) {
+        format_speed_pair(value, sizeof value, v->indicator_value);
+        snprintf(label, sizeof label, "speed   %s", value);
+        format_speed(number, sizeof number, v->indicator_min);
+        snprintf(lo, sizeof lo, "%s c", number);
+        format_speed(number, sizeof number, v->indicator_max);
+        snprintf(hi, sizeof hi, "%s c", number);
+    } else {
+        format_amount(value, sizeof value, v->indicator_value);
+        snprintf(label, sizeof label, "mass   M = %s", value);
+        format_amount(lo, sizeof lo, v->indicator_min);
+        format_amount(hi, sizeof hi, v->indicator_max);
+    }
+    int px = scaled(h, BODY_TEXT_DIVISOR), pad = px / 2, gap = px / 2;
+    int bar_w = w / BAR_WIDTH_DIVISOR, bar_h = scaled(h, BAR_HEIGHT_DIVISOR);
+    int bar_x = (w - bar_w) / 2, bar_y = h - h / BAR_LIFT_DIVISOR - bar_h;
+    int label_base = bar_y - px / 2;
+    /* range numbers centred on the bar: a digit's height is about 0.73 em */
+    int range_base = bar_y + bar_h / 2 + px * 3 / 8;
+    int lo_w = hud_text_width(font, px, lo), hi_w = hud_text_width(font, px, hi);
+    int label_w = hud_text_width(font, px, label);
+    int left = bar_x - gap - lo_w - pad;
+    int right = bar_x + bar_w + gap + hi_w + pad;
+    if (bar_x + label_w + pad > right)
+        right = bar_x + label_w + pad;
+    int bottom = range_base + px / 3 > bar_y + bar_h ? range_base + px / 3 : bar_y + bar_h;
+    fill_rect(rgba, w, h, left, label_base - px - pad, right, bottom + pad, band_color);
+
+    double span = v->indicator_max - v->indicator_min;
+    double share = span > 0.0 ? (v->indicator_value - v->indicator_min) / span : 1.0;
+    share = isnan(share) ? 0.0 : share < 0.0 ? 0.0 : share > 1.0 ? 1.0 : share;
+    fill_rect(rgba, w, h, bar_x, bar_y, bar_x + bar_w, bar_y + bar_h, track_color);
+    fill_rect(rgba, w, h, bar_x, bar_y, bar_x + (int)lround(share * bar_w), bar_y + bar_h, fill_color);
+
+    hud_text_draw(font, rgba, w, h, bar_x, label_base, px, label, body_color);
+    hud_text_draw(font, rgba, w, h, bar_x - gap - lo_w, range_base, px, lo, body_color);
+    hud_text_draw(font, rgba, w, h, bar_x + bar_w + gap, range_base, px, hi, body_color);
+}
+
+void hud_draw(struct hud_font *font, unsigned char *rgba, int w, int h, const struct hud_view *v)
+{
+    if (!rgba || w <= 0 || h <= 0)
+        return;
+    memset(rgba, 0, (size_t)w * (size_t)h * 4);
+    if (!font || !v)
+        return;
+    draw_lines(font, rgba, w, h, v);
+    if (v->indicator == HUD_KNOB_SPEED || v->indicator == HUD_KNOB_MASS)
+        draw_indicator(font, rgba, w, h, v);
+}

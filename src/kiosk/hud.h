@@ -1,0 +1,39 @@
+/* The kiosk's head-up display: what the visitor has set, in words and units, drawn over the frame.
+ * Pure: it draws into an RGBA8 image (top row first, transparent where there is no HUD) that the
+ * compositor blends over the picture; it never touches GL. */
+#ifndef BT_KIOSK_HUD_H
+#define BT_KIOSK_HUD_H
+#include "kiosk/hud_text.h"
+
+#define HUD_LINE_LEN 160
+#define HUD_MAX_LINES 8
+
+enum hud_knob { HUD_KNOB_NONE, HUD_KNOB_SPEED, HUD_KNOB_MASS };
+
+struct hud_view {
+    const char *title;               /* the scene's name */
+    const char *explanation;         /* one line from the scene file (its description) */
+    int has_speed;                   /* the scene lets the observer move */
+    double speed;                    /* v/c; the HUD shows gamma too */
+    int has_mass;                    /* the scene has a central mass (Schwarzschild) */
+    double mass;                     /* M in the scene's unit; the HUD shows r_s = 2M */
+    double camera_distance;          /* from the mass, the scene's unit: fixed while M changes */
+    const char *effects;             /* "geometry", "Doppler colour", "Doppler colour + searchlight";
+                                        NULL where the scene has no black body to shift */
+    double fps;                      /* frames shown per second, measured; < 0: not yet known */
+    int refining;                    /* 1 while the picture is still being refined */
+    /* The knob turned in the last moments: a short indicator of its value within its range. */
+    enum hud_knob indicator;
+    double indicator_value, indicator_min, indicator_max;
+    const char *notice;              /* one line of warning (a limit reached), or NULL */
+};
+
+/* The HUD's text, one line per entry (title, explanation, knobs with units, effects, fps,
+ * notice), for the log and for tests; returns the number of lines. */
+int hud_lines(const struct hud_view *v, char lines[][HUD_LINE_LEN], int max);
+/* Draws the HUD into rgba (w x h), clearing it first. Text height scales with h so that it reads
+ * the same at 720p and 1080p; a translucent band behind the text keeps it legible over any
+ * picture. font NULL: clears only. */
+void hud_draw(struct hud_font *font, unsigned char *rgba, int w, int h, const struct hud_view *v);
+
+#endif

@@ -1,0 +1,134 @@
+/* The keyboard input: keys typed on the terminal the kiosk was started from (service and
+ * development; an X11 window's keys come through the screen instead). The terminal is put into
+ * non-canonical mode without echo, so that a key acts at once, and restored at close. Standard
+ * input that is not a terminal (a pipe, /dev/null under the service manager) is read as keys
+ * until it ends. */
+#include "kiosk/input.h"
+#include "kiosk/keymap.h"
+#include <errno.h>
+#include <fcntl.h>
+#include <stdlib.h>
+#include <string.h>
+#include <termios.h>
+#include <unistd.h>
+
+struct keyboard {
+    int fd;
+    int is_tty;
+    struct termios saved;
+    int saved_flags;
+    int ended;                       /* end of input: nothing more to poll */
+};
+
+static int keyboard_fds(struct input_source *src, struct pollfd *out, int max)
+{
+    struct keyboard *k = src->priv;
+    if (k->ended || max < 1)
+        return 0;
+    out[0].fd = k->fd;
+    out[0].events = POLLIN;
+    out[0].revents = 0;
+    return 1;
+}
+
+/* One key from the bytes read: arrows arrive as ESC [ A..D; a lone ESC is the Escape key. */
+static int next_key(const unsigned char *buf, int len, int *used, enum key_code *code, int *ch)
+{
+    *ch = buf[0];
+    *code = KEY_CODE_CHAR;
+    *used = 1;
+    if (buf[0] != 0x1b)
+        return 1;
+    if (len >= 3 && buf[1] == '[') {
+        static const char arrows[] = "ABCD";
+        static const enum key_code codes[] = {KEY_CODE_UP, KEY_CODE_DOWN, KEY_CODE_RIGHT, KEY_CODE_LEFT};
+        const char *at = memchr(arrows, buf[2], 4);
+        *used = 3;
+        if (!at)
+            return 0;
+        *code = codes[at - arrows];
+        return 1;
+    }
+    *code = KEY_CODE_ESCAPE;
+    return 1;
+}
+
+static int keyboard_drain(struct input_source *src, double now, struct input_event *out, int max)
+{
+    struct keyboard *k = src->priv;
+    int n = 0;
+    while (!k->ended && n < max) {
+        /* at most one key per event slot left, so nothing read is dropped */
+        unsigned char buf[64];
+        size_t want = (size_t)(max - n) < sizeof buf / 3 ? (size_t)(max - n) : sizeof buf / 3;
+        ssize_t got = read(k->fd, buf, want);
+        if (got < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR))
+            break;
+        if (got <= 0) {
+            k->ended = 1;
+            src->finished = 1;
+            if (got < 0)
+                fprintf(src->log, "input %s: reading the keyboard failed: %s; keys are no longer read\n",
+                        src->cfg->name, strerror(errno));
+            break;
+        }
+        for (int i = 0; i < got && n < max;) {
+            enum key_code code;
+            int ch, used;
+            if (next_key(buf + i, (int)got - i, &used, &code, &ch) && keymap_event(code, ch, &out[n])) {
+                out[n].t = now;
+                out[n].source = src->index;
+                n++;
+            }
+            i += used;
+        }
+    }
+    return n;
+}
+
+static void keyboard_close(struct input_source *src)
+{
+    struct keyboard *k = src->priv;
+    if (k->is_tty)
+        tcsetattr(k->fd, TCSANOW, &k->saved);
+    if (k->saved_flags >= 0)
+        fcntl(k->fd, F_SETFL, k->saved_flags);
+    free(k);
+}
+
+struct input_source *input_open_keyboard(const struct kiosk_config *c, int index, FILE *log, double now)
+{
+    (void)now;
+    struct input_source *src = calloc(1, sizeof *src);
+    struct keyboard *k = calloc(1, sizeof *k);
+    if (!src || !k) {
+        free(src);
+        free(k);
+        return NULL;
+    }
+    src->cfg = &c->inputs[index];
+    src->index = index;
+    src->log = log;
+    src->fds = keyboard_fds;
+    src->drain = keyboard_drain;
+    src->close = keyboard_close;
+    src->priv = k;
+    k->fd = STDIN_FILENO;
+    k->saved_flags = fcntl(k->fd, F_GETFL);
+    if (k->saved_flags < 0) {
+        fprintf(log, "input %s: there is no standard input to read keys from\n", src->cfg->name);
+        k->ended = 1;
+        src->finished = 1;
+        return src;
+    }
+    fcntl(k->fd, F_SETFL, k->saved_flags | O_NONBLOCK);
+    if (isatty(k->fd) && tcgetattr(k->fd, &k->saved) == 0) {
+        struct termios raw = k->saved;
+        raw.c_lflag &= ~(tcflag_t)(ICANON | ECHO);
+        raw.c_cc[VMIN] = 0;
+        raw.c_cc[VTIME] = 0;
+        k->is_tty = tcsetattr(k->fd, TCSANOW, &raw) == 0;
+    }
+    src->present = 1;
+    return src;
+}

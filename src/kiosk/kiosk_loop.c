@@ -1,0 +1,516 @@
+/* The kiosk's loop. */
+#include "kiosk/kiosk_loop.h"
+#include "io/png_io.h"
+#include "kiosk/hud.h"
+#include "kiosk/kiosk_events.h"
+#include "kiosk/kiosk_view.h"
+#include "kiosk/screen.h"
+#include "kiosk/script_player.h"
+#include "kiosk/service.h"
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#define KIOSK_MAX_EVENTS 256         /* drained per turn; the rest waits for the next turn */
+
+static volatile sig_atomic_t stop_requested;
+
+static void on_stop_signal(int sig)
+{
+    (void)sig;
+    stop_requested = 1;
+}
+
+/* No SA_RESTART: a signal cuts poll() short, so the loop sees it at once. */
+static void catch_stop_signals(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_stop_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGTERM, &sa, NULL);
+    sigaction(SIGINT, &sa, NULL);
+    stop_requested = 0;
+}
+
+struct kiosk {
+    const struct kiosk_config *cfg;
+    const struct kiosk_run_options *opt;
+    FILE *log;
+    struct screen *screen;
+    struct kiosk_view view;
+    int have_view;
+    struct input_source *inputs[KIOSK_MAX_INPUTS];
+    struct kiosk_state state;
+    int virtual_clock;
+    long turn;                       /* turns of the loop so far */
+    double now;
+    /* attract mode */
+    struct script tour;
+    struct script_player tour_player;
+    int attract;
+    double last_input;
+    /* HUD */
+    struct hud_font *font;
+    unsigned char *hud_rgba;
+    char hud_text[HUD_MAX_LINES * HUD_LINE_LEN];
+    enum hud_knob indicator;
+    double indicator_until;
+    char notice[HUD_LINE_LEN];
+    double notice_until;
+    int draws_this_second, draws_last_second;
+    double second_start;
+    /* headless frames */
+    int frames_written;
+};
+
+static double kiosk_now(const struct kiosk *k)
+{
+    return k->virtual_clock ? (double)k->turn / KIOSK_VIRTUAL_FPS : input_clock();
+}
+
+/* The scene's view of the knobs and what the HUD says about them. */
+static void hud_view_of(struct kiosk *k, struct hud_view *v)
+{
+    const struct scene *s = &k->view.base;
+    memset(v, 0, sizeof *v);
+    v->title = s->name;
+    v->explanation = s->description;
+    v->has_speed = 1;
+    v->speed = k->state.speed;
+    v->has_mass = s->model.type == MODEL_SCHWARZSCHILD;
+    v->mass = k->state.mass;
+    v->camera_distance = v3_len(v3_sub(s->camera.position, s->model.center));
+    static const char *const effects[] = {"geometry", "Doppler colour", "Doppler colour + searchlight"};
+    v->effects = scene_has_black_body(s) ? effects[k->state.effects] : NULL;
+    v->fps = kiosk_view_refined(&k->view) && k->draws_last_second == 0 ? -1.0 : k->draws_last_second;
+    v->refining = !kiosk_view_refined(&k->view);
+    if (k->now < k->indicator_until) {
+        v->indicator = k->indicator;
+        const struct kiosk_knob *knob = k->indicator == HUD_KNOB_SPEED ? &k->cfg->speed : &k->cfg->mass;
+        v->indicator_value = k->indicator == HUD_KNOB_SPEED ? k->state.speed : k->state.mass;
+        v->indicator_min = knob->min;
+        v->indicator_max = knob->max;
+    }
+    v->notice = k->now < k->notice_until ? k->notice : k->attract ? "touch a knob or a button to take over" : NULL;
+}
+
+/* Redraws the HUD image when its text changed; returns 1 when it did. */
+static int update_hud(struct kiosk *k, char *err, size_t errlen, int *failed)
+{
+    *failed = 0;
+    if (!k->font)
+        return 0;
+    struct hud_view v;
+    hud_view_of(k, &v);
+    char lines[HUD_MAX_LINES][HUD_LINE_LEN];
+    int n = hud_lines(&v, lines, HUD_MAX_LINES);
+    char text[sizeof k->hud_text];
+    size_t used = 0;
+    text[0] = '\0';
+    for (int i = 0; i < n && used < sizeof text; i++)
+        used += (size_t)snprintf(text + used, sizeof text - used, "%s\n", lines[i]);
+    /* the indicator's bar moves with the value, which the text shows too */
+    if (strcmp(text, k->hud_text) == 0)
+        return 0;
+    memcpy(k->hud_text, text, sizeof text);
+    hud_draw(k->font, k->hud_rgba, k->screen->width, k->screen->height, &v);
+    if (compositor_set_hud(&k->view.comp, k->hud_rgba, k->screen->width, k->screen->height, err, errlen) != 0)
+        *failed = 1;
+    return 1;
+}
+
+static int write_frame(struct kiosk *k, char *err, size_t errlen)
+{
+    const struct screen *s = k->screen;
+    char path[KIOSK_PATH_LEN + 32];
+    snprintf(path, sizeof path, "%s/frame_%04d.png", k->cfg->display.headless_out, k->frames_written + 1);
+    unsigned char *rgba = malloc((size_t)s->width * s->height * 4);
+    if (!rgba) {
+        snprintf(err, errlen, "out of memory writing %s", path);
+        return -1;
+    }
+    int rc = compositor_read_screen(s, rgba, err, errlen);
+    if (rc == 0)
+        rc = png_write_rgba8(path, s->width, s->height, rgba, k->opt->force, err, errlen);
+    free(rgba);
+    if (rc == 0)
+        k->frames_written++;
+    return rc;
+}
+
+/* A state the scene cannot show (the camera inside the horizon) is not taken: the knob stops there
+ * and the HUD says why. */
+static void take_state(struct kiosk *k, const struct kiosk_state *proposed)
+{
+    struct scene_error serr;
+    if (proposed->scene == k->state.scene && kiosk_view_accepts(&k->view, proposed, &serr) != 0) {
+        snprintf(k->notice, sizeof k->notice, "limit: %.150s", serr.message);
+        k->notice_until = k->now + KIOSK_INDICATOR_SECONDS;
+        return;
+    }
+    k->state = *proposed;
+}
+
+/* Applies the events of one turn; returns 1 when the picture must change. */
+static int handle_events(struct kiosk *k, const struct input_event *ev, int n, int *frames, int *quit)
+{
+    int changed = 0;
+    for (int i = 0; i < n; i++) {
+        struct kiosk_state proposed = k->state;
+        struct event_outcome out;
+        kiosk_event_apply(k->cfg, &proposed, &k->view.base, &ev[i], &out);
+        *frames += out.frame;
+        *quit |= out.quit;
+        if (!out.visitor)
+            continue;
+        k->last_input = k->now;
+        if (k->attract) {
+            /* a visitor takes over at once, from the start */
+            k->attract = 0;
+            kiosk_state_reset(&proposed, k->cfg);
+            kiosk_event_apply(k->cfg, &proposed, &k->view.base, &ev[i], &out);
+            changed = 1;
+            fprintf(k->log, "attract mode ends: input\n");
+        }
+        if (out.knob != HUD_KNOB_NONE) {
+            k->indicator = out.knob;
+            k->indicator_until = k->now + KIOSK_INDICATOR_SECONDS;
+        }
+        if (out.changed || changed) {
+            take_state(k, &proposed);
+            changed = 1;
+        }
+    }
+    return changed;
+}
+
+static int gather_events(struct kiosk *k, struct input_event *ev, int max)
+{
+    int n = 0;
+    if (k->screen->events)
+        n += k->screen->events(k->screen, k->now, ev + n, max - n);
+    for (int i = 0; i < k->cfg->n_inputs; i++)
+        if (k->inputs[i])
+            n += k->inputs[i]->drain(k->inputs[i], k->now, ev + n, max - n);
+    return n;
+}
+
+/* The tour's own events move the state as a visitor's would, but are not a visitor. */
+static int play_tour(struct kiosk *k)
+{
+    struct input_event ev[KIOSK_MAX_EVENTS];
+    int n = k->attract ? script_player_due(&k->tour_player, k->now, -1, ev, KIOSK_MAX_EVENTS) : 0;
+    int changed = 0;
+    for (int i = 0; i < n; i++) {
+        struct kiosk_state proposed = k->state;
+        struct event_outcome out;
+        kiosk_event_apply(k->cfg, &proposed, &k->view.base, &ev[i], &out);
+        if (out.changed) {
+            take_state(k, &proposed);
+            changed = 1;
+        }
+    }
+    return changed;
+}
+
+static void wait_for_input(struct kiosk *k, double seconds)
+{
+    struct pollfd fds[1 + KIOSK_MAX_INPUTS * INPUT_MAX_FDS];
+    int n = 0;
+    int sfd = k->screen->fd ? k->screen->fd(k->screen) : -1;
+    if (sfd >= 0)
+        fds[n++] = (struct pollfd){.fd = sfd, .events = POLLIN};
+    for (int i = 0; i < k->cfg->n_inputs; i++)
+        if (k->inputs[i] && k->inputs[i]->fds)
+            n += k->inputs[i]->fds(k->inputs[i], fds + n, INPUT_MAX_FDS);
+    poll(fds, (nfds_t)n, (int)(seconds * 1000.0));
+}
+
+static int scripts_pending(const struct kiosk *k)
+{
+    for (int i = 0; i < k->cfg->n_inputs; i++)
+        if (k->cfg->inputs[i].type == KIOSK_INPUT_SCRIPT && k->inputs[i] && !k->inputs[i]->finished)
+            return 1;
+    return k->attract;
+}
+
+static void start_attract(struct kiosk *k)
+{
+    k->attract = 1;
+    kiosk_state_reset(&k->state, k->cfg);
+    script_player_start(&k->tour_player, &k->tour, k->now, 1);
+    fprintf(k->log, "attract mode: no input for %d s, playing the tour\n", k->cfg->kiosk.idle_seconds);
+}
+
+/* One turn of the loop; 1 to go on, 0 to stop, -1 on failure (err). */
+static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
+{
+    k->now = kiosk_now(k);
+    struct input_event ev[KIOSK_MAX_EVENTS];
+    int n = gather_events(k, ev, KIOSK_MAX_EVENTS);
+    int frames = 0, quit = 0;
+    int was_scene = k->state.scene;
+    int changed = play_tour(k);
+    changed |= handle_events(k, ev, n, &frames, &quit);
+    if (quit || stop_requested)
+        return 0;
+    if (k->cfg->attract.enabled && !k->attract && k->now - k->last_input >= k->cfg->kiosk.idle_seconds) {
+        start_attract(k);
+        changed = 1;
+    }
+    if (k->state.scene != was_scene || k->view.scene_index != k->state.scene) {
+        if (kiosk_view_load(&k->view, k->state.scene, err, errlen) != 0)
+            return -1;
+        changed = 1;
+    }
+    int drew = 0;
+    if (changed) {
+        if (kiosk_view_preview(&k->view, &k->state, err, errlen) != 0)
+            return -1;
+        drew = 1;
+    } else if (!kiosk_view_refined(&k->view)) {
+        if (kiosk_view_refine(&k->view, err, errlen) != 0)
+            return -1;
+        drew = 1;
+    }
+    k->draws_this_second += drew;
+    if (k->now - k->second_start >= 1.0) {
+        k->draws_last_second = k->draws_this_second;
+        k->draws_this_second = 0;
+        k->second_start = k->now;
+    }
+    int hud_failed;
+    int hud_changed = update_hud(k, err, errlen, &hud_failed);
+    if (hud_failed)
+        return -1;
+    if (drew || hud_changed || k->turn == 0) {
+        if (compositor_draw(&k->view.comp, k->screen, err, errlen) != 0 ||
+            k->screen->present(k->screen, err, errlen) != 0)
+            return -1;
+        if (k->turn == 0)
+            service_ready();
+    }
+    for (int f = 0; f < frames; f++) {
+        if (write_frame(k, err, errlen) != 0)
+            return -1;
+        int limit = k->cfg->display.headless_frames;
+        if (limit > 0 && k->frames_written >= limit)
+            return 0;
+    }
+    service_watchdog();
+    k->turn++;
+    if (!drew && kiosk_view_refined(&k->view) && (!k->virtual_clock || !scripts_pending(k)))
+        wait_for_input(k, KIOSK_IDLE_WAIT_SECONDS);
+    return 1;
+}
+
+/* Everything a run needs that a person could have got wrong, checked before anything is shown:
+ * the scene files, the scripts, the font, where headless frames go. 0, or -1 with err. */
+static int preflight(struct kiosk *k, char *err, size_t errlen)
+{
+    const struct kiosk_config *c = k->cfg;
+    static struct scene s;
+    for (int i = 0; i < c->kiosk.n_scenes; i++) {
+        struct scene_error serr;
+        if (scene_load(&s, c->kiosk.scenes[i], &serr) != 0) {
+            snprintf(err, errlen, "%s: %s", serr.where, serr.message);
+            return -1;
+        }
+    }
+    static struct script sc;
+    for (int i = 0; i < c->n_inputs; i++)
+        if (c->inputs[i].type == KIOSK_INPUT_SCRIPT && script_load(&sc, c->inputs[i].path, err, errlen) != 0)
+            return -1;
+    if (c->attract.enabled && script_load(&k->tour, c->attract.script, err, errlen) != 0)
+        return -1;
+    return 0;
+}
+
+static int headless_preflight(const struct kiosk *k, char *err, size_t errlen)
+{
+    const struct kiosk_display *d = &k->cfg->display;
+    struct stat st;
+    if (d->headless_out[0] == '\0') {
+        snprintf(err, errlen, "%s: [display] headless_out: the headless screen needs a directory for its frames",
+                 k->cfg->path);
+        return -1;
+    }
+    if (stat(d->headless_out, &st) != 0 || !S_ISDIR(st.st_mode)) {
+        snprintf(err, errlen, "%s: [display] headless_out: %s is not a directory", k->cfg->path, d->headless_out);
+        return -1;
+    }
+    char first[KIOSK_PATH_LEN + 32];
+    snprintf(first, sizeof first, "%s/frame_0001.png", d->headless_out);
+    if (!k->opt->force && stat(first, &st) == 0) {
+        snprintf(err, errlen, "%s exists: frames of an earlier run are not replaced without --force", first);
+        return -1;
+    }
+    return 0;
+}
+
+/* The screen. A KMS display with nothing plugged in is waited for (the monitor may be switched on
+ * after the kiosk), logged once; auto says which back-ends it passed over. */
+static struct screen *open_screen(struct kiosk *k, char *err, size_t errlen)
+{
+    const struct kiosk_config *c = k->cfg;
+    int logged = 0;
+    for (;;) {
+        err[0] = '\0';
+        struct screen *s = screen_open(c, k->opt->gl_backend, err, errlen);
+        if (s) {
+            if (c->display.backend == KIOSK_BACKEND_AUTO && err[0])
+                fprintf(k->log, "bentray kiosk: display %s (passed over: %s)\n", s->name, err);
+            if (logged)
+                fprintf(k->log, "bentray kiosk: display connected\n");
+            return s;
+        }
+        if (c->display.backend != KIOSK_BACKEND_KMS || !strstr(err, "no connected connector") || stop_requested)
+            return NULL;
+        if (!logged++)
+            fprintf(k->log, "bentray kiosk: %s; trying again every %.0f s\n", err, KIOSK_DISPLAY_RETRY_SECONDS);
+        service_watchdog();
+        struct timespec wait = {(time_t)KIOSK_DISPLAY_RETRY_SECONDS, 0};
+        nanosleep(&wait, NULL);
+    }
+}
+
+static void kiosk_close(struct kiosk *k)
+{
+    for (int i = 0; i < k->cfg->n_inputs; i++)
+        input_close(k->inputs[i]);
+    if (k->have_view)
+        kiosk_view_release(&k->view);
+    hud_font_close(k->font);
+    free(k->hud_rgba);
+    if (k->screen)
+        screen_close(k->screen);
+}
+
+static int open_hud(struct kiosk *k)
+{
+    if (!k->cfg->kiosk.hud)
+        return 0;
+    char err[600];
+    k->font = hud_font_open(k->cfg->kiosk.font, err, sizeof err);
+    if (!k->font) {
+        fprintf(k->log, "HUD: %s; the kiosk runs without it\n", err);
+        return 0;
+    }
+    k->hud_rgba = malloc((size_t)k->screen->width * k->screen->height * 4);
+    return k->hud_rgba ? 0 : -1;
+}
+
+int kiosk_run(const struct kiosk_config *c, const struct kiosk_run_options *o)
+{
+    static struct kiosk k;
+    memset(&k, 0, sizeof k);
+    k.cfg = c;
+    k.opt = o;
+    k.log = o->log;
+    char err[2048];
+    if (preflight(&k, err, sizeof err) != 0) {
+        fprintf(k.log, "bentray kiosk: %s\n", err);
+        return 2;
+    }
+    int headless = c->display.backend == KIOSK_BACKEND_HEADLESS;
+    if (headless && headless_preflight(&k, err, sizeof err) != 0) {
+        fprintf(k.log, "bentray kiosk: %s\n", err);
+        return 2;
+    }
+    catch_stop_signals();
+    k.screen = open_screen(&k, err, sizeof err);
+    if (!k.screen) {
+        fprintf(k.log, "bentray kiosk: no screen: %s\n", err);
+        return stop_requested ? 0 : 1;
+    }
+    k.virtual_clock = strcmp(k.screen->name, "headless") == 0;
+    if (k.virtual_clock && !headless && headless_preflight(&k, err, sizeof err) != 0) {
+        fprintf(k.log, "bentray kiosk: %s\n", err);
+        kiosk_close(&k);
+        return 2;
+    }
+    fprintf(k.log, "bentray kiosk: %s screen %dx%d (%s), frames %dx%d, previews %dx%d\n", k.screen->name,
+            k.screen->width, k.screen->height, k.screen->gl->platform_version, c->kiosk.width, c->kiosk.height,
+            c->kiosk.preview_width, c->kiosk.preview_height);
+    int rc = 0;
+    if (kiosk_view_init(&k.view, c, k.screen->gl, err, sizeof err) != 0) {
+        fprintf(k.log, "bentray kiosk: %s\n", err);
+        kiosk_close(&k);
+        return 1;
+    }
+    k.have_view = 1;
+    if (open_hud(&k) != 0) {
+        fprintf(k.log, "bentray kiosk: out of memory for the HUD\n");
+        kiosk_close(&k);
+        return 1;
+    }
+    k.now = kiosk_now(&k);
+    k.last_input = k.now;
+    k.second_start = k.now;
+    for (int i = 0; i < c->n_inputs; i++) {
+        k.inputs[i] = input_open(c, i, k.log, k.now);
+        if (!k.inputs[i])
+            fprintf(k.log, "input %s: out of memory; left out\n", c->inputs[i].name);
+    }
+    kiosk_state_reset(&k.state, c);
+    for (;;) {
+        int r = kiosk_turn(&k, err, sizeof err);
+        if (r < 0) {
+            fprintf(k.log, "bentray kiosk: %s\n", err);
+            rc = 1;
+            break;
+        }
+        if (r == 0)
+            break;
+    }
+    service_stopping();
+    fprintf(k.log, "bentray kiosk: stopped after %ld frames%s\n", k.turn, stop_requested ? " (signal)" : "");
+    kiosk_close(&k);
+    return rc;
+}
+
+int kiosk_check_inputs(const struct kiosk_config *c, FILE *out, FILE *log)
+{
+    struct input_source *inputs[KIOSK_MAX_INPUTS] = {0};
+    catch_stop_signals();
+    double now = input_clock();
+    for (int i = 0; i < c->n_inputs; i++) {
+        inputs[i] = input_open(c, i, log, now);
+        if (inputs[i] && inputs[i]->present)
+            fprintf(out, "input %s (%s): ready\n", c->inputs[i].name, kiosk_input_type_name(c->inputs[i].type));
+    }
+    fflush(out);
+    int rc = 0;
+    while (!stop_requested) {
+        now = input_clock();
+        struct input_event ev[KIOSK_MAX_EVENTS];
+        int n = 0, open = 0, quit = 0;
+        struct pollfd fds[KIOSK_MAX_INPUTS * INPUT_MAX_FDS];
+        int nfds = 0;
+        for (int i = 0; i < c->n_inputs; i++) {
+            if (!inputs[i])
+                continue;
+            n += inputs[i]->drain(inputs[i], now, ev + n, KIOSK_MAX_EVENTS - n);
+            open += !inputs[i]->finished;
+            nfds += inputs[i]->fds(inputs[i], fds + nfds, INPUT_MAX_FDS);
+        }
+        for (int i = 0; i < n; i++) {
+            char line[256];
+            kiosk_event_describe(c, &ev[i], line, sizeof line);
+            fprintf(out, "%s\n", line);
+            quit |= ev[i].kind == INPUT_QUIT;
+        }
+        fflush(out);
+        if (quit || open == 0)
+            break;
+        poll(fds, (nfds_t)nfds, (int)(KIOSK_IDLE_WAIT_SECONDS * 1000.0));
+    }
+    for (int i = 0; i < c->n_inputs; i++)
+        input_close(inputs[i]);
+    return rc;
+}

@@ -1,0 +1,36 @@
+/* The kiosk's loop: one poll() over every input and the screen; each turn drains every queue,
+ * updates the visitor's state, draws a preview when it changed or the next refined band when it
+ * did not, lays the HUD over it and presents it. Attract mode plays a tour after idle_seconds
+ * without input. SIGTERM and SIGINT end the loop at the next turn (at most one frame). */
+#ifndef BT_KIOSK_LOOP_H
+#define BT_KIOSK_LOOP_H
+#include <stdio.h>
+#include "kiosk/kiosk_config.h"
+
+/* The headless screen runs on a clock of its own that advances by one frame of this rate per
+ * turn, so that a script gives the same frames on any machine, however slow. */
+#define KIOSK_VIRTUAL_FPS 30.0
+/* How long a knob's value and range stay on screen after a turn, s. */
+#define KIOSK_INDICATOR_SECONDS 2.0
+/* The longest a turn waits for input when there is nothing to draw, s: script events and the
+ * watchdog are served at least this often. */
+#define KIOSK_IDLE_WAIT_SECONDS 0.02
+
+/* How often a KMS display without a connected monitor is looked at again, s. */
+#define KIOSK_DISPLAY_RETRY_SECONDS 2.0
+
+struct kiosk_run_options {
+    const char *gl_backend;          /* headless: "egl", "osmesa" or "auto" */
+    int force;                       /* headless: frames may replace files already there */
+    FILE *log;
+};
+
+/* Runs the kiosk until stopped (or, headless, until headless_frames frames are written).
+ * Returns the exit code: 0, 1 for a failure while running, 2 for a configuration that cannot be
+ * shown (a scene or script that does not load). */
+int kiosk_run(const struct kiosk_config *c, const struct kiosk_run_options *o);
+/* --check-inputs: every configured input's events, one line each on out, until stopped or until
+ * no input can deliver more. Returns the exit code. */
+int kiosk_check_inputs(const struct kiosk_config *c, FILE *out, FILE *log);
+
+#endif

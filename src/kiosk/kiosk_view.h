@@ -1,0 +1,50 @@
+/* What the kiosk shows of one scene: the scene file, the renderer drawing it as the visitor's
+ * state says, and the progression from a quick preview to the refined frame.
+ *
+ * A change of state draws a preview at once: the preview size, with steps PREVIEW_STEP_FACTOR
+ * times longer and as many times fewer segments (the same path length), upscaled over the
+ * canvas. When nothing changes, each frame refines one band of rows at full size and quality,
+ * bottom to top, until the canvas is whole. A band never costs more than a preview (it has at
+ * most preview pixels x PREVIEW_STEP_FACTOR rays, each taking PREVIEW_STEP_FACTOR times the
+ * steps), so input waits at most one preview frame; and there are at least refine_frames bands.
+ * The bands follow from sizes alone, never from timing, so a run is the same on any machine. */
+#ifndef BT_KIOSK_VIEW_H
+#define BT_KIOSK_VIEW_H
+#include "kiosk/compositor.h"
+#include "kiosk/kiosk_state.h"
+#include "render/renderer.h"
+
+#define PREVIEW_STEP_FACTOR 2
+
+struct kiosk_view {
+    const struct kiosk_config *cfg;
+    const struct gl_context *gl;
+    int scene_index;                 /* the scene file loaded in base, -1 for none */
+    struct scene base;               /* as loaded */
+    struct scene full;               /* base with the visitor's state, at the refined frame's size */
+    struct scene live;               /* what the renderer draws now: full, or its preview */
+    struct renderer *renderer;
+    struct compositor comp;
+    int pipeline_view;
+    int band_rows;                   /* rows of one band */
+    int refined_rows;                /* rows of the canvas at full quality, from the bottom */
+};
+
+int kiosk_view_init(struct kiosk_view *v, const struct kiosk_config *cfg, const struct gl_context *gl, char *err,
+                    size_t errlen);
+void kiosk_view_release(struct kiosk_view *v);
+/* The scene file of scene index i (loaded once per switch); 0, or -1 with err. */
+int kiosk_view_load(struct kiosk_view *v, int scene_index, char *err, size_t errlen);
+/* Whether a state can be drawn with the loaded scene (the mass may put the camera inside the
+ * horizon, a speed may be refused): 0, or -1 with the reason in err. */
+int kiosk_view_accepts(const struct kiosk_view *v, const struct kiosk_state *st, struct scene_error *err);
+/* Draw the preview of a state into the canvas (the scene must be loaded); refinement starts
+ * over. 0, or -1 with err. */
+int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char *err, size_t errlen);
+/* Refine the next band; 0, or -1 with err. Nothing to do once refined. */
+int kiosk_view_refine(struct kiosk_view *v, char *err, size_t errlen);
+int kiosk_view_refined(const struct kiosk_view *v);
+/* The preview of a full scene: the preview size, and longer steps over the same path length. */
+void kiosk_preview_scene(const struct scene *full, const struct kiosk_main *k, struct scene *out);
+
+#endif

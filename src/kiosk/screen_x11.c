@@ -1,0 +1,318 @@
+/* The kiosk in a window under X11 (development, and exhibitions that keep a desktop): EGL on the
+ * X11 platform with a window surface, keys through the fixed keyboard mapping, closing the window
+ * stops the kiosk. */
+#include "kiosk/screen.h"
+#include "kiosk/keymap.h"
+#include "gl/caps.h"
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <X11/Xlib.h>
+#include <X11/Xutil.h>
+#include <X11/keysym.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define X11_WINDOW_TITLE "bentray kiosk"
+
+/* The GL half, owned by s->gl: it goes before the window and the connection it draws into. */
+struct x11_egl {
+    EGLDisplay display;
+    EGLContext context;
+    EGLSurface surface;
+};
+
+/* The window-system half. */
+struct x11_window {
+    Display *dpy;
+    Window window;
+    Colormap colormap;
+    Atom wm_protocols, wm_delete_window;
+};
+
+static void *x11_get_proc(const char *name)
+{
+    void *p;
+    __eglMustCastToProperFunctionPointerType f = eglGetProcAddress(name);
+    memcpy(&p, &f, sizeof p);
+    return p;
+}
+
+static void x11_egl_destroy(struct gl_context *ctx)
+{
+    struct x11_egl *egl = ctx->priv;
+    if (egl) {
+        if (egl->display != EGL_NO_DISPLAY) {
+            eglMakeCurrent(egl->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+            if (egl->surface != EGL_NO_SURFACE)
+                eglDestroySurface(egl->display, egl->surface);
+            if (egl->context != EGL_NO_CONTEXT)
+                eglDestroyContext(egl->display, egl->context);
+            eglTerminate(egl->display);
+        }
+        free(egl);
+    }
+    free(ctx);
+}
+
+static void x11_window_destroy(struct x11_window *w)
+{
+    if (!w)
+        return;
+    if (w->dpy) {
+        if (w->window)
+            XDestroyWindow(w->dpy, w->window);
+        if (w->colormap)
+            XFreeColormap(w->dpy, w->colormap);
+        XCloseDisplay(w->dpy);
+    }
+    free(w);
+}
+
+static void x11_close(struct screen *s)
+{
+    if (!s)
+        return;
+    if (s->gl)
+        s->gl->destroy(s->gl);
+    x11_window_destroy(s->priv);
+    free(s);
+}
+
+static int x11_fd(struct screen *s)
+{
+    struct x11_window *w = s->priv;
+    return ConnectionNumber(w->dpy);
+}
+
+static int key_event(XKeyEvent *key, struct input_event *ev)
+{
+    char text[8];
+    KeySym sym = NoSymbol;
+    int len = XLookupString(key, text, sizeof text, &sym, NULL);
+    switch (sym) {
+    case XK_Up: case XK_KP_Up: return keymap_event(KEY_CODE_UP, 0, ev);
+    case XK_Down: case XK_KP_Down: return keymap_event(KEY_CODE_DOWN, 0, ev);
+    case XK_Left: case XK_KP_Left: return keymap_event(KEY_CODE_LEFT, 0, ev);
+    case XK_Right: case XK_KP_Right: return keymap_event(KEY_CODE_RIGHT, 0, ev);
+    case XK_Escape: return keymap_event(KEY_CODE_ESCAPE, 0, ev);
+    default: break;
+    }
+    return len == 1 ? keymap_event(KEY_CODE_CHAR, (unsigned char)text[0], ev) : 0;
+}
+
+static int x11_events(struct screen *s, double now, struct input_event *out, int max)
+{
+    struct x11_window *w = s->priv;
+    int n = 0;
+    /* Only take an event from Xlib's queue when there is room for what it may give. */
+    while (n < max && XPending(w->dpy) > 0) {
+        XEvent e;
+        XNextEvent(w->dpy, &e);
+        struct input_event *ev = &out[n];
+        int got = 0;
+        switch (e.type) {
+        case KeyPress:
+            got = key_event(&e.xkey, ev);
+            break;
+        case ClientMessage:
+            if (e.xclient.message_type == w->wm_protocols && e.xclient.format == 32 &&
+                (Atom)e.xclient.data.l[0] == w->wm_delete_window) {
+                memset(ev, 0, sizeof *ev);
+                ev->kind = INPUT_QUIT;
+                got = 1;
+            }
+            break;
+        case ConfigureNotify:
+            s->width = e.xconfigure.width;
+            s->height = e.xconfigure.height;
+            break;
+        default:
+            break;
+        }
+        if (got) {
+            ev->t = now;
+            ev->source = -1;
+            ev->bit = -1;
+            n++;
+        }
+    }
+    return n;
+}
+
+static int x11_present(struct screen *s, char *err, size_t errlen)
+{
+    struct x11_egl *egl = s->gl->priv;
+    if (!eglSwapBuffers(egl->display, egl->surface)) {
+        snprintf(err, errlen, "x11: eglSwapBuffers failed (EGL error 0x%x)", eglGetError());
+        return -1;
+    }
+    return 0;
+}
+
+/* EGL on the X11 connection: a config with a native visual, the window in that visual, an ES2
+ * context current on it. The window is made here because its visual comes from the config. */
+static struct gl_context *init_egl_x11(struct x11_window *w, int width, int height, int vsync,
+                                       char *err, size_t errlen)
+{
+    const char *client_ext = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    if (!client_ext || !(extension_list_has(client_ext, "EGL_KHR_platform_x11") ||
+                         extension_list_has(client_ext, "EGL_EXT_platform_x11"))) {
+        snprintf(err, errlen, "x11: EGL has no X11 platform (EGL_KHR_platform_x11); install Mesa's EGL (libegl-mesa0)");
+        return NULL;
+    }
+    PFNEGLGETPLATFORMDISPLAYEXTPROC get_platform_display =
+        (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
+    PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC create_window_surface =
+        (PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC)eglGetProcAddress("eglCreatePlatformWindowSurfaceEXT");
+    if (!get_platform_display || !create_window_surface) {
+        snprintf(err, errlen, "x11: EGL lacks eglGetPlatformDisplayEXT or eglCreatePlatformWindowSurfaceEXT");
+        return NULL;
+    }
+    struct gl_context *ctx = calloc(1, sizeof *ctx);
+    struct x11_egl *egl = calloc(1, sizeof *egl);
+    if (!ctx || !egl) {
+        free(ctx);
+        free(egl);
+        snprintf(err, errlen, "x11: out of memory");
+        return NULL;
+    }
+    egl->display = EGL_NO_DISPLAY;
+    egl->context = EGL_NO_CONTEXT;
+    egl->surface = EGL_NO_SURFACE;
+    ctx->backend = "egl";
+    ctx->dialect = DIALECT_GLSL_ES_100;
+    ctx->is_es = 1;
+    ctx->get_proc = x11_get_proc;
+    ctx->destroy = x11_egl_destroy;
+    ctx->priv = egl;
+
+    EGLint major = 0, minor = 0;
+    egl->display = get_platform_display(EGL_PLATFORM_X11_KHR, w->dpy, NULL);
+    if (egl->display == EGL_NO_DISPLAY || !eglInitialize(egl->display, &major, &minor)) {
+        snprintf(err, errlen, "x11: cannot initialise EGL on the X display (EGL error 0x%x)", eglGetError());
+        egl->display = EGL_NO_DISPLAY;
+        goto fail;
+    }
+    snprintf(ctx->platform_version, sizeof ctx->platform_version, "EGL %d.%d (X11)", major, minor);
+    if (!eglBindAPI(EGL_OPENGL_ES_API)) {
+        snprintf(err, errlen, "x11: the OpenGL ES API is not available in EGL");
+        goto fail;
+    }
+    static const EGLint config_attribs[] = {EGL_SURFACE_TYPE, EGL_WINDOW_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8,
+                                            EGL_BLUE_SIZE, 8, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT, EGL_NONE};
+    EGLConfig config = NULL;
+    EGLint n = 0;
+    if (!eglChooseConfig(egl->display, config_attribs, &config, 1, &n) || n < 1) {
+        snprintf(err, errlen, "x11: no EGL config for an 8-bit RGB ES2 window (EGL error 0x%x)", eglGetError());
+        goto fail;
+    }
+    EGLint visual_id = 0;
+    eglGetConfigAttrib(egl->display, config, EGL_NATIVE_VISUAL_ID, &visual_id);
+    XVisualInfo want = {.visualid = (VisualID)visual_id}, *visual;
+    int n_visuals = 0;
+    visual = XGetVisualInfo(w->dpy, VisualIDMask, &want, &n_visuals);
+    if (!visual || n_visuals < 1) {
+        snprintf(err, errlen, "x11: the X server has no visual 0x%x for the EGL config", (unsigned)visual_id);
+        goto fail;
+    }
+    Window root = RootWindow(w->dpy, visual->screen);
+    w->colormap = XCreateColormap(w->dpy, root, visual->visual, AllocNone);
+    XSetWindowAttributes attrs = {
+        .colormap = w->colormap,
+        .background_pixel = 0,
+        .border_pixel = 0,
+        .event_mask = KeyPressMask | StructureNotifyMask,
+    };
+    w->window = XCreateWindow(w->dpy, root, 0, 0, (unsigned)width, (unsigned)height, 0, visual->depth, InputOutput,
+                              visual->visual, CWColormap | CWBackPixel | CWBorderPixel | CWEventMask, &attrs);
+    XFree(visual);
+    if (!w->window) {
+        snprintf(err, errlen, "x11: cannot create a %dx%d window", width, height);
+        goto fail;
+    }
+    XStoreName(w->dpy, w->window, X11_WINDOW_TITLE);
+    /* A window manager that keeps to the size asked for keeps the frame's pixels one to one. */
+    XSizeHints *hints = XAllocSizeHints();
+    if (hints) {
+        hints->flags = PSize | PMinSize | PMaxSize;
+        hints->width = hints->min_width = hints->max_width = width;
+        hints->height = hints->min_height = hints->max_height = height;
+        XSetWMNormalHints(w->dpy, w->window, hints);
+        XFree(hints);
+    }
+    XSetWMProtocols(w->dpy, w->window, &w->wm_delete_window, 1);
+    XMapWindow(w->dpy, w->window);
+
+    egl->surface = create_window_surface(egl->display, config, &w->window, NULL);
+    if (egl->surface == EGL_NO_SURFACE) {
+        snprintf(err, errlen, "x11: cannot create an EGL window surface (EGL error 0x%x)", eglGetError());
+        goto fail;
+    }
+    /* Drivers may give a higher compatible version than ES2 (llvmpipe gives 3.2). */
+    static const EGLint ctx_attribs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
+    egl->context = eglCreateContext(egl->display, config, EGL_NO_CONTEXT, ctx_attribs);
+    if (egl->context == EGL_NO_CONTEXT) {
+        snprintf(err, errlen, "x11: cannot create an OpenGL ES 2 context (EGL error 0x%x)", eglGetError());
+        goto fail;
+    }
+    if (!eglMakeCurrent(egl->display, egl->surface, egl->surface, egl->context)) {
+        snprintf(err, errlen, "x11: cannot make the context current on the window (EGL error 0x%x)", eglGetError());
+        goto fail;
+    }
+    /* Advisory: a server without vertical blank (Xvfb) may refuse it, and frames still show. */
+    eglSwapInterval(egl->display, vsync ? 1 : 0);
+    return ctx;
+
+fail:
+    x11_egl_destroy(ctx);
+    return NULL;
+}
+
+struct screen *screen_open_x11(const struct kiosk_config *c, char *err, size_t errlen)
+{
+    const char *name = getenv("DISPLAY");
+    if (!name || !*name) {
+        snprintf(err, errlen, "x11: no X display: DISPLAY is not set");
+        return NULL;
+    }
+    struct screen *s = calloc(1, sizeof *s);
+    struct x11_window *w = calloc(1, sizeof *w);
+    if (!s || !w) {
+        free(s);
+        free(w);
+        snprintf(err, errlen, "x11: out of memory");
+        return NULL;
+    }
+    s->name = "x11";
+    s->priv = w;
+    s->width = c->kiosk.width;
+    s->height = c->kiosk.height;
+    s->framebuffer = 0;
+    s->fd = x11_fd;
+    s->events = x11_events;
+    s->present = x11_present;
+    s->close = x11_close;
+    w->dpy = XOpenDisplay(NULL);
+    if (!w->dpy) {
+        snprintf(err, errlen, "x11: cannot open the X display \"%s\" (is the X server running, may this user "
+                              "connect to it: XAUTHORITY, xhost?)", name);
+        x11_close(s);
+        return NULL;
+    }
+    w->wm_protocols = XInternAtom(w->dpy, "WM_PROTOCOLS", False);
+    w->wm_delete_window = XInternAtom(w->dpy, "WM_DELETE_WINDOW", False);
+    s->gl = init_egl_x11(w, s->width, s->height, c->display.vsync, err, errlen);
+    if (!s->gl) {
+        x11_close(s);
+        return NULL;
+    }
+    const char *missing = gl_api_load(s->gl->get_proc);
+    if (missing) {
+        snprintf(err, errlen, "x11: the GL entry point %s is missing", missing);
+        x11_close(s);
+        return NULL;
+    }
+    XFlush(w->dpy);
+    return s;
+}

@@ -1,0 +1,32 @@
+# Command-line tests of `bentray kiosk` (sourced by run_all.sh: uses its check, BT and TMP). The
+# kiosk runs headless here, driven by scripts (tests/kiosk/); test_kiosk_run.c compares its frames
+# with the renderer's, and test_kiosk_x11.c its window with the headless frame.
+K=tests/kiosk/headless.conf
+check "kiosk help" 0 "--check-inputs" -- $BT kiosk --help
+check "kiosk missing config" 2 "nosuch.conf" -- $BT kiosk --config "$TMP/nosuch.conf"
+check "kiosk bad option" 2 "unknown option" -- $BT kiosk --config $K --frob
+check "kiosk bad display" 2 "--display: unknown display 'vga'" -- $BT kiosk --config $K --display vga
+check "kiosk bad frames" 2 "--frames: expected a whole number" -- $BT kiosk --config $K --frames -1
+check "kiosk headless without out" 2 "headless_out" -- $BT kiosk --config $K
+mkdir -p "$TMP/kiosk"
+check "kiosk headless run" 0 "stopped after" -- $BT kiosk --config $K --out "$TMP/kiosk" --frames 7
+check "kiosk frames written" 0 "^7 frames$" -- sh -c "echo \$(ls $TMP/kiosk/frame_*.png | wc -l) frames"
+check "kiosk no overwrite" 2 "frame_0001.png exists.*--force" -- $BT kiosk --config $K --out "$TMP/kiosk" --frames 7
+check "kiosk osmesa run" 0 "headless screen 160x90 \(OSMesa.*stopped after" -- sh -c "$BT kiosk --config $K --out $TMP/kiosk --frames 2 --backend osmesa --force 2>&1 | tr '\n' ' '"
+# a bad script is refused before anything is shown, with FILE:LINE
+mkdir -p "$TMP/badscript"
+printf '0.5 turn speed +3\n0.2 frame\n' > "$TMP/badscript/bad.events"
+sed "s|path = visitor.events|path = $TMP/badscript/bad.events|; s|\.\./\.\./assets|$PWD/assets|g" $K > "$TMP/badscript/k.conf"
+check "kiosk bad script" 2 "bad.events:2: time 0.2 goes back" -- $BT kiosk --config "$TMP/badscript/k.conf" --out "$TMP/badscript"
+# every device missing: one log line each, and the kiosk runs on its script
+mkdir -p "$TMP/absent"
+check "kiosk without devices" 0 "^1 1 1 1 2 frames$" -- sh -c "$BT kiosk --config tests/kiosk/absent_devices.conf --out $TMP/absent --frames 2 > $TMP/absent/log 2>&1;
+    for n in speed_knob mass_knob next_button box; do printf '%s ' \$(grep -c \"input \$n\" $TMP/absent/log); done;
+    echo \$(ls $TMP/absent/frame_*.png | wc -l) frames"
+# --check-inputs: the script's events, one line each, then it ends with the script
+check "kiosk check inputs" 0 "input replay: turn speed \+20.*input replay: press next_scene" -- sh -c "$BT kiosk --config $K --out $TMP --check-inputs | tr '\n' ' '"
+# SIGTERM ends the loop at once (the headless kiosk with no frame limit runs until stopped)
+mkdir -p "$TMP/term"
+check "kiosk stops on SIGTERM" 0 "^logged, exit 0 within 1 s$" -- sh -c "$BT kiosk --config $K --out $TMP/term --frames 0 2>$TMP/term/log & pid=\$!; sleep 2; kill -TERM \$pid;
+    t=0; while kill -0 \$pid 2>/dev/null && [ \$t -lt 10 ]; do sleep 0.1; t=\$((t+1)); done;
+    wait \$pid; rc=\$?; grep -q 'stopped after .* (signal)' $TMP/term/log && [ \$t -lt 10 ] && echo \"logged, exit \$rc within 1 s\""

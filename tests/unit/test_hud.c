@@ -1,0 +1,465 @@
+/* The kiosk's head-up display: its words (gamma, the horizon, flat space at M = 0), FreeType text
+ * that lands inside its box and nowhere else, and a layout that scales with the screen. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <ft2build.h>
+#include FT_FREETYPE_H
+#include "kiosk/hud.h"
+
+/* fonts-dejavu-core, one of the project's Debian packages */
+#define FONT_PATH "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
+
+static struct hud_font *font;
+static const unsigned char white[4] = {255, 255, 255, 255};
+
+static int open_font(void **state)
+{
+    (void)state;
+    char err[256];
+    font = hud_font_open(FONT_PATH, err, sizeof err);
+    if (!font)
+        print_error("%s\n", err);
+    return font ? 0 : -1;
+}
+
+static int close_font(void **state)
+{
+    (void)state;
+    hud_font_close(font);
+    return 0;
+}
+
+/* the Schwarzschild scene as the kiosk shows it: moving at 0.9 c towards a hole of mass 0.5 */
+static struct hud_view schwarzschild_view(void)
+{
+    struct hud_view v = {
+        .title = "Schwarzschild black hole",
+        .explanation = "Light bends around the mass; inside the dark disc no ray escapes.",
+        .has_speed = 1,
+        .speed = 0.9,
+        .has_mass = 1,
+        .mass = 0.5,
+        .camera_distance = 9.0,
+        .effects = "geometry",
+        .fps = 12.34,
+        .refining = 0,
+        .indicator = HUD_KNOB_NONE,
+    };
+    return v;
+}
+
+static int find_line(char lines[][HUD_LINE_LEN], int n, const char *needle)
+{
+    for (int i = 0; i < n; i++)
+        if (strstr(lines[i], needle))
+            return i;
+    return -1;
+}
+
+static void test_lines_schwarzschild(void **state)
+{
+    (void)state;
+    struct hud_view v = schwarzschild_view();
+    char lines[HUD_MAX_LINES][HUD_LINE_LEN];
+    int n = hud_lines(&v, lines, HUD_MAX_LINES);
+    assert_int_equal(n, 6);
+    assert_string_equal(lines[0], v.title);
+    assert_string_equal(lines[1], v.explanation);
+
+    int s = find_line(lines, n, "v = 0.90 c");
+    assert_true(s >= 0);
+    const char *g = strstr(lines[s], "γ = ");
+    assert_non_null(g);
+    double gamma = atof(g + strlen("γ = "));
+    assert_true(fabs(gamma - 1.0 / sqrt(1.0 - 0.81)) <= 0.005);   /* 2.294 */
+    assert_non_null(strstr(lines[s], "γ = 2.29"));
+
+    int m = find_line(lines, n, "M = 0.50");
+    assert_true(m >= 0);
+    assert_non_null(strstr(lines[m], "r_s = 2M = 1.00"));
+    assert_non_null(strstr(lines[m], "r = 9.0"));
+    assert_null(strstr(lines[m], "flat"));
+    assert_true(find_line(lines, n, "effects: geometry") >= 0);
+    assert_true(find_line(lines, n, "12.3 frames/s") >= 0);
+    assert_int_equal(find_line(lines, n, "refining"), -1);
+
+    /* near c the digits must not round to c itself, and gamma keeps growing */
+    v.speed = 0.99;
+    n = hud_lines(&v, lines, HUD_MAX_LINES);
+    assert_true(find_line(lines, n, "γ = 7.09") >= 0);
+    v.speed = 0.995;
+    n = hud_lines(&v, lines, HUD_MAX_LINES);
+    assert_int_equal(find_line(lines, n, "1.00 c"), -1);
+    assert_true(find_line(lines, n, "γ = 10.01") >= 0);
+}
+
+static void test_lines_flat_space(void **state)
+{
+    (void)state;
+    struct hud_view v = schwarzschild_view();
+    v.mass = 0.0;
+    char lines[HUD_MAX_LINES][HUD_LINE_LEN];
+    int n = hud_lines(&v, lines, HUD_MAX_LINES);
+    int m = find_line(lines, n, "M = 0: flat space");
+    assert_true(m >= 0);
+    assert_null(strstr(lines[m], "r_s"));
+}
+
+static void test_lines_optional(void **state)
+{
+    (void)state;
+    struct hud_view v = schwarzschild_view();
+    v.has_speed = 0;
+    v.effects = NULL;
+    v.fps = -1.0;
+    v.refining = 1;
+    v.notice = "the hole cannot grow further: the camera would be inside its horizon";
+    char lines[HUD_MAX_LINES][HUD_LINE_LEN];
+    int n = hud_lines(&v, lines, HUD_MAX_LINES);
+    assert_int_equal(n, 5);
+    assert_int_equal(find_line(lines, n, "v = "), -1);
+    assert_int_equal(find_line(lines, n, "γ"), -1);
+    assert_int_equal(find_line(lines, n, "effects"), -1);
+    assert_int_equal(find_line(lines, n, "frames/s"), -1);
+    assert_true(find_line(lines, n, "refining...") >= 0);
+    assert_string_equal(lines[n - 1], v.notice);
+    assert_int_equal(hud_lines(&v, lines, 2), 2);
+
+    v.has_mass = 0;
+    n = hud_lines(&v, lines, HUD_MAX_LINES);
+    assert_int_equal(find_line(lines, n, "M = "), -1);
+
+    /* a title longer than a line is cut, and never in the middle of a character */
+    char title[2 * HUD_LINE_LEN + 1] = "";
+    for (int i = 0; i < HUD_LINE_LEN; i++)
+        strcat(title, "γ");
+    v.title = title;
+    n = hud_lines(&v, lines, HUD_MAX_LINES);
+    size_t len = strlen(lines[0]);
+    assert_true(len > 0 && len < HUD_LINE_LEN && len % 2 == 0);
+}
+
+static void test_text_width(void **state)
+{
+    (void)state;
+    int short_w = hud_text_width(font, 24, "v = 0.9");
+    int long_w = hud_text_width(font, 24, "v = 0.9 c, γ ≈ 2.29 · M");
+    assert_true(short_w > 0);
+    assert_true(long_w > short_w);
+    int big_w = hud_text_width(font, 36, "v = 0.9 c, γ ≈ 2.29 · M");
+    assert_true(big_w > long_w);
+    assert_true(fabs((double)big_w / long_w - 1.5) <= 0.03);
+    assert_int_equal(hud_text_width(font, 24, ""), 0);
+    assert_int_equal(hud_text_width(NULL, 24, "text"), 0);
+    assert_int_equal(hud_text_width(font, 0, "text"), 0);
+    /* more sizes than the cache keeps: the evicted size comes back the same */
+    for (int px = 10; px < 20; px++)
+        assert_true(hud_text_width(font, px, "ÄÖÜ äöü ß é") > 0);
+    assert_int_equal(hud_text_width(font, 24, "v = 0.9 c, γ ≈ 2.29 · M"), long_w);
+    /* malformed UTF-8 is drawn as replacement characters, not read past */
+    assert_true(hud_text_width(font, 24, "a\xC3") > hud_text_width(font, 24, "a"));
+    assert_true(hud_text_width(font, 24, "\xE2\x89") > 0);
+}
+
+/* Each of these is one character of the font, not replacement boxes for its UTF-8 bytes: its
+ * width is FreeType's own advance for that code point. */
+static void test_text_characters(void **state)
+{
+    (void)state;
+    const struct {
+        const char *utf8;
+        unsigned long codepoint;
+    } chars[] = {{"é", 0xE9}, {"ß", 0xDF}, {"·", 0xB7}, {"γ", 0x3B3}, {"≈", 0x2248}, {"√", 0x221A}};
+    FT_Library library;
+    FT_Face face;
+    assert_int_equal(FT_Init_FreeType(&library), 0);
+    assert_int_equal(FT_New_Face(library, FONT_PATH, 0, &face), 0);
+    assert_int_equal(FT_Set_Pixel_Sizes(face, 0, 48), 0);
+    for (size_t i = 0; i < sizeof chars / sizeof chars[0]; i++) {
+        FT_UInt index = FT_Get_Char_Index(face, chars[i].codepoint);
+        assert_int_not_equal(index, 0);
+        assert_int_equal(FT_Load_Glyph(face, index, FT_LOAD_TARGET_LIGHT), 0);
+        double advance = face->glyph->linearHoriAdvance / 65536.0;
+        int width = hud_text_width(font, 48, chars[i].utf8);
+        if (fabs(width - advance) > 1.0)
+            fail_msg("%s is %d pixels wide, U+%04lX advances %.1f", chars[i].utf8, width, chars[i].codepoint, advance);
+    }
+    FT_Done_Face(face);
+    FT_Done_FreeType(library);
+}
+
+static int alpha_at(const unsigned char *rgba, int w, int x, int y)
+{
+    return rgba[((size_t)y * (size_t)w + (size_t)x) * 4 + 3];
+}
+
+static void test_text_draw_inside_its_box(void **state)
+{
+    (void)state;
+    enum { W = 240, H = 60, X = 10, Y = 40, PX = 24 };
+    const char *text = "Hxgjγ≈·ÉA";
+    unsigned char *rgba = calloc((size_t)W * H, 4);
+    assert_non_null(rgba);
+    int advance = hud_text_draw(font, rgba, W, H, X, Y, PX, text, white);
+    assert_int_equal(advance, hud_text_width(font, PX, text));
+    int inked = 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            if (!alpha_at(rgba, W, x, y))
+                continue;
+            inked++;
+            /* above: nothing over one text height (the font's ascent is 0.93 em);
+             * below: descenders reach 0.24 em; sideways: bearings of a pixel or two */
+            if (y < Y - PX || y >= Y + PX / 3 || x < X - 2 || x >= X + advance + 2)
+                fail_msg("ink at (%d, %d), outside the text's box", x, y);
+        }
+    assert_true(inked > 100);
+    for (int y = 0; y < Y - PX; y++)
+        for (int x = 0; x < W; x++)
+            assert_int_equal(alpha_at(rgba, W, x, y), 0);
+
+    /* over an opaque picture: white text blends in, the picture stays opaque, and a transparent
+     * colour changes nothing */
+    for (size_t i = 0; i < (size_t)W * H; i++)
+        memcpy(rgba + 4 * i, (unsigned char[4]){200, 20, 20, 255}, 4);
+    const unsigned char clear[4] = {0, 255, 0, 0};
+    hud_text_draw(font, rgba, W, H, X, Y, PX, text, clear);
+    for (size_t i = 0; i < (size_t)W * H; i++)
+        assert_memory_equal(rgba + 4 * i, ((unsigned char[4]){200, 20, 20, 255}), 4);
+    hud_text_draw(font, rgba, W, H, X, Y, PX, text, white);
+    int full = 0;
+    for (size_t i = 0; i < (size_t)W * H; i++) {
+        assert_int_equal(rgba[4 * i + 3], 255);
+        full += rgba[4 * i] == 255 && rgba[4 * i + 1] == 255 && rgba[4 * i + 2] == 255;
+    }
+    assert_true(full > 20);
+    free(rgba);
+}
+
+static void test_text_clipped(void **state)
+{
+    (void)state;
+    enum { W = 40, H = 20, GUARD = 256 };
+    const char *text = "Wgγ clipped at every edge";
+    size_t size = (size_t)W * H * 4;
+    unsigned char *buf = malloc(size + 2 * GUARD);
+    assert_non_null(buf);
+    memset(buf, 0x5A, size + 2 * GUARD);
+    unsigned char *rgba = buf + GUARD;
+    memset(rgba, 0, size);
+    int width = hud_text_width(font, 24, text);
+    const int at[][2] = {{-15, 5}, {30, 30}, {-1000, 10}, {35, -3}, {0, 200}, {INT_MAX / 2, 10}, {-5, 12}};
+    for (size_t i = 0; i < sizeof at / sizeof at[0]; i++)
+        assert_int_equal(hud_text_draw(font, rgba, W, H, at[i][0], at[i][1], 24, text, white), width);
+    assert_int_equal(hud_text_draw(font, rgba, W, H, 0, 10, 600, "W", white), hud_text_width(font, 600, "W"));
+    for (size_t i = 0; i < GUARD; i++) {
+        assert_int_equal(buf[i], 0x5A);
+        assert_int_equal(buf[GUARD + size + i], 0x5A);
+    }
+    int near_left = 0;   /* the text started left of the image still shows its clipped part */
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < 4; x++)
+            near_left += alpha_at(rgba, W, x, y) != 0;
+    assert_true(near_left > 0);
+    free(buf);
+}
+
+struct rect {
+    int x0, y0, x1, y1;   /* half open */
+};
+
+/* The band grown from the first non-transparent pixel: right along its row, down its column. */
+static struct rect band_of(const unsigned char *rgba, int w, int h)
+{
+    struct rect r = {-1, -1, -1, -1};
+    for (int y = 0; y < h && r.x0 < 0; y++)
+        for (int x = 0; x < w; x++)
+            if (alpha_at(rgba, w, x, y)) {
+                r.x0 = x, r.y0 = y;
+                break;
+            }
+    assert_true(r.x0 >= 0);
+    r.x1 = r.x0, r.y1 = r.y0;
+    while (r.x1 < w && alpha_at(rgba, w, r.x1, r.y0))
+        r.x1++;
+    while (r.y1 < h && alpha_at(rgba, w, r.x0, r.y1))
+        r.y1++;
+    return r;
+}
+
+static struct rect draw_and_check_band(int w, int h, const struct hud_view *v)
+{
+    unsigned char *rgba = malloc((size_t)w * h * 4);
+    assert_non_null(rgba);
+    memset(rgba, 0x77, (size_t)w * h * 4);   /* the previous frame's HUD must go */
+    hud_draw(font, rgba, w, h, v);
+    struct rect b = band_of(rgba, w, h);
+    assert_true(b.x0 < h / 20 && b.y0 < h / 20);
+    assert_true(b.x1 < w && b.y1 < h / 2);
+    int text = 0;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            int inside = x >= b.x0 && x < b.x1 && y >= b.y0 && y < b.y1;
+            const unsigned char *p = rgba + ((size_t)y * (size_t)w + (size_t)x) * 4;
+            if (inside != (p[3] != 0))
+                fail_msg("%dx%d: pixel (%d, %d) alpha %d, band [%d, %d) x [%d, %d)", w, h, x, y, p[3], b.x0, b.x1,
+                         b.y0, b.y1);
+            text += inside && p[0] > 200 && p[1] > 200 && p[2] > 200;
+        }
+    assert_true(text > 100);   /* light text on the dark band */
+    free(rgba);
+    return b;
+}
+
+static void test_hud_scales_with_height(void **state)
+{
+    (void)state;
+    struct hud_view v = schwarzschild_view();
+    struct rect small = draw_and_check_band(1280, 720, &v);
+    struct rect large = draw_and_check_band(1920, 1080, &v);
+    double hs = (double)(small.y1 - small.y0), hl = (double)(large.y1 - large.y0);
+    double ws = (double)(small.x1 - small.x0), wl = (double)(large.x1 - large.x0);
+    print_message("band %.0fx%.0f at 720p, %.0fx%.0f at 1080p\n", ws, hs, wl, hl);
+    assert_true(fabs(hl / hs - 1.5) <= 0.02);
+    assert_true(fabs(wl / ws - 1.5) <= 0.02);
+    /* six lines of text about h/30 high: the band is at least that */
+    assert_true(hs >= 6 * 720 / 30);
+
+    /* an explanation too long for the screen wraps, at the same word at both sizes */
+    v.explanation = "Light passing the mass bends towards it; rays that come closer than 3√3 M (about "
+                    "2.6 r_s) fall in, which is the dark disc you see, larger than the horizon itself.";
+    struct rect wrapped_small = draw_and_check_band(1280, 720, &v);
+    struct rect wrapped_large = draw_and_check_band(1920, 1080, &v);
+    double ws2 = wrapped_small.y1 - wrapped_small.y0, wl2 = wrapped_large.y1 - wrapped_large.y0;
+    assert_true(ws2 > hs);
+    assert_true(fabs(wl2 / ws2 - 1.5) <= 0.02);
+}
+
+/* The length of the run of pixels in row y, from x, where a and b differ. */
+static int differing_run(const unsigned char *a, const unsigned char *b, int w, int y, int x)
+{
+    int n = 0;
+    while (x + n < w && memcmp(a + ((size_t)y * w + x + n) * 4, b + ((size_t)y * w + x + n) * 4, 4) != 0)
+        n++;
+    return n;
+}
+
+static unsigned char *draw_indicator(int w, int h, enum hud_knob knob, double lo, double hi, double value)
+{
+    struct hud_view v = schwarzschild_view();
+    v.indicator = knob;
+    v.indicator_min = lo;
+    v.indicator_max = hi;
+    v.indicator_value = value;
+    unsigned char *rgba = malloc((size_t)w * h * 4);
+    assert_non_null(rgba);
+    hud_draw(font, rgba, w, h, &v);
+    return rgba;
+}
+
+/* The bar fills in proportion to the value within its range: found as the longest run of pixels
+ * that differ between the knob at its minimum and at its maximum, then measured at other values. */
+static void check_bar(int w, int h, enum hud_knob knob, double lo, double hi)
+{
+    unsigned char *empty = draw_indicator(w, h, knob, lo, hi, lo);
+    unsigned char *full = draw_indicator(w, h, knob, lo, hi, hi);
+    int bar_x = 0, bar_y = 0, bar_w = 0;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            int n = differing_run(empty, full, w, y, x);
+            if (n > bar_w)
+                bar_w = n, bar_x = x, bar_y = y;
+            x += n;
+        }
+    assert_true(bar_y > h / 2);
+    assert_true(bar_w >= w / 5);
+    const double shares[] = {0.25, 0.5, 0.75, 1.5};
+    for (size_t i = 0; i < sizeof shares / sizeof shares[0]; i++) {
+        unsigned char *part = draw_indicator(w, h, knob, lo, hi, lo + shares[i] * (hi - lo));
+        double filled = differing_run(empty, part, w, bar_y, bar_x);
+        double expected = fmin(shares[i], 1.0) * bar_w;   /* beyond the range: full, not past it */
+        if (fabs(filled - expected) > 1.0)
+            fail_msg("%dx%d: %.2f of the range fills %.0f of %d pixels", w, h, shares[i], filled, bar_w);
+        free(part);
+    }
+    free(empty);
+    free(full);
+}
+
+static void test_indicator_bar(void **state)
+{
+    (void)state;
+    check_bar(1280, 720, HUD_KNOB_SPEED, 0.0, 0.99);
+    check_bar(1920, 1080, HUD_KNOB_MASS, 0.0, 2.0);
+    check_bar(1920, 1080, HUD_KNOB_MASS, 0.01, 5.0);
+}
+
+static void test_font_errors(void **state)
+{
+    (void)state;
+    char err[256] = "";
+    const char *missing = "/nonexistent/fonts/NoSuchFont.ttf";
+    assert_null(hud_font_open(missing, err, sizeof err));
+    assert_non_null(strstr(err, missing));
+
+    char path[] = "/tmp/bt_hud_not_a_font_XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    const char text[] = "[kiosk]\nhud = on\n";
+    assert_int_equal(write(fd, text, sizeof text - 1), (int)(sizeof text - 1));
+    close(fd);
+    err[0] = '\0';
+    struct hud_font *f = hud_font_open(path, err, sizeof err);
+    unlink(path);
+    assert_null(f);
+    assert_non_null(strstr(err, path));
+    assert_non_null(strstr(err, "not a"));
+
+    char tiny[8];   /* a short buffer gets a cut message, not an overrun */
+    assert_null(hud_font_open(missing, tiny, sizeof tiny));
+    assert_true(strlen(tiny) < sizeof tiny);
+    hud_font_close(NULL);
+}
+
+static void test_draw_without_font_clears(void **state)
+{
+    (void)state;
+    enum { W = 64, H = 36 };
+    unsigned char rgba[W * H * 4];
+    memset(rgba, 0xAB, sizeof rgba);
+    struct hud_view v = schwarzschild_view();
+    v.indicator = HUD_KNOB_SPEED;
+    v.indicator_max = 0.99;
+    hud_draw(NULL, rgba, W, H, &v);
+    for (size_t i = 0; i < sizeof rgba; i++)
+        assert_int_equal(rgba[i], 0);
+    /* a window too small for the layout still draws without writing outside it */
+    hud_draw(font, rgba, W, H, &v);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_lines_schwarzschild),
+        cmocka_unit_test(test_lines_flat_space),
+        cmocka_unit_test(test_lines_optional),
+        cmocka_unit_test(test_text_width),
+        cmocka_unit_test(test_text_characters),
+        cmocka_unit_test(test_text_draw_inside_its_box),
+        cmocka_unit_test(test_text_clipped),
+        cmocka_unit_test(test_hud_scales_with_height),
+        cmocka_unit_test(test_indicator_bar),
+        cmocka_unit_test(test_font_errors),
+        cmocka_unit_test(test_draw_without_font_clears),
+    };
+    return cmocka_run_group_tests(tests, open_font, close_font);
+}
