@@ -128,7 +128,7 @@ test-render: $(BIN) $(BUILD)/tools/accuracy_report
 # so the driver's allocations can no longer be told from ours.
 SANITIZE_FLAGS := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
 ASAN_BINS := $(TEST_BINS:$(BUILD)/%=build/asan/%)
-GL_TESTS  := $(basename $(notdir $(shell grep -l 'hard_cases.h\|gl_context_create\|render_frame' $(TEST_SRCS))))
+GL_TESTS  := $(basename $(notdir $(shell grep -l 'hard_cases.h\|gl_context_create\|render_frame\|kiosk_run' $(TEST_SRCS))))
 test-sanitize:
 	@$(MAKE) --no-print-directory BUILD=build/asan BIN=build/asan/bentray SANITIZE="$(SANITIZE_FLAGS)" \
 	    build/asan/bentray $(ASAN_BINS)

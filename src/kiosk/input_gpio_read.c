@@ -41,6 +41,8 @@ static int read_line(struct gpio_source *s, int i)
             continue;
         if (got < 0)
             return -1;
+        if (got == 0)
+            break;  /* ready but empty: nothing to wait for in a loop that must not block */
         for (int k = 0; k < got; k++, n++) {
             s->edges[i][n].t_ns = (uint64_t)ev[k].ts.tv_sec * NS_PER_S + (uint64_t)ev[k].ts.tv_nsec;
             s->edges[i][n].line = i;

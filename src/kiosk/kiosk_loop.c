@@ -66,6 +66,7 @@ struct kiosk {
     double second_start;
     /* headless frames */
     int frames_written;
+    long drawn;                      /* previews and bands drawn */
 };
 
 static double kiosk_now(const struct kiosk *k)
@@ -96,7 +97,11 @@ static void hud_view_of(struct kiosk *k, struct hud_view *v)
         v->indicator_min = knob->min;
         v->indicator_max = knob->max;
     }
-    v->notice = k->now < k->notice_until ? k->notice : k->attract ? "touch a knob or a button to take over" : NULL;
+    v->notice = k->now < k->notice_until ? k->notice
+              : k->attract              ? "touch a knob or a button to take over"
+              : k->state.pipeline_view  ? "pipeline: image, ray positions, directions | segment of the hit, "
+                                          "step size, outcome (green object, blue sky, black captured)"
+                                        : NULL;
 }
 
 /* Redraws the HUD image when its text changed; returns 1 when it did. */
@@ -110,11 +115,11 @@ static int update_hud(struct kiosk *k, char *err, size_t errlen, int *failed)
     char lines[HUD_MAX_LINES][HUD_LINE_LEN];
     int n = hud_lines(&v, lines, HUD_MAX_LINES);
     char text[sizeof k->hud_text];
-    size_t used = 0;
-    text[0] = '\0';
+    /* the indicator is drawn but not in the text: its coming and going must redraw the HUD too (its
+     * bar moves with the value, which the text shows) */
+    size_t used = (size_t)snprintf(text, sizeof text, "indicator %d\n", (int)v.indicator);
     for (int i = 0; i < n && used < sizeof text; i++)
         used += (size_t)snprintf(text + used, sizeof text - used, "%s\n", lines[i]);
-    /* the indicator's bar moves with the value, which the text shows too */
     if (strcmp(text, k->hud_text) == 0)
         return 0;
     memcpy(k->hud_text, text, sizeof text);
@@ -279,6 +284,7 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
         drew = 1;
     }
     k->draws_this_second += drew;
+    k->drawn += drew;
     if (k->now - k->second_start >= 1.0) {
         k->draws_last_second = k->draws_this_second;
         k->draws_this_second = 0;
@@ -469,7 +475,8 @@ int kiosk_run(const struct kiosk_config *c, const struct kiosk_run_options *o)
             break;
     }
     service_stopping();
-    fprintf(k.log, "bentray kiosk: stopped after %ld frames%s\n", k.turn, stop_requested ? " (signal)" : "");
+    fprintf(k.log, "bentray kiosk: stopped after %ld turns of the loop, %ld frames drawn%s\n", k.turn, k.drawn,
+            stop_requested ? " (signal)" : "");
     kiosk_close(&k);
     return rc;
 }

@@ -223,9 +223,13 @@ static struct gl_context *init_egl_x11(struct x11_window *w, int width, int heig
         .background_pixel = 0,
         .border_pixel = 0,
         .event_mask = KeyPressMask | StructureNotifyMask,
+        /* A kiosk at rest draws nothing: what another window covered (a notification, a screen
+         * saver) must come back without a redraw, so the server keeps the window's pixels. */
+        .backing_store = Always,
     };
     w->window = XCreateWindow(w->dpy, root, 0, 0, (unsigned)width, (unsigned)height, 0, visual->depth, InputOutput,
-                              visual->visual, CWColormap | CWBackPixel | CWBorderPixel | CWEventMask, &attrs);
+                              visual->visual, CWColormap | CWBackPixel | CWBorderPixel | CWEventMask | CWBackingStore,
+                              &attrs);
     XFree(visual);
     if (!w->window) {
         snprintf(err, errlen, "x11: cannot create a %dx%d window", width, height);

@@ -18,22 +18,24 @@
 #include <string.h>
 #include <unistd.h>
 
-#define FRAMES 7
+#define FRAMES 8
+#define RESET_FRAME 6
+#define PIPELINE_FRAME 7
 static struct kiosk_config config;
 static char out_dir[64];
 static unsigned char *frames[FRAMES];
 static int width, height;
 
-static int run_kiosk(void **state)
+/* Runs the kiosk of config_path until it has written n frames; reads them into out. */
+static void run_config(const char *config_path, int n, unsigned char **out)
 {
-    (void)state;
     struct kiosk_config_error e;
-    if (kiosk_config_load(&config, "tests/kiosk/headless.conf", &e) != 0)
+    if (kiosk_config_load(&config, config_path, &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     snprintf(out_dir, sizeof out_dir, "/tmp/bt_kiosk_XXXXXX");
     assert_non_null(mkdtemp(out_dir));
     snprintf(config.display.headless_out, sizeof config.display.headless_out, "%s", out_dir);
-    config.display.headless_frames = FRAMES;
+    config.display.headless_frames = n;
     if (kiosk_config_check(&config, &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     FILE *log = tmpfile();
@@ -45,16 +47,22 @@ static int run_kiosk(void **state)
         print_message("log: %s", line);
     fclose(log);
     assert_int_equal(rc, 0);
-    for (int i = 0; i < FRAMES; i++) {
+    for (int i = 0; i < n; i++) {
         char path[128];
         snprintf(path, sizeof path, "%s/frame_%04d.png", out_dir, i + 1);
         char err[256];
-        assert_int_equal(png_read_rgba8(path, 4096, &width, &height, &frames[i], err, sizeof err), 0);
+        assert_int_equal(png_read_rgba8(path, 4096, &width, &height, &out[i], err, sizeof err), 0);
         assert_int_equal(width, config.kiosk.width);
         assert_int_equal(height, config.kiosk.height);
         unlink(path);
     }
     rmdir(out_dir);
+}
+
+static int run_kiosk(void **state)
+{
+    (void)state;
+    run_config("tests/kiosk/headless.conf", FRAMES, frames);
     return 0;
 }
 
@@ -103,14 +111,19 @@ static int max_difference(const unsigned char *a, const unsigned char *b)
     return worst;
 }
 
-static void check_frame(int frame, const struct kiosk_state *st, const char *what)
+static void check_image(const unsigned char *image, int frame, const struct kiosk_state *st, const char *what)
 {
     unsigned char *want = expected_image(st, 0);
-    int worst = max_difference(frames[frame], want);
+    int worst = max_difference(image, want);
     print_message("frame %d (%s): largest difference from the renderer's image %d\n", frame + 1, what, worst);
     /* the refined frame is the renderer's image band by band, copied texel for texel */
     assert_int_equal(worst, 0);
     free(want);
+}
+
+static void check_frame(int frame, const struct kiosk_state *st, const char *what)
+{
+    check_image(frames[frame], frame, st, what);
 }
 
 static void test_refined_frames_are_the_scenes_images(void **state)
@@ -133,9 +146,9 @@ static void test_refined_frames_are_the_scenes_images(void **state)
 static void test_controls_change_the_picture(void **state)
 {
     (void)state;
-    for (int i = 1; i < FRAMES - 1; i++)
+    for (int i = 1; i < FRAMES; i++)
         assert_true(max_difference(frames[i], frames[i - 1]) > 0);
-    assert_int_equal(max_difference(frames[FRAMES - 1], frames[0]), 0);
+    assert_int_equal(max_difference(frames[RESET_FRAME], frames[0]), 0);
 }
 
 /* Bilinear upscaling with texel centres at half-integers and clamped edges, as GL filters. */
@@ -176,12 +189,67 @@ static void test_preview_comes_first(void **state)
     assert_true(max_difference(frames[1], frames[2]) > 0);
 }
 
+/* After idle_seconds without input the tour plays (its own knob turns and scene change); the first
+ * touch of a knob ends it at once, from the start state (tests/kiosk/attract.conf). */
+static void test_attract_mode(void **state)
+{
+    (void)state;
+    static struct kiosk_config visitor_config;
+    visitor_config = config;
+    unsigned char *shown[3];
+    run_config("tests/kiosk/attract.conf", 3, shown);
+    struct kiosk_state st;
+    kiosk_state_reset(&st, &config);
+    check_image(shown[0], 0, &st, "before the tour");
+    st.speed = knob_turn(&config.speed, st.speed, 10);
+    st.scene = 1;
+    check_image(shown[1], 1, &st, "the tour, one second in");
+    kiosk_state_reset(&st, &config);
+    st.mass = knob_turn(&config.mass, st.mass, 2);
+    check_image(shown[2], 2, &st, "a visitor took over");
+    for (int i = 0; i < 3; i++)
+        free(shown[i]);
+    config = visitor_config;
+}
+
+/* The pipeline view shows the renderer's own ray state in a 3 x 2 grid; its last panel colours each
+ * ray by its outcome, in exactly one of five colours (shaders_es/kiosk_pipeline.glsl). The start
+ * view of the black hole has rays that hit objects, rays that reach the sky and captured rays. */
+static void test_pipeline_view(void **state)
+{
+    (void)state;
+    static const unsigned char outcome[5][3] = {
+        {51, 204, 77}, {77, 128, 255}, {0, 0, 0}, {230, 26, 26}, {230, 26, 230}};
+    int seen[5] = {0}, other = 0;
+    int pw = width / 3, ph = height / 2;
+    /* the outcome panel, bottom right (rows top-down), less a pixel at each edge: a size that does
+     * not divide by 3 leaves a border column that may belong to the neighbour */
+    for (int y = height - ph + 1; y < height - 1; y++)
+        for (int x = 2 * pw + 1; x < 3 * pw - 1; x++) {
+            const unsigned char *p = &frames[PIPELINE_FRAME][((size_t)y * width + x) * 4];
+            int k = 0;
+            while (k < 5 && (abs(p[0] - outcome[k][0]) > 1 || abs(p[1] - outcome[k][1]) > 1 ||
+                             abs(p[2] - outcome[k][2]) > 1))
+                k++;
+            if (k < 5)
+                seen[k]++;
+            else
+                other++;
+        }
+    print_message("outcome panel: %d object, %d sky, %d captured, %d unfinished, %d failed, %d other pixels\n",
+                  seen[0], seen[1], seen[2], seen[3], seen[4], other);
+    assert_int_equal(other, 0);
+    assert_true(seen[0] > 0 && seen[1] > 0 && seen[2] > 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_refined_frames_are_the_scenes_images),
         cmocka_unit_test(test_controls_change_the_picture),
         cmocka_unit_test(test_preview_comes_first),
+        cmocka_unit_test(test_pipeline_view),
+        cmocka_unit_test(test_attract_mode),
     };
     return cmocka_run_group_tests(tests, run_kiosk, free_frames);
 }
