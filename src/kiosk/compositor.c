@@ -3,21 +3,15 @@
 #include "gl/caps.h"
 #include "gl/quad.h"
 #include "gl/shader.h"
+#include "gl/texture.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+/* The canvas and the HUD, 8-bit RGBA; each blit() sets the filter its scale needs. */
 static GLuint linear_texture(int width, int height)
 {
-    GLuint tex;
-    glGenTextures(1, &tex);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
-    return tex;
+    return texture_create(GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, width, height, GL_LINEAR);
 }
 
 int compositor_init(struct compositor *c, const struct gl_context *gl, int width, int height, char *err,

@@ -1,4 +1,5 @@
-/* Opening an input source by its configured type, and the loop's clock. */
+/* Opening an input source by its configured type, the parts every source is made of, and the
+ * loop's clock. */
 #include "kiosk/input.h"
 #include <stdlib.h>
 #include <time.h>
@@ -26,6 +27,29 @@ struct input_source *input_open(const struct kiosk_config *c, int index, FILE *l
     default:
         return NULL;
     }
+}
+
+struct input_source *input_source_new(const struct kiosk_config *c, int index, FILE *log, size_t priv_size,
+                                      int (*fds)(struct input_source *src, struct pollfd *out, int max),
+                                      int (*drain)(struct input_source *src, double now,
+                                                   struct input_event *out, int max),
+                                      void (*close)(struct input_source *src))
+{
+    struct input_source *src = calloc(1, sizeof *src);
+    void *priv = calloc(1, priv_size);
+    if (src == NULL || priv == NULL) {
+        free(src);
+        free(priv);
+        return NULL;
+    }
+    src->cfg = &c->inputs[index];
+    src->index = index;
+    src->log = log;
+    src->fds = fds;
+    src->drain = drain;
+    src->close = close;
+    src->priv = priv;
+    return src;
 }
 
 void input_close(struct input_source *src)

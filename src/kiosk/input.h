@@ -64,6 +64,18 @@ struct input_source *input_open_gpio(const struct kiosk_config *c, int index, FI
 struct input_source *input_open_keyboard(const struct kiosk_config *c, int index, FILE *log, double now);
 struct input_source *input_open_script(const struct kiosk_config *c, int index, FILE *log, double now);
 
+/* A source for input `index` with its family's callbacks and priv_size zeroed bytes of the
+ * family's own state at src->priv (which its close frees); NULL when out of memory. */
+struct input_source *input_source_new(const struct kiosk_config *c, int index, FILE *log, size_t priv_size,
+                                      int (*fds)(struct input_source *src, struct pollfd *out, int max),
+                                      int (*drain)(struct input_source *src, double now,
+                                                   struct input_event *out, int max),
+                                      void (*close)(struct input_source *src));
+
+/* An event of `kind` from source `source` at loop time t, every other field zero and bit -1 (no
+ * button bit): the kind's own field is the caller's to set. */
+struct input_event input_event_at(enum input_event_kind kind, int source, double t);
+
 /* The loop's clock: CLOCK_MONOTONIC in seconds. */
 double input_clock(void);
 

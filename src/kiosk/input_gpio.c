@@ -179,20 +179,11 @@ struct input_source *input_open_gpio_api(const struct kiosk_config *c, int index
     const struct kiosk_input *in = &c->inputs[index];
     if (in->type != KIOSK_INPUT_GPIO_ENCODER && in->type != KIOSK_INPUT_GPIO_BUTTON)
         return NULL;
-    struct input_source *src = calloc(1, sizeof *src);
-    struct gpio_source *s = calloc(1, sizeof *s);
-    if (src == NULL || s == NULL) {
-        free(src);
-        free(s);
+    struct input_source *src = input_source_new(c, index, log, sizeof(struct gpio_source), gpio_source_fds,
+                                                gpio_source_drain, gpio_source_close);
+    if (src == NULL)
         return NULL;
-    }
-    src->cfg = in;
-    src->index = index;
-    src->log = log;
-    src->fds = gpio_source_fds;
-    src->drain = gpio_source_drain;
-    src->close = gpio_source_close;
-    src->priv = s;
+    struct gpio_source *s = src->priv;
     s->api = api;
     input_queue_clear(&s->queue);
     input_retry_init(&s->retry, now);

@@ -6,17 +6,6 @@
 #define NS_PER_S 1e9
 #define NS_PER_MS 1000000ull
 
-static struct input_event event_at(enum input_event_kind kind, int source, double t)
-{
-    struct input_event e;
-    memset(&e, 0, sizeof e);
-    e.t = t;
-    e.kind = kind;
-    e.source = source;
-    e.bit = -1;
-    return e;
-}
-
 int input_gpio_decoder_encoder(struct input_gpio_decoder *g, int source, int counts_per_detent, int a, int b)
 {
     memset(g, 0, sizeof *g);
@@ -43,8 +32,8 @@ int input_gpio_decoder_button(struct input_gpio_decoder *g, int source, int debo
 static void button_event(const struct input_gpio_decoder *g, enum button_event which, uint64_t settled_ns,
                          int64_t offset_ns, struct input_event *out)
 {
-    *out = event_at(which == BUTTON_PRESS ? INPUT_PRESS : INPUT_RELEASE, g->source,
-                    input_gpio_loop_time(settled_ns, offset_ns));
+    *out = input_event_at(which == BUTTON_PRESS ? INPUT_PRESS : INPUT_RELEASE, g->source,
+                          input_gpio_loop_time(settled_ns, offset_ns));
 }
 
 int input_gpio_decoder_edge(struct input_gpio_decoder *g, const struct line_event *e, int64_t offset_ns,
@@ -60,7 +49,7 @@ int input_gpio_decoder_edge(struct input_gpio_decoder *g, const struct line_even
         int detent = quadrature_edge(&g->q, g->a, g->b);
         if (detent == 0)
             return 0;
-        *out = event_at(INPUT_TURN, g->source, input_gpio_loop_time(e->t_ns, offset_ns));
+        *out = input_event_at(INPUT_TURN, g->source, input_gpio_loop_time(e->t_ns, offset_ns));
         out->counts = detent;
         return 1;
     }

@@ -153,20 +153,11 @@ struct input_source *input_open_hid_api(const struct kiosk_config *c, int index,
     const struct kiosk_input *in = &c->inputs[index];
     if (in->type != KIOSK_INPUT_POWERMATE && in->type != KIOSK_INPUT_HID)
         return NULL;
-    struct input_source *src = calloc(1, sizeof *src);
-    struct hid_source *s = calloc(1, sizeof *s);
-    if (src == NULL || s == NULL) {
-        free(src);
-        free(s);
+    struct input_source *src = input_source_new(c, index, log, sizeof(struct hid_source), hid_source_fds,
+                                                hid_source_drain, hid_source_close);
+    if (src == NULL)
         return NULL;
-    }
-    src->cfg = in;
-    src->index = index;
-    src->log = log;
-    src->fds = hid_source_fds;
-    src->drain = hid_source_drain;
-    src->close = hid_source_close;
-    src->priv = s;
+    struct hid_source *s = src->priv;
     s->api = api;
     s->is_powermate = in->type == KIOSK_INPUT_POWERMATE;
     s->n_buttons = s->is_powermate ? 1 : in->buttons;

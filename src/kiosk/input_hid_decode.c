@@ -30,27 +30,16 @@ void input_hid_state_reset(struct input_hid_state *s)
     s->position = 0.0;
 }
 
-static struct input_event event_at(enum input_event_kind kind, int source, double t)
-{
-    struct input_event e;
-    memset(&e, 0, sizeof e);
-    e.t = t;
-    e.kind = kind;
-    e.source = source;
-    e.bit = -1;
-    return e;
-}
-
 int input_hid_events(struct input_hid_state *s, const struct knob_reading *r, int n_buttons, int single_button,
                      int source, double t, struct input_event *out)
 {
     int n = 0;
     if (r->has_delta && r->delta != 0) {
-        out[n] = event_at(INPUT_TURN, source, t);
+        out[n] = input_event_at(INPUT_TURN, source, t);
         out[n++].counts = r->delta;
     }
     if (r->has_position && (!s->has_position || r->position != s->position)) {
-        out[n] = event_at(INPUT_POSITION, source, t);
+        out[n] = input_event_at(INPUT_POSITION, source, t);
         out[n++].position = r->position;
         s->has_position = 1;
         s->position = r->position;
@@ -61,7 +50,7 @@ int input_hid_events(struct input_hid_state *s, const struct knob_reading *r, in
         unsigned mask = 1u << i;
         if ((r->buttons & mask) == (s->buttons & mask))
             continue;
-        out[n] = event_at(r->buttons & mask ? INPUT_PRESS : INPUT_RELEASE, source, t);
+        out[n] = input_event_at(r->buttons & mask ? INPUT_PRESS : INPUT_RELEASE, source, t);
         out[n++].bit = single_button ? -1 : i;
         s->buttons ^= mask;
     }

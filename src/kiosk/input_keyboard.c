@@ -99,20 +99,11 @@ static void keyboard_close(struct input_source *src)
 struct input_source *input_open_keyboard(const struct kiosk_config *c, int index, FILE *log, double now)
 {
     (void)now;
-    struct input_source *src = calloc(1, sizeof *src);
-    struct keyboard *k = calloc(1, sizeof *k);
-    if (!src || !k) {
-        free(src);
-        free(k);
+    struct input_source *src =
+        input_source_new(c, index, log, sizeof(struct keyboard), keyboard_fds, keyboard_drain, keyboard_close);
+    if (!src)
         return NULL;
-    }
-    src->cfg = &c->inputs[index];
-    src->index = index;
-    src->log = log;
-    src->fds = keyboard_fds;
-    src->drain = keyboard_drain;
-    src->close = keyboard_close;
-    src->priv = k;
+    struct keyboard *k = src->priv;
     k->fd = STDIN_FILENO;
     k->saved_flags = fcntl(k->fd, F_GETFL);
     if (k->saved_flags < 0) {

@@ -34,20 +34,11 @@ static void script_close(struct input_source *src)
 
 struct input_source *input_open_script(const struct kiosk_config *c, int index, FILE *log, double now)
 {
-    struct input_source *src = calloc(1, sizeof *src);
-    struct script_source *s = calloc(1, sizeof *s);
-    if (!src || !s) {
-        free(src);
-        free(s);
+    struct input_source *src =
+        input_source_new(c, index, log, sizeof(struct script_source), script_fds, script_drain, script_close);
+    if (!src)
         return NULL;
-    }
-    src->cfg = &c->inputs[index];
-    src->index = index;
-    src->log = log;
-    src->fds = script_fds;
-    src->drain = script_drain;
-    src->close = script_close;
-    src->priv = s;
+    struct script_source *s = src->priv;
     char err[600];
     if (script_load(&s->script, src->cfg->path, err, sizeof err) != 0) {
         fprintf(log, "input %s: %s; the script is not replayed\n", src->cfg->name, err);

@@ -62,9 +62,12 @@ void kiosk_preview_scene(const struct scene *full, const struct kiosk_main *k, s
     *out = *full;
     out->render.width = k->preview_width;
     out->render.height = k->preview_height;
-    if (full->render.step_control == STEP_FIXED && full->render.segments >= PREVIEW_STEP_FACTOR) {
+    const int fewer = PREVIEW_STEP_FACTOR * PREVIEW_SEGMENT_FACTOR;
+    if (full->render.step_control == STEP_FIXED && full->render.segments >= fewer &&
+        full->render.steps_per_segment * PREVIEW_SEGMENT_FACTOR <= SCENE_MAX_STEPS_PER_SEGMENT) {
         out->render.step_size = full->render.step_size * PREVIEW_STEP_FACTOR;
-        out->render.segments = (full->render.segments + PREVIEW_STEP_FACTOR - 1) / PREVIEW_STEP_FACTOR;
+        out->render.steps_per_segment = full->render.steps_per_segment * PREVIEW_SEGMENT_FACTOR;
+        out->render.segments = (full->render.segments + fewer - 1) / fewer;
     }
 }
 

@@ -2,12 +2,13 @@
  * state says, and the progression from a quick preview to the refined frame.
  *
  * A change of state draws a preview at once: the preview size, with steps PREVIEW_STEP_FACTOR
- * times longer and as many times fewer segments (the same path length), upscaled over the
- * canvas. When nothing changes, each frame refines one band of rows at full size and quality,
- * bottom to top, until the canvas is whole. A band never costs more than a preview (it has at
- * most preview pixels x PREVIEW_STEP_FACTOR rays, each taking PREVIEW_STEP_FACTOR times the
- * steps), so input waits at most one preview frame; and there are at least refine_frames bands.
- * The bands follow from sizes alone, never from timing, so a run is the same on any machine. */
+ * times longer, PREVIEW_SEGMENT_FACTOR times more of them per segment and as many times fewer
+ * segments (the same path length in fewer passes), upscaled over the canvas. When nothing
+ * changes, each frame refines one band of rows at full size and quality, bottom to top, until the
+ * canvas is whole. A band integrates as many steps as a preview (at most preview pixels x
+ * PREVIEW_STEP_FACTOR rays), so input waits about one preview frame; and there are at least
+ * refine_frames bands. The bands follow from sizes alone, never from timing, so a run is the
+ * same on any machine. Scenes with adaptive steps keep their own step control in the preview. */
 #ifndef BT_KIOSK_VIEW_H
 #define BT_KIOSK_VIEW_H
 #include "kiosk/compositor.h"
@@ -15,6 +16,7 @@
 #include "render/renderer.h"
 
 #define PREVIEW_STEP_FACTOR 2
+#define PREVIEW_SEGMENT_FACTOR 2
 
 struct kiosk_view {
     const struct kiosk_config *cfg;

@@ -2,7 +2,7 @@
  * in one mode, EGL draws into a GBM surface, each frame is scanned out by a page flip. What was on
  * the CRTC before (the console) is put back at close. */
 #include "kiosk/screen.h"
-#include "gl/caps.h"
+#include "kiosk/screen_egl.h"
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <dirent.h>
@@ -23,12 +23,6 @@
 #define KMS_MAX_CARDS 16
 /* ms: a page flip comes within one refresh (17 ms at 60 Hz); a driver that lost it must not stop the loop */
 #define KMS_FLIP_TIMEOUT_MS 1000
-
-struct kms_egl {
-    EGLDisplay display;
-    EGLContext context;
-    EGLSurface surface;
-};
 
 struct kms {
     char path[KIOSK_PATH_LEN];
@@ -351,14 +345,11 @@ static int wait_flip(struct kms *k, char *err, size_t errlen)
 static int kms_present(struct screen *s, char *err, size_t errlen)
 {
     struct kms *k = s->priv;
-    struct kms_egl *egl = s->gl->priv;
     /* A flip that timed out last time may have completed since: its buffer is needed back. */
     if (k->flip_bo && wait_flip(k, err, errlen) != 0)
         return -1;
-    if (!eglSwapBuffers(egl->display, egl->surface)) {
-        say(err, errlen, "%s: eglSwapBuffers failed (EGL error 0x%x)", k->path, eglGetError());
+    if (screen_egl_swap(s->gl, err, errlen) != 0)
         return -1;
-    }
     struct gbm_bo *bo = gbm_surface_lock_front_buffer(k->surface);
     if (!bo) {
         say(err, errlen, "%s: no front buffer after the swap (gbm_surface_lock_front_buffer)", k->path);
@@ -407,31 +398,6 @@ static int kms_fd(struct screen *s)
 {
     struct kms *k = s->priv;
     return k->fd;
-}
-
-static void *kms_get_proc(const char *name)
-{
-    void *p;
-    __eglMustCastToProperFunctionPointerType f = eglGetProcAddress(name);
-    memcpy(&p, &f, sizeof p);
-    return p;
-}
-
-static void kms_egl_destroy(struct gl_context *ctx)
-{
-    struct kms_egl *egl = ctx->priv;
-    if (egl) {
-        if (egl->display != EGL_NO_DISPLAY) {
-            eglMakeCurrent(egl->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-            if (egl->surface != EGL_NO_SURFACE)
-                eglDestroySurface(egl->display, egl->surface);
-            if (egl->context != EGL_NO_CONTEXT)
-                eglDestroyContext(egl->display, egl->context);
-            eglTerminate(egl->display);
-        }
-        free(egl);
-    }
-    free(ctx);
 }
 
 static void kms_close(struct screen *s)
@@ -502,80 +468,23 @@ static int config_for_format(EGLDisplay dpy, uint32_t format, EGLConfig *out)
     return found;
 }
 
-/* EGL on the GBM device, drawing into the GBM surface, an ES2 context current on it. */
-static struct gl_context *init_egl_gbm(struct kms *k, char *err, size_t errlen)
+/* EGL on the GBM device, drawing into the GBM surface, an ES2 context current on it. On failure
+ * the caller's close frees what was made. */
+static int init_egl_gbm(struct screen *s, struct kms *k, char *err, size_t errlen)
 {
-    const char *client_ext = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    if (!client_ext || !(extension_list_has(client_ext, "EGL_KHR_platform_gbm") ||
-                         extension_list_has(client_ext, "EGL_MESA_platform_gbm"))) {
-        say(err, errlen, "%s: EGL has no GBM platform (EGL_KHR_platform_gbm); install Mesa's EGL (libegl-mesa0)",
-            k->path);
-        return NULL;
-    }
-    PFNEGLGETPLATFORMDISPLAYEXTPROC get_platform_display =
-        (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
-    PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC create_window_surface =
-        (PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC)eglGetProcAddress("eglCreatePlatformWindowSurfaceEXT");
-    if (!get_platform_display || !create_window_surface) {
-        say(err, errlen, "%s: EGL lacks eglGetPlatformDisplayEXT or eglCreatePlatformWindowSurfaceEXT", k->path);
-        return NULL;
-    }
-    struct gl_context *ctx = calloc(1, sizeof *ctx);
-    struct kms_egl *egl = calloc(1, sizeof *egl);
-    if (!ctx || !egl) {
-        free(ctx);
-        free(egl);
-        say(err, errlen, "%s: out of memory", k->path);
-        return NULL;
-    }
-    egl->display = EGL_NO_DISPLAY;
-    egl->context = EGL_NO_CONTEXT;
-    egl->surface = EGL_NO_SURFACE;
-    ctx->backend = "egl";
-    ctx->dialect = DIALECT_GLSL_ES_100;
-    ctx->is_es = 1;
-    ctx->get_proc = kms_get_proc;
-    ctx->destroy = kms_egl_destroy;
-    ctx->priv = egl;
-
-    EGLint major = 0, minor = 0;
-    egl->display = get_platform_display(EGL_PLATFORM_GBM_KHR, k->gbm, NULL);
-    if (egl->display == EGL_NO_DISPLAY || !eglInitialize(egl->display, &major, &minor)) {
-        say(err, errlen, "%s: cannot initialise EGL on GBM (EGL error 0x%x)", k->path, eglGetError());
-        egl->display = EGL_NO_DISPLAY;
-        goto fail;
-    }
-    snprintf(ctx->platform_version, sizeof ctx->platform_version, "EGL %d.%d (GBM, %.32s)", major, minor, k->path);
-    if (!eglBindAPI(EGL_OPENGL_ES_API)) {
-        say(err, errlen, "%s: the OpenGL ES API is not available in EGL", k->path);
-        goto fail;
-    }
+    static const struct screen_egl_platform gbm = {EGL_PLATFORM_GBM_KHR, "GBM", "GBM", "EGL_KHR_platform_gbm",
+                                                   "EGL_MESA_platform_gbm"};
+    char version_label[48];
+    snprintf(version_label, sizeof version_label, "GBM, %.32s", k->path);
+    s->gl = screen_egl_open(&gbm, k->gbm, k->path, version_label, err, errlen);
+    if (!s->gl)
+        return -1;
     EGLConfig config;
-    if (config_for_format(egl->display, GBM_FORMAT_XRGB8888, &config) != 0) {
+    if (config_for_format(screen_egl_display(s->gl), GBM_FORMAT_XRGB8888, &config) != 0) {
         say(err, errlen, "%s: no EGL config renders XRGB8888 for scan-out", k->path);
-        goto fail;
+        return -1;
     }
-    egl->surface = create_window_surface(egl->display, config, k->surface, NULL);
-    if (egl->surface == EGL_NO_SURFACE) {
-        say(err, errlen, "%s: cannot create an EGL surface on GBM (EGL error 0x%x)", k->path, eglGetError());
-        goto fail;
-    }
-    /* Drivers may give a higher compatible version than ES2. */
-    static const EGLint ctx_attribs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
-    egl->context = eglCreateContext(egl->display, config, EGL_NO_CONTEXT, ctx_attribs);
-    if (egl->context == EGL_NO_CONTEXT) {
-        say(err, errlen, "%s: cannot create an OpenGL ES 2 context (EGL error 0x%x)", k->path, eglGetError());
-        goto fail;
-    }
-    if (!eglMakeCurrent(egl->display, egl->surface, egl->surface, egl->context)) {
-        say(err, errlen, "%s: cannot make the context current (EGL error 0x%x)", k->path, eglGetError());
-        goto fail;
-    }
-    return ctx;
-
-fail:
-    kms_egl_destroy(ctx);
-    return NULL;
+    return screen_egl_attach(s->gl, config, k->surface, err, errlen);
 }
 
 struct screen *screen_open_kms(const struct kiosk_config *c, char *err, size_t errlen)
@@ -620,14 +529,7 @@ struct screen *screen_open_kms(const struct kiosk_config *c, char *err, size_t e
         kms_close(s);
         return NULL;
     }
-    s->gl = init_egl_gbm(k, err, errlen);
-    if (!s->gl) {
-        kms_close(s);
-        return NULL;
-    }
-    const char *missing = gl_api_load(s->gl->get_proc);
-    if (missing) {
-        say(err, errlen, "%s: the GL entry point %s is missing", k->path, missing);
+    if (init_egl_gbm(s, k, err, errlen) != 0) {
         kms_close(s);
         return NULL;
     }

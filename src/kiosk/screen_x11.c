@@ -3,7 +3,7 @@
  * stops the kiosk. */
 #include "kiosk/screen.h"
 #include "kiosk/keymap.h"
-#include "gl/caps.h"
+#include "kiosk/screen_egl.h"
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <X11/Xlib.h>
@@ -15,13 +15,6 @@
 
 #define X11_WINDOW_TITLE "bentray kiosk"
 
-/* The GL half, owned by s->gl: it goes before the window and the connection it draws into. */
-struct x11_egl {
-    EGLDisplay display;
-    EGLContext context;
-    EGLSurface surface;
-};
-
 /* The window-system half. */
 struct x11_window {
     Display *dpy;
@@ -29,31 +22,6 @@ struct x11_window {
     Colormap colormap;
     Atom wm_protocols, wm_delete_window;
 };
-
-static void *x11_get_proc(const char *name)
-{
-    void *p;
-    __eglMustCastToProperFunctionPointerType f = eglGetProcAddress(name);
-    memcpy(&p, &f, sizeof p);
-    return p;
-}
-
-static void x11_egl_destroy(struct gl_context *ctx)
-{
-    struct x11_egl *egl = ctx->priv;
-    if (egl) {
-        if (egl->display != EGL_NO_DISPLAY) {
-            eglMakeCurrent(egl->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-            if (egl->surface != EGL_NO_SURFACE)
-                eglDestroySurface(egl->display, egl->surface);
-            if (egl->context != EGL_NO_CONTEXT)
-                eglDestroyContext(egl->display, egl->context);
-            eglTerminate(egl->display);
-        }
-        free(egl);
-    }
-    free(ctx);
-}
 
 static void x11_window_destroy(struct x11_window *w)
 {
@@ -73,6 +41,7 @@ static void x11_close(struct screen *s)
 {
     if (!s)
         return;
+    /* the GL half goes before the window and the connection it draws into */
     if (s->gl)
         s->gl->destroy(s->gl);
     x11_window_destroy(s->priv);
@@ -142,79 +111,32 @@ static int x11_events(struct screen *s, double now, struct input_event *out, int
 
 static int x11_present(struct screen *s, char *err, size_t errlen)
 {
-    struct x11_egl *egl = s->gl->priv;
-    if (!eglSwapBuffers(egl->display, egl->surface)) {
-        snprintf(err, errlen, "x11: eglSwapBuffers failed (EGL error 0x%x)", eglGetError());
-        return -1;
-    }
-    return 0;
+    return screen_egl_swap(s->gl, err, errlen);
 }
 
-/* EGL on the X11 connection: a config with a native visual, the window in that visual, an ES2
- * context current on it. The window is made here because its visual comes from the config. */
-static struct gl_context *init_egl_x11(struct x11_window *w, int width, int height, int vsync,
-                                       char *err, size_t errlen)
+/* The window in the visual of the EGL config, an ES2 context current on it. The window is made
+ * here, between the two steps of screen_egl.h, because its visual comes from the config. On
+ * failure the caller's close frees the context and the window. */
+static int attach_window(struct screen *s, struct x11_window *w, int vsync, char *err, size_t errlen)
 {
-    const char *client_ext = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    if (!client_ext || !(extension_list_has(client_ext, "EGL_KHR_platform_x11") ||
-                         extension_list_has(client_ext, "EGL_EXT_platform_x11"))) {
-        snprintf(err, errlen, "x11: EGL has no X11 platform (EGL_KHR_platform_x11); install Mesa's EGL (libegl-mesa0)");
-        return NULL;
-    }
-    PFNEGLGETPLATFORMDISPLAYEXTPROC get_platform_display =
-        (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
-    PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC create_window_surface =
-        (PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC)eglGetProcAddress("eglCreatePlatformWindowSurfaceEXT");
-    if (!get_platform_display || !create_window_surface) {
-        snprintf(err, errlen, "x11: EGL lacks eglGetPlatformDisplayEXT or eglCreatePlatformWindowSurfaceEXT");
-        return NULL;
-    }
-    struct gl_context *ctx = calloc(1, sizeof *ctx);
-    struct x11_egl *egl = calloc(1, sizeof *egl);
-    if (!ctx || !egl) {
-        free(ctx);
-        free(egl);
-        snprintf(err, errlen, "x11: out of memory");
-        return NULL;
-    }
-    egl->display = EGL_NO_DISPLAY;
-    egl->context = EGL_NO_CONTEXT;
-    egl->surface = EGL_NO_SURFACE;
-    ctx->backend = "egl";
-    ctx->dialect = DIALECT_GLSL_ES_100;
-    ctx->is_es = 1;
-    ctx->get_proc = x11_get_proc;
-    ctx->destroy = x11_egl_destroy;
-    ctx->priv = egl;
-
-    EGLint major = 0, minor = 0;
-    egl->display = get_platform_display(EGL_PLATFORM_X11_KHR, w->dpy, NULL);
-    if (egl->display == EGL_NO_DISPLAY || !eglInitialize(egl->display, &major, &minor)) {
-        snprintf(err, errlen, "x11: cannot initialise EGL on the X display (EGL error 0x%x)", eglGetError());
-        egl->display = EGL_NO_DISPLAY;
-        goto fail;
-    }
-    snprintf(ctx->platform_version, sizeof ctx->platform_version, "EGL %d.%d (X11)", major, minor);
-    if (!eglBindAPI(EGL_OPENGL_ES_API)) {
-        snprintf(err, errlen, "x11: the OpenGL ES API is not available in EGL");
-        goto fail;
-    }
+    int width = s->width, height = s->height;
+    EGLDisplay display = screen_egl_display(s->gl);
     static const EGLint config_attribs[] = {EGL_SURFACE_TYPE, EGL_WINDOW_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8,
                                             EGL_BLUE_SIZE, 8, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT, EGL_NONE};
     EGLConfig config = NULL;
     EGLint n = 0;
-    if (!eglChooseConfig(egl->display, config_attribs, &config, 1, &n) || n < 1) {
+    if (!eglChooseConfig(display, config_attribs, &config, 1, &n) || n < 1) {
         snprintf(err, errlen, "x11: no EGL config for an 8-bit RGB ES2 window (EGL error 0x%x)", eglGetError());
-        goto fail;
+        return -1;
     }
     EGLint visual_id = 0;
-    eglGetConfigAttrib(egl->display, config, EGL_NATIVE_VISUAL_ID, &visual_id);
+    eglGetConfigAttrib(display, config, EGL_NATIVE_VISUAL_ID, &visual_id);
     XVisualInfo want = {.visualid = (VisualID)visual_id}, *visual;
     int n_visuals = 0;
     visual = XGetVisualInfo(w->dpy, VisualIDMask, &want, &n_visuals);
     if (!visual || n_visuals < 1) {
         snprintf(err, errlen, "x11: the X server has no visual 0x%x for the EGL config", (unsigned)visual_id);
-        goto fail;
+        return -1;
     }
     Window root = RootWindow(w->dpy, visual->screen);
     w->colormap = XCreateColormap(w->dpy, root, visual->visual, AllocNone);
@@ -233,7 +155,7 @@ static struct gl_context *init_egl_x11(struct x11_window *w, int width, int heig
     XFree(visual);
     if (!w->window) {
         snprintf(err, errlen, "x11: cannot create a %dx%d window", width, height);
-        goto fail;
+        return -1;
     }
     XStoreName(w->dpy, w->window, X11_WINDOW_TITLE);
     /* A window manager that keeps to the size asked for keeps the frame's pixels one to one. */
@@ -247,30 +169,11 @@ static struct gl_context *init_egl_x11(struct x11_window *w, int width, int heig
     }
     XSetWMProtocols(w->dpy, w->window, &w->wm_delete_window, 1);
     XMapWindow(w->dpy, w->window);
-
-    egl->surface = create_window_surface(egl->display, config, &w->window, NULL);
-    if (egl->surface == EGL_NO_SURFACE) {
-        snprintf(err, errlen, "x11: cannot create an EGL window surface (EGL error 0x%x)", eglGetError());
-        goto fail;
-    }
-    /* Drivers may give a higher compatible version than ES2 (llvmpipe gives 3.2). */
-    static const EGLint ctx_attribs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
-    egl->context = eglCreateContext(egl->display, config, EGL_NO_CONTEXT, ctx_attribs);
-    if (egl->context == EGL_NO_CONTEXT) {
-        snprintf(err, errlen, "x11: cannot create an OpenGL ES 2 context (EGL error 0x%x)", eglGetError());
-        goto fail;
-    }
-    if (!eglMakeCurrent(egl->display, egl->surface, egl->surface, egl->context)) {
-        snprintf(err, errlen, "x11: cannot make the context current on the window (EGL error 0x%x)", eglGetError());
-        goto fail;
-    }
+    if (screen_egl_attach(s->gl, config, &w->window, err, errlen) != 0)
+        return -1;
     /* Advisory: a server without vertical blank (Xvfb) may refuse it, and frames still show. */
-    eglSwapInterval(egl->display, vsync ? 1 : 0);
-    return ctx;
-
-fail:
-    x11_egl_destroy(ctx);
-    return NULL;
+    eglSwapInterval(display, vsync ? 1 : 0);
+    return 0;
 }
 
 struct screen *screen_open_x11(const struct kiosk_config *c, char *err, size_t errlen)
@@ -306,14 +209,10 @@ struct screen *screen_open_x11(const struct kiosk_config *c, char *err, size_t e
     }
     w->wm_protocols = XInternAtom(w->dpy, "WM_PROTOCOLS", False);
     w->wm_delete_window = XInternAtom(w->dpy, "WM_DELETE_WINDOW", False);
-    s->gl = init_egl_x11(w, s->width, s->height, c->display.vsync, err, errlen);
-    if (!s->gl) {
-        x11_close(s);
-        return NULL;
-    }
-    const char *missing = gl_api_load(s->gl->get_proc);
-    if (missing) {
-        snprintf(err, errlen, "x11: the GL entry point %s is missing", missing);
+    static const struct screen_egl_platform x11 = {EGL_PLATFORM_X11_KHR, "X11", "the X display",
+                                                   "EGL_KHR_platform_x11", "EGL_EXT_platform_x11"};
+    s->gl = screen_egl_open(&x11, w->dpy, "x11", "X11", err, errlen);
+    if (!s->gl || attach_window(s, w, c->display.vsync, err, errlen) != 0) {
         x11_close(s);
         return NULL;
     }

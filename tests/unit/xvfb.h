@@ -82,7 +82,7 @@ static inline int xvfb_start_on(struct xvfb *x, int n)
             dup2(devnull, STDOUT_FILENO);
             dup2(devnull, STDERR_FILENO);
         }
-        execlp(XVFB, XVFB, number, "-screen", "0", "1280x720x24", "-nolisten", "tcp", (char *)NULL);
+        execlp(XVFB, XVFB, number, "-screen", "0", "1280x720x24", "-nolisten", "tcp", "-noreset", (char *)NULL);
         _exit(127);
     }
     double deadline = monotonic_seconds() + XVFB_START_SECONDS;
