@@ -36,7 +36,7 @@ SHADERS   := $(sort $(wildcard shaders_es/*.glsl))
 TEST_SRCS := $(sort $(wildcard tests/unit/test_*.c))
 TEST_BINS := $(TEST_SRCS:tests/unit/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps deps-bench demo test test-unit test-render test-sanitize golden assets accuracy bench clean
+.PHONY: all deps deps-bench demo test test-unit test-render test-sanitize test-valgrind golden assets accuracy bench clean
 all: $(BIN)
 
 $(BIN): $(BUILD)/src/main.o $(BUILD)/libbentray.a
@@ -112,7 +112,7 @@ $(BUILD)/tests/%: tests/unit/%.c $(BUILD)/libbentray.a
 	$(CC) $(CFLAGS) $(PKG_CFLAGS) -Itests -MMD -MP -MF $@.d -o $@ $< $(BUILD)/libbentray.a $(LDLIBS) $(TEST_LIBS)
 
 test: deps
-	@$(MAKE) --no-print-directory test-unit test-render test-sanitize
+	@$(MAKE) --no-print-directory test-unit test-render test-valgrind test-sanitize
 
 test-unit: $(TEST_BINS)
 	@set -e; for t in $(TEST_BINS); do echo "== $$t"; $$t; done
@@ -120,6 +120,12 @@ test-unit: $(TEST_BINS)
 # the report tool is built here too, so that it cannot rot between runs of `make accuracy`
 test-render: $(BIN) $(BUILD)/tools/accuracy_report
 	@BT=./$(BIN) tests/render/run_all.sh
+
+# One headless render on each back-end (EGL, OSMesa) under Valgrind's memcheck: a definite leak or an
+# invalid access in bentray fails it; Mesa's own leaks are suppressed in tests/render/valgrind.supp
+# (driver objects only). The optimised binary: a sanitizer build cannot run under Valgrind.
+test-valgrind: $(BIN)
+	@BT=./$(BIN) tests/render/valgrind_render.sh
 
 # The unit and command-line tests again, built with AddressSanitizer and UndefinedBehaviorSanitizer:
 # an invalid access or an undefined operation fails the test that caused it, and so does a leak in
@@ -153,7 +159,7 @@ test-sanitize:
 FUZZ_PACKAGES := clang libclang-rt-14-dev
 FUZZ_CC       ?= clang
 FUZZ_SECONDS  ?= 60
-FUZZ_TARGETS  := scene kiosk_config dump hid gpio
+FUZZ_TARGETS  := scene kiosk_config dump hid gpio script
 FUZZ_DIR      := $(BUILD)/fuzz
 # -fno-sanitize-recover: undefined behaviour stops the run, so that libFuzzer keeps the input
 FUZZ_CFLAGS   := -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes \
@@ -172,6 +178,7 @@ FUZZ_SRCS_kiosk_config := $(FUZZ_SRCS_text) src/kiosk/kiosk_config.c src/kiosk/k
 FUZZ_SRCS_dump         := src/ref/dump.c
 FUZZ_SRCS_hid          := src/kiosk/hid_report.c
 FUZZ_SRCS_gpio         := src/kiosk/quadrature.c src/kiosk/debounce.c src/kiosk/event_merge.c
+FUZZ_SRCS_script       := src/kiosk/script.c src/kiosk/script_player.c
 FUZZ_BINS     := $(FUZZ_TARGETS:%=$(FUZZ_DIR)/fuzz_%)
 # Where the harnesses write their input as a file: from tree/scenes, a scene's ../textures and
 # ../sky, and from tree/kiosk, the configuration's ../assets, are the project's, as from

@@ -11,6 +11,9 @@
 #include "cli/options.h"
 #include "render/renderer.h"
 
+/* --runs: timed runs per configuration; bench_time() keeps their times in an array of 64. */
+#define BENCH_MAX_RUNS 63
+
 static const char *const section_names[] = {"table1", "figure5", "unrolling", "batching", "early-z", "pareto",
                                             "limit", "relativity", "kiosk"};
 #define N_SECTIONS (int)(sizeof section_names / sizeof section_names[0])
@@ -131,14 +134,15 @@ int cmd_bench(int argc, char **argv)
                 return EXIT_USAGE;
             }
         } else if (strcmp(a, "--runs") == 0 && has_value) {
-            if (option_parse_int(argv[++i], 1, 63, &runs) != 0) {
-                fprintf(stderr, "bentray bench: --runs: expected an integer from 1 to 63, got '%s'\n", argv[i]);
+            if (option_parse_int(argv[++i], 1, BENCH_MAX_RUNS, &runs) != 0) {
+                fprintf(stderr, "bentray bench: --runs: expected an integer from 1 to %d, got '%s'\n", BENCH_MAX_RUNS,
+                        argv[i]);
                 return EXIT_USAGE;
             }
         } else if (strcmp(a, "--size") == 0 && has_value) {
             if (option_parse_size(argv[++i], &b.width, &b.height) != 0 || b.width < 16 || b.height < 16) {
-                fprintf(stderr, "bentray bench: --size: expected WxH, each from 16 to %d, got '%s'\n",
-                        SCENE_MAX_SIZE, argv[i]);
+                fprintf(stderr, "bentray bench: --size: expected WxH, each from 16 to %d, W x H at most %ld pixels, "
+                        "got '%s'\n", SCENE_MAX_SIZE, SCENE_MAX_PIXELS, argv[i]);
                 return EXIT_USAGE;
             }
         } else if (strcmp(a, "--only") == 0 && has_value) {

@@ -33,7 +33,8 @@ int option_parse_size(const char *text, int *w, int *h)
     if (!x)
         return -1;
     *x = '\0';
-    if (option_parse_int(buf, 1, SCENE_MAX_SIZE, &lw) || option_parse_int(x + 1, 1, SCENE_MAX_SIZE, &lh))
+    if (option_parse_int(buf, 1, SCENE_MAX_SIZE, &lw) || option_parse_int(x + 1, 1, SCENE_MAX_SIZE, &lh) ||
+        lw * lh > SCENE_MAX_PIXELS)
         return -1;
     *w = (int)lw;
     *h = (int)lh;
@@ -89,7 +90,8 @@ enum option_status options_common(struct common_options *o, const char *cmd, int
         if (!(v = value_of(cmd, argc, argv, i)))
             return OPTION_ERROR;
         if (option_parse_size(v, &o->width, &o->height) != 0) {
-            fprintf(stderr, "bentray %s: --size: expected WxH with 1 <= W, H <= %d, got '%s'\n", cmd, SCENE_MAX_SIZE, v);
+            fprintf(stderr, "bentray %s: --size: expected WxH with 1 <= W, H <= %d and W x H <= %ld pixels, got '%s'\n",
+                    cmd, SCENE_MAX_SIZE, SCENE_MAX_PIXELS, v);
             return OPTION_ERROR;
         }
     } else if (strcmp(opt, "--precision") == 0) {
@@ -114,8 +116,9 @@ enum option_status options_common(struct common_options *o, const char *cmd, int
         long n;
         if (!(v = value_of(cmd, argc, argv, i)))
             return OPTION_ERROR;
-        if (option_parse_int(v, 0, 256, &n) != 0) {
-            fprintf(stderr, "bentray %s: --threads: expected 0 (one per core) to 256, got '%s'\n", cmd, v);
+        if (option_parse_int(v, 0, CPU_MAX_THREADS, &n) != 0) {
+            fprintf(stderr, "bentray %s: --threads: expected 0 (one per core) to %d, got '%s'\n", cmd,
+                    CPU_MAX_THREADS, v);
             return OPTION_ERROR;
         }
         o->threads = (int)n;
@@ -125,10 +128,9 @@ enum option_status options_common(struct common_options *o, const char *cmd, int
         char *end;
         errno = 0;
         double r = strtod(v, &end);
-        /* below 1e-14 the tolerance is under double rounding and the controller can only stall */
-        if (errno || end == v || *end != '\0' || !(r >= 1e-14 && r <= 1e-2)) {
-            fprintf(stderr, "bentray %s: --rtol: expected a relative tolerance from 1e-14 to 1e-2, got '%s'\n",
-                    cmd, v);
+        if (errno || end == v || *end != '\0' || !(r >= OPTION_RTOL_MIN && r <= OPTION_RTOL_MAX)) {
+            fprintf(stderr, "bentray %s: --rtol: expected a relative tolerance from %g to %g, got '%s'\n",
+                    cmd, OPTION_RTOL_MIN, OPTION_RTOL_MAX, v);
             return OPTION_ERROR;
         }
         o->rtol = r;

@@ -6,7 +6,12 @@
 #include "scene/scene.h"
 #include <stdio.h>
 
+/* --set overrides on one command line; each is a pointer into argv, kept in a fixed array. */
 #define OPTIONS_MAX_SETS 64
+/* --rtol, the CPU reference's relative tolerance per step: below 1e-14 it is under double rounding
+ * and the step controller can only stall; above 1e-2 the reference is no longer a reference. */
+#define OPTION_RTOL_MIN 1e-14
+#define OPTION_RTOL_MAX 1e-2
 
 struct common_options {
     const char *scene_path;
@@ -24,7 +29,7 @@ struct common_options {
 };
 
 int option_backend_valid(const char *name);
-/* Parse "WxH"; 0 ok. */
+/* Parse "WxH": each side from 1 to SCENE_MAX_SIZE, W x H at most SCENE_MAX_PIXELS; 0 ok. */
 int option_parse_size(const char *text, int *w, int *h);
 /* Parse a non-negative integer option fully; 0 ok. */
 int option_parse_int(const char *text, long min, long max, long *out);

@@ -4,6 +4,7 @@
 #include "gl/texture.h"
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define PROBE_SIZE 4
@@ -23,6 +24,35 @@ int extension_list_has(const char *list, const char *token)
 int gl_has_extension(const char *name)
 {
     return extension_list_has((const char *)glGetString(GL_EXTENSIONS), name);
+}
+
+int gl_fault(const char *name)
+{
+    const char *list = getenv("BT_FAULT");
+    size_t n = strlen(name);
+    if (!list || n == 0)
+        return 0;
+    for (const char *p = list; (p = strstr(p, name)) != NULL; p += n) {
+        int starts = p == list || p[-1] == ',' || p[-1] == ' ';
+        int ends = p[n] == ',' || p[n] == ' ' || p[n] == '\0';
+        if (starts && ends)
+            return 1;
+    }
+    return 0;
+}
+
+const char *gl_framebuffer_status_name(GLenum status)
+{
+    switch (status) {
+    case GL_FRAMEBUFFER_COMPLETE: return "GL_FRAMEBUFFER_COMPLETE";
+    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
+    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
+    case GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS: return "GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS";
+    case GL_FRAMEBUFFER_UNSUPPORTED: return "GL_FRAMEBUFFER_UNSUPPORTED";
+    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
+    case 0: return "no status (the check itself failed)";
+    default: return "an unknown framebuffer status";
+    }
 }
 
 static void copy_string(char *dst, size_t n, GLenum name)
@@ -111,11 +141,15 @@ static void probe_format(struct float_format *f, GLuint prog)
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_b);
     status_b = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     GLenum gl_err = glGetError();
-    if (gl_err != GL_NO_ERROR) {
+    if (gl_fault(f->is_fp32 ? "float_render" : "half_float_render")) {
+        snprintf(f->why, sizeof f->why, "not a render target (BT_FAULT=%s)",
+                 f->is_fp32 ? "float_render" : "half_float_render");
+    } else if (gl_err != GL_NO_ERROR) {
         snprintf(f->why, sizeof f->why, "texture creation fails (%s)", gl_error_name(gl_err));
     } else if (status_a != GL_FRAMEBUFFER_COMPLETE || status_b != GL_FRAMEBUFFER_COMPLETE) {
-        snprintf(f->why, sizeof f->why, "not a render target (framebuffer status 0x%04x)",
-                 status_a != GL_FRAMEBUFFER_COMPLETE ? status_a : status_b);
+        GLenum status = status_a != GL_FRAMEBUFFER_COMPLETE ? status_a : status_b;
+        snprintf(f->why, sizeof f->why, "not a render target (%s, 0x%04x)", gl_framebuffer_status_name(status),
+                 status);
     } else {
         glViewport(0, 0, PROBE_SIZE, PROBE_SIZE);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo_a);

@@ -36,6 +36,17 @@ struct gl_caps {
 int extension_list_has(const char *list, const char *token);
 int gl_has_extension(const char *name);
 
+/* Test hook for the GL fault paths (docs/LIMITS.md): 1 when the environment variable BT_FAULT
+ * lists NAME among its comma- or space-separated words. The only reader of BT_FAULT. Names:
+ *   float_render         the probe finds the 32-bit float formats not renderable
+ *   half_float_render    the same for the 16-bit formats
+ *   fbo_incomplete       ray-state framebuffers with 32-bit float attachments are incomplete
+ *                        (render/path.c), although the probe's plain targets work
+ *   half_fbo_incomplete  the same for 16-bit float attachments */
+int gl_fault(const char *name);
+/* "GL_FRAMEBUFFER_UNSUPPORTED" and the like, for messages. */
+const char *gl_framebuffer_status_name(GLenum status);
+
 /* Probe the current context. Returns 0; the probe itself failing (no shader compiles) gives -1. */
 int gl_caps_probe(struct gl_caps *caps, const struct gl_context *ctx, char *err, size_t errlen);
 /* The best working format of the class (fp32 or fp16), or NULL. */

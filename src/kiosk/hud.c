@@ -109,6 +109,14 @@ static int collect_lines(const struct hud_view *v, char lines[][HUD_LINE_LEN], e
         LINE(LINE_TITLE, "%s", v->title);
     if (present(v->explanation))
         LINE(LINE_BODY, "%s", v->explanation);
+    if (present(v->speed_key)) {
+        format_amount(a, sizeof a, v->speed_param);
+        LINE(LINE_BODY, "%s = %s   (the speed knob)", v->speed_key, a);
+    }
+    if (present(v->mass_key)) {
+        format_amount(a, sizeof a, v->mass_param);
+        LINE(LINE_BODY, "%s = %s   (the mass knob)", v->mass_key, a);
+    }
     if (v->has_speed) {
         char pair[96];
         format_speed_pair(pair, sizeof pair, v->speed);
@@ -267,7 +275,14 @@ static void draw_lines(struct hud_font *font, unsigned char *rgba, int w, int h,
 static void draw_indicator(struct hud_font *font, unsigned char *rgba, int w, int h, const struct hud_view *v)
 {
     char label[HUD_LINE_LEN], lo[48], hi[48], value[96], number[32];
-    if (v->indicator == HUD_KNOB_SPEED) {
+    const char *key = v->indicator == HUD_KNOB_SPEED ? v->speed_key : v->mass_key;
+    if (present(key)) {
+        format_amount(number, sizeof number, v->indicator_value);
+        snprintf(label, sizeof label, "%s knob   %s = %s", v->indicator == HUD_KNOB_SPEED ? "speed" : "mass", key,
+                 number);
+        format_amount(lo, sizeof lo, v->indicator_min);
+        format_amount(hi, sizeof hi, v->indicator_max);
+    } else if (v->indicator == HUD_KNOB_SPEED) {
         format_speed_pair(value, sizeof value, v->indicator_value);
         snprintf(label, sizeof label, "speed   %s", value);
         format_speed(number, sizeof number, v->indicator_min);

@@ -18,6 +18,10 @@ struct hud_view {
     int has_mass;                    /* the scene has a central mass (Schwarzschild) */
     double mass;                     /* M in the scene's unit; the HUD shows r_s = 2M */
     double camera_distance;          /* from the mass, the scene's unit: fixed while M changes */
+    /* a knob the scene maps to one of its keys ([kiosk] of the scene file): the key ("model.rho")
+     * and its value; NULL where the knob keeps its meaning */
+    const char *speed_key, *mass_key;
+    double speed_param, mass_param;
     const char *effects;             /* "geometry", "Doppler colour", "Doppler colour + searchlight";
                                         NULL where the scene has no black body to shift */
     double fps;                      /* frames shown per second, measured; < 0: not yet known */

@@ -7,6 +7,7 @@
 #include <string.h>
 #include "kiosk/kiosk_config.h"
 #include "kiosk/kiosk_config_keys.h"
+#include "scene/scene.h"
 
 #define NO_BIT (-1)
 
@@ -76,6 +77,10 @@ static int check_kiosk(const struct kiosk_config *c, struct kiosk_config_error *
     if (!size_ok(k->width, k->height))
         return bad_key(c, err, KSEC_KIOSK, 0, "width", ": the frame %dx%d: width and height must be "
                        "from %d to %d", k->width, k->height, KIOSK_MIN_SIZE, KIOSK_MAX_SIZE);
+    /* the refined frame is a scene's image: the renderer's own limit on pixels applies */
+    if ((long)k->width * k->height > SCENE_MAX_PIXELS)
+        return bad_key(c, err, KSEC_KIOSK, 0, "width", ": the frame %dx%d has more than %ld pixels, the "
+                       "renderer's limit (docs/LIMITS.md)", k->width, k->height, (long)SCENE_MAX_PIXELS);
     if (!size_ok(k->preview_width, k->preview_height))
         return bad_key(c, err, KSEC_KIOSK, 0, "preview_width", ": the preview %dx%d: width and height "
                        "must be from %d to %d", k->preview_width, k->preview_height, KIOSK_MIN_SIZE,

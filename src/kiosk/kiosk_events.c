@@ -8,24 +8,38 @@ static const char *source_name(const struct kiosk_config *c, int source)
     return source >= 0 && source < c->n_inputs ? c->inputs[source].name : "";
 }
 
-static void turn(const struct kiosk_config *c, struct kiosk_state *st, enum input_knob knob, long counts,
-                 struct event_outcome *out)
+/* The knob's mapping in this scene ([kiosk] of the scene file), NULL where it keeps its meaning. */
+static const struct knob_mapping *mapping(const struct scene *scene, enum input_knob knob)
 {
-    double *value = knob == INPUT_KNOB_SPEED ? &st->speed : &st->mass;
-    const struct kiosk_knob *k = knob == INPUT_KNOB_SPEED ? &c->speed : &c->mass;
+    if (!scene)
+        return NULL;
+    const struct knob_mapping *m = knob == INPUT_KNOB_SPEED ? &scene->kiosk.speed : &scene->kiosk.mass;
+    return m->key[0] ? m : NULL;
+}
+
+static void turn(const struct kiosk_config *c, struct kiosk_state *st, const struct scene *scene,
+                 enum input_knob knob, long counts, struct event_outcome *out)
+{
+    const struct knob_mapping *m = mapping(scene, knob);
+    double *value = m ? (knob == INPUT_KNOB_SPEED ? &st->speed_param : &st->mass_param)
+                      : (knob == INPUT_KNOB_SPEED ? &st->speed : &st->mass);
     double was = *value;
-    *value = knob_turn(k, *value, counts);
-    out->changed = *value != was;
+    *value = m ? knob_turn_mapped(m, scene, *value, counts)
+               : knob_turn(knob == INPUT_KNOB_SPEED ? &c->speed : &c->mass, *value, counts);
+    out->changed = !(*value == was);
     out->knob = knob == INPUT_KNOB_SPEED ? HUD_KNOB_SPEED : HUD_KNOB_MASS;
 }
 
-static void position(const struct kiosk_config *c, struct kiosk_state *st, enum input_knob knob, double p,
-                     struct event_outcome *out)
+static void position(const struct kiosk_config *c, struct kiosk_state *st, const struct scene *scene,
+                     enum input_knob knob, double p, struct event_outcome *out)
 {
-    double *value = knob == INPUT_KNOB_SPEED ? &st->speed : &st->mass;
+    const struct knob_mapping *m = mapping(scene, knob);
+    double *value = m ? (knob == INPUT_KNOB_SPEED ? &st->speed_param : &st->mass_param)
+                      : (knob == INPUT_KNOB_SPEED ? &st->speed : &st->mass);
     double was = *value;
-    *value = knob_position(knob == INPUT_KNOB_SPEED ? &c->speed : &c->mass, p);
-    out->changed = *value != was;
+    p = p < 0.0 ? 0.0 : p > 1.0 ? 1.0 : p;
+    *value = m ? m->min + p * (m->max - m->min) : knob_position(knob == INPUT_KNOB_SPEED ? &c->speed : &c->mass, p);
+    out->changed = !(*value == was);
     out->knob = knob == INPUT_KNOB_SPEED ? HUD_KNOB_SPEED : HUD_KNOB_MASS;
 }
 
@@ -62,9 +76,9 @@ void kiosk_event_apply(const struct kiosk_config *c, struct kiosk_state *st, con
             return;
         out->visitor = 1;
         if (ev->kind == INPUT_TURN)
-            turn(c, st, (enum input_knob)knob, ev->counts, out);
+            turn(c, st, scene, (enum input_knob)knob, ev->counts, out);
         else
-            position(c, st, (enum input_knob)knob, ev->position, out);
+            position(c, st, scene, (enum input_knob)knob, ev->position, out);
         return;
     }
     case INPUT_PRESS: {
@@ -81,7 +95,7 @@ void kiosk_event_apply(const struct kiosk_config *c, struct kiosk_state *st, con
     }
     case INPUT_KNOB:
         out->visitor = 1;
-        turn(c, st, ev->knob, ev->counts, out);
+        turn(c, st, scene, ev->knob, ev->counts, out);
         return;
     case INPUT_ACTION:
         out->visitor = 1;

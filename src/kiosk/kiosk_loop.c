@@ -90,12 +90,26 @@ static void hud_view_of(struct kiosk *k, struct hud_view *v)
     v->effects = scene_has_black_body(s) ? effects[k->state.effects] : NULL;
     v->fps = kiosk_view_refined(&k->view) && k->draws_last_second == 0 ? -1.0 : k->draws_last_second;
     v->refining = !kiosk_view_refined(&k->view);
+    /* knobs the scene maps to its own keys show those instead of speed and mass */
+    const struct knob_mapping *ms = &s->kiosk.speed, *mm = &s->kiosk.mass;
+    if (ms->key[0]) {
+        v->has_speed = 0;
+        v->speed_key = ms->key;
+        v->speed_param = knob_turn_mapped(ms, s, k->state.speed_param, 0);
+    }
+    if (mm->key[0]) {
+        v->has_mass = 0;
+        v->mass_key = mm->key;
+        v->mass_param = knob_turn_mapped(mm, s, k->state.mass_param, 0);
+    }
     if (k->now < k->indicator_until) {
         v->indicator = k->indicator;
-        const struct kiosk_knob *knob = k->indicator == HUD_KNOB_SPEED ? &k->cfg->speed : &k->cfg->mass;
-        v->indicator_value = k->indicator == HUD_KNOB_SPEED ? k->state.speed : k->state.mass;
-        v->indicator_min = knob->min;
-        v->indicator_max = knob->max;
+        int speed = k->indicator == HUD_KNOB_SPEED;
+        const struct knob_mapping *m = speed ? ms : mm;
+        const struct kiosk_knob *knob = speed ? &k->cfg->speed : &k->cfg->mass;
+        v->indicator_value = m->key[0] ? (speed ? v->speed_param : v->mass_param) : speed ? k->state.speed : k->state.mass;
+        v->indicator_min = m->key[0] ? m->min : knob->min;
+        v->indicator_max = m->key[0] ? m->max : knob->max;
     }
     v->notice = k->now < k->notice_until ? k->notice
               : k->attract              ? "touch a knob or a button to take over"

@@ -1,6 +1,7 @@
 /* The visitor's settings and how they make the scene that is drawn. */
 #include "kiosk/kiosk_state.h"
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 static double clamp(double x, double lo, double hi)
@@ -41,12 +42,21 @@ double knob_position(const struct kiosk_knob *k, double p)
     }
 }
 
+double knob_turn_mapped(const struct knob_mapping *m, const struct scene *scene, double param, long counts)
+{
+    double value = param;
+    if (isnan(value) && scene_get_number(scene, m->key, &value) != 0)
+        value = m->min;
+    return clamp(value + (m->max - m->min) * (double)counts / m->steps, m->min, m->max);
+}
+
 void kiosk_state_reset(struct kiosk_state *st, const struct kiosk_config *c)
 {
     memset(st, 0, sizeof *st);
     st->scene = c->kiosk.start_scene;
     st->speed = c->speed.start;
     st->mass = c->mass.start;
+    st->speed_param = st->mass_param = NAN;
     st->effects = EFFECTS_GEOMETRY;
 }
 
@@ -56,12 +66,11 @@ void kiosk_state_action(struct kiosk_state *st, const struct kiosk_config *c, co
     int n = c->kiosk.n_scenes;
     switch (action) {
     case KIOSK_ACTION_NEXT_SCENE:
-        st->scene = (st->scene + 1) % n;
-        st->effects = EFFECTS_GEOMETRY;
-        break;
     case KIOSK_ACTION_PREVIOUS_SCENE:
-        st->scene = (st->scene + n - 1) % n;
+        /* the knobs keep speed and mass from scene to scene; a mapped key starts at the new scene's own */
+        st->scene = (st->scene + (action == KIOSK_ACTION_NEXT_SCENE ? 1 : n - 1)) % n;
         st->effects = EFFECTS_GEOMETRY;
+        st->speed_param = st->mass_param = NAN;
         break;
     case KIOSK_ACTION_CYCLE_EFFECTS:
         st->effects = scene_has_black_body(scene) ? (enum relativity_effects)((st->effects + 1) % 3) : EFFECTS_GEOMETRY;
@@ -82,9 +91,21 @@ int kiosk_state_apply(const struct kiosk_state *st, const struct scene *base, st
 {
     *out = *base;
     vec3d view = v3_normalize(v3_sub(base->camera.look_at, base->camera.position));
-    out->observer.velocity = v3_scale(view, st->speed);
+    const struct knob_mapping *ms = &base->kiosk.speed, *mm = &base->kiosk.mass;
+    if (!ms->key[0])
+        out->observer.velocity = v3_scale(view, st->speed);
     out->observer.effects = st->effects;
-    if (out->model.type == MODEL_SCHWARZSCHILD)
+    if (!mm->key[0] && out->model.type == MODEL_SCHWARZSCHILD)
         out->model.mass = st->mass;
+    const struct knob_mapping *maps[2] = {ms, mm};
+    const double params[2] = {st->speed_param, st->mass_param};
+    for (int i = 0; i < 2; i++) {
+        if (!maps[i]->key[0] || isnan(params[i]))
+            continue;
+        char assignment[SCENE_NAME_LEN + 32];
+        snprintf(assignment, sizeof assignment, "%s=%.17g", maps[i]->key, params[i]);
+        if (scene_set(out, assignment, err) != 0)
+            return -1;
+    }
     return scene_validate(out, err);
 }

@@ -10,6 +10,9 @@ struct kiosk_state {
     int scene;                       /* index into the configuration's scenes */
     double speed;                    /* observer speed, fraction of c */
     double mass;                     /* central mass, the scene's unit */
+    /* the value of the scene key a knob is mapped to ([kiosk] of the scene file), NAN while it is the
+     * scene's own; unused for a knob that keeps its own meaning */
+    double speed_param, mass_param;
     enum relativity_effects effects;
     int pipeline_view;               /* 1: show the renderer's stages instead of the image */
 };
@@ -21,6 +24,10 @@ double knob_turn(const struct kiosk_knob *k, double value, long counts);
 
 /* The value of an absolute knob at position p (0: one end, 1: the other), evenly along its curve. */
 double knob_position(const struct kiosk_knob *k, double p);
+
+/* A knob mapped to a scene key (the scene's [kiosk]) after counts detents from param (NAN: the
+ * scene's own value), clamped to the mapping's range. */
+double knob_turn_mapped(const struct knob_mapping *m, const struct scene *scene, double param, long counts);
 
 /* The start: the configured start scene and knob starts, geometry only, no pipeline view. */
 void kiosk_state_reset(struct kiosk_state *st, const struct kiosk_config *c);
@@ -34,7 +41,8 @@ void kiosk_state_action(struct kiosk_state *st, const struct kiosk_config *c, co
 /* The scene to draw: base (the scene file as loaded) with the observer moving at st->speed along
  * the camera's view direction, the black hole's mass set to st->mass (0: flat space, the camera
  * stays where it is, so the shadow grows with the mass), and the effects. A scene without a black
- * hole keeps its model. 0, or -1 with the reason (the mass puts the camera inside the horizon). */
+ * hole keeps its model. A knob the scene maps to one of its keys ([kiosk]) sets that key instead.
+ * 0, or -1 with the reason (the mass puts the camera inside the horizon). */
 int kiosk_state_apply(const struct kiosk_state *st, const struct scene *base, struct scene *out,
                       struct scene_error *err);
 

@@ -147,7 +147,7 @@ static void measure(const struct dump *a, const struct dump *b, enum error_kind 
 }
 
 /* PSNR and mean absolute difference over R, G, B. Sums of 8-bit differences are exact in
- * 64-bit integers for any dump size allowed (8192^2 pixels). */
+ * 64-bit integers for any dump size allowed (DUMP_MAX_PIXELS). */
 static void image_metrics(const struct dump *a, const struct dump *b, struct compare_result *r)
 {
     long long abs_sum[3] = {0, 0, 0}, sq_sum = 0;

@@ -132,11 +132,12 @@ int dump_read(const char *path, struct dump *d, char *err, size_t errlen)
     uint32_t version = get_u32(header + 8), w = get_u32(header + 12), h = get_u32(header + 16);
     uint32_t rsize = get_u32(header + 20), n_objects = get_u32(header + 56);
     if (version != DUMP_VERSION || rsize != DUMP_RECORD_SIZE || w < 1 || h < 1 || w > DUMP_MAX_SIDE ||
-        h > DUMP_MAX_SIDE || n_objects > DUMP_MAX_OBJECTS) {
+        h > DUMP_MAX_SIDE || (unsigned long)w * h > (unsigned long)DUMP_MAX_PIXELS || n_objects > DUMP_MAX_OBJECTS) {
         fclose(f);
         snprintf(err, errlen, "%s: unsupported dump (version %u, %ux%u, record %u bytes, %u objects; expected "
-                              "version %d, sides 1..%d, record %d bytes, at most %d objects)", path, version, w, h,
-                 rsize, n_objects, DUMP_VERSION, DUMP_MAX_SIDE, DUMP_RECORD_SIZE, DUMP_MAX_OBJECTS);
+                              "version %d, sides 1..%d and at most %ld pixels, record %d bytes, at most %d objects)",
+                 path, version, w, h, rsize, n_objects, DUMP_VERSION, DUMP_MAX_SIDE, DUMP_MAX_PIXELS,
+                 DUMP_RECORD_SIZE, DUMP_MAX_OBJECTS);
         return -1;
     }
     d->width = (int)w;

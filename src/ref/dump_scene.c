@@ -2,6 +2,8 @@
 #include <stdio.h>
 
 _Static_assert(SCENE_MAX_OBJECTS <= DUMP_MAX_OBJECTS, "a dump must hold every object of a scene");
+_Static_assert(SCENE_MAX_SIZE <= DUMP_MAX_SIDE && SCENE_MAX_PIXELS <= DUMP_MAX_PIXELS,
+               "a dump must hold every image a scene can ask for");
 
 double object_size(const struct object *o)
 {

@@ -10,7 +10,6 @@
 #include <time.h>
 #include <unistd.h>
 
-#define MAX_THREADS 256
 /* Progress is shown only for renders that last longer than this, then at this interval. */
 #define PROGRESS_AFTER_S 1.0
 #define PROGRESS_EVERY_S 1.0
@@ -82,7 +81,7 @@ static void *worker(void *arg)
 static int thread_count(const struct cpu_render_options *o, int rows)
 {
     long n = o->threads > 0 ? o->threads : sysconf(_SC_NPROCESSORS_ONLN);
-    n = n < 1 ? 1 : n > MAX_THREADS ? MAX_THREADS : n;
+    n = n < 1 ? 1 : n > CPU_MAX_THREADS ? CPU_MAX_THREADS : n;
     return n > rows ? rows : (int)n;
 }
 
@@ -139,7 +138,7 @@ int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct
     atomic_init(&job.steps, 0);
     atomic_init(&job.rejected, 0);
     int n = thread_count(o, h), started = 0;
-    pthread_t threads[MAX_THREADS];
+    pthread_t threads[CPU_MAX_THREADS];
     double start = now_s();
     for (int i = 0; i < n; i++)
         started += pthread_create(&threads[started], NULL, worker, &job) == 0;

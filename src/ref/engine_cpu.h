@@ -5,6 +5,9 @@
 #include "ref/dump.h"
 #include "ref/reference.h"
 
+/* Worker threads of one CPU render (--threads): their handles live in a fixed array. */
+#define CPU_MAX_THREADS 256
+
 struct cpu_render_options {
     struct ref_options ref;
     int threads;          /* 0: one per online core */

@@ -12,7 +12,7 @@ int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *e
     *mat = (struct cpu_materials){.scene = s};
     for (int i = 0; i < s->n_textures; i++) {
         struct cpu_texture *t = &mat->textures[i];
-        if (png_read_rgba8(s->textures[i], SCENE_MAX_SIZE, &t->width, &t->height, &t->rgba, err, errlen) != 0)
+        if (png_read_rgba8(s->textures[i], SCENE_MAX_TEXTURE_SIZE, &t->width, &t->height, &t->rgba, err, errlen) != 0)
             return -1;
     }
     if (s->sky.type == SKY_CUBEMAP) {
@@ -21,7 +21,7 @@ int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *e
             char path[SCENE_PATH_LEN + 16];
             snprintf(path, sizeof path, "%s_%s.png", s->sky.cubemap, faces[f]);
             struct cpu_texture *t = &mat->sky[f];
-            if (png_read_rgba8(path, SCENE_MAX_SIZE, &t->width, &t->height, &t->rgba, err, errlen) != 0)
+            if (png_read_rgba8(path, SCENE_MAX_TEXTURE_SIZE, &t->width, &t->height, &t->rgba, err, errlen) != 0)
                 return -1;
         }
     }

@@ -7,7 +7,7 @@
 struct frame_info {
     char backend[16];
     char path_name[16];
-    char path_description[160];
+    char path_description[256];
     char renderer[160];
 };
 

@@ -1,6 +1,11 @@
 #include "render/path.h"
+#include "gl/texture.h"
 #include <stdio.h>
 #include <string.h>
+
+/* Side of the textures of the framebuffer check, texels: completeness does not depend on the
+ * size below GL_MAX_TEXTURE_SIZE, which renderer_create checks against the image. */
+#define PATH_CHECK_SIZE 4
 
 static void explain_formats(const struct gl_caps *c, int fp32, char *out, size_t n)
 {
@@ -12,6 +17,58 @@ static void explain_formats(const struct gl_caps *c, int fp32, char *out, size_t
                              c->formats[i].works ? "works" : c->formats[i].why);
     if (!used)
         snprintf(out, n, "no %s format is known for this API", fp32 ? "32-bit" : "16-bit");
+}
+
+GLenum render_path_framebuffer_status(const struct float_format *f)
+{
+    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (f && gl_fault(f->is_fp32 ? "fbo_incomplete" : "half_fbo_incomplete"))
+        return GL_FRAMEBUFFER_UNSUPPORTED;
+    return status;
+}
+
+/* The ray state's framebuffer in small: one or two colour targets of format f and a 16-bit depth
+ * renderbuffer, as raystate_init and raystate_fbo make them. Leaves no GL error behind. */
+static GLenum ray_state_framebuffer_status(const struct float_format *f, int mrt)
+{
+    GLuint tex[2] = {0, 0}, depth, fbo;
+    int n = mrt ? 2 : 1;
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    for (int i = 0; i < n; i++)
+        tex[i] = texture_create_nearest(f->internal_format, f->format, f->type, PATH_CHECK_SIZE, PATH_CHECK_SIZE);
+    glGenRenderbuffers(1, &depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT16, PATH_CHECK_SIZE, PATH_CHECK_SIZE);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex[0], 0);
+    if (mrt) {
+        static const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, tex[1], 0);
+        glDrawBuffers(2, both);
+    }
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    GLenum status = render_path_framebuffer_status(f);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteRenderbuffers(1, &depth);
+    glDeleteTextures(n, tex);
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    return status;
+}
+
+static const char *path_name(int fp32, int mrt)
+{
+    return fp32 ? (mrt ? "fp32+mrt" : "fp32") : (mrt ? "fp16+mrt" : "fp16");
+}
+
+static void describe(struct render_path *p, const char *fallback)
+{
+    snprintf(p->description, sizeof p->description, "%s: %s ray state, %s%s%s%s", p->name, p->format->name,
+             p->mrt ? "x and v written by one pass (MRT)" : "x and v written in separate passes",
+             p->fp32 ? "" : " (reduced accuracy: 16-bit floats)", fallback[0] ? " " : "", fallback);
 }
 
 int render_path_choose(const struct gl_caps *c, enum precision_choice precision, enum mrt_choice mrt,
@@ -36,16 +93,47 @@ int render_path_choose(const struct gl_caps *c, enum precision_choice precision,
                  why32, why16);
         return -1;
     }
-    p->format = (precision == PRECISION_FP16 || !f32) ? f16 : f32;
-    p->fp32 = p->format->is_fp32;
     if (mrt == MRT_ON && !c->mrt_works) {
         snprintf(err, errlen, "mrt=on: multiple render targets do not work here (%s)", c->mrt_why);
         return -1;
     }
-    p->mrt = mrt != MRT_OFF && c->mrt_works;
-    p->name = p->fp32 ? (p->mrt ? "fp32+mrt" : "fp32") : (p->mrt ? "fp16+mrt" : "fp16");
-    snprintf(p->description, sizeof p->description, "%s: %s ray state, %s%s", p->name, p->format->name,
-             p->mrt ? "x and v written by one pass (MRT)" : "x and v written in separate passes",
-             p->fp32 ? "" : " (reduced accuracy: 16-bit floats)");
+    /* the paths in order of preference: the first that the scene allows (a forced precision or MRT
+     * setting is kept), the probe found working and whose ray-state framebuffer is complete */
+    static const struct { int fp32, mrt; } order[4] = {{1, 1}, {1, 0}, {0, 1}, {0, 0}};
+    const struct float_format *preferred = NULL;
+    int preferred_mrt = 0;
+    char fallback[96] = "";
+    for (int i = 0; i < 4; i++) {
+        const struct float_format *f = order[i].fp32 ? f32 : f16;
+        if (!f || (order[i].mrt && (mrt == MRT_OFF || !c->mrt_works)) || (!order[i].mrt && mrt == MRT_ON) ||
+            (precision == PRECISION_FP32 && !order[i].fp32) || (precision == PRECISION_FP16 && order[i].fp32))
+            continue;
+        if (!preferred) {
+            preferred = f;
+            preferred_mrt = order[i].mrt;
+        }
+        GLenum status = ray_state_framebuffer_status(f, order[i].mrt);
+        if (status == GL_FRAMEBUFFER_COMPLETE) {
+            p->format = f;
+            p->mrt = order[i].mrt;
+            break;
+        }
+        if (!fallback[0])
+            snprintf(fallback, sizeof fallback, "(fell back from %s: %s framebuffer incomplete)",
+                     path_name(preferred->is_fp32, preferred_mrt), preferred->name);
+    }
+    if (!preferred) {
+        snprintf(err, errlen, "internal: no render path fits precision %d and mrt %d", (int)precision, (int)mrt);
+        return -1;
+    }
+    if (!p->format) {
+        /* nothing complete: the preferred path, so that its failure is the one reported */
+        p->format = preferred;
+        p->mrt = preferred_mrt;
+        fallback[0] = '\0';
+    }
+    p->fp32 = p->format->is_fp32;
+    p->name = path_name(p->fp32, p->mrt);
+    describe(p, fallback);
     return 0;
 }

@@ -10,11 +10,21 @@ struct render_path {
     int fp32;                 /* 0: fp16, reduced accuracy */
     int mrt;                  /* 1: x and v (and hit, image) written by one pass */
     const char *name;         /* "fp32+mrt", "fp32", "fp16+mrt", "fp16" */
-    char description[160];
+    char description[256];
 };
 
-/* Pick the best path the context supports, or the one forced; -1 with err naming what is missing. */
+/* Pick the best path the context supports, or the one forced; -1 with err naming what is missing.
+ * The chosen path's ray-state framebuffer (its colour targets and the depth buffer, as
+ * raystate_init makes them) is built once: where it is incomplete, the next path the scene allows
+ * is taken (precision auto: fp32 -> fp16; mrt auto: MRT -> separate passes) and the description
+ * says why. Where no allowed path's framebuffer is complete, the preferred path is returned and
+ * raystate_init reports the failure. Needs the probed context current. */
 int render_path_choose(const struct gl_caps *caps, enum precision_choice precision, enum mrt_choice mrt,
                        struct render_path *path, char *err, size_t errlen);
+
+/* Completeness of the bound framebuffer whose colour targets have format f (NULL: not a float
+ * format): glCheckFramebufferStatus, or GL_FRAMEBUFFER_UNSUPPORTED where the test hook
+ * BT_FAULT=fbo_incomplete (half_fbo_incomplete for 16-bit formats) says so (gl/caps.h). */
+GLenum render_path_framebuffer_status(const struct float_format *f);
 
 #endif

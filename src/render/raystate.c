@@ -5,6 +5,39 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* A framebuffer with target0 (and target1) and the shared depth buffer; *status tells whether it
+ * is complete. */
+static GLuint make_fbo(struct raystate *rs, GLuint target0, GLuint target1, GLenum *status)
+{
+    GLuint fbo;
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target0, 0);
+    if (target1) {
+        static const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, target1, 0);
+        glDrawBuffers(2, both);    /* draw-buffer state belongs to the framebuffer: set once */
+    }
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rs->depth);
+    /* the presentation image is 8-bit: only the float targets are the render path's concern */
+    *status = render_path_framebuffer_status(target0 == rs->final_color ? NULL : rs->format);
+    return fbo;
+}
+
+/* What was attached, in which render path, and what to try instead. */
+static void incomplete_message(const struct raystate *rs, GLuint target0, GLuint target1, GLenum status,
+                               char *err, size_t errlen)
+{
+    int float_target = target0 != rs->final_color;
+    const char *format = float_target ? rs->format->name : "RGBA8";
+    snprintf(err, errlen, "render path %s: a ray-state framebuffer (%s%s colour, 16-bit depth, %dx%d) is "
+             "incomplete: %s (0x%04x)%s%s%s", rs->path_name, target1 ? "2 x " : "", format, rs->width,
+             rs->height, gl_framebuffer_status_name(status), status,
+             float_target && rs->format->is_fp32 ? "; try --precision fp16" : "",
+             float_target && rs->mrt ? (rs->format->is_fp32 ? " or --no-mrt" : "; try --no-mrt") : "",
+             float_target ? " (bentray info lists the formats that work)" : "");
+}
+
 int raystate_init(struct raystate *rs, const struct render_path *path, int width, int height,
                   char *err, size_t errlen)
 {
@@ -27,7 +60,27 @@ int raystate_init(struct raystate *rs, const struct render_path *path, int width
     glGenRenderbuffers(1, &rs->depth);
     glBindRenderbuffer(GL_RENDERBUFFER, rs->depth);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT16, width, height);
-    return gl_check("allocating the ray-state textures", err, errlen);
+    rs->format = f;
+    rs->path_name = path->name;
+    rs->mrt = path->mrt;
+    char what[128];
+    snprintf(what, sizeof what, "render path %s: allocating the ray state (13 %s textures of %dx%d)", path->name,
+             f->name, width, height);
+    if (gl_check(what, err, errlen) != 0) {
+        raystate_release(rs);
+        return -1;
+    }
+    /* the setup stage's targets: checked now rather than when the first pass needs them */
+    GLenum status;
+    GLuint fbo = make_fbo(rs, rs->position[0], path->mrt ? rs->velocity[0] : 0, &status);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        incomplete_message(rs, rs->position[0], path->mrt ? rs->velocity[0] : 0, status, err, errlen);
+        raystate_release(rs);
+        return -1;
+    }
+    return 0;
 }
 
 void raystate_release(struct raystate *rs)
@@ -54,20 +107,12 @@ GLuint raystate_fbo(struct raystate *rs, GLuint target0, GLuint target1, char *e
         snprintf(err, errlen, "internal: more than %d framebuffer combinations", RAYSTATE_MAX_FBOS);
         return 0;
     }
-    GLuint fbo;
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target0, 0);
-    if (target1) {
-        static const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, target1, 0);
-        glDrawBuffers(2, both);    /* draw-buffer state belongs to the framebuffer: set once */
-    }
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rs->depth);
-    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    GLenum status;
+    GLuint fbo = make_fbo(rs, target0, target1, &status);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glDeleteFramebuffers(1, &fbo);
-        snprintf(err, errlen, "a ray-state framebuffer is incomplete (status 0x%04x)", status);
+        incomplete_message(rs, target0, target1, status, err, errlen);
         return 0;
     }
     rs->fbos[rs->n_fbos].target0 = target0;

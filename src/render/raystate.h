@@ -29,8 +29,14 @@ struct raystate {
     int cur_position, cur_velocity, cur_hit;  /* indices of the current copies */
     struct { GLuint target0, target1, fbo; } fbos[RAYSTATE_MAX_FBOS];
     int n_fbos;
+    const struct float_format *format;  /* of every texture but final_color; for messages */
+    const char *path_name;         /* the render path these textures serve */
+    int mrt;
 };
 
+/* Allocates every texture and builds the path's first framebuffer (its colour targets and the
+ * depth buffer), so that a format this GPU cannot render into fails here, named with the path.
+ * On failure nothing stays allocated. */
 int raystate_init(struct raystate *rs, const struct render_path *path, int width, int height,
                   char *err, size_t errlen);
 void raystate_release(struct raystate *rs);

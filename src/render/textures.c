@@ -22,7 +22,7 @@ static int upload(GLenum target, const char *path, int max_size, char *err, size
 int textures_load(struct renderer *r, char *err, size_t errlen)
 {
     const struct scene *s = r->scene;
-    int max_size = r->caps.max_texture_size < SCENE_MAX_SIZE ? r->caps.max_texture_size : SCENE_MAX_SIZE;
+    int max_size = r->caps.max_texture_size < SCENE_MAX_TEXTURE_SIZE ? r->caps.max_texture_size : SCENE_MAX_TEXTURE_SIZE;
     for (int i = 0; i < s->n_textures; i++) {
         glGenTextures(1, &r->textures[i]);
         glBindTexture(GL_TEXTURE_2D, r->textures[i]);

@@ -5,18 +5,29 @@
 #include "physics/vec3.h"
 #include "physics/model.h"
 
-#define SCENE_MAX_OBJECTS 64
-#define SCENE_MAX_LIGHTS 4
-#define SCENE_MAX_TEXTURES 8
-#define SCENE_NAME_LEN 64
-#define SCENE_PATH_LEN 512
-/* Upper limits that keep a typo from asking for hours of work or gigabytes. */
-#define SCENE_MAX_SIZE 8192
-#define SCENE_MAX_SEGMENTS 100000
-#define SCENE_MAX_STEPS_PER_SEGMENT 10000
-#define SCENE_MAX_STEPS_PER_PASS 64
+/* Fixed arrays of struct scene: refused at the section or key that would overflow them. */
+#define SCENE_MAX_OBJECTS 64        /* [object] sections */
+#define SCENE_MAX_LIGHTS 4          /* [light] sections */
+#define SCENE_MAX_TEXTURES 8        /* different texture files */
+#define SCENE_NAME_LEN 64           /* bytes of a name, with its terminator */
+#define SCENE_PATH_LEN 512          /* bytes of a path, with its terminator */
+/* Upper limits that keep a typo from asking for hours of work or gigabytes (docs/LIMITS.md). */
+#define SCENE_MAX_SIZE 8192         /* pixels along either side of the image */
+/* Pixels of the image, width x height (3840 x 2160 fits). Each costs 214 bytes of GPU memory at fp32
+ * (13 RGBA32F ray-state textures, the RGBA8 image, 16-bit depth) and 120 bytes of host memory while
+ * its ray state is read back and turned into a dump record: 1.8 GB and 1.0 GB at the limit. */
+#define SCENE_MAX_PIXELS (1L << 23)
+#define SCENE_MAX_SEGMENTS 100000   /* segments of a ray (passes of integrate, intersect, terminate) */
+#define SCENE_MAX_STEPS_PER_SEGMENT 10000 /* integration steps */
+#define SCENE_MAX_STEPS_PER_PASS 64 /* integration steps unrolled in one shader */
 #define SCENE_MAX_BATCH 16          /* objects intersected in one pass */
 #define SCENE_MAX_SUBDIVISION 128   /* a sphere's mesh then has 129 x 257 vertices: 16-bit indices */
+/* Pixels along either side of a texture or a sky cube face, as its PNG header declares it: one
+ * decoded image of 8192 x 8192 is 256 MiB of RGBA8. */
+#define SCENE_MAX_TEXTURE_SIZE 8192
+/* Largest magnitude of any number in a scene, scene units: the GPU holds them in 32-bit floats
+ * (largest 3.4e38) and squares lengths, and 1e18 squared still fits. */
+#define SCENE_MAX_ABS_VALUE 1e18
 
 enum primitive_type { PRIM_SPHERE, PRIM_TRIANGLE, PRIM_DISK, PRIM_RECT, PRIM_COUNT };
 enum precision_choice { PRECISION_AUTO, PRECISION_FP32, PRECISION_FP16 };
@@ -142,6 +153,22 @@ struct quality_bound {
     double hit_p99;
 };
 
+/* [kiosk]: what a kiosk knob sets in this scene where its own meaning does not apply (a model
+ * without a mass, a flow the observer's speed means nothing in): a numeric key of the scene, as
+ * --set names it ("model.rho"), moved evenly from min to max over steps detents. key "": the knob
+ * keeps its own meaning (kiosk/kiosk.conf [speed], [mass]). */
+struct knob_mapping {
+    char key[SCENE_NAME_LEN];
+    double min, max;
+    int steps;
+};
+
+#define SCENE_KIOSK_MAX_STEPS 1000   /* detents of a mapped knob from its min to its max */
+
+struct scene_kiosk {
+    struct knob_mapping speed, mass;
+};
+
 struct scene {
     char path[SCENE_PATH_LEN];     /* file it came from */
     char dir[SCENE_PATH_LEN];      /* its directory: relative asset paths resolve against it */
@@ -160,6 +187,7 @@ struct scene {
     int n_textures;
     char textures[SCENE_MAX_TEXTURES][SCENE_PATH_LEN]; /* resolved paths of PNG textures */
     struct quality_bound quality;
+    struct scene_kiosk kiosk;
 };
 
 /* 1 when the observer moves (the setup stage aberrates); 1 when colours follow the Doppler factor. */
@@ -187,6 +215,12 @@ void scene_defaults(struct scene *s);
 int scene_load(struct scene *s, const char *path, struct scene_error *err);
 /* Apply one "section.key=value" override (sections of objects: object.NAME.key). */
 int scene_set(struct scene *s, const char *assignment, struct scene_error *err);
+/* The value of a numeric key of an unnamed section ("model.rho"); 0, or -1 where there is none. */
+int scene_get_number(const struct scene *s, const char *key, double *out);
+/* [kiosk] as the file writes it: each mapped knob's key is a number of this scene, over a range the
+ * key accepts that holds the scene's own value. scene_load runs it, before any --set: rendering
+ * ignores the section, so an override that changes the model does not make it wrong. */
+int scene_kiosk_validate(const struct scene *s, struct scene_error *err);
 /* Cross-field checks after all overrides (e.g. camera not inside the horizon). */
 int scene_validate(const struct scene *s, struct scene_error *err);
 

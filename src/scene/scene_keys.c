@@ -59,6 +59,7 @@ static const struct {
     [SECTION_SKY] = {"sky", 0, 0},
     [SECTION_OBJECT] = {"object", 1, 1},
     [SECTION_QUALITY] = {"quality", 0, 0},
+    [SECTION_KIOSK] = {"kiosk", 0, 0},
 };
 
 const char *scene_section_name(enum scene_section_kind section) { return sections[section].name; }
@@ -75,7 +76,7 @@ int scene_section_find(const char *name)
 
 const char *scene_section_list(void)
 {
-    return "scene, camera, observer, render, model, lighting, light NAME, sky, object NAME, quality";
+    return "scene, camera, observer, render, model, lighting, light NAME, sky, object NAME, quality, kiosk";
 }
 
 void scene_section_label(const struct scene *s, enum scene_section_kind section, int instance,
@@ -140,7 +141,69 @@ static int check_readable(const char *what, const char *path, char *reason, size
     return 0;
 }
 
+/* The size a PNG file declares in its header (the IHDR chunk, which must come first), read
+ * without decoding, so that a texture too large for the renderer is refused at the line that names
+ * it rather than when the renderer decodes it. 0 with the size; 1 when the file does not start
+ * like a PNG: that is left to the PNG reader, which says so when the image is loaded. */
+static int png_declared_size(const char *path, unsigned long *width, unsigned long *height)
+{
+    static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    unsigned char head[24];
+    FILE *f = fopen(path, "rb");
+    size_t n = f ? fread(head, 1, sizeof head, f) : 0;
+    if (f)
+        fclose(f);
+    if (n != sizeof head || memcmp(head, signature, 8) != 0 || memcmp(head + 12, "IHDR", 4) != 0)
+        return 1;
+    *width = (unsigned long)head[16] << 24 | (unsigned long)head[17] << 16 | (unsigned long)head[18] << 8 | head[19];
+    *height = (unsigned long)head[20] << 24 | (unsigned long)head[21] << 16 | (unsigned long)head[22] << 8 | head[23];
+    return 0;
+}
+
+/* A PNG (texture or cube face) within SCENE_MAX_TEXTURE_SIZE a side; *declared tells whether the
+ * header could be read, and then *w and *h hold its size. */
+static int check_image_size(const char *what, const char *path, unsigned long *w, unsigned long *h,
+                            int *declared, char *reason, size_t len)
+{
+    *declared = png_declared_size(path, w, h) == 0;
+    if (*declared && (*w > SCENE_MAX_TEXTURE_SIZE || *h > SCENE_MAX_TEXTURE_SIZE)) {
+        snprintf(reason, len, "%s \"%s\" is %lux%lu pixels; at most %d pixels a side are allowed", what, path,
+                 *w, *h, SCENE_MAX_TEXTURE_SIZE);
+        return -1;
+    }
+    return 0;
+}
+
 /* ---- setters for what a field copy cannot do ---------------------------------------------- */
+
+/* The image's pixel count bounds every per-pixel allocation: checked whenever a side changes. */
+static int check_pixels(long width, long height, char *r, size_t n)
+{
+    if (width * height > SCENE_MAX_PIXELS) {
+        snprintf(r, n, "the image would be %ldx%ld = %ld pixels; at most %ld pixels (width x height) are allowed",
+                 width, height, width * height, SCENE_MAX_PIXELS);
+        return -1;
+    }
+    return 0;
+}
+
+static int set_width(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
+{
+    (void)t;
+    if (check_pixels(v->integer, s->render.height, r, n) != 0)
+        return -1;
+    s->render.width = v->integer;
+    return 0;
+}
+
+static int set_height(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
+{
+    (void)t;
+    if (check_pixels(s->render.width, v->integer, r, n) != 0)
+        return -1;
+    s->render.height = v->integer;
+    return 0;
+}
 
 static int set_model_type(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
 {
@@ -237,7 +300,9 @@ static int set_texture(struct scene *s, void *t, const union scene_key_value *v,
         snprintf(r, n, "the path is longer than %d characters", SCENE_PATH_LEN - 1);
         return -1;
     }
-    if (check_readable("texture", path, r, n) != 0)
+    unsigned long w, h;
+    int declared;
+    if (check_readable("texture", path, r, n) != 0 || check_image_size("texture", path, &w, &h, &declared, r, n) != 0)
         return -1;
     for (int i = 0; i < s->n_textures; i++) {
         if (strcmp(s->textures[i], path) == 0) {
@@ -266,12 +331,33 @@ static int set_cubemap(struct scene *s, void *t, const union scene_key_value *v,
                  (int)(SCENE_PATH_LEN - sizeof "_px.png"));
         return -1;
     }
+    /* the faces of a cube map are squares of one size: GL refuses a face that is not square, and a
+     * cube map whose faces differ is incomplete (it samples black) */
+    unsigned long side = 0;
+    const char *side_face = NULL;
     for (int i = 0; i < 6; i++) {
         char face[SCENE_PATH_LEN + sizeof "_px.png"], what[32];
+        unsigned long w, h;
+        int declared;
         snprintf(face, sizeof face, "%s_%s.png", prefix, faces[i]);
         snprintf(what, sizeof what, "cubemap face %s", faces[i]);
-        if (check_readable(what, face, r, n) != 0)
+        if (check_readable(what, face, r, n) != 0 || check_image_size(what, face, &w, &h, &declared, r, n) != 0)
             return -1;
+        if (!declared)
+            continue;
+        if (w != h) {
+            snprintf(r, n, "%s \"%s\" is %lux%lu pixels; cube map faces must be square", what, face, w, h);
+            return -1;
+        }
+        if (side_face && w != side) {
+            snprintf(r, n, "%s \"%s\" is %lux%lu pixels, face %s %lux%lu; every face must have the same size",
+                     what, face, w, h, side_face, side, side);
+            return -1;
+        }
+        if (!side_face) {
+            side = w;
+            side_face = faces[i];
+        }
     }
     memcpy(s->sky.cubemap, prefix, sizeof prefix);
     return 0;
@@ -312,8 +398,8 @@ const struct scene_key scene_keys[] = {
     {SECTION_OBSERVER, "effects", CHOICE(effects_names, set_effects)},
     {SECTION_OBSERVER, "time", KEY_NUMBER, .lo = -1e9, .hi = 1e9, .offset = AT_SCENE(observer.time)},
 
-    {SECTION_RENDER, "width", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .offset = AT_SCENE(render.width)},
-    {SECTION_RENDER, "height", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .offset = AT_SCENE(render.height)},
+    {SECTION_RENDER, "width", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .set = set_width},
+    {SECTION_RENDER, "height", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .set = set_height},
     {SECTION_RENDER, "method", CHOICE(method_names, set_method)},
     {SECTION_RENDER, "step", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .flags = KEY_ABOVE_LO,
      .offset = AT_SCENE(render.step_size)},
@@ -442,12 +528,45 @@ const struct scene_key scene_keys[] = {
      .offset = AT_SCENE(quality.differing_percent)},
     {SECTION_QUALITY, "exit_p99", KEY_NUMBER, .lo = 0.0, .hi = 3.15, .offset = AT_SCENE(quality.exit_p99)},
     {SECTION_QUALITY, "hit_p99", KEY_NUMBER, .lo = 0.0, .hi = 1000.0, .offset = AT_SCENE(quality.hit_p99)},
+
+    {SECTION_KIOSK, "speed_key", KEY_TEXT, .lo = 1, .hi = SCENE_NAME_LEN - 1, .offset = AT_SCENE(kiosk.speed.key)},
+    {SECTION_KIOSK, "speed_min", KEY_NUMBER, ANY, .offset = AT_SCENE(kiosk.speed.min)},
+    {SECTION_KIOSK, "speed_max", KEY_NUMBER, ANY, .offset = AT_SCENE(kiosk.speed.max)},
+    {SECTION_KIOSK, "speed_steps", KEY_INTEGER, .lo = 1, .hi = SCENE_KIOSK_MAX_STEPS,
+     .offset = AT_SCENE(kiosk.speed.steps)},
+    {SECTION_KIOSK, "mass_key", KEY_TEXT, .lo = 1, .hi = SCENE_NAME_LEN - 1, .offset = AT_SCENE(kiosk.mass.key)},
+    {SECTION_KIOSK, "mass_min", KEY_NUMBER, ANY, .offset = AT_SCENE(kiosk.mass.min)},
+    {SECTION_KIOSK, "mass_max", KEY_NUMBER, ANY, .offset = AT_SCENE(kiosk.mass.max)},
+    {SECTION_KIOSK, "mass_steps", KEY_INTEGER, .lo = 1, .hi = SCENE_KIOSK_MAX_STEPS,
+     .offset = AT_SCENE(kiosk.mass.steps)},
 };
 
 const int scene_key_count = (int)(sizeof scene_keys / sizeof scene_keys[0]);
 _Static_assert(sizeof scene_keys / sizeof scene_keys[0] <= SCENE_KEY_TABLE_MAX,
                "raise SCENE_KEY_TABLE_MAX");
 _Static_assert(MODEL_COUNT <= 16 && PRIM_COUNT <= 16, "type masks are unsigned bit sets");
+
+int scene_get_number(const struct scene *s, const char *key, double *out)
+{
+    char section[SCENE_NAME_LEN];
+    const char *dot = strchr(key, '.');
+    if (!dot || (size_t)(dot - key) >= sizeof section)
+        return -1;
+    memcpy(section, key, (size_t)(dot - key));
+    section[dot - key] = '\0';
+    int kind = scene_section_find(section);
+    if (kind < 0 || scene_section_named(kind))
+        return -1;
+    for (int i = 0; i < scene_key_count; i++) {
+        const struct scene_key *k = &scene_keys[i];
+        if ((int)k->section == kind && strcmp(k->name, dot + 1) == 0 && k->kind == KEY_NUMBER && !k->set &&
+            (k->applies == 0 || kind != SECTION_MODEL || (k->applies & (1u << s->model.type)))) {
+            memcpy(out, (const char *)s + k->offset, sizeof *out);
+            return 0;
+        }
+    }
+    return -1;
+}
 
 int scene_key_find(enum scene_section_kind section, const char *name)
 {
@@ -458,6 +577,10 @@ int scene_key_find(enum scene_section_kind section, const char *name)
 }
 
 /* ---- parsing values ------------------------------------------------------------------------ */
+
+/* A limit's value as written in its #define, for messages that are string constants. */
+#define NUMBER_TEXT(x) NUMBER_TEXT_(x)
+#define NUMBER_TEXT_(x) #x
 
 /* Reads COUNT numbers separated by blanks; the whole text must be used. reason says what was
  * wrong beyond the expected form (a non-finite number, overflow), or stays NULL. */
@@ -480,6 +603,11 @@ static int parse_numbers(const char *text, double *out, int count, const char **
         }
         if (!isfinite(out[i])) {
             *reason = "not a finite number";
+            return -1;
+        }
+        if (fabs(out[i]) > SCENE_MAX_ABS_VALUE) {
+            *reason = "larger in magnitude than " NUMBER_TEXT(SCENE_MAX_ABS_VALUE) ", the most a scene number "
+                      "may be: the GPU squares lengths in 32-bit floats";
             return -1;
         }
         /* "1,2" must not read as 1 followed by garbage that happens to parse later */

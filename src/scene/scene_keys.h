@@ -24,6 +24,7 @@ enum scene_section_kind {
     SECTION_SKY,
     SECTION_OBJECT,     /* named: [object NAME] */
     SECTION_QUALITY,
+    SECTION_KIOSK,
     SECTION_COUNT
 };
 

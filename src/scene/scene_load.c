@@ -310,7 +310,7 @@ int scene_load(struct scene *s, const char *path, struct scene_error *err)
     rc = r->failed ? -1 : 0;
     free(r);
     free(text);
-    return rc;
+    return rc == 0 ? scene_kiosk_validate(s, err) : rc;
 }
 
 /* ---- --set ----------------------------------------------------------------------------------- */

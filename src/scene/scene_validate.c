@@ -53,6 +53,13 @@ static int validate_camera(const struct scene *s, struct scene_error *err)
 static int validate_render(const struct scene *s, struct scene_error *err)
 {
     const struct render_settings *r = &s->render;
+    /* the keys check each side as it is set; this catches scenes changed in code */
+    if (r->width < 1 || r->height < 1 || r->width > SCENE_MAX_SIZE || r->height > SCENE_MAX_SIZE)
+        return invalid(s, err, "the image is %dx%d; each side must be from 1 to %d pixels", r->width, r->height,
+                       SCENE_MAX_SIZE);
+    if ((long)r->width * r->height > SCENE_MAX_PIXELS)
+        return invalid(s, err, "the image is %dx%d = %ld pixels; at most %ld pixels (width x height) are allowed",
+                       r->width, r->height, (long)r->width * r->height, SCENE_MAX_PIXELS);
     /* a pass runs steps_per_pass steps, and a segment must end on a pass boundary for its
      * intersection test to see the whole segment */
     if (r->steps_per_segment % r->steps_per_pass != 0)
@@ -111,6 +118,49 @@ static int validate_observer(const struct scene *s, struct scene_error *err)
                        "give [sky], a [light] or an emitting [object] a temperature (K)",
                        s->observer.effects == EFFECTS_DOPPLER ? "doppler" : "searchlight");
     return 0;
+}
+
+/* [kiosk]: a knob mapped to a key names a number this scene has, over a range that the key takes
+ * at both ends. */
+static int validate_knob(const struct scene *s, const char *knob, const struct knob_mapping *m,
+                         struct scene_error *err)
+{
+    if (m->key[0] == '\0') {
+        if (m->steps || m->min != 0.0 || m->max != 0.0)
+            return invalid(s, err, "[kiosk] %s_min, %s_max and %s_steps need %s_key: the key the knob sets",
+                           knob, knob, knob, knob);
+        return 0;
+    }
+    double value;
+    if (strncmp(m->key, "kiosk.", 6) == 0 || scene_get_number(s, m->key, &value) != 0)
+        return invalid(s, err, "[kiosk] %s_key = %s: not a number of this scene (a key such as model.rho, as "
+                       "--set names it)", knob, m->key);
+    if (!(m->min < m->max))
+        return invalid(s, err, "[kiosk] %s_min (%g) must be below %s_max (%g)", knob, m->min, knob, m->max);
+    if (value < m->min || value > m->max)
+        return invalid(s, err, "[kiosk] %s_key = %s: the scene's own value %g lies outside %s_min .. %s_max "
+                       "(%g .. %g), where the knob could never bring it back", knob, m->key, value, knob, knob,
+                       m->min, m->max);
+    if (m->steps < 1)
+        return invalid(s, err, "[kiosk] %s_steps: the detents from %s_min to %s_max, 1 to %d", knob, knob, knob,
+                       SCENE_KIOSK_MAX_STEPS);
+    static struct scene trial;
+    const double ends[2] = {m->min, m->max};
+    for (int i = 0; i < 2; i++) {
+        char assignment[SCENE_NAME_LEN + 32];
+        struct scene_error e;
+        trial = *s;
+        snprintf(assignment, sizeof assignment, "%s=%.17g", m->key, ends[i]);
+        if (scene_set(&trial, assignment, &e) != 0)
+            return invalid(s, err, "[kiosk] %s_%s = %g: %s", knob, i ? "max" : "min", ends[i], e.message);
+    }
+    return 0;
+}
+
+int scene_kiosk_validate(const struct scene *s, struct scene_error *err)
+{
+    memset(err, 0, sizeof *err);
+    return validate_knob(s, "speed", &s->kiosk.speed, err) || validate_knob(s, "mass", &s->kiosk.mass, err) ? -1 : 0;
 }
 
 int scene_validate(const struct scene *s, struct scene_error *err)

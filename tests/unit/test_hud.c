@@ -446,12 +446,27 @@ static void test_draw_without_font_clears(void **state)
     hud_draw(font, rgba, W, H, &v);
 }
 
+/* A knob the scene maps to one of its keys shows that key and its value, not speed or mass. */
+static void test_lines_mapped_knobs(void **state)
+{
+    (void)state;
+    struct hud_view v = {.title = "lorenz", .speed_key = "model.strength", .speed_param = 0.004,
+                         .mass_key = "model.rho", .mass_param = 34.0, .fps = -1.0};
+    char lines[HUD_MAX_LINES][HUD_LINE_LEN];
+    int n = hud_lines(&v, lines, HUD_MAX_LINES);
+    assert_true(find_line(lines, n, "model.strength = 0.004   (the speed knob)") >= 0);
+    assert_true(find_line(lines, n, "model.rho = 34.00   (the mass knob)") >= 0);
+    assert_true(find_line(lines, n, "v = ") < 0);
+    assert_true(find_line(lines, n, "M = ") < 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_lines_schwarzschild),
         cmocka_unit_test(test_lines_flat_space),
         cmocka_unit_test(test_lines_optional),
+        cmocka_unit_test(test_lines_mapped_knobs),
         cmocka_unit_test(test_text_width),
         cmocka_unit_test(test_text_characters),
         cmocka_unit_test(test_text_draw_inside_its_box),

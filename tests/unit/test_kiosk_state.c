@@ -7,6 +7,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 #include "hard_cases.h"
+#include "kiosk/kiosk_events.h"
 #include "kiosk/kiosk_state.h"
 #include "kiosk/script.h"
 
@@ -194,6 +195,55 @@ static void test_renderer_follows_the_scene(void **state)
     renderer_destroy(r);
 }
 
+/* A scene whose model has no mass maps the knobs to its own keys (lorenz.scene: the mass knob sets
+ * rho from 0 to 50 in 25 detents, the speed knob the flow's strength): a turn moves the key from the
+ * scene's own value, the observer stays at rest, the next scene starts from its own values. */
+static void test_knobs_mapped_to_scene_keys(void **state)
+{
+    (void)state;
+    load_example();
+    static struct scene lorenz, out;
+    struct scene_error e;
+    if (scene_load(&lorenz, "assets/scenes/lorenz.scene", &e) != 0)
+        fail_msg("%s: %s", e.where, e.message);
+    assert_string_equal(lorenz.kiosk.mass.key, "model.rho");
+    struct kiosk_state st;
+    kiosk_state_reset(&st, &config);
+    assert_true(isnan(st.mass_param) && isnan(st.speed_param));
+    struct input_event ev = {.kind = INPUT_KNOB, .knob = INPUT_KNOB_MASS, .counts = 3, .bit = -1};
+    struct event_outcome o;
+    double mass_before = st.mass;
+    kiosk_event_apply(&config, &st, &lorenz, &ev, &o);
+    assert_true(o.changed);
+    assert_true(fabs(st.mass_param - (28.0 + 3 * 2.0)) <= 1e-12);   /* 50 / 25 per detent */
+    assert_true(st.mass == mass_before);
+    ev.knob = INPUT_KNOB_SPEED;
+    ev.counts = 100;                                                /* clamped at speed_max */
+    kiosk_event_apply(&config, &st, &lorenz, &ev, &o);
+    assert_true(st.speed_param == 0.01);
+    st.speed = 0.5;                                                 /* not used: speed is mapped */
+    assert_int_equal(kiosk_state_apply(&st, &lorenz, &out, &e), 0);
+    assert_true(out.model.rho == 34.0);
+    assert_true(out.model.strength == 0.01);
+    assert_true(v3_len(out.observer.velocity) == 0.0);
+    ev.counts = -1000;                                              /* clamped at speed_min */
+    kiosk_event_apply(&config, &st, &lorenz, &ev, &o);
+    assert_true(st.speed_param == 0.0);
+    kiosk_state_action(&st, &config, &lorenz, KIOSK_ACTION_NEXT_SCENE);
+    assert_true(isnan(st.mass_param) && isnan(st.speed_param));
+    assert_int_equal(kiosk_state_apply(&st, &lorenz, &out, &e), 0);
+    assert_true(out.model.rho == 28.0);                             /* the scene's own again */
+    /* a scene without [kiosk]: the mass knob is the black hole's mass */
+    static struct scene bh;
+    if (scene_load(&bh, "assets/scenes/schwarzschild.scene", &e) != 0)
+        fail_msg("%s: %s", e.where, e.message);
+    ev.knob = INPUT_KNOB_MASS;
+    ev.counts = 2;
+    kiosk_event_apply(&config, &st, &bh, &ev, &o);
+    assert_true(isnan(st.mass_param));
+    assert_true(fabs(st.mass - knob_turn(&config.mass, mass_before, 2)) <= 1e-12);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -202,6 +252,7 @@ int main(void)
         cmocka_unit_test(test_actions),
         cmocka_unit_test(test_apply),
         cmocka_unit_test(test_script),
+        cmocka_unit_test(test_knobs_mapped_to_scene_keys),
         cmocka_unit_test(test_renderer_follows_the_scene),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,0 +1,126 @@
+#!/usr/bin/env bash
+# Command-line tests of the limits that stand before allocations (docs/LIMITS.md) and of the GL
+# fault paths, driven by the BT_FAULT test hook: a refusal names the limit and where (FILE:LINE
+# of the scene, or the option), a GL fault falls back to the next render path or exits 1 with a
+# message that names the format and the path. Run by tests/render/run_all.sh; alone:
+#   BT=./bentray tests/render/limits.sh
+set -u
+cd "$(dirname "$0")/../.."
+BT=${BT:-./bentray}
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+fails=0
+check() {   # check NAME EXPECTED_RC PATTERN -- command...
+    local name=$1 want=$2 pattern=$3; shift 4
+    "$@" >"$TMP/out" 2>&1
+    local rc=$?
+    if [ "$rc" != "$want" ] || ! grep -qE -- "$pattern" "$TMP/out"; then
+        echo "FAIL $name: exit $rc (want $want), output:"; sed 's/^/    /' "$TMP/out" | head -8
+        fails=$((fails + 1))
+    else
+        echo "ok   $name"
+    fi
+}
+S=assets/scenes/test.scene
+ASSETS=$PWD/assets
+
+# Big-endian 32-bit integer, as bytes.
+be32() {
+    local v=$1
+    printf "\\x$(printf %02x $(((v >> 24) & 255)))\\x$(printf %02x $(((v >> 16) & 255)))"
+    printf "\\x$(printf %02x $(((v >> 8) & 255)))\\x$(printf %02x $((v & 255)))"
+}
+le32() {
+    local v=$1
+    printf "\\x$(printf %02x $((v & 255)))\\x$(printf %02x $(((v >> 8) & 255)))"
+    printf "\\x$(printf %02x $(((v >> 16) & 255)))\\x$(printf %02x $(((v >> 24) & 255)))"
+}
+# The first 33 bytes of a PNG that declares WIDTH x HEIGHT (RGBA, 8 bits): all the loader reads.
+png_header() {   # FILE WIDTH HEIGHT
+    { printf '\x89PNG\r\n\x1a\n\x00\x00\x00\x0dIHDR'; be32 "$2"; be32 "$3"
+      printf '\x08\x06\x00\x00\x00\x00\x00\x00\x00'; } > "$1"
+}
+# A dump header (docs/DUMP.md) of WIDTH x HEIGHT without records.
+dump_header() {   # FILE WIDTH HEIGHT
+    { printf 'BTDUMP\x00\x00'; le32 2; le32 "$2"; le32 "$3"; le32 52; head -c 76 /dev/zero; } > "$1"
+}
+# The test scene with its assets found from $TMP, the texture and the sky replaced as asked.
+scene_with() {   # FILE TEXTURE SKY_PREFIX
+    sed -e "s#\.\./textures/checker_grey.png#$2#" -e "s#\.\./sky/grid#$3#" -e "s#\.\./#$ASSETS/#" $S > "$1"
+}
+
+# ---- textures and sky faces: the size their PNG headers declare, refused at the scene's line
+png_header "$TMP/huge.png" 100000 100000
+scene_with "$TMP/huge_texture.scene" "$TMP/huge.png" "$ASSETS/sky/grid"
+check "texture over SCENE_MAX_TEXTURE_SIZE" 2 "huge_texture.scene:[0-9]+: error: .*100000x100000 pixels; at most 8192 pixels a side" -- \
+    $BT render --scene "$TMP/huge_texture.scene" --out "$TMP/a.png"
+for f in px nx py ny pz nz; do
+    png_header "$TMP/mixed_$f.png" 64 64
+    png_header "$TMP/vast_$f.png" 16384 16384
+done
+png_header "$TMP/mixed_pz.png" 32 32
+scene_with "$TMP/mixed_sky.scene" "$ASSETS/textures/checker_grey.png" "$TMP/mixed"
+check "cube faces of two sizes" 2 "mixed_sky.scene:[0-9]+: error: .*mixed_pz.png\" is 32x32 pixels, face px 64x64; every face must have the same size" -- \
+    $BT render --scene "$TMP/mixed_sky.scene" --out "$TMP/a.png"
+scene_with "$TMP/vast_sky.scene" "$ASSETS/textures/checker_grey.png" "$TMP/vast"
+check "cube face over SCENE_MAX_TEXTURE_SIZE" 2 "vast_sky.scene:[0-9]+: error: .*16384x16384 pixels; at most 8192" -- \
+    $BT render --scene "$TMP/vast_sky.scene" --engine cpu --out "$TMP/a.png"
+
+# ---- the image: each side and the pixel count, from the file, --set and --size. Each command also
+# carries a later mistake, so that a build without the limit stops there at once instead of
+# rendering gigabytes (and fails the test on the message).
+printf '[render]\nwidth = 8192\n\nheight = 4096\nsegments = 0\n' > "$TMP/big.scene"
+check "scene over SCENE_MAX_PIXELS" 2 "big.scene:4: error: key 'height' in \[render\]: the image would be 8192x4096 = 33554432 pixels; at most 8388608" -- \
+    $BT render --scene "$TMP/big.scene" --out "$TMP/a.png"
+check "--set over SCENE_MAX_PIXELS" 2 "^--set render.height=8192: error: .*at most 8388608 pixels" -- \
+    $BT render --scene $S --set render.width=8192 --set render.height=8192 --set render.segments=0 --out "$TMP/a.png"
+check "--size over SCENE_MAX_PIXELS" 2 "--size: expected WxH with 1 <= W, H <= 8192 and W x H <= 8388608 pixels, got '8192x8192'" -- \
+    $BT render --scene $S --size 8192x8192 --set render.segments=0 --out "$TMP/a.png"
+check "--size side over SCENE_MAX_SIZE" 2 "--size: .*got '100000x1'" -- $BT render --scene $S --size 100000x1 --out "$TMP/a.png"
+check "--size huge number" 2 "--size: .*got '99999999999999999999x99999999999999999999'" -- \
+    $BT trace --scene $S --size 99999999999999999999x99999999999999999999 --pixel 0 0
+check "bench --size over SCENE_MAX_PIXELS" 2 "bench: --size: .*8388608 pixels" -- $BT bench --out "$TMP" --size 4096x4096 --runs 0
+
+# ---- numbers: finite, in range, and within what the GPU's 32-bit floats hold
+sed 's/^position = 0 1.5 9$/position = 0 1.5 2e18/' $S | sed "s#\.\./#$ASSETS/#" > "$TMP/far.scene"
+check "number over SCENE_MAX_ABS_VALUE" 2 "far.scene:8: error: key 'position' in \[camera\]: .*larger in magnitude than 1e18" -- \
+    $BT render --scene "$TMP/far.scene" --out "$TMP/a.png"
+check "--set number over SCENE_MAX_ABS_VALUE" 2 "^--set render.bound_radius=1e300: error: .*1e18" -- \
+    $BT render --scene $S --set render.bound_radius=1e300 --out "$TMP/a.png"
+check "--set nan" 2 "^--set camera.fov=nan: error: .*not a finite number" -- $BT render --scene $S --set camera.fov=nan --out "$TMP/a.png"
+check "--set -inf" 2 "^--set render.step=-inf: error: .*not a finite number" -- $BT render --scene $S --set render.step=-inf --out "$TMP/a.png"
+check "--threads over CPU_MAX_THREADS" 2 "--threads: expected 0 \(one per core\) to 256, got '100000'" -- \
+    $BT render --scene $S --engine cpu --threads 100000 --out "$TMP/a.png"
+check "--rtol nan" 2 "--rtol: expected a relative tolerance from 1e-14 to 0.01, got 'nan'" -- \
+    $BT render --scene $S --engine cpu --rtol nan --out "$TMP/a.png"
+check "--pixel negative" 2 "--pixel" -- $BT trace --scene $S --pixel -1 5
+
+# ---- files read whole: the scene file and dumps
+{ echo "[scene]"; head -c 1048577 /dev/zero | tr '\0' ';'; echo; } > "$TMP/long.scene"
+check "scene file over SCENE_MAX_FILE_BYTES" 2 "long.scene: error: .*larger than 1048576 bytes" -- \
+    $BT render --scene "$TMP/long.scene" --out "$TMP/a.png"
+dump_header "$TMP/square.dump" 4096 4096
+dump_header "$TMP/short.dump" 100 100
+check "dump over DUMP_MAX_PIXELS" 2 "unsupported dump \(version 2, 4096x4096.*at most 8388608 pixels" -- \
+    $BT compare "$TMP/square.dump" "$TMP/short.dump"
+check "dump records missing" 2 "short.dump is truncated: 0 of 10000 records" -- $BT compare "$TMP/short.dump" "$TMP/short.dump"
+
+# ---- GL faults (BT_FAULT, src/gl/caps.h): fall back where the scene allows it, else exit 1
+for b in egl osmesa; do
+    check "fbo incomplete falls back ($b)" 0 "fp16\+mrt: RGBA16F ray state.*\(fell back from fp32\+mrt: RGBA32F framebuffer incomplete\) on $b" -- \
+        env BT_FAULT=fbo_incomplete $BT render --scene $S --size 32x24 --backend $b --out "$TMP/f_$b.png"
+    check "fbo incomplete, fp32 forced ($b)" 1 "render path fp32\+mrt: a ray-state framebuffer \(2 x RGBA32F colour, 16-bit depth, 32x24\) is incomplete: GL_FRAMEBUFFER_UNSUPPORTED" -- \
+        env BT_FAULT=fbo_incomplete $BT render --scene $S --size 32x24 --backend $b --precision fp32 --out "$TMP/g_$b.png"
+done
+check "fbo incomplete, no path left" 1 "render path fp32\+mrt: .*incomplete: GL_FRAMEBUFFER_UNSUPPORTED \(0x8cdd\); try --precision fp16 or --no-mrt" -- \
+    env BT_FAULT=fbo_incomplete,half_fbo_incomplete $BT render --scene $S --size 32x24 --out "$TMP/h.png"
+check "fbo incomplete, fp16 forced" 1 "render path fp16\+mrt: a ray-state framebuffer \(2 x RGBA16F colour.*try --no-mrt" -- \
+    env BT_FAULT=half_fbo_incomplete $BT render --scene $S --size 32x24 --precision fp16 --out "$TMP/i.png"
+check "fbo fault in info" 0 "render path: +fp16\+mrt: .*fell back from fp32\+mrt" -- env BT_FAULT=fbo_incomplete $BT info --backend osmesa
+check "float format does not render" 0 "fp16\+mrt: RGBA16F ray state" -- \
+    env BT_FAULT=float_render $BT render --scene $S --size 32x24 --out "$TMP/j.png"
+check "float fault in info" 0 "RGBA32F +no: not a render target \(BT_FAULT=float_render\)" -- env BT_FAULT=float_render $BT info --backend egl
+check "no float format renders" 1 "no renderable float format for the ray state" -- \
+    env BT_FAULT=float_render,half_float_render $BT render --scene $S --size 32x24 --out "$TMP/k.png"
+echo "limit and fault tests: $fails failed"
+[ "$fails" = 0 ]
