@@ -109,14 +109,13 @@ static int collect_lines(const struct hud_view *v, char lines[][HUD_LINE_LEN], e
         LINE(LINE_TITLE, "%s", v->title);
     if (present(v->explanation))
         LINE(LINE_BODY, "%s", v->explanation);
-    if (present(v->speed_key)) {
-        format_amount(a, sizeof a, v->speed_param);
-        LINE(LINE_BODY, "%s = %s   (the speed knob)", v->speed_key, a);
-    }
-    if (present(v->mass_key)) {
-        format_amount(a, sizeof a, v->mass_param);
-        LINE(LINE_BODY, "%s = %s   (the mass knob)", v->mass_key, a);
-    }
+    const char *const keys[2] = {v->speed_key, v->mass_key}, *const knobs[2] = {"speed", "mass"};
+    const double params[2] = {v->speed_param, v->mass_param};
+    for (int i = 0; i < 2; i++)
+        if (present(keys[i])) {
+            format_amount(a, sizeof a, params[i]);
+            LINE(LINE_BODY, "%s = %s   (the %s knob)", keys[i], a, knobs[i]);
+        }
     if (v->has_speed) {
         char pair[96];
         format_speed_pair(pair, sizeof pair, v->speed);
@@ -183,16 +182,14 @@ struct row {
     int width;
 };
 
-/* Bytes of text that fit in avail pixels: up to a space where one does, otherwise as many whole
- * characters as fit, and always at least one, so that wrapping moves on. */
-static size_t fitting_head(struct hud_font *font, int px, const char *text, int avail)
+/* The longest head of text, cut where cut_here allows, that fits in avail pixels; 0 for none. */
+static size_t longest_fit(struct hud_font *font, int px, const char *text, size_t len, int avail,
+                          int (*cut_here)(const char *text, size_t i, size_t len))
 {
     char head[HUD_LINE_LEN];
-    size_t len = strlen(text), best = 0;
-    if (hud_text_width(font, px, text) <= avail)
-        return len;
-    for (size_t i = 1; i < len; i++) {
-        if (text[i] != ' ')
+    size_t best = 0;
+    for (size_t i = 1; i <= len; i++) {
+        if (!cut_here(text, i, len))
             continue;
         memcpy(head, text, i);
         head[i] = '\0';
@@ -200,17 +197,31 @@ static size_t fitting_head(struct hud_font *font, int px, const char *text, int 
             break;
         best = i;
     }
+    return best;
+}
+
+static int at_space(const char *text, size_t i, size_t len)
+{
+    return i < len && text[i] == ' ';
+}
+
+/* not inside a UTF-8 character */
+static int at_character(const char *text, size_t i, size_t len)
+{
+    return i == len || ((unsigned char)text[i] & 0xC0) != 0x80;
+}
+
+/* Bytes of text that fit in avail pixels: up to a space where one does, otherwise as many whole
+ * characters as fit, and always at least one, so that wrapping moves on. */
+static size_t fitting_head(struct hud_font *font, int px, const char *text, int avail)
+{
+    size_t len = strlen(text);
+    if (hud_text_width(font, px, text) <= avail)
+        return len;
+    size_t best = longest_fit(font, px, text, len, avail, at_space);
     if (best > 0)
         return best;
-    for (size_t i = 1; i <= len; i++) {
-        if (i < len && ((unsigned char)text[i] & 0xC0) == 0x80)
-            continue;   /* inside a character */
-        memcpy(head, text, i);
-        head[i] = '\0';
-        if (hud_text_width(font, px, head) > avail)
-            break;
-        best = i;
-    }
+    best = longest_fit(font, px, text, len, avail, at_character);
     if (best > 0)
         return best;
     size_t one = 1;

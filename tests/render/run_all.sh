@@ -2,22 +2,7 @@
 # Command-line tests of the bentray binary: exit codes, error messages, the render paths that
 # need a different GL environment (GLES 2.0, missing extensions), both back-ends.
 set -u
-cd "$(dirname "$0")/../.."
-BT=${BT:-./bentray}
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-fails=0
-check() {   # check NAME EXPECTED_RC PATTERN -- command...
-    local name=$1 want=$2 pattern=$3; shift 4
-    "$@" >"$TMP/out" 2>&1
-    local rc=$?
-    if [ "$rc" != "$want" ] || ! grep -qE -- "$pattern" "$TMP/out"; then
-        echo "FAIL $name: exit $rc (want $want), output:"; sed 's/^/    /' "$TMP/out" | head -8
-        fails=$((fails + 1))
-    else
-        echo "ok   $name"
-    fi
-}
+. "$(dirname "$0")/check.sh"
 S=assets/scenes/test.scene
 check "help" 0 "usage: bentray" -- $BT --help
 check "render help" 0 "--scene FILE" -- $BT render --help

@@ -280,26 +280,6 @@ static int count_x_error(Display *dpy, XErrorEvent *e)
     return 0;
 }
 
-static Window find_window(Display *dpy, Window w, const char *title)
-{
-    char *name = NULL;
-    if (XFetchName(dpy, w, &name) && name) {
-        int match = strcmp(name, title) == 0;
-        XFree(name);
-        if (match)
-            return w;
-    }
-    Window root, parent, *children = NULL, found = 0;
-    unsigned n = 0;
-    if (XQueryTree(dpy, w, &root, &parent, &children, &n)) {
-        for (unsigned i = 0; i < n && !found; i++)
-            found = find_window(dpy, children[i], title);
-        if (children)
-            XFree(children);
-    }
-    return found;
-}
-
 /* A channel of a pixel as 8 bits, from the visual's mask for it. */
 static unsigned char channel(unsigned long pixel, unsigned long mask)
 {
@@ -423,7 +403,7 @@ static void test_window_shows_the_headless_frame(void **state)
     while (!settled && monotonic_seconds() < deadline) {
         kiosk_still_running();
         if (!w)
-            w = find_window(dpy, DefaultRootWindow(dpy), WINDOW_TITLE);
+            w = xvfb_find_window(dpy, DefaultRootWindow(dpy), WINDOW_TITLE);
         elapsed = monotonic_seconds() - kiosk_started;
         if (w && grab_window(dpy, w, window_pixels) == 0) {
             grabs++;
@@ -531,7 +511,7 @@ static void test_window_comes_back_uncovered(void **state)
     if (!dpy)
         fail_msg("cannot open the test's X display %s", xvfb.display);
     XErrorHandler previous = XSetErrorHandler(count_x_error);
-    Window w = find_window(dpy, DefaultRootWindow(dpy), WINDOW_TITLE);
+    Window w = xvfb_find_window(dpy, DefaultRootWindow(dpy), WINDOW_TITLE);
     assert_true(w != 0);
     size_t size = (size_t)FRAME_WIDTH * FRAME_HEIGHT * 3;
     unsigned char *before = malloc(size), *after = malloc(size);

@@ -131,26 +131,6 @@ static void test_x11_frame_reads_back(void **state)
 
 /* ---- events through a second connection, as a window manager and a keyboard would send them ---- */
 
-static Window find_window(Display *dpy, Window w, const char *title)
-{
-    char *name = NULL;
-    if (XFetchName(dpy, w, &name) && name) {
-        int match = strcmp(name, title) == 0;
-        XFree(name);
-        if (match)
-            return w;
-    }
-    Window root, parent, *children = NULL, found = 0;
-    unsigned n = 0;
-    if (XQueryTree(dpy, w, &root, &parent, &children, &n)) {
-        for (unsigned i = 0; i < n && !found; i++)
-            found = find_window(dpy, children[i], title);
-        if (children)
-            XFree(children);
-    }
-    return found;
-}
-
 static void send_key(Display *dpy, Window w, KeySym sym)
 {
     XEvent e;
@@ -201,7 +181,7 @@ static void test_x11_events(void **state)
     open_x11(&s, &c);
     Display *other = XOpenDisplay(xvfb.display);
     assert_non_null(other);
-    Window w = find_window(other, DefaultRootWindow(other), "bentray kiosk");
+    Window w = xvfb_find_window(other, DefaultRootWindow(other), "bentray kiosk");
     assert_true(w != 0);
 
     send_key(other, w, XK_Up);

@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <X11/Xlib.h>
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <sys/wait.h>
@@ -135,6 +136,27 @@ static inline void xvfb_stop(struct xvfb *x)
         waitpid(x->pid, NULL, 0);
         x->pid = -1;
     }
+}
+
+/* The window called title under w (depth first), 0 if there is none. */
+static inline Window xvfb_find_window(Display *dpy, Window w, const char *title)
+{
+    char *name = NULL;
+    if (XFetchName(dpy, w, &name) && name) {
+        int match = strcmp(name, title) == 0;
+        XFree(name);
+        if (match)
+            return w;
+    }
+    Window root, parent, *children = NULL, found = 0;
+    unsigned n = 0;
+    if (XQueryTree(dpy, w, &root, &parent, &children, &n)) {
+        for (unsigned i = 0; i < n && !found; i++)
+            found = xvfb_find_window(dpy, children[i], title);
+        if (children)
+            XFree(children);
+    }
+    return found;
 }
 
 #endif
