@@ -24,6 +24,12 @@ struct bench_screen {
     GLuint color;
 };
 
+static void screen_free(struct bench_screen *bs)
+{
+    glDeleteFramebuffers(1, &bs->s.framebuffer);
+    glDeleteRenderbuffers(1, &bs->color);
+}
+
 static int screen_make(struct bench_screen *bs, int w, int h, char *err, size_t errlen)
 {
     memset(bs, 0, sizeof *bs);
@@ -37,16 +43,12 @@ static int screen_make(struct bench_screen *bs, int w, int h, char *err, size_t 
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, bs->color);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
         snprintf(err, errlen, "the bench's %dx%d screen framebuffer is incomplete", w, h);
+        screen_free(bs);
         return -1;
     }
     return 0;
 }
 
-static void screen_free(struct bench_screen *bs)
-{
-    glDeleteFramebuffers(1, &bs->s.framebuffer);
-    glDeleteRenderbuffers(1, &bs->color);
-}
 
 struct kiosk_timing {
     double preview_median;           /* s per preview, on screen */
@@ -57,7 +59,7 @@ struct kiosk_timing {
 static int time_scene(struct kiosk_view *v, const struct kiosk_config *c, struct bench_screen *bs, int scene,
                       struct kiosk_timing *t, char *err, size_t errlen)
 {
-    if (kiosk_view_load(v, scene, err, errlen) != 0)
+    if (kiosk_view_load(v, scene, NULL, err, errlen) != 0)
         return -1;
     struct kiosk_state st;
     kiosk_state_reset(&st, c);

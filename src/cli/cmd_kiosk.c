@@ -3,6 +3,7 @@
 #include "cli/options.h"
 #include "kiosk/keymap.h"
 #include "kiosk/kiosk_loop.h"
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -114,7 +115,8 @@ int cmd_kiosk(int argc, char **argv)
     if (strcmp(c.kiosk.log, "stderr") != 0) {
         log = fopen(c.kiosk.log, "a");
         if (!log) {
-            fprintf(stderr, "bentray kiosk: %s: [kiosk] log: cannot open %s for appending\n", c.path, c.kiosk.log);
+            fprintf(stderr, "bentray kiosk: %s: [kiosk] log: cannot open %s for appending: %s\n", c.path, c.kiosk.log,
+                    strerror(errno));
             return EXIT_USAGE;
         }
     }

@@ -49,7 +49,11 @@ int compositor_init(struct compositor *c, const struct gl_context *gl, int width
     }
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
-    return gl_check("making the compositor", err, errlen);
+    if (gl_check("making the compositor", err, errlen) != 0) {
+        compositor_release(c);
+        return -1;
+    }
+    return 0;
 }
 
 void compositor_release(struct compositor *c)

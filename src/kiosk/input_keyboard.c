@@ -18,6 +18,10 @@ struct keyboard {
     struct termios saved;
     int saved_flags;
     int ended;                       /* end of input: nothing more to poll */
+    /* the start of an escape sequence (ESC, or ESC '[') that the last read ended in: a terminal may
+     * split "ESC [ A" across reads, and a lone ESC is the Escape key, which stops the kiosk */
+    unsigned char pending[2];
+    int n_pending;
 };
 
 static int keyboard_fds(struct input_source *src, struct pollfd *out, int max)
@@ -31,7 +35,9 @@ static int keyboard_fds(struct input_source *src, struct pollfd *out, int max)
     return 1;
 }
 
-/* One key from the bytes read: arrows arrive as ESC [ A..D; a lone ESC is the Escape key. */
+/* One key from the bytes read: arrows arrive as ESC [ A..D; a lone ESC is the Escape key. Returns
+ * -1 when the bytes end inside an escape sequence (more may follow), 0 for bytes that are no key,
+ * 1 for a key. */
 static int next_key(const unsigned char *buf, int len, int *used, enum key_code *code, int *ch)
 {
     *ch = buf[0];
@@ -39,7 +45,9 @@ static int next_key(const unsigned char *buf, int len, int *used, enum key_code 
     *used = 1;
     if (buf[0] != 0x1b)
         return 1;
-    if (len >= 3 && buf[1] == '[') {
+    if (len == 1 || (len == 2 && buf[1] == '['))
+        return -1;
+    if (buf[1] == '[') {
         static const char arrows[] = "ABCD";
         static const enum key_code codes[] = {KEY_CODE_UP, KEY_CODE_DOWN, KEY_CODE_RIGHT, KEY_CODE_LEFT};
         const char *at = memchr(arrows, buf[2], 4);
@@ -53,17 +61,35 @@ static int next_key(const unsigned char *buf, int len, int *used, enum key_code 
     return 1;
 }
 
+static int emit(struct input_source *src, double now, enum key_code code, int ch, struct input_event *ev)
+{
+    if (!keymap_event(code, ch, ev))
+        return 0;
+    ev->t = now;
+    ev->source = src->index;
+    return 1;
+}
+
 static int keyboard_drain(struct input_source *src, double now, struct input_event *out, int max)
 {
     struct keyboard *k = src->priv;
-    int n = 0;
-    while (!k->ended && n < max) {
-        /* at most one key per event slot left, so nothing read is dropped */
+    int n = 0, read_any = 0;
+    /* at least one whole escape sequence of room, so that nothing read is dropped */
+    while (!k->ended && max - n >= 3) {
         unsigned char buf[64];
-        size_t want = (size_t)(max - n) < sizeof buf / 3 ? (size_t)(max - n) : sizeof buf / 3;
-        ssize_t got = read(k->fd, buf, want);
-        if (got < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR))
+        memcpy(buf, k->pending, (size_t)k->n_pending);
+        size_t room = (size_t)(max - n) < sizeof buf - 2 ? (size_t)(max - n) : sizeof buf - 2;
+        ssize_t got = read(k->fd, buf + k->n_pending, room);
+        if (got < 0 && (errno == EAGAIN || errno == EWOULDBLOCK || errno == EINTR)) {
+            /* held back since the last drain and nothing followed: a lone ESC is the Escape key (an
+             * unfinished ESC '[' is nothing) */
+            if (!read_any) {
+                if (k->n_pending == 1)
+                    n += emit(src, now, KEY_CODE_ESCAPE, 0x1b, &out[n]);
+                k->n_pending = 0;
+            }
             break;
+        }
         if (got <= 0) {
             k->ended = 1;
             src->finished = 1;
@@ -72,14 +98,20 @@ static int keyboard_drain(struct input_source *src, double now, struct input_eve
                         src->cfg->name, strerror(errno));
             break;
         }
-        for (int i = 0; i < got && n < max;) {
+        read_any = 1;
+        int len = (int)got + k->n_pending;
+        k->n_pending = 0;
+        for (int i = 0; i < len && n < max;) {
             enum key_code code;
             int ch, used;
-            if (next_key(buf + i, (int)got - i, &used, &code, &ch) && keymap_event(code, ch, &out[n])) {
-                out[n].t = now;
-                out[n].source = src->index;
-                n++;
+            int key = next_key(buf + i, len - i, &used, &code, &ch);
+            if (key < 0) {
+                k->n_pending = len - i;
+                memcpy(k->pending, buf + i, (size_t)k->n_pending);
+                break;
             }
+            if (key > 0)
+                n += emit(src, now, code, ch, &out[n]);
             i += used;
         }
     }

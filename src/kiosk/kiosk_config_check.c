@@ -232,6 +232,11 @@ static int check_button(const struct kiosk_config *c, struct kiosk_config_error 
     if (in->type == KIOSK_INPUT_GPIO_ENCODER)
         return bad_key(c, err, KSEC_BUTTON, i, "input", ": [input %s] is a gpio_encoder, which has no "
                        "button: give the button its own gpio_button input", in->name);
+    /* never ignored: these send actions by name themselves, so a button on them could never fire */
+    if (in->type == KIOSK_INPUT_KEYBOARD || in->type == KIOSK_INPUT_SCRIPT)
+        return bad_key(c, err, KSEC_BUTTON, i, "input", ": [input %s] is a %s, which presses actions by name "
+                       "(%s): this button would never fire; remove it", in->name, kiosk_input_type_name(in->type),
+                       in->type == KIOSK_INPUT_KEYBOARD ? "its fixed keys" : "'press ACTION'");
     /* never ignored: a bit on an input without button bits would be a press nobody can make */
     if (in->type != KIOSK_INPUT_HID && b->bit != NO_BIT)
         return bad_key(c, err, KSEC_BUTTON, i, "bit", " does not apply to input type '%s' of [input %s] "

@@ -28,13 +28,13 @@ static void on_stop_signal(int sig)
 /* No SA_RESTART: a signal cuts poll() short, so the loop sees it at once. */
 static void catch_stop_signals(void)
 {
+    stop_requested = 0;
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_stop_signal;
     sigemptyset(&sa.sa_mask);
     sigaction(SIGTERM, &sa, NULL);
     sigaction(SIGINT, &sa, NULL);
-    stop_requested = 0;
 }
 
 struct kiosk {
@@ -46,8 +46,9 @@ struct kiosk {
     int have_view;
     struct input_source *inputs[KIOSK_MAX_INPUTS];
     struct kiosk_state state;
+    struct scene *scenes;            /* every scene file, read and checked once at start */
     int virtual_clock;
-    long turn;                       /* turns of the loop so far */
+    long long turn;                  /* turns of the loop so far */
     double now;
     /* attract mode */
     struct script tour;
@@ -57,7 +58,8 @@ struct kiosk {
     /* HUD */
     struct hud_font *font;
     unsigned char *hud_rgba;
-    char hud_text[HUD_MAX_LINES * HUD_LINE_LEN];
+    int hud_width, hud_height;       /* of hud_rgba: the screen's size when it was made */
+    char hud_text[HUD_MAX_LINES * HUD_LINE_LEN + 128];
     enum hud_knob indicator;
     double indicator_until;
     char notice[HUD_LINE_LEN];
@@ -66,7 +68,7 @@ struct kiosk {
     double second_start;
     /* headless frames */
     int frames_written;
-    long drawn;                      /* previews and bands drawn */
+    long long drawn;                 /* previews and bands drawn */
 };
 
 static double kiosk_now(const struct kiosk *k)
@@ -77,7 +79,7 @@ static double kiosk_now(const struct kiosk *k)
 /* The scene's view of the knobs and what the HUD says about them. */
 static void hud_view_of(struct kiosk *k, struct hud_view *v)
 {
-    const struct scene *s = &k->view.base;
+    const struct scene *s = &k->scenes[k->state.scene];
     memset(v, 0, sizeof *v);
     v->title = s->name;
     v->explanation = s->description;
@@ -124,21 +126,36 @@ static int update_hud(struct kiosk *k, char *err, size_t errlen, int *failed)
     *failed = 0;
     if (!k->font)
         return 0;
+    int w = k->screen->width, h = k->screen->height;
+    if (w != k->hud_width || h != k->hud_height) {
+        /* a window can be resized: the HUD is drawn at the screen's size */
+        unsigned char *grown = realloc(k->hud_rgba, (size_t)w * h * 4);
+        if (!grown) {
+            snprintf(err, errlen, "out of memory for the HUD at %dx%d", w, h);
+            *failed = 1;
+            return 0;
+        }
+        k->hud_rgba = grown;
+        k->hud_width = w;
+        k->hud_height = h;
+        k->hud_text[0] = '\0';
+    }
     struct hud_view v;
     hud_view_of(k, &v);
     char lines[HUD_MAX_LINES][HUD_LINE_LEN];
     int n = hud_lines(&v, lines, HUD_MAX_LINES);
     char text[sizeof k->hud_text];
-    /* the indicator is drawn but not in the text: its coming and going must redraw the HUD too (its
-     * bar moves with the value, which the text shows) */
-    size_t used = (size_t)snprintf(text, sizeof text, "indicator %d\n", (int)v.indicator);
+    /* the indicator is drawn but not in the text (and its value not always): its coming and going
+     * and its bar must redraw the HUD too, and so must a new size */
+    size_t used = (size_t)snprintf(text, sizeof text, "%dx%d indicator %d %.17g\n", w, h, (int)v.indicator,
+                                   v.indicator == HUD_KNOB_NONE ? 0.0 : v.indicator_value);
     for (int i = 0; i < n && used < sizeof text; i++)
         used += (size_t)snprintf(text + used, sizeof text - used, "%s\n", lines[i]);
     if (strcmp(text, k->hud_text) == 0)
         return 0;
     memcpy(k->hud_text, text, sizeof text);
-    hud_draw(k->font, k->hud_rgba, k->screen->width, k->screen->height, &v);
-    if (compositor_set_hud(&k->view.comp, k->hud_rgba, k->screen->width, k->screen->height, err, errlen) != 0)
+    hud_draw(k->font, k->hud_rgba, w, h, &v);
+    if (compositor_set_hud(&k->view.comp, k->hud_rgba, w, h, err, errlen) != 0)
         *failed = 1;
     return 1;
 }
@@ -162,17 +179,59 @@ static int write_frame(struct kiosk *k, char *err, size_t errlen)
     return rc;
 }
 
-/* A state the scene cannot show (the camera inside the horizon) is not taken: the knob stops there
- * and the HUD says why. */
-static void take_state(struct kiosk *k, const struct kiosk_state *proposed)
+static void notice(struct kiosk *k, const char *what, const char *why)
 {
+    snprintf(k->notice, sizeof k->notice, "%.30s: %.120s", what, why);
+    k->notice_until = k->now + KIOSK_INDICATOR_SECONDS;
+}
+
+/* A state its scene cannot show (the mass puts the camera inside the horizon) is not taken: the
+ * knob stops there and the HUD says why. A new scene where the knobs' values do not fit is shown
+ * with the knobs back at their start, which preflight() made sure every scene takes. Returns 1
+ * when the state was taken (as proposed or so corrected). */
+static int take_state(struct kiosk *k, const struct kiosk_state *proposed)
+{
+    static struct scene trial;
     struct scene_error serr;
-    if (proposed->scene == k->state.scene && kiosk_view_accepts(&k->view, proposed, &serr) != 0) {
-        snprintf(k->notice, sizeof k->notice, "limit: %.150s", serr.message);
-        k->notice_until = k->now + KIOSK_INDICATOR_SECONDS;
+    if (kiosk_state_apply(proposed, &k->scenes[proposed->scene], &trial, &serr) == 0) {
+        k->state = *proposed;
+        return 1;
+    }
+    if (proposed->scene == k->state.scene) {
+        notice(k, "limit", serr.message);
+        return 0;
+    }
+    struct kiosk_state fresh;
+    kiosk_state_reset(&fresh, k->cfg);
+    fresh.scene = proposed->scene;
+    notice(k, "knobs back to their start", serr.message);
+    k->state = fresh;
+    return 1;
+}
+
+/* One event for the state as it is now (its scene's knob mappings and black bodies). A turn of
+ * several detents that would cross a limit goes as far as the limit, detent by detent. */
+static void apply_event(struct kiosk *k, const struct input_event *ev, struct event_outcome *out, int *changed)
+{
+    struct kiosk_state proposed = k->state;
+    kiosk_event_apply(k->cfg, &proposed, &k->scenes[proposed.scene], ev, out);
+    if (!out->changed)
+        return;
+    if (take_state(k, &proposed)) {
+        *changed = 1;
         return;
     }
-    k->state = *proposed;
+    long counts = ev->kind == INPUT_TURN || ev->kind == INPUT_KNOB ? ev->counts : 0;
+    struct input_event one = *ev;
+    one.counts = counts > 0 ? 1 : -1;
+    for (long i = 1; i < labs(counts); i++) {
+        struct event_outcome step;
+        proposed = k->state;
+        kiosk_event_apply(k->cfg, &proposed, &k->scenes[proposed.scene], &one, &step);
+        if (!step.changed || !take_state(k, &proposed))
+            break;
+        *changed = 1;
+    }
 }
 
 /* Applies the events of one turn; returns 1 when the picture must change. */
@@ -180,29 +239,26 @@ static int handle_events(struct kiosk *k, const struct input_event *ev, int n, i
 {
     int changed = 0;
     for (int i = 0; i < n; i++) {
-        struct kiosk_state proposed = k->state;
         struct event_outcome out;
-        kiosk_event_apply(k->cfg, &proposed, &k->view.base, &ev[i], &out);
-        *frames += out.frame;
-        *quit |= out.quit;
-        if (!out.visitor)
+        if (ev[i].kind == INPUT_FRAME || ev[i].kind == INPUT_QUIT || ev[i].kind == INPUT_RELEASE) {
+            *frames += ev[i].kind == INPUT_FRAME;
+            *quit |= ev[i].kind == INPUT_QUIT;
             continue;
-        k->last_input = k->now;
+        }
         if (k->attract) {
-            /* a visitor takes over at once, from the start */
+            /* a visitor takes over at once, from the start, with what they did */
             k->attract = 0;
-            kiosk_state_reset(&proposed, k->cfg);
-            kiosk_event_apply(k->cfg, &proposed, &k->view.base, &ev[i], &out);
+            kiosk_state_reset(&k->state, k->cfg);
             changed = 1;
             fprintf(k->log, "attract mode ends: input\n");
         }
+        apply_event(k, &ev[i], &out, &changed);
+        if (!out.visitor)
+            continue;
+        k->last_input = k->now;
         if (out.knob != HUD_KNOB_NONE) {
             k->indicator = out.knob;
             k->indicator_until = k->now + KIOSK_INDICATOR_SECONDS;
-        }
-        if (out.changed || changed) {
-            take_state(k, &proposed);
-            changed = 1;
         }
     }
     return changed;
@@ -219,20 +275,26 @@ static int gather_events(struct kiosk *k, struct input_event *ev, int max)
     return n;
 }
 
-/* The tour's own events move the state as a visitor's would, but are not a visitor. */
-static int play_tour(struct kiosk *k)
+/* The tour's own events move the state as a visitor's would, but are not a visitor; each pass
+ * through the tour starts from the start state, so that its relative turns do not add up. */
+static int play_tour(struct kiosk *k, int *frames)
 {
+    if (!k->attract)
+        return 0;
     struct input_event ev[KIOSK_MAX_EVENTS];
-    int n = k->attract ? script_player_due(&k->tour_player, k->now, -1, ev, KIOSK_MAX_EVENTS) : 0;
+    long wraps = k->tour_player.wraps;
+    int n = script_player_due(&k->tour_player, k->now, -1, ev, KIOSK_MAX_EVENTS);
     int changed = 0;
+    if (k->tour_player.wraps != wraps) {
+        kiosk_state_reset(&k->state, k->cfg);
+        changed = 1;
+    }
     for (int i = 0; i < n; i++) {
-        struct kiosk_state proposed = k->state;
         struct event_outcome out;
-        kiosk_event_apply(k->cfg, &proposed, &k->view.base, &ev[i], &out);
-        if (out.changed) {
-            take_state(k, &proposed);
-            changed = 1;
-        }
+        if (ev[i].kind == INPUT_FRAME)
+            (*frames)++;
+        else
+            apply_event(k, &ev[i], &out, &changed);
     }
     return changed;
 }
@@ -274,7 +336,7 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
     int n = gather_events(k, ev, KIOSK_MAX_EVENTS);
     int frames = 0, quit = 0;
     int was_scene = k->state.scene;
-    int changed = play_tour(k);
+    int changed = play_tour(k, &frames) | (k->turn == 0);   /* the first picture */
     changed |= handle_events(k, ev, n, &frames, &quit);
     if (quit || stop_requested)
         return 0;
@@ -283,7 +345,7 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
         changed = 1;
     }
     if (k->state.scene != was_scene || k->view.scene_index != k->state.scene) {
-        if (kiosk_view_load(&k->view, k->state.scene, err, errlen) != 0)
+        if (kiosk_view_load(&k->view, k->state.scene, &k->scenes[k->state.scene], err, errlen) != 0)
             return -1;
         changed = 1;
     }
@@ -315,12 +377,18 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
         if (k->turn == 0)
             service_ready();
     }
-    for (int f = 0; f < frames; f++) {
+    /* frames are files of the headless screen only: a script's 'frame' means nothing on a display */
+    int limit = k->cfg->display.headless_frames;
+    for (int f = 0; f < frames && k->virtual_clock; f++) {
         if (write_frame(k, err, errlen) != 0)
             return -1;
-        int limit = k->cfg->display.headless_frames;
         if (limit > 0 && k->frames_written >= limit)
             return 0;
+    }
+    if (k->virtual_clock && limit > 0 && !scripts_pending(k) && !k->cfg->attract.enabled) {
+        fprintf(k->log, "bentray kiosk: the scripts have ended after %d of the %d frames asked for\n",
+                k->frames_written, limit);
+        return 0;
     }
     service_watchdog();
     k->turn++;
@@ -334,11 +402,25 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
 static int preflight(struct kiosk *k, char *err, size_t errlen)
 {
     const struct kiosk_config *c = k->cfg;
-    static struct scene s;
+    k->scenes = calloc((size_t)c->kiosk.n_scenes, sizeof *k->scenes);
+    if (!k->scenes) {
+        snprintf(err, errlen, "out of memory for %d scenes", c->kiosk.n_scenes);
+        return -1;
+    }
     for (int i = 0; i < c->kiosk.n_scenes; i++) {
         struct scene_error serr;
-        if (scene_load(&s, c->kiosk.scenes[i], &serr) != 0) {
+        if (scene_load(&k->scenes[i], c->kiosk.scenes[i], &serr) != 0) {
             snprintf(err, errlen, "%s: %s", serr.where, serr.message);
+            return -1;
+        }
+        /* every scene must take the knobs' start values: reset and a scene change fall back to them */
+        static struct scene trial;
+        struct kiosk_state start;
+        kiosk_state_reset(&start, c);
+        start.scene = i;
+        if (kiosk_state_apply(&start, &k->scenes[i], &trial, &serr) != 0) {
+            snprintf(err, errlen, "%s: the knobs' start values (speed %g c, mass %g) do not fit %s: %s", c->path,
+                     c->speed.start, c->mass.start, c->kiosk.scenes[i], serr.message);
             return -1;
         }
     }
@@ -360,7 +442,11 @@ static int headless_preflight(const struct kiosk *k, char *err, size_t errlen)
                  k->cfg->path);
         return -1;
     }
-    if (stat(d->headless_out, &st) != 0 || !S_ISDIR(st.st_mode)) {
+    if (stat(d->headless_out, &st) != 0) {
+        snprintf(err, errlen, "%s: [display] headless_out: %s: %s", k->cfg->path, d->headless_out, strerror(errno));
+        return -1;
+    }
+    if (!S_ISDIR(st.st_mode)) {
         snprintf(err, errlen, "%s: [display] headless_out: %s is not a directory", k->cfg->path, d->headless_out);
         return -1;
     }
@@ -393,7 +479,9 @@ static struct screen *open_screen(struct kiosk *k, char *err, size_t errlen)
             return NULL;
         if (!logged++)
             fprintf(k->log, "bentray kiosk: %s; trying again every %.0f s\n", err, KIOSK_DISPLAY_RETRY_SECONDS);
-        service_watchdog();
+        /* before READY the service manager counts start-up time, not the watchdog: ask for more */
+        service_extend_timeout(3.0 * KIOSK_DISPLAY_RETRY_SECONDS);
+        service_status("waiting for a monitor: %s", err);
         struct timespec wait = {(time_t)KIOSK_DISPLAY_RETRY_SECONDS, 0};
         nanosleep(&wait, NULL);
     }
@@ -407,6 +495,7 @@ static void kiosk_close(struct kiosk *k)
         kiosk_view_release(&k->view);
     hud_font_close(k->font);
     free(k->hud_rgba);
+    free(k->scenes);
     if (k->screen)
         screen_close(k->screen);
 }
@@ -421,7 +510,9 @@ static int open_hud(struct kiosk *k)
         fprintf(k->log, "HUD: %s; the kiosk runs without it\n", err);
         return 0;
     }
-    k->hud_rgba = malloc((size_t)k->screen->width * k->screen->height * 4);
+    k->hud_width = k->screen->width;
+    k->hud_height = k->screen->height;
+    k->hud_rgba = malloc((size_t)k->hud_width * k->hud_height * 4);
     return k->hud_rgba ? 0 : -1;
 }
 
@@ -435,17 +526,20 @@ int kiosk_run(const struct kiosk_config *c, const struct kiosk_run_options *o)
     char err[2048];
     if (preflight(&k, err, sizeof err) != 0) {
         fprintf(k.log, "bentray kiosk: %s\n", err);
+        free(k.scenes);
         return 2;
     }
     int headless = c->display.backend == KIOSK_BACKEND_HEADLESS;
     if (headless && headless_preflight(&k, err, sizeof err) != 0) {
         fprintf(k.log, "bentray kiosk: %s\n", err);
+        free(k.scenes);
         return 2;
     }
     catch_stop_signals();
     k.screen = open_screen(&k, err, sizeof err);
     if (!k.screen) {
         fprintf(k.log, "bentray kiosk: no screen: %s\n", err);
+        free(k.scenes);
         return stop_requested ? 0 : 1;
     }
     k.virtual_clock = strcmp(k.screen->name, "headless") == 0;
@@ -478,6 +572,11 @@ int kiosk_run(const struct kiosk_config *c, const struct kiosk_run_options *o)
             fprintf(k.log, "input %s: out of memory; left out\n", c->inputs[i].name);
     }
     kiosk_state_reset(&k.state, c);
+    if (kiosk_view_load(&k.view, k.state.scene, &k.scenes[k.state.scene], err, sizeof err) != 0) {
+        fprintf(k.log, "bentray kiosk: %s\n", err);
+        kiosk_close(&k);
+        return 1;
+    }
     for (;;) {
         int r = kiosk_turn(&k, err, sizeof err);
         if (r < 0) {
@@ -489,7 +588,7 @@ int kiosk_run(const struct kiosk_config *c, const struct kiosk_run_options *o)
             break;
     }
     service_stopping();
-    fprintf(k.log, "bentray kiosk: stopped after %ld turns of the loop, %ld frames drawn%s\n", k.turn, k.drawn,
+    fprintf(k.log, "bentray kiosk: stopped after %lld turns of the loop, %lld frames drawn%s\n", k.turn, k.drawn,
             stop_requested ? " (signal)" : "");
     kiosk_close(&k);
     return rc;

@@ -14,7 +14,8 @@ int kiosk_view_init(struct kiosk_view *v, const struct kiosk_config *cfg, const 
     const struct kiosk_main *k = &cfg->kiosk;
     long preview_rays = (long)k->preview_width * k->preview_height;
     int by_cost = (int)(preview_rays / ((long)PREVIEW_STEP_FACTOR * k->width));
-    int by_frames = (k->height + k->refine_frames - 1) / k->refine_frames;
+    /* rounded down: at least refine_frames bands, as the configuration promises */
+    int by_frames = k->height / k->refine_frames > 0 ? k->height / k->refine_frames : 1;
     v->band_rows = by_cost < 1 ? 1 : by_cost < by_frames ? by_cost : by_frames;
     v->refined_rows = k->height;
     return compositor_init(&v->comp, gl, k->width, k->height, err, errlen);
@@ -27,16 +28,17 @@ void kiosk_view_release(struct kiosk_view *v)
     compositor_release(&v->comp);
 }
 
-int kiosk_view_load(struct kiosk_view *v, int scene_index, char *err, size_t errlen)
+int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *base, char *err, size_t errlen)
 {
     if (v->scene_index == scene_index && v->renderer)
         return 0;
     renderer_destroy(v->renderer);
     v->renderer = NULL;
     v->scene_index = -1;
-    const char *path = v->cfg->kiosk.scenes[scene_index];
     struct scene_error serr;
-    if (scene_load(&v->base, path, &serr) != 0) {
+    if (base) {
+        v->base = *base;
+    } else if (scene_load(&v->base, v->cfg->kiosk.scenes[scene_index], &serr) != 0) {
         snprintf(err, errlen, "%s: %s", serr.where, serr.message);
         return -1;
     }
@@ -49,12 +51,6 @@ int kiosk_view_load(struct kiosk_view *v, int scene_index, char *err, size_t err
         return -1;
     v->scene_index = scene_index;
     return 0;
-}
-
-int kiosk_view_accepts(const struct kiosk_view *v, const struct kiosk_state *st, struct scene_error *err)
-{
-    static struct scene trial;       /* large; the kiosk has one loop */
-    return kiosk_state_apply(st, &v->base, &trial, err);
 }
 
 void kiosk_preview_scene(const struct scene *full, const struct kiosk_main *k, struct scene *out)

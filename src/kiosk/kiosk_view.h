@@ -35,11 +35,9 @@ struct kiosk_view {
 int kiosk_view_init(struct kiosk_view *v, const struct kiosk_config *cfg, const struct gl_context *gl, char *err,
                     size_t errlen);
 void kiosk_view_release(struct kiosk_view *v);
-/* The scene file of scene index i (loaded once per switch); 0, or -1 with err. */
-int kiosk_view_load(struct kiosk_view *v, int scene_index, char *err, size_t errlen);
-/* Whether a state can be drawn with the loaded scene (the mass may put the camera inside the
- * horizon, a speed may be refused): 0, or -1 with the reason in err. */
-int kiosk_view_accepts(const struct kiosk_view *v, const struct kiosk_state *st, struct scene_error *err);
+/* Scene index i: base, the scene as read at start, or NULL to read its file now (once per switch).
+ * 0, or -1 with err. */
+int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *base, char *err, size_t errlen);
 /* Draw the preview of a state into the canvas (the scene must be loaded); refinement starts
  * over. 0, or -1 with err. */
 int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char *err, size_t errlen);

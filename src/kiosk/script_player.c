@@ -1,5 +1,6 @@
 /* Replaying a script against the loop's clock. */
 #include "kiosk/script_player.h"
+#include <math.h>
 #include <string.h>
 
 /* A tour that ends with its last event would restart at once; this pause closes the loop. */
@@ -11,6 +12,7 @@ void script_player_start(struct script_player *p, const struct script *sc, doubl
     p->start = now;
     p->next = 0;
     p->loop = loop;
+    p->wraps = 0;
 }
 
 static void to_input(const struct script_event *se, double t, int source, struct input_event *ev)
@@ -41,13 +43,14 @@ int script_player_due(struct script_player *p, double now, int source, struct in
     int n = 0;
     while (n < max && sc && sc->n > 0) {
         if (p->next == sc->n) {
-            if (!p->loop)
+            if (!p->loop || n > 0)
                 break;
             double length = sc->events[sc->n - 1].t + SCRIPT_LOOP_PAUSE_SECONDS;
             if (now < p->start + length)
                 break;
-            p->start += length;
+            p->start += length * floor((now - p->start) / length);
             p->next = 0;
+            p->wraps++;
         }
         const struct script_event *se = &sc->events[p->next];
         if (p->start + se->t > now)

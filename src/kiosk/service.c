@@ -101,6 +101,14 @@ int service_status(const char *fmt, ...)
     return send_message(message);
 }
 
+int service_extend_timeout(double seconds)
+{
+    char message[64];
+    snprintf(message, sizeof message, "EXTEND_TIMEOUT_USEC=%llu",
+             (unsigned long long)(seconds > 0.0 ? seconds * USEC_PER_SEC : 0.0));
+    return send_message(message);
+}
+
 int service_stopping(void)
 {
     return send_message("STOPPING=1");

@@ -29,6 +29,9 @@ int service_status(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 /* STOPPING=1: the kiosk has begun to shut down (SIGTERM, q); sent before the display is put
  * back. */
 int service_stopping(void);
+/* EXTEND_TIMEOUT_USEC: the start-up (before READY) may take this many seconds more, for a kiosk
+ * waiting for its monitor; 1 sent, 0 not under systemd, negative errno. */
+int service_extend_timeout(double seconds);
 
 /* Forgets what was sent and reads the environment (NOTIFY_SOCKET, WATCHDOG_USEC, WATCHDOG_PID)
  * again on the next call. For tests, which change the environment between cases. */

@@ -51,12 +51,14 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
     }
     r->scene = scene;
     if (gl_caps_probe(&r->caps, ctx, err, errlen) != 0) {
+        quad_release();              /* the probe takes its share of the pass quad even when it fails */
         free(r);
         return NULL;
     }
     if (render_path_choose(&r->caps, scene->render.precision, scene->render.mrt, &r->path, err, errlen) != 0) {
         /* a forced path that this GPU lacks is the user's request; no path at all is the machine's */
         *bad_input = scene->render.precision != PRECISION_AUTO || scene->render.mrt == MRT_ON;
+        quad_release();
         free(r);
         return NULL;
     }
@@ -64,6 +66,7 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
         snprintf(err, errlen, "image size %dx%d exceeds this GPU's texture limit %d", scene->render.width,
                  scene->render.height, r->caps.max_texture_size);
         *bad_input = 1;
+        quad_release();
         free(r);
         return NULL;
     }

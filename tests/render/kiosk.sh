@@ -30,3 +30,15 @@ mkdir -p "$TMP/term"
 check "kiosk stops on SIGTERM" 0 "^logged, exit 0 within 1 s$" -- sh -c "$BT kiosk --config $K --out $TMP/term --frames 0 2>$TMP/term/log & pid=\$!; sleep 2; kill -TERM \$pid;
     t=0; while kill -0 \$pid 2>/dev/null && [ \$t -lt 10 ]; do sleep 0.1; t=\$((t+1)); done;
     wait \$pid; rc=\$?; grep -q 'stopped after .* (signal)' $TMP/term/log && [ \$t -lt 10 ] && echo \"logged, exit \$rc within 1 s\""
+# a scene change keeps the knobs' values where the new scene takes them, and puts them back to their
+# start where it does not (here a mass whose horizon would swallow the camera): the kiosk goes on
+mkdir -p "$TMP/switch" "$TMP/start"
+printf '0.2 turn mass +200\n0.5 frame\n1.0 press next_scene\n1.5 frame\n' > "$TMP/switch/switch.events"
+sed "s|path = visitor.events|path = $TMP/switch/switch.events|; s|\.\./\.\./assets|$PWD/assets|g;
+     s|^scenes = .*|scenes = $PWD/assets/scenes/starflight.scene, $PWD/assets/scenes/schwarzschild.scene|;
+     s|^start_scene = .*|start_scene = starflight|; s|^max = 1\$|max = 10|" $K > "$TMP/switch/k.conf"
+check "kiosk scene change past a limit" 0 "^exit 0, 2 frames$" -- sh -c "$BT kiosk --config $TMP/switch/k.conf --out $TMP/switch --frames 2 2>/dev/null; echo \"exit \$?, \$(ls $TMP/switch/frame_*.png | wc -l) frames\""
+# every scene must take the knobs' start values (reset and scene changes fall back to them)
+sed "s|path = visitor.events|path = $PWD/tests/kiosk/visitor.events|; s|\.\./\.\./assets|$PWD/assets|g;
+     s|^start = 0.12|start = 5|; s|^max = 1\$|max = 10|" $K > "$TMP/start/k.conf"
+check "kiosk start values checked" 2 "start values .* do not fit .*schwarzschild.scene: .*horizon" -- $BT kiosk --config "$TMP/start/k.conf" --out "$TMP/start"

@@ -416,6 +416,8 @@ static const struct bad_case bad_cases[] = {
     {"button_on_encoder", AT_CHECK, KIOSK_OK KNOBS_OK
      "[input enc]\ntype = gpio_encoder\nchip = c\nline_a = 1\nline_b = 2\n"
      "[button b]\naction = reset\ninput = enc\n", 16, {"key 'input' in [button b]", "gpio_encoder"}},
+    {"button_on_keyboard", AT_CHECK, KIOSK_OK KNOBS_OK "[button b]\naction = reset\ninput = kb\n", 11,
+     {"key 'input' in [button b]: [input kb] is a keyboard", "would never fire"}},
     {"encoder_mixed_lines", AT_CHECK, KIOSK_OK KNOBS_OK
      "[input enc]\ntype = gpio_encoder\nchip = gpiochip0\nline_a = 17\nline_b_name = KNOB_B\n", 13,
      {"key 'line_b_name' in [input enc]", "by offset (line_a, line_b) and by name"}},

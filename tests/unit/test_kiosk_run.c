@@ -189,25 +189,27 @@ static void test_preview_comes_first(void **state)
     assert_true(max_difference(frames[1], frames[2]) > 0);
 }
 
-/* After idle_seconds without input the tour plays (its own knob turns and scene change); the first
- * touch of a knob ends it at once, from the start state (tests/kiosk/attract.conf). */
+/* After idle_seconds without input the tour plays (its own knob turns and scene change), each pass
+ * from the start state, so the second pass shows what the first did; the first touch of a knob
+ * ends it at once, from the start state (tests/kiosk/attract.conf). */
 static void test_attract_mode(void **state)
 {
     (void)state;
     static struct kiosk_config visitor_config;
     visitor_config = config;
-    unsigned char *shown[3];
-    run_config("tests/kiosk/attract.conf", 3, shown);
+    unsigned char *shown[4];
+    run_config("tests/kiosk/attract.conf", 4, shown);
     struct kiosk_state st;
     kiosk_state_reset(&st, &config);
     check_image(shown[0], 0, &st, "before the tour");
     st.speed = knob_turn(&config.speed, st.speed, 10);
     st.scene = 1;
     check_image(shown[1], 1, &st, "the tour, one second in");
+    check_image(shown[2], 2, &st, "the tour's second pass, one second in");
     kiosk_state_reset(&st, &config);
     st.mass = knob_turn(&config.mass, st.mass, 2);
-    check_image(shown[2], 2, &st, "a visitor took over");
-    for (int i = 0; i < 3; i++)
+    check_image(shown[3], 3, &st, "a visitor took over");
+    for (int i = 0; i < 4; i++)
         free(shown[i]);
     config = visitor_config;
 }
