@@ -42,7 +42,8 @@ int gl_has_extension(const char *name);
  *   half_float_render    the same for the 16-bit formats
  *   fbo_incomplete       ray-state framebuffers with 32-bit float attachments are incomplete
  *                        (render/path.c), although the probe's plain targets work
- *   half_fbo_incomplete  the same for 16-bit float attachments */
+ *   half_fbo_incomplete  the same for 16-bit float attachments
+ *   mrt_fbo_incomplete   ray-state framebuffers with two colour targets (MRT) are incomplete */
 int gl_fault(const char *name);
 /* "GL_FRAMEBUFFER_UNSUPPORTED" and the like, for messages. */
 const char *gl_framebuffer_status_name(GLenum status);

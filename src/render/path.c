@@ -19,10 +19,11 @@ static void explain_formats(const struct gl_caps *c, int fp32, char *out, size_t
         snprintf(out, n, "no %s format is known for this API", fp32 ? "32-bit" : "16-bit");
 }
 
-GLenum render_path_framebuffer_status(const struct float_format *f)
+GLenum render_path_framebuffer_status(const struct float_format *f, int targets)
 {
     GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-    if (f && gl_fault(f->is_fp32 ? "fbo_incomplete" : "half_fbo_incomplete"))
+    if (f && (gl_fault(f->is_fp32 ? "fbo_incomplete" : "half_fbo_incomplete") ||
+              (targets > 1 && gl_fault("mrt_fbo_incomplete"))))
         return GL_FRAMEBUFFER_UNSUPPORTED;
     return status;
 }
@@ -49,7 +50,7 @@ static GLenum ray_state_framebuffer_status(const struct float_format *f, int mrt
         glDrawBuffers(2, both);
     }
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
-    GLenum status = render_path_framebuffer_status(f);
+    GLenum status = render_path_framebuffer_status(f, n);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDeleteFramebuffers(1, &fbo);
     glDeleteRenderbuffers(1, &depth);

@@ -22,9 +22,10 @@ struct render_path {
 int render_path_choose(const struct gl_caps *caps, enum precision_choice precision, enum mrt_choice mrt,
                        struct render_path *path, char *err, size_t errlen);
 
-/* Completeness of the bound framebuffer whose colour targets have format f (NULL: not a float
- * format): glCheckFramebufferStatus, or GL_FRAMEBUFFER_UNSUPPORTED where the test hook
- * BT_FAULT=fbo_incomplete (half_fbo_incomplete for 16-bit formats) says so (gl/caps.h). */
-GLenum render_path_framebuffer_status(const struct float_format *f);
+/* Completeness of the bound framebuffer whose `targets` colour targets (1, or 2 with MRT) have
+ * format f (NULL: not a float format): glCheckFramebufferStatus, or GL_FRAMEBUFFER_UNSUPPORTED
+ * where the test hook says so (gl/caps.h): BT_FAULT=fbo_incomplete (half_fbo_incomplete for 16-bit
+ * formats), mrt_fbo_incomplete for two targets of any format. */
+GLenum render_path_framebuffer_status(const struct float_format *f, int targets);
 
 #endif

@@ -20,7 +20,7 @@ static GLuint make_fbo(struct raystate *rs, GLuint target0, GLuint target1, GLen
     }
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rs->depth);
     /* the presentation image is 8-bit: only the float targets are the render path's concern */
-    *status = render_path_framebuffer_status(target0 == rs->final_color ? NULL : rs->format);
+    *status = render_path_framebuffer_status(target0 == rs->final_color ? NULL : rs->format, target1 ? 2 : 1);
     return fbo;
 }
 

@@ -101,6 +101,10 @@ check "fbo incomplete, no path left" 1 "render path fp32\+mrt: .*incomplete: GL_
     env BT_FAULT=fbo_incomplete,half_fbo_incomplete $BT render --scene $S --size 32x24 --out "$TMP/h.png"
 check "fbo incomplete, fp16 forced" 1 "render path fp16\+mrt: a ray-state framebuffer \(2 x RGBA16F colour.*try --no-mrt" -- \
     env BT_FAULT=half_fbo_incomplete $BT render --scene $S --size 32x24 --precision fp16 --out "$TMP/i.png"
+check "mrt fbo incomplete falls back" 0 "fp32: RGBA32F ray state, x and v written in separate passes \(fell back from fp32\+mrt: RGBA32F framebuffer incomplete\)" -- \
+    env BT_FAULT=mrt_fbo_incomplete $BT render --scene $S --size 32x24 --out "$TMP/m.png"
+check "mrt fbo incomplete, mrt forced" 1 "render path fp32\+mrt: a ray-state framebuffer \(2 x RGBA32F colour.*GL_FRAMEBUFFER_UNSUPPORTED" -- \
+    env BT_FAULT=mrt_fbo_incomplete $BT render --scene $S --size 32x24 --set render.mrt=on --out "$TMP/n.png"
 check "fbo fault in info" 0 "render path: +fp16\+mrt: .*fell back from fp32\+mrt" -- env BT_FAULT=fbo_incomplete $BT info --backend osmesa
 check "float format does not render" 0 "fp16\+mrt: RGBA16F ray state" -- \
     env BT_FAULT=float_render $BT render --scene $S --size 32x24 --out "$TMP/j.png"
