@@ -174,7 +174,7 @@ FUZZ_SRCS_scene        := $(FUZZ_SRCS_text) src/scene/scene_defaults.c src/scene
 FUZZ_SRCS_kiosk_config := $(FUZZ_SRCS_text) src/kiosk/kiosk_config.c src/kiosk/kiosk_config_check.c \
                           src/kiosk/kiosk_config_keys.c src/kiosk/kiosk_config_paths.c \
                           src/kiosk/kiosk_config_values.c src/kiosk/hid_report.c src/kiosk/quadrature.c \
-                          src/kiosk/debounce.c
+                          src/kiosk/debounce.c src/kiosk/input_hid_decode.c src/kiosk/input_event.c
 FUZZ_SRCS_dump         := src/ref/dump.c
 FUZZ_SRCS_hid          := src/kiosk/hid_report.c
 FUZZ_SRCS_gpio         := src/kiosk/quadrature.c src/kiosk/debounce.c src/kiosk/event_merge.c

@@ -18,45 +18,13 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* A screen of the refined frame's size on the bench's context, as the headless kiosk has. */
-struct bench_screen {
-    struct screen s;
-    GLuint color;
-};
-
-static void screen_free(struct bench_screen *bs)
-{
-    glDeleteFramebuffers(1, &bs->s.framebuffer);
-    glDeleteRenderbuffers(1, &bs->color);
-}
-
-static int screen_make(struct bench_screen *bs, int w, int h, char *err, size_t errlen)
-{
-    memset(bs, 0, sizeof *bs);
-    bs->s.width = w;
-    bs->s.height = h;
-    glGenRenderbuffers(1, &bs->color);
-    glBindRenderbuffer(GL_RENDERBUFFER, bs->color);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8_OES, w, h);
-    glGenFramebuffers(1, &bs->s.framebuffer);
-    glBindFramebuffer(GL_FRAMEBUFFER, bs->s.framebuffer);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, bs->color);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-        snprintf(err, errlen, "the bench's %dx%d screen framebuffer is incomplete", w, h);
-        screen_free(bs);
-        return -1;
-    }
-    return 0;
-}
-
-
 struct kiosk_timing {
     double preview_median;           /* s per preview, on screen */
     double refined;                  /* s from the knob at rest to the refined frame on screen */
     int bands;
 };
 
-static int time_scene(struct kiosk_view *v, const struct kiosk_config *c, struct bench_screen *bs, int scene,
+static int time_scene(struct kiosk_view *v, const struct kiosk_config *c, struct screen *screen, int scene,
                       struct kiosk_timing *t, char *err, size_t errlen)
 {
     if (kiosk_view_load(v, scene, NULL, err, errlen) != 0)
@@ -71,7 +39,7 @@ static int time_scene(struct kiosk_view *v, const struct kiosk_config *c, struct
     for (int i = 0; i < KIOSK_BENCH_PREVIEWS; i++) {
         st.speed = knob_turn(&c->speed, st.speed, 1);
         double t0 = bench_now();
-        if (kiosk_view_preview(v, &st, err, errlen) != 0 || compositor_draw(&v->comp, &bs->s, err, errlen) != 0)
+        if (kiosk_view_preview(v, &st, err, errlen) != 0 || compositor_draw(&v->comp, screen, err, errlen) != 0)
             return -1;
         glFinish();
         times[i] = bench_now() - t0;
@@ -82,7 +50,7 @@ static int time_scene(struct kiosk_view *v, const struct kiosk_config *c, struct
     double t0 = bench_now();
     t->bands = 0;
     while (!kiosk_view_refined(v)) {
-        if (kiosk_view_refine(v, err, errlen) != 0 || compositor_draw(&v->comp, &bs->s, err, errlen) != 0)
+        if (kiosk_view_refine(v, err, errlen) != 0 || compositor_draw(&v->comp, screen, err, errlen) != 0)
             return -1;
         t->bands++;
     }
@@ -107,17 +75,19 @@ int bench_kiosk(struct bench *b, char *err, size_t errlen)
     }
     int n = b->quick ? 1 : c.kiosk.n_scenes;
     static struct kiosk_view v;
-    struct bench_screen bs;
+    struct screen *screen;
     if (kiosk_view_init(&v, &c, b->ctx, err, errlen) != 0)
         return -1;
-    if (screen_make(&bs, c.kiosk.width, c.kiosk.height, err, errlen) != 0) {
+    /* a screen of the refined frame's size on the bench's context, as the headless kiosk has */
+    screen = screen_open_offscreen(b->ctx, c.kiosk.width, c.kiosk.height, err, errlen);
+    if (!screen) {
         kiosk_view_release(&v);
         return -1;
     }
     /* bentray bench --kiosk without --out: the table alone, on standard output */
     FILE *csv = b->data_dir[0] ? bench_data_file(b, "kiosk.csv", err, errlen) : fopen("/dev/null", "w");
     if (!csv) {
-        screen_free(&bs);
+        screen_close(screen);
         kiosk_view_release(&v);
         return -1;
     }
@@ -138,7 +108,7 @@ int bench_kiosk(struct bench *b, char *err, size_t errlen)
         name = name ? name + 1 : c.kiosk.scenes[i];
         bench_progress(b, "kiosk: %s", name);
         struct kiosk_timing t;
-        rc = time_scene(&v, &c, &bs, i, &t, err, errlen);
+        rc = time_scene(&v, &c, screen, i, &t, err, errlen);
         b->done++;
         if (rc != 0)
             break;
@@ -150,7 +120,7 @@ int bench_kiosk(struct bench *b, char *err, size_t errlen)
     }
     fprintf(b->md, "\n");
     fclose(csv);
-    screen_free(&bs);
+    screen_close(screen);
     kiosk_view_release(&v);
     return rc;
 }

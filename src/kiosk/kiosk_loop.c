@@ -335,8 +335,7 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
     struct input_event ev[KIOSK_MAX_EVENTS];
     int n = gather_events(k, ev, KIOSK_MAX_EVENTS);
     int frames = 0, quit = 0;
-    int was_scene = k->state.scene;
-    int changed = play_tour(k, &frames) | (k->turn == 0);   /* the first picture */
+    int changed = play_tour(k, &frames);
     changed |= handle_events(k, ev, n, &frames, &quit);
     if (quit || stop_requested)
         return 0;
@@ -344,7 +343,8 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
         start_attract(k);
         changed = 1;
     }
-    if (k->state.scene != was_scene || k->view.scene_index != k->state.scene) {
+    /* the view knows which scene it holds: a change of scene (or none loaded yet) loads it */
+    if (k->view.scene_index != k->state.scene) {
         if (kiosk_view_load(&k->view, k->state.scene, &k->scenes[k->state.scene], err, errlen) != 0)
             return -1;
         changed = 1;
@@ -571,12 +571,8 @@ int kiosk_run(const struct kiosk_config *c, const struct kiosk_run_options *o)
         if (!k.inputs[i])
             fprintf(k.log, "input %s: out of memory; left out\n", c->inputs[i].name);
     }
+    /* the first turn loads the start scene into the view (none is loaded yet) and draws it */
     kiosk_state_reset(&k.state, c);
-    if (kiosk_view_load(&k.view, k.state.scene, &k.scenes[k.state.scene], err, sizeof err) != 0) {
-        fprintf(k.log, "bentray kiosk: %s\n", err);
-        kiosk_close(&k);
-        return 1;
-    }
     for (;;) {
         int r = kiosk_turn(&k, err, sizeof err);
         if (r < 0) {

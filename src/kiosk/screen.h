@@ -30,6 +30,9 @@ struct screen {
 /* Each returns NULL with err when the back-end cannot open here. gl_backend (headless only):
  * "egl", "osmesa" or "auto". */
 struct screen *screen_open_headless(const struct kiosk_config *c, const char *gl_backend, char *err, size_t errlen);
+/* The headless screen's framebuffer on a context the caller keeps (the bench's): width x height,
+ * RGBA8; screen_close leaves the context open. */
+struct screen *screen_open_offscreen(struct gl_context *gl, int width, int height, char *err, size_t errlen);
 struct screen *screen_open_x11(const struct kiosk_config *c, char *err, size_t errlen);
 struct screen *screen_open_kms(const struct kiosk_config *c, char *err, size_t errlen);
 /* The configured back-end; auto tries kms, then x11 (when DISPLAY is set), then headless. */

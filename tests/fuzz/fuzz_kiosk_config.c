@@ -4,7 +4,8 @@
  * as the kiosk does at start. Beyond the sanitizers:
  *  - every refusal says why: a NUL-terminated, non-empty message and place;
  *  - what the check accepts, the kiosk can use: start_scene names a listed scene, the knobs' and
- *    buttons' inputs exist, every hid input gives a report layout that hid_layout_check() accepts,
+ *    buttons' inputs exist, every hid input gives a report layout (input_hid_layout(), as the
+ *    kiosk's HID source builds it) that hid_layout_check() accepts,
  *    every gpio_encoder's counts_per_detent is one quadrature_init() takes and every gpio_button's
  *    debounce window one debounce_init() takes. A configuration that passes the check but that
  *    the input decoders refuse would stop the kiosk after start, where nobody reads the message.
@@ -24,6 +25,7 @@
 #include "fuzz_input_file.h"
 #include "kiosk/debounce.h"
 #include "kiosk/hid_report.h"
+#include "kiosk/input_hid_decode.h"
 #include "kiosk/kiosk_config.h"
 #include "kiosk/quadrature.h"
 
@@ -40,26 +42,6 @@ static void check_refusal(const struct kiosk_config_error *e)
     if (memchr(e->where, '\0', sizeof e->where) == NULL ||
         memchr(e->message, '\0', sizeof e->message) == NULL || e->message[0] == '\0')
         __builtin_trap();
-}
-
-/* The layout the kiosk reads an [input NAME] of type hid with: its axis, and its buttons as bits
- * 0 .. buttons-1 of the byte at button_offset. */
-static void hid_layout_of(const struct kiosk_input *in, struct hid_layout *l)
-{
-    memset(l, 0, sizeof *l);
-    l->report_id = (uint8_t)in->report_id;
-    l->report_len = (size_t)in->report_length;
-    l->axis.kind = in->axis_mode == KIOSK_AXIS_ABSOLUTE ? HID_AXIS_ABSOLUTE : HID_AXIS_RELATIVE;
-    l->axis.offset = (size_t)in->axis_offset;
-    l->axis.size = in->axis_size;
-    l->axis.is_signed = in->axis_signed;
-    l->axis.logical_min = in->axis_min;
-    l->axis.logical_max = in->axis_max;
-    l->n_buttons = in->buttons;
-    for (int b = 0; b < in->buttons && b < HID_MAX_BUTTONS; b++) {
-        l->buttons[b].offset = (size_t)in->button_offset;
-        l->buttons[b].bit = b;
-    }
 }
 
 /* What a configuration that passed kiosk_config_check() promises the kiosk. */
@@ -86,8 +68,8 @@ static void check_accepted(const struct kiosk_config *c)
             char why[160];
             if (in->buttons > HID_MAX_BUTTONS)
                 __builtin_trap();
-            hid_layout_of(in, &l);
-            if (hid_layout_check(&l, why, sizeof why) != 0)
+            /* the layout the kiosk's HID source reads the device with */
+            if (input_hid_layout(in, &l, why, sizeof why) != 0)
                 __builtin_trap();
         } else if (in->type == KIOSK_INPUT_GPIO_ENCODER) {
             struct quadrature q;
