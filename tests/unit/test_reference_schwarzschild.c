@@ -9,8 +9,6 @@
 #include <cmocka.h>
 
 #include <math.h>
-#include <gsl/gsl_integration.h>
-#include <gsl/gsl_sf_ellint.h>
 
 #include "ref/dump.h"
 #include "ref/reference.h"
@@ -46,68 +44,16 @@ static struct ref_options options(const struct scene *s)
     return o;
 }
 
-/* ---- the exact orbit: u = 1/r obeys (du/dphi)^2 = P(u) = 1/b^2 - u^2 + 2 M u^3 ---- */
+#include "binet_closed_form.h"
 
-static double binet_p(double inv_b2, double u)
-{
-    return inv_b2 - u * u + 2.0 * mass * u * u * u;
-}
-
-/* Roots u1 < 0 < u2 < u3 of P for b > 3 sqrt(3) M (the ray turns at u2), with their differences
- * from closed forms so that none is formed by cancellation near the critical impact parameter.
- * Trigonometric solution: sin(theta / 2) = 3 sqrt(3) M / b, u_k = (1 + 2 cos(theta/3 - 2 pi k/3)) / 6M. */
-struct binet_roots { double u1, u2, u3, d32, d21, d31; };
-
-static struct binet_roots binet_roots(double inv_b2)
-{
-    double s2 = 27.0 * mass * mass * inv_b2;
-    double theta = 2.0 * atan2(sqrt(s2), sqrt(1.0 - s2));
-    double rest = 2.0 * atan2(sqrt(1.0 - s2), sqrt(s2));   /* pi - theta without cancellation */
-    double t = theta / 6.0, k = 2.0 / (3.0 * mass), d = 1.0 / (sqrt(3.0) * mass);
-    struct binet_roots r;
-    r.u3 = k * sin(pi / 3.0 + t) * sin(pi / 3.0 - t);
-    r.u2 = k * sin(t) * sin(2.0 * pi / 3.0 - t);
-    r.u1 = -k * sin(t) * sin(2.0 * pi / 3.0 + t);
-    r.d32 = d * sin(rest / 3.0);
-    r.d21 = d * sin(theta / 3.0);
-    r.d31 = d * sin(theta / 3.0 + pi / 3.0);
-    return r;
-}
-
-/* Darwin: phi swept from radius 1/u to the turning point,
- * int_u^u2 dt / sqrt(2M (t - u1)(u2 - t)(u3 - t)) = (2 / sqrt(2M (u3 - u1))) F(varphi, k) with
- * k^2 = (u2 - u1)/(u3 - u1), sin^2 varphi = (u3 - u1)(u2 - u) / ((u2 - u1)(u3 - u)) and
- * cos^2 varphi = (u3 - u2)(u - u1) / ((u2 - u1)(u3 - u)) (Byrd & Friedman 233.00). */
-static double darwin_sweep(const struct binet_roots *r, double u)
-{
-    double varphi = atan2(sqrt(r->d31 * (r->u2 - u)), sqrt(r->d32 * (u - r->u1)));
-    double k = sqrt(r->d21 / r->d31);
-    return 2.0 / sqrt(2.0 * mass * r->d31) * gsl_sf_ellint_F(varphi, k, GSL_PREC_DOUBLE);
-}
-
-/* The same integral by adaptive quadrature, sharing nothing with the elliptic reduction but the
- * turning point: t = u2 - (u2 - u) w^2 and P(t) = (u2 - t) g(t) with
- * g(t) = t + u2 - 2M (t^2 + t u2 + u2^2) (as P(u2) = 0) leave a smooth integrand on [0, 1]. */
-struct quad_args { double u, u2; };
-
-static double sweep_integrand(double w, void *arg)
-{
-    const struct quad_args *a = arg;
-    double t = a->u2 - (a->u2 - a->u) * w * w;
-    double g = t + a->u2 - 2.0 * mass * (t * t + t * a->u2 + a->u2 * a->u2);
-    return 2.0 * sqrt(a->u2 - a->u) / sqrt(g);
-}
-
+static double binet_p(double inv_b2, double u) { return binet_p_m(mass, inv_b2, u); }
+static struct binet_roots binet_roots(double inv_b2) { return binet_roots_m(mass, inv_b2); }
+static double darwin_sweep(const struct binet_roots *r, double u) { return darwin_sweep_m(mass, r, u); }
 static double quadrature_sweep(double u2, double u)
 {
-    struct quad_args a = {u, u2};
-    gsl_function f = {sweep_integrand, &a};
-    gsl_integration_workspace *ws = gsl_integration_workspace_alloc(1000);
-    double result = NAN, error = NAN;
-    int status = gsl_integration_qags(&f, 0.0, 1.0, 0.0, 1e-13, 1000, ws, &result, &error);
-    gsl_integration_workspace_free(ws);
-    assert_int_equal(status, 0);
-    return result;
+    double q = quadrature_sweep_m(mass, u2, u);
+    assert_false(isnan(q));
+    return q;
 }
 
 /* Angle between the outward radial direction and the velocity. */

@@ -1,0 +1,451 @@
+/* Photon orbits of Schwarzschild space tabulated for a static observer (orbit_table.h). */
+#include "physics/orbit_table.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+static const double pi = 3.14159265358979323846;
+
+/* Largest step in phi: the quintic Hermite resampling between accepted steps stays below the
+ * integration tolerance with it (rad). */
+#define ORBIT_STEP_MAX 0.05
+/* An orbit that has not ended after this many steps or this much angle is refused (it would be
+ * a critical orbit, which the row spacing keeps out). */
+#define ORBIT_MAX_STEPS 200000
+#define ORBIT_MAX_SWEEP 2000.0
+
+double orbit_critical_angle(double mass, double r_observer)
+{
+    double s = 3.0 * sqrt(3.0) * mass * sqrt(1.0 - 2.0 * mass / r_observer) / r_observer;
+    if (s > 1.0)
+        s = 1.0;                      /* r_o = 3M: rounding only */
+    double a = asin(s);
+    return r_observer > 3.0 * mass ? pi - a : a;
+}
+
+/* ---- Binet's equation in phi: y = (u, w = du/dphi), y' = (w, 3 M u^2 - u) ---- */
+
+static double binet_accel(double mass, double u)
+{
+    return 3.0 * mass * u * u - u;
+}
+
+/* One Dormand-Prince 5(4) step of size h: the fifth-order state and its error estimate. */
+static void binet_step(double mass, double u, double w, double h, double *u1, double *w1, double *eu, double *ew)
+{
+    double ku[7], kw[7];
+    static const double a[6][6] = {
+        {1.0 / 5},
+        {3.0 / 40, 9.0 / 40},
+        {44.0 / 45, -56.0 / 15, 32.0 / 9},
+        {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729},
+        {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656},
+        {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84},
+    };
+    static const double e[7] = {71.0 / 57600, 0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200, 22.0 / 525,
+                                -1.0 / 40};
+    ku[0] = w;
+    kw[0] = binet_accel(mass, u);
+    for (int s = 1; s < 7; s++) {
+        double us = u, ws = w;
+        for (int j = 0; j < s; j++) {
+            us += h * a[s - 1][j] * ku[j];
+            ws += h * a[s - 1][j] * kw[j];
+        }
+        ku[s] = ws;
+        kw[s] = binet_accel(mass, us);
+        if (s == 6) {
+            *u1 = us;
+            *w1 = ws;
+        }
+    }
+    *eu = 0.0;
+    *ew = 0.0;
+    for (int s = 0; s < 7; s++) {
+        *eu += h * e[s] * ku[s];
+        *ew += h * e[s] * kw[s];
+    }
+}
+
+/* The same system with u as the independent variable, z = (phi, w): phi' = 1 / w,
+ * w' = (3 M u^2 - u) / w. Classical RK4 substeps carry a step that crossed the orbit's end to the
+ * exact end radius (Henon's trick). */
+static void binet_in_u(double mass, double u0, double u_end, double *phi, double *w)
+{
+    const int substeps = 16;
+    double du = (u_end - u0) / substeps;
+    for (int i = 0; i < substeps; i++) {
+        double u = u0 + i * du;
+        double p = *phi, q = *w;
+        double k1p = 1.0 / q, k1w = binet_accel(mass, u) / q;
+        double q2 = q + 0.5 * du * k1w;
+        double k2p = 1.0 / q2, k2w = binet_accel(mass, u + 0.5 * du) / q2;
+        double q3 = q + 0.5 * du * k2w;
+        double k3p = 1.0 / q3, k3w = binet_accel(mass, u + 0.5 * du) / q3;
+        double q4 = q + du * k3w;
+        double k4p = 1.0 / q4, k4w = binet_accel(mass, u + du) / q4;
+        *phi = p + du / 6.0 * (k1p + 2.0 * k2p + 2.0 * k3p + k4p);
+        *w = q + du / 6.0 * (k1w + 2.0 * k2w + 2.0 * k3w + k4w);
+    }
+}
+
+/* The accepted steps of one orbit: knots (phi, u, w). */
+struct orbit_knots {
+    double *phi, *u, *w;
+    int n, cap;
+    double mass;
+};
+
+static int knots_push(struct orbit_knots *k, double phi, double u, double w)
+{
+    if (k->n == k->cap) {
+        int cap = k->cap ? 2 * k->cap : 256;
+        double *p = realloc(k->phi, cap * sizeof *p);
+        if (p)
+            k->phi = p;
+        double *uu = p ? realloc(k->u, cap * sizeof *uu) : NULL;
+        if (uu)
+            k->u = uu;
+        double *ww = uu ? realloc(k->w, cap * sizeof *ww) : NULL;
+        if (!ww)
+            return -1;
+        k->w = ww;
+        k->cap = cap;
+    }
+    k->phi[k->n] = phi;
+    k->u[k->n] = u;
+    k->w[k->n] = w;
+    k->n++;
+    return 0;
+}
+
+static void knots_free(struct orbit_knots *k)
+{
+    free(k->phi);
+    free(k->u);
+    free(k->w);
+    memset(k, 0, sizeof *k);
+}
+
+/* u and du/dphi at phi: quintic Hermite through the knots' u, u' and u'' = 3 M u^2 - u, which
+ * keeps the integration's order between the steps. */
+static void knots_eval(const struct orbit_knots *k, double phi, double *u, double *w)
+{
+    int lo = 0, hi = k->n - 1;
+    if (phi <= k->phi[0]) {
+        *u = k->u[0];
+        *w = k->w[0];
+        return;
+    }
+    if (phi >= k->phi[hi]) {
+        *u = k->u[hi];
+        *w = k->w[hi];
+        return;
+    }
+    while (hi - lo > 1) {
+        int mid = (lo + hi) / 2;
+        if (k->phi[mid] <= phi)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    double h = k->phi[hi] - k->phi[lo];
+    double t = (phi - k->phi[lo]) / h, t2 = t * t, t3 = t2 * t, t4 = t3 * t, t5 = t4 * t;
+    double u0 = k->u[lo], w0 = k->w[lo], a0 = binet_accel(k->mass, u0);
+    double u1 = k->u[hi], w1 = k->w[hi], a1 = binet_accel(k->mass, u1);
+    double h0 = 1 - 10 * t3 + 15 * t4 - 6 * t5, h1 = t - 6 * t3 + 8 * t4 - 3 * t5,
+           h2 = 0.5 * (t2 - 3 * t3 + 3 * t4 - t5), h3 = 10 * t3 - 15 * t4 + 6 * t5, h4 = -4 * t3 + 7 * t4 - 3 * t5,
+           h5 = 0.5 * (t3 - 2 * t4 + t5);
+    double d0 = -30 * t2 + 60 * t3 - 30 * t4, d1 = 1 - 18 * t2 + 32 * t3 - 15 * t4,
+           d2 = 0.5 * (2 * t - 9 * t2 + 12 * t3 - 5 * t4), d3 = 30 * t2 - 60 * t3 + 30 * t4,
+           d4 = -12 * t2 + 28 * t3 - 15 * t4, d5 = 0.5 * (3 * t2 - 8 * t3 + 5 * t4);
+    *u = h0 * u0 + h1 * h * w0 + h2 * h * h * a0 + h3 * u1 + h4 * h * w1 + h5 * h * h * a1;
+    *w = (d0 * u0 + d1 * h * w0 + d2 * h * h * a0 + d3 * u1 + d4 * h * w1 + d5 * h * h * a1) / h;
+}
+
+/* Integrate the orbit of launch angle psi to its end; knots hold every accepted step, the last
+ * one exactly at the end. */
+static int trace_knots(double mass, double r_observer, double psi, double u_far, double u_capture,
+                       struct orbit_knots *k, int *captured)
+{
+    memset(k, 0, sizeof *k);
+    k->mass = mass;
+    double u = 1.0 / r_observer;
+    double w = -u * sqrt(1.0 - 2.0 * mass * u) * cos(psi) / sin(psi);
+    double phi = 0.0;
+    double atol_u = ORBIT_RTOL * u_far, atol_w = ORBIT_RTOL * (fabs(w) + u);
+    double h = fmin(0.01, 0.01 * u / fmax(fabs(w), 1e-300));
+    if (knots_push(k, phi, u, w) != 0)
+        return -1;
+    for (int step = 0; step < ORBIT_MAX_STEPS && phi < ORBIT_MAX_SWEEP; step++) {
+        double u1, w1, eu, ew;
+        binet_step(mass, u, w, h, &u1, &w1, &eu, &ew);
+        double err = fmax(fabs(eu) / (atol_u + ORBIT_RTOL * fmax(fabs(u), fabs(u1))),
+                          fabs(ew) / (atol_w + ORBIT_RTOL * fmax(fabs(w), fabs(w1))));
+        if (!(err == err) || !isfinite(u1) || !isfinite(w1)) {
+            h *= 0.2;
+            continue;
+        }
+        double factor = err > 0.0 ? 0.9 * pow(err, -0.2) : 5.0;
+        factor = fmin(5.0, fmax(0.2, factor));
+        if (err > 1.0) {
+            h *= factor;
+            continue;
+        }
+        int escapes = w1 < 0.0 && u1 <= u_far;
+        int falls = u1 >= u_capture;
+        if ((escapes || falls) && (w > 0.0) == (w1 > 0.0)) {
+            /* the end lies inside this step, on a monotonic stretch: finish it in u */
+            double phi_end = phi, w_end = w;
+            binet_in_u(mass, u, escapes ? u_far : u_capture, &phi_end, &w_end);
+            *captured = falls;
+            return knots_push(k, phi_end, escapes ? u_far : u_capture, w_end);
+        }
+        phi += h;
+        u = u1;
+        w = w1;
+        if (knots_push(k, phi, u, w) != 0)
+            return -1;
+        h = fmin(h * factor, ORBIT_STEP_MAX);
+    }
+    knots_free(k);
+    return -1;
+}
+
+int orbit_trace(double mass, double r_observer, double psi, double u_far, double u_capture, const double *phi_at,
+                int n_at, double *u_at, double *du_at, double *phi_end, int *captured)
+{
+    struct orbit_knots k;
+    if (trace_knots(mass, r_observer, psi, u_far, u_capture, &k, captured) != 0)
+        return -1;
+    *phi_end = k.phi[k.n - 1];
+    for (int i = 0; i < n_at; i++)
+        knots_eval(&k, phi_at[i], &u_at[i], &du_at[i]);
+    knots_free(&k);
+    return 0;
+}
+
+/* ---- rows ---- */
+
+/* Row coordinate of distance d from the critical angle: logarithmic next to it, where phi_end
+ * diverges as -ln d, and even far from it, where the orbits change evenly with psi. */
+static double row_coordinate(double d)
+{
+    return log(d / ORBIT_CRITICAL_EPSILON) + d / ORBIT_EVEN_SCALE;
+}
+
+/* Its inverse, by Newton's method in ln d (the coordinate is convex and increasing in ln d). */
+static double row_distance(double coordinate)
+{
+    double x = fmin(coordinate + log(ORBIT_CRITICAL_EPSILON), log(ORBIT_EVEN_SCALE * coordinate + 1e-300));
+    for (int i = 0; i < 100; i++) {
+        double g = row_coordinate(exp(x)) - coordinate, dg = 1.0 + exp(x) / ORBIT_EVEN_SCALE;
+        double next = x - g / dg;
+        if (fabs(next - x) < 1e-15 * fmax(1.0, fabs(x)))
+            return exp(next);
+        x = next;
+    }
+    return exp(x);
+}
+
+static double row_angle(const struct orbit_table *t, enum orbit_side side, int i)
+{
+    double frac = (double)i / (t->p.rows_per_side - 1);
+    double d = row_distance(frac * t->log_span[side]);
+    return side == ORBIT_ESCAPES ? t->psi_c - d : t->psi_c + d;
+}
+
+double orbit_table_row(const struct orbit_table *t, double psi, enum orbit_side *side)
+{
+    *side = psi < t->psi_c ? ORBIT_ESCAPES : ORBIT_CAPTURED;
+    double d = fabs(psi - t->psi_c);
+    double frac = row_coordinate(fmax(d, ORBIT_CRITICAL_EPSILON)) / t->log_span[*side];
+    frac = fmin(fmax(frac, 0.0), 1.0);
+    return frac * (t->p.rows_per_side - 1);
+}
+
+/* Largest distance of the orbit from the chords of n equal pieces in phi, from the row's samples
+ * and the exact piece ends. */
+static double chord_sag(const struct orbit_knots *k, const double *phi_s, const double *u_s, int columns, int n)
+{
+    double phi_end = k->phi[k->n - 1], worst = 0.0;
+    for (int p = 0; p < n; p++) {
+        double pa = phi_end * p / n, pb = phi_end * (p + 1) / n, ua, ub, w;
+        knots_eval(k, pa, &ua, &w);
+        knots_eval(k, pb, &ub, &w);
+        double ax = cos(pa) / ua, ay = sin(pa) / ua, bx = cos(pb) / ub, by = sin(pb) / ub;
+        double dx = bx - ax, dy = by - ay, len = hypot(dx, dy);
+        for (int j = 0; j < columns; j++) {
+            if (phi_s[j] <= pa || phi_s[j] >= pb)
+                continue;
+            double x = cos(phi_s[j]) / u_s[j] - ax, y = sin(phi_s[j]) / u_s[j] - ay;
+            double dist = len > 0.0 ? fabs(x * dy - y * dx) / len : hypot(x, y);
+            worst = fmax(worst, dist);
+        }
+    }
+    return worst;
+}
+
+static int row_segments(const struct orbit_table *t, const struct orbit_knots *k, const double *phi_s,
+                        const double *u_s)
+{
+    if (!isfinite(t->p.chord_tolerance))
+        return 1;
+    int n = 1;
+    while (n < t->p.max_segments && chord_sag(k, phi_s, u_s, t->p.columns, n) > t->p.chord_tolerance)
+        n = 2 * n < t->p.max_segments ? 2 * n : t->p.max_segments;
+    return n;
+}
+
+static double seconds_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p, char *err, size_t errlen)
+{
+    double t0 = seconds_now();
+    memset(t, 0, sizeof *t);
+    t->p = *p;
+    if (!(p->mass > 0.0) || !(p->r_observer > 2.0 * p->mass) || !(p->r_far > p->r_observer) ||
+        p->rows_per_side < 4 || p->columns < 4 || p->max_segments < 1 || !(p->chord_tolerance > 0.0)) {
+        snprintf(err, errlen, "orbit table: needs M > 0, 2M < r_o < r_far, 4 rows and columns, a chord tolerance > 0");
+        return -1;
+    }
+    t->psi_c = orbit_critical_angle(p->mass, p->r_observer);
+    t->psi_min = fmin(ORBIT_RADIAL_GAP, 0.5 * t->psi_c);
+    t->psi_max = fmax(pi - ORBIT_RADIAL_GAP, 0.5 * (t->psi_c + pi));
+    double extent[2] = {t->psi_c - t->psi_min, t->psi_max - t->psi_c};
+    for (int side = 0; side < 2; side++) {
+        if (!(extent[side] > 10.0 * ORBIT_CRITICAL_EPSILON)) {
+            snprintf(err, errlen, "orbit table: the observer at r = %.17g (M = %.17g) is too close to the horizon "
+                     "or too far for the table's rows", p->r_observer, p->mass);
+            return -1;
+        }
+        t->log_span[side] = row_coordinate(extent[side]);
+    }
+    t->u_observer = 1.0 / p->r_observer;
+    t->u_far = 1.0 / p->r_far;
+    t->u_capture = 1.0 / (2.0 * p->mass * (1.0 - ORBIT_HORIZON_MARGIN));
+    int rows = 2 * p->rows_per_side, cols = p->columns;
+    t->width = cols + 1;
+    t->height = rows;
+    t->texels = calloc((size_t)t->width * rows * 4, sizeof *t->texels);
+    t->u = calloc((size_t)rows * cols, sizeof *t->u);
+    t->du_ds = calloc((size_t)rows * cols, sizeof *t->du_ds);
+    t->phi_over_sin = calloc(rows, sizeof *t->phi_over_sin);
+    t->psi = calloc(rows, sizeof *t->psi);
+    t->segments = calloc(rows, sizeof *t->segments);
+    double *phi_s = calloc(cols, sizeof *phi_s);
+    if (!t->texels || !t->u || !t->du_ds || !t->phi_over_sin || !t->psi || !t->segments || !phi_s) {
+        free(phi_s);
+        orbit_table_free(t);
+        snprintf(err, errlen, "orbit table: out of memory");
+        return -1;
+    }
+    for (int row = 0; row < rows; row++) {
+        enum orbit_side side = row < p->rows_per_side ? ORBIT_ESCAPES : ORBIT_CAPTURED;
+        double psi = row_angle(t, side, row % p->rows_per_side);
+        struct orbit_knots k;
+        int captured = -1;
+        if (trace_knots(p->mass, p->r_observer, psi, t->u_far, t->u_capture, &k, &captured) != 0 ||
+            captured != (side == ORBIT_CAPTURED)) {
+            if (captured >= 0)
+                knots_free(&k);
+            free(phi_s);
+            orbit_table_free(t);
+            snprintf(err, errlen, "orbit table: the orbit launched at %.17g rad (critical %.17g, M = %.17g, r_o = %.17g) "
+                     "did not end as its side of the critical angle says", psi, t->psi_c, p->mass, p->r_observer);
+            return -1;
+        }
+        double phi_end = k.phi[k.n - 1];
+        double *u = t->u + (size_t)row * cols, *du = t->du_ds + (size_t)row * cols;
+        for (int j = 0; j < cols; j++) {
+            phi_s[j] = phi_end * j / (cols - 1);
+            double w;
+            knots_eval(&k, phi_s[j], &u[j], &w);
+            du[j] = w * phi_end;
+            float *texel = t->texels + ((size_t)row * t->width + j) * 4;
+            texel[0] = (float)u[j];
+            texel[1] = (float)du[j];
+        }
+        t->psi[row] = psi;
+        t->phi_over_sin[row] = phi_end / sin(psi);
+        t->segments[row] = row_segments(t, &k, phi_s, u);
+        if (t->segments[row] > t->max_segments)
+            t->max_segments = t->segments[row];
+        float *last = t->texels + ((size_t)row * t->width + cols) * 4;
+        last[0] = (float)t->phi_over_sin[row];
+        last[1] = (float)t->segments[row];
+        last[2] = (float)phi_end;
+        last[3] = (float)psi;
+        knots_free(&k);
+    }
+    free(phi_s);
+    t->build_seconds = seconds_now() - t0;
+    return 0;
+}
+
+void orbit_table_free(struct orbit_table *t)
+{
+    free(t->texels);
+    free(t->u);
+    free(t->du_ds);
+    free(t->phi_over_sin);
+    free(t->psi);
+    free(t->segments);
+    memset(t, 0, sizeof *t);
+}
+
+/* Catmull-Rom weights of rows i-1 .. i+2 at fraction f past row i. */
+static void catmull_rom(double f, double wgt[4])
+{
+    double f2 = f * f, f3 = f2 * f;
+    wgt[0] = 0.5 * (-f3 + 2 * f2 - f);
+    wgt[1] = 0.5 * (3 * f3 - 5 * f2 + 2);
+    wgt[2] = 0.5 * (-3 * f3 + 4 * f2 + f);
+    wgt[3] = 0.5 * (f3 - f2);
+}
+
+void orbit_table_eval(const struct orbit_table *t, double psi, double s, struct orbit_point *out, double *phi_end,
+                      int *segments)
+{
+    enum orbit_side side;
+    int rps = t->p.rows_per_side, cols = t->p.columns;
+    double q = orbit_table_row(t, psi, &side);
+    int i = (int)floor(q);
+    if (i > rps - 2)
+        i = rps - 2;
+    double f = q - i, wr[4];
+    catmull_rom(f, wr);
+    double c = fmin(fmax(s, 0.0), 1.0) * (cols - 1);
+    int j = (int)floor(c);
+    if (j > cols - 2)
+        j = cols - 2;
+    double g = c - j, g2 = g * g, g3 = g2 * g, dj = 1.0 / (cols - 1);
+    double h00 = 2 * g3 - 3 * g2 + 1, h10 = g3 - 2 * g2 + g, h01 = -2 * g3 + 3 * g2, h11 = g3 - g2;
+    double d00 = 6 * g2 - 6 * g, d10 = 3 * g2 - 4 * g + 1, d01 = -6 * g2 + 6 * g, d11 = 3 * g2 - 2 * g;
+    double u = 0.0, du = 0.0, phi_sin = 0.0;
+    for (int m = 0; m < 4; m++) {
+        int r = i - 1 + m;
+        r = r < 0 ? 0 : r > rps - 1 ? rps - 1 : r;
+        int row = side * rps + r;
+        const float *a = t->texels + ((size_t)row * t->width + j) * 4, *b = a + 4;
+        const float *last = t->texels + ((size_t)row * t->width + cols) * 4;
+        double ur = h00 * a[0] + h10 * dj * a[1] + h01 * b[0] + h11 * dj * b[1];
+        double dr = (d00 * a[0] + d10 * dj * a[1] + d01 * b[0] + d11 * dj * b[1]) / dj;
+        u += wr[m] * ur;
+        du += wr[m] * dr;
+        phi_sin += wr[m] * last[0];
+    }
+    int n0 = t->segments[side * rps + i], n1 = t->segments[side * rps + i + 1];
+    *segments = n0 > n1 ? n0 : n1;
+    *phi_end = phi_sin * sin(psi);
+    out->u = u;
+    out->phi = s * *phi_end;
+    out->du_dphi = *phi_end > 0.0 ? du / *phi_end : 0.0;
+}

@@ -1,0 +1,90 @@
+/* Exact photon orbits around a non-rotating mass, tabulated for one static observer.
+ *
+ * Every Schwarzschild photon orbit lies in a plane through the centre; u = 1/r obeys Binet's
+ * u'' + u = 3 M u^2 in the polar angle phi. A static observer at r_o who sees a ray leave at angle
+ * psi from the outward radial direction starts it at u_o = 1/r_o with
+ * du/dphi = -u_o sqrt(1 - 2 M u_o) cot psi (impact parameter b = r_o sin psi / sqrt(1 - 2M/r_o)).
+ * So for one (M, r_o) the whole family of orbits is one-parameter, in psi:
+ *   - rays with psi < psi_c escape, rays with psi > psi_c fall through the horizon, where psi_c is
+ *     the launch angle of the critical impact parameter b_c = 3 sqrt(3) M;
+ *   - each orbit runs from the observer (phi = 0) to phi_end, where it reaches r_far (escaping)
+ *     or just inside the horizon (captured).
+ * The table holds, per launch angle, phi_end and u at evenly spaced fractions s = phi / phi_end,
+ * with du/ds, integrated in double precision (Dormand-Prince 5(4), tolerance 1e-12; the end located
+ * by integrating in u over the last step). Rows are spaced as ln|psi - psi_c| next to the critical
+ * angle, where phi_end diverges logarithmically, and the two sides of psi_c are separate blocks of
+ * rows, never interpolated across. shaders_es/orbit_table.glsl reads the same numbers as a float
+ * texture and interpolates exactly as orbit_table_eval() does here. */
+#ifndef BT_ORBIT_TABLE_H
+#define BT_ORBIT_TABLE_H
+#include <stddef.h>
+
+enum orbit_side { ORBIT_ESCAPES, ORBIT_CAPTURED };
+
+/* Rows are at psi_c -+ d, evenly spaced in the coordinate ln(d / epsilon) + d / even_scale:
+ * logarithmic next to psi_c, even beyond even_scale (rad). The float launch angle of a camera ray
+ * is good to about 1e-7 rad, so rows closer than epsilon to psi_c would tell nothing. */
+#define ORBIT_CRITICAL_EPSILON 1e-7
+#define ORBIT_EVEN_SCALE 0.25
+/* The outermost rows, rad from the radial directions, where cot psi stays finite; phi_end is
+ * stored divided by sin psi, which has a finite limit there, so rays closer still are exact. */
+#define ORBIT_RADIAL_GAP 1e-6
+/* A captured orbit ends this fraction inside the horizon, so that a float position is inside. */
+#define ORBIT_HORIZON_MARGIN 1e-5
+/* Binet integration: relative and absolute (of u_o) tolerance per step. */
+#define ORBIT_RTOL 1e-12
+
+struct orbit_table_params {
+    double mass;               /* M > 0 (scene length units, G = c = 1) */
+    double r_observer;         /* r_o > 2M: distance of the camera from the centre */
+    double r_far;              /* escaping orbits are tabulated out to here (> r_o) */
+    int rows_per_side;         /* launch angles on each side of psi_c (>= 4) */
+    int columns;               /* samples along each orbit (>= 4) */
+    /* segments per orbit: the fewest (of 1, 2, 4, ...) whose chords stray at most this far from
+     * the orbit (scene units), at most max_segments; INFINITY: one segment */
+    double chord_tolerance;
+    int max_segments;
+};
+
+struct orbit_table {
+    struct orbit_table_params p;
+    double psi_c;              /* critical launch angle */
+    double psi_min, psi_max;   /* the outermost rows */
+    double log_span[2];        /* each side's extent in the row coordinate */
+    double u_observer, u_far, u_capture;
+    /* texture layout: width columns + 1, height 2 rows_per_side (escaping rows first, from psi_c
+     * outwards); texel (j, row) = (u(s_j), du/ds(s_j), 0, 0) with s_j = j / (columns - 1); texel
+     * (columns, row) = (phi_end / sin psi, segments, phi_end, psi) */
+    int width, height;
+    float *texels;             /* RGBA, width x height, row-major */
+    double *u, *du_ds;         /* the same in double: height x columns */
+    double *phi_over_sin;      /* height */
+    double *psi;               /* launch angle of each row */
+    int *segments;             /* height */
+    int max_segments;          /* over all rows */
+    double build_seconds;
+};
+
+/* Build the table; 0, or -1 with err (bad parameters, out of memory, an orbit that does not end). */
+int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p, char *err, size_t errlen);
+void orbit_table_free(struct orbit_table *t);
+
+/* The critical launch angle for M and r_o > 2M. */
+double orbit_critical_angle(double mass, double r_observer);
+/* Side and fractional row (0 .. rows_per_side - 1) of launch angle psi. */
+double orbit_table_row(const struct orbit_table *t, double psi, enum orbit_side *side);
+
+/* The orbit of launch angle psi at fraction s in [0, 1] as the shader interpolates it: u, du/dphi,
+ * phi; and phi_end and the segment count of the ray. */
+struct orbit_point {
+    double u, du_dphi, phi;
+};
+void orbit_table_eval(const struct orbit_table *t, double psi, double s, struct orbit_point *out, double *phi_end,
+                      int *segments);
+
+/* One orbit traced directly (no table): phi_end and whether it is captured, and u, du/dphi at
+ * n_at angles phi_at[] (ascending, <= phi_end; NULL for none). 0, or -1 when it does not end. */
+int orbit_trace(double mass, double r_observer, double psi, double u_far, double u_capture, const double *phi_at,
+                int n_at, double *u_at, double *du_at, double *phi_end, int *captured);
+
+#endif
