@@ -34,6 +34,7 @@ const char *method_name(enum integration_method m)
     case METHOD_EULER: return "euler";
     case METHOD_RK4: return "rk4";
     case METHOD_DOPRI5: return "dopri5";
+    case METHOD_ORBIT_TABLE: return "orbit_table";
     }
     return "unknown";
 }

@@ -50,8 +50,10 @@ double model_capture_radius(const struct model *m);
 /* Index of refraction n(x) for MODEL_REFRACTION (1 elsewhere). */
 double model_refraction_index(const struct model *m, vec3d x);
 
-/* Euler (paper eq. 2), classical RK4, and the fifth-order solution of Dormand and Prince's 5(4) pair. */
-enum integration_method { METHOD_EULER, METHOD_RK4, METHOD_DOPRI5 };
+/* Euler (paper eq. 2), classical RK4, and the fifth-order solution of Dormand and Prince's 5(4) pair;
+ * and no integration at all: the GPU follows exact Schwarzschild orbits from a table
+ * (physics/orbit_table.h), which model_step, a stepping function, takes as RK4. */
+enum integration_method { METHOD_EULER, METHOD_RK4, METHOD_DOPRI5, METHOD_ORBIT_TABLE };
 const char *method_name(enum integration_method m);
 /* One step of size h of eq. (1), in place (Euler as eq. (2), classical RK4, or Dormand-Prince 5). */
 void model_step(const struct model *m, enum integration_method method, double h, vec3d *x, vec3d *v);

@@ -16,13 +16,21 @@ static const double pi = 3.14159265358979323846;
 #define ORBIT_MAX_STEPS 200000
 #define ORBIT_MAX_SWEEP 2000.0
 
-double orbit_critical_angle(double mass, double r_observer)
+double orbit_critical_from_axis(double mass, double r_observer, int *inward)
 {
     double s = 3.0 * sqrt(3.0) * mass * sqrt(1.0 - 2.0 * mass / r_observer) / r_observer;
     if (s > 1.0)
         s = 1.0;                      /* r_o = 3M: rounding only */
-    double a = asin(s);
-    return r_observer > 3.0 * mass ? pi - a : a;
+    if (inward)
+        *inward = r_observer > 3.0 * mass;
+    return asin(s);
+}
+
+double orbit_critical_angle(double mass, double r_observer)
+{
+    int inward;
+    double a = orbit_critical_from_axis(mass, r_observer, &inward);
+    return inward ? pi - a : a;
 }
 
 /* ---- Binet's equation in phi: y = (u, w = du/dphi), y' = (w, 3 M u^2 - u) ---- */
@@ -266,36 +274,101 @@ double orbit_table_row(const struct orbit_table *t, double psi, enum orbit_side 
     return frac * (t->p.rows_per_side - 1);
 }
 
-/* Largest distance of the orbit from the chords of n equal pieces in phi, from the row's samples
- * and the exact piece ends. */
-static double chord_sag(const struct orbit_knots *k, const double *phi_s, const double *u_s, int columns, int n)
+/* The chord schedule. A chord of length L across a stretch of curvature kappa strays about
+ * kappa L^2 / 8 from it, so pieces of equal sigma = int sqrt(kappa) dl stray about equally. For
+ * r = 1/u(phi), kappa = 3 M u^5 / (u^2 + u'^2)^(3/2) and dl = sqrt(u^2 + u'^2) / u^2 dphi, so
+ * dsigma/dphi = sqrt(3 M u) (u^2 + u'^2)^(-1/4). */
+#define SIGMA_SUBSAMPLES 8
+/* Inside the clear radius chords need not follow the orbit, but a chord's ends must not jump
+ * across a dip into it either: a tenth of the weight keeps a few chords there. */
+#define SIGMA_CLEAR_WEIGHT 0.1
+
+/* warp[m], m = 0 .. ORBIT_WARP_SAMPLES - 1: the fraction s of the orbit where sigma reaches
+ * m / (ORBIT_WARP_SAMPLES - 1) of its total; the identity where the orbit does not bend. */
+static double row_warp(const struct orbit_knots *k, double mass, double clear_radius, int columns, double *warp)
 {
+    int n = SIGMA_SUBSAMPLES * (columns - 1);
+    double phi_end = k->phi[k->n - 1], u_clear = clear_radius > 0.0 ? 1.0 / clear_radius : INFINITY;
+    double *sigma = malloc((size_t)(n + 1) * sizeof *sigma);
+    if (!sigma)
+        return -1.0;
+    sigma[0] = 0.0;
+    double prev_rate = 0.0;
+    for (int i = 0; i <= n; i++) {
+        double u, w;
+        knots_eval(k, phi_end * i / n, &u, &w);
+        double rate = sqrt(3.0 * mass * u) * pow(u * u + w * w, -0.25) * (u < u_clear ? 1.0 : SIGMA_CLEAR_WEIGHT);
+        if (i > 0)
+            sigma[i] = sigma[i - 1] + 0.5 * (rate + prev_rate) * phi_end / n;
+        prev_rate = rate;
+    }
+    double total = sigma[n];
+    for (int m = 0, i = 0; m < ORBIT_WARP_SAMPLES; m++) {
+        double target = total * m / (ORBIT_WARP_SAMPLES - 1);
+        if (!(total > 0.0)) {
+            warp[m] = (double)m / (ORBIT_WARP_SAMPLES - 1);
+            continue;
+        }
+        while (i < n && sigma[i + 1] < target)
+            i++;
+        double span = i < n ? sigma[i + 1] - sigma[i] : 0.0;
+        double f = span > 0.0 ? (target - sigma[i]) / span : 0.0;
+        warp[m] = fmin(1.0, (i + fmin(fmax(f, 0.0), 1.0)) / n);
+    }
+    warp[0] = 0.0;
+    warp[ORBIT_WARP_SAMPLES - 1] = 1.0;
+    free(sigma);
+    return total;
+}
+
+/* The fraction s where chord k of n ends, as the shader reads it: linear in the warp samples. */
+static double warp_at(const double *warp, double x)
+{
+    double c = fmin(fmax(x, 0.0), 1.0) * (ORBIT_WARP_SAMPLES - 1);
+    int m = (int)floor(c);
+    if (m > ORBIT_WARP_SAMPLES - 2)
+        m = ORBIT_WARP_SAMPLES - 2;
+    return warp[m] + (c - m) * (warp[m + 1] - warp[m]);
+}
+
+/* Largest distance of the orbit from its n chords, from points between the chords' exact ends;
+ * points inside the clear radius, where nothing can be met, do not count. */
+static double chord_sag(const struct orbit_knots *k, const double *warp, int n, double clear_radius)
+{
+    const int inner = 16;
+    double u_clear = clear_radius > 0.0 ? 1.0 / clear_radius : INFINITY;
     double phi_end = k->phi[k->n - 1], worst = 0.0;
     for (int p = 0; p < n; p++) {
-        double pa = phi_end * p / n, pb = phi_end * (p + 1) / n, ua, ub, w;
+        double pa = phi_end * warp_at(warp, (double)p / n), pb = phi_end * warp_at(warp, (double)(p + 1) / n);
+        double ua, ub, w;
         knots_eval(k, pa, &ua, &w);
         knots_eval(k, pb, &ub, &w);
         double ax = cos(pa) / ua, ay = sin(pa) / ua, bx = cos(pb) / ub, by = sin(pb) / ub;
         double dx = bx - ax, dy = by - ay, len = hypot(dx, dy);
-        for (int j = 0; j < columns; j++) {
-            if (phi_s[j] <= pa || phi_s[j] >= pb)
+        for (int j = 1; j < inner; j++) {
+            double phi = pa + (pb - pa) * j / inner, u;
+            knots_eval(k, phi, &u, &w);
+            if (u > u_clear)
                 continue;
-            double x = cos(phi_s[j]) / u_s[j] - ax, y = sin(phi_s[j]) / u_s[j] - ay;
-            double dist = len > 0.0 ? fabs(x * dy - y * dx) / len : hypot(x, y);
-            worst = fmax(worst, dist);
+            double x = cos(phi) / u - ax, y = sin(phi) / u - ay;
+            worst = fmax(worst, len > 0.0 ? fabs(x * dy - y * dx) / len : hypot(x, y));
         }
     }
     return worst;
 }
 
-static int row_segments(const struct orbit_table *t, const struct orbit_knots *k, const double *phi_s,
-                        const double *u_s)
+/* The fewest chords of equal sigma that stray at most chord_tolerance: from the estimate
+ * sigma / sqrt(8 tolerance), raised until the measured distance keeps within it. */
+static int row_segments(const struct orbit_table *t, const struct orbit_knots *k, const double *warp, double sigma)
 {
     if (!isfinite(t->p.chord_tolerance))
         return 1;
-    int n = 1;
-    while (n < t->p.max_segments && chord_sag(k, phi_s, u_s, t->p.columns, n) > t->p.chord_tolerance)
-        n = 2 * n < t->p.max_segments ? 2 * n : t->p.max_segments;
+    double estimate = ceil(sigma / sqrt(8.0 * t->p.chord_tolerance));
+    int n = estimate < 1.0 ? 1 : estimate > t->p.max_segments ? t->p.max_segments : (int)estimate;
+    while (n < t->p.max_segments && chord_sag(k, warp, n, t->p.clear_radius) > t->p.chord_tolerance) {
+        int more = n + n / 4 + 1;
+        n = more < t->p.max_segments ? more : t->p.max_segments;
+    }
     return n;
 }
 
@@ -317,6 +390,7 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
         return -1;
     }
     t->psi_c = orbit_critical_angle(p->mass, p->r_observer);
+    t->critical_from_axis = orbit_critical_from_axis(p->mass, p->r_observer, &t->critical_inward);
     t->psi_min = fmin(ORBIT_RADIAL_GAP, 0.5 * t->psi_c);
     t->psi_max = fmax(pi - ORBIT_RADIAL_GAP, 0.5 * (t->psi_c + pi));
     double extent[2] = {t->psi_c - t->psi_min, t->psi_max - t->psi_c};
@@ -332,7 +406,7 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
     t->u_far = 1.0 / p->r_far;
     t->u_capture = 1.0 / (2.0 * p->mass * (1.0 - ORBIT_HORIZON_MARGIN));
     int rows = 2 * p->rows_per_side, cols = p->columns;
-    t->width = cols + 1;
+    t->width = cols + 1 + ORBIT_WARP_SAMPLES;
     t->height = rows;
     t->texels = calloc((size_t)t->width * rows * 4, sizeof *t->texels);
     t->u = calloc((size_t)rows * cols, sizeof *t->u);
@@ -375,7 +449,18 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
         }
         t->psi[row] = psi;
         t->phi_over_sin[row] = phi_end / sin(psi);
-        t->segments[row] = row_segments(t, &k, phi_s, u);
+        double warp[ORBIT_WARP_SAMPLES];
+        double sigma = row_warp(&k, p->mass, p->clear_radius, cols, warp);
+        if (sigma < 0.0) {
+            knots_free(&k);
+            free(phi_s);
+            orbit_table_free(t);
+            snprintf(err, errlen, "orbit table: out of memory");
+            return -1;
+        }
+        for (int m = 0; m < ORBIT_WARP_SAMPLES; m++)
+            t->texels[((size_t)row * t->width + cols + 1 + m) * 4] = (float)warp[m];
+        t->segments[row] = row_segments(t, &k, warp, sigma);
         if (t->segments[row] > t->max_segments)
             t->max_segments = t->segments[row];
         float *last = t->texels + ((size_t)row * t->width + cols) * 4;
@@ -448,4 +533,23 @@ void orbit_table_eval(const struct orbit_table *t, double psi, double s, struct 
     out->u = u;
     out->phi = s * *phi_end;
     out->du_dphi = *phi_end > 0.0 ? du / *phi_end : 0.0;
+}
+
+double orbit_table_chord_end(const struct orbit_table *t, double psi, int k, int n)
+{
+    enum orbit_side side;
+    int rps = t->p.rows_per_side, cols = t->p.columns;
+    double q = orbit_table_row(t, psi, &side);
+    int i = (int)floor(q);
+    if (i > rps - 2)
+        i = rps - 2;
+    double f = q - i, ends[2];
+    for (int m = 0; m < 2; m++) {
+        double warp[ORBIT_WARP_SAMPLES];
+        const float *texel = t->texels + ((size_t)(side * rps + i + m) * t->width + cols + 1) * 4;
+        for (int j = 0; j < ORBIT_WARP_SAMPLES; j++)
+            warp[j] = texel[4 * j];
+        ends[m] = warp_at(warp, (double)k / n);
+    }
+    return k >= n ? 1.0 : (1.0 - f) * ends[0] + f * ends[1];
 }

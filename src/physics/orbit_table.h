@@ -31,6 +31,8 @@ enum orbit_side { ORBIT_ESCAPES, ORBIT_CAPTURED };
 #define ORBIT_RADIAL_GAP 1e-6
 /* A captured orbit ends this fraction inside the horizon, so that a float position is inside. */
 #define ORBIT_HORIZON_MARGIN 1e-5
+/* Samples of each orbit's chord schedule (see orbit_table.c: chords of equal sag). */
+#define ORBIT_WARP_SAMPLES 32
 /* Binet integration: relative and absolute (of u_o) tolerance per step. */
 #define ORBIT_RTOL 1e-12
 
@@ -40,21 +42,30 @@ struct orbit_table_params {
     double r_far;              /* escaping orbits are tabulated out to here (> r_o) */
     int rows_per_side;         /* launch angles on each side of psi_c (>= 4) */
     int columns;               /* samples along each orbit (>= 4) */
-    /* segments per orbit: the fewest (of 1, 2, 4, ...) whose chords stray at most this far from
+    /* segments per orbit: the fewest chords of about equal sag that stray at most this far from
      * the orbit (scene units), at most max_segments; INFINITY: one segment */
     double chord_tolerance;
     int max_segments;
+    /* no object lies closer to the centre than this (scene units): a chord between two points
+     * inside this radius stays inside it and can meet nothing, so its sag does not count */
+    double clear_radius;
 };
 
 struct orbit_table {
     struct orbit_table_params p;
     double psi_c;              /* critical launch angle */
+    /* the same measured from the nearer radial direction: from the inward one (towards the mass)
+     * when r_o > 3M, where psi_c = pi - critical_from_axis, else from the outward one */
+    double critical_from_axis;
+    int critical_inward;
     double psi_min, psi_max;   /* the outermost rows */
     double log_span[2];        /* each side's extent in the row coordinate */
     double u_observer, u_far, u_capture;
-    /* texture layout: width columns + 1, height 2 rows_per_side (escaping rows first, from psi_c
-     * outwards); texel (j, row) = (u(s_j), du/ds(s_j), 0, 0) with s_j = j / (columns - 1); texel
-     * (columns, row) = (phi_end / sin psi, segments, phi_end, psi) */
+    /* texture layout: width columns + 1 + ORBIT_WARP_SAMPLES, height 2 rows_per_side (escaping
+     * rows first, from psi_c outwards); texel (j, row) = (u(s_j), du/ds(s_j), 0, 0) with
+     * s_j = j / (columns - 1); texel (columns, row) = (phi_end / sin psi, segments, phi_end, psi);
+     * texel (columns + 1 + m, row) = (s where chord schedule sample m lies, 0, 0, 0): chord k of n
+     * ends at the warp interpolated linearly at k / n */
     int width, height;
     float *texels;             /* RGBA, width x height, row-major */
     double *u, *du_ds;         /* the same in double: height x columns */
@@ -69,18 +80,22 @@ struct orbit_table {
 int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p, char *err, size_t errlen);
 void orbit_table_free(struct orbit_table *t);
 
-/* The critical launch angle for M and r_o > 2M. */
+/* The critical launch angle for M and r_o > 2M; *from_axis and *inward (either may be NULL) say
+ * the same from the nearer radial direction, without the rounding of pi - angle. */
 double orbit_critical_angle(double mass, double r_observer);
+double orbit_critical_from_axis(double mass, double r_observer, int *inward);
 /* Side and fractional row (0 .. rows_per_side - 1) of launch angle psi. */
 double orbit_table_row(const struct orbit_table *t, double psi, enum orbit_side *side);
 
 /* The orbit of launch angle psi at fraction s in [0, 1] as the shader interpolates it: u, du/dphi,
- * phi; and phi_end and the segment count of the ray. */
+ * phi; and phi_end and the segment count of the ray. orbit_table_chord_end: the fraction s where
+ * chord k of the ray's n ends. */
 struct orbit_point {
     double u, du_dphi, phi;
 };
 void orbit_table_eval(const struct orbit_table *t, double psi, double s, struct orbit_point *out, double *phi_end,
                       int *segments);
+double orbit_table_chord_end(const struct orbit_table *t, double psi, int k, int n);
 
 /* One orbit traced directly (no table): phi_end and whether it is captured, and u, du/dphi at
  * n_at angles phi_at[] (ascending, <= phi_end; NULL for none). 0, or -1 when it does not end. */

@@ -25,7 +25,7 @@ static int renderer_follow_scene(struct renderer *r, char *err, size_t errlen)
     r->straight = model_is_straight(&scene->model);
     snprintf(r->model_file, sizeof r->model_file, "model_%s.glsl",
              r->straight ? "flat" : model_name(scene->model.type));
-    static const char *const method_defines[] = {"EULER", "RK4", "DOPRI5"};
+    static const char *const method_defines[] = {"EULER", "RK4", "DOPRI5", "ORBIT_TABLE"};
     static const char *const control_defines[] = {"FIXED", "DOUBLING", "EMBEDDED"};
     snprintf(r->model_defines, sizeof r->model_defines,
              "#define MODEL_%s 1\n#define METHOD_%s 1\n#define STEP_%s 1\n#define STEPS_PER_PASS %d\n%s",
@@ -65,6 +65,14 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
     if (scene->render.width > r->caps.max_texture_size || scene->render.height > r->caps.max_texture_size) {
         snprintf(err, errlen, "image size %dx%d exceeds this GPU's texture limit %d", scene->render.width,
                  scene->render.height, r->caps.max_texture_size);
+        *bad_input = 1;
+        quad_release();
+        free(r);
+        return NULL;
+    }
+    if (scene->render.method == METHOD_ORBIT_TABLE && !r->path.fp32) {
+        snprintf(err, errlen, "render.method = orbit_table needs 32-bit float textures, and this GPU's path is %s: "
+                 "use render.method = rk4", r->path.name);
         *bad_input = 1;
         quad_release();
         free(r);
@@ -120,10 +128,13 @@ int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int 
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
     }
-    int segments = r->straight ? 1 : s->render.segments;
+    int orbit = !r->straight && s->render.method == METHOD_ORBIT_TABLE;
+    if (orbit && orbit_prepare(r, err, errlen) != 0)
+        return -1;
+    int segments = r->straight ? 1 : orbit ? r->orbit.max_segments : s->render.segments;
     for (int seg = 0; seg < segments; seg++) {
         int start = r->rs.cur_position;
-        if (stage_integrate(r, start, err, errlen) != 0)
+        if ((orbit ? stage_orbit(r, seg, start, err, errlen) : stage_integrate(r, start, err, errlen)) != 0)
             return -1;
         if (stage_intersect_all(r, seg, start, err, errlen) != 0)
             return -1;
@@ -240,6 +251,7 @@ void renderer_destroy(struct renderer *r)
         raystate_release(&r->rs);
     textures_release(r);
     observer_lut_release(r);
+    orbit_release(r);
     polygons_release(r);
     program_cache_release(&r->programs);
     quad_release();

@@ -4,11 +4,14 @@
 #include "render/programs.h"
 #include "render/raystate.h"
 #include "render/renderer.h"
+#include "physics/orbit_table.h"
 
 /* Texture units: ray-state inputs first, then scene textures. */
 #define UNIT_SKY 6
 /* the black-body table: below the object textures, which start at FIRST_OBJECT_UNIT (intersect) */
 #define UNIT_BLACKBODY 4
+/* the orbit table: after the three ray-state inputs of the orbit stage */
+#define UNIT_ORBIT 3
 
 struct renderer {
     const struct scene *scene;
@@ -31,6 +34,8 @@ struct renderer {
     int image_width, image_height;
     long passes;
     double seconds;
+    struct orbit_table orbit;     /* render.method = orbit_table: the table of the last run */
+    GLuint orbit_texture;         /* the same as a float texture; 0 before the first */
     float quad_z;                 /* NDC depth of the pass quads: 0 (heavy passes), -1 (retire) */
     int depth_write_last;         /* pass_run writes depth in the last draw of a stage only */
 };
@@ -62,6 +67,12 @@ void textures_release(struct renderer *r);
 
 int stage_setup(struct renderer *r, char *err, size_t errlen);
 int stage_integrate(struct renderer *r, int segment_start, char *err, size_t errlen);
+/* render.method = orbit_table (stage_orbit.c): the table for the scene as it is now, built and
+ * uploaded when its parameters changed; one pass per segment along the exact orbits. */
+void orbit_table_params_of(const struct scene *s, struct orbit_table_params *p);
+int orbit_prepare(struct renderer *r, char *err, size_t errlen);
+void orbit_release(struct renderer *r);
+int stage_orbit(struct renderer *r, int segment, int segment_start, char *err, size_t errlen);
 /* Every object against the current segment, render.batch objects per pass. */
 int stage_intersect_all(struct renderer *r, int segment, int segment_start, char *err, size_t errlen);
 /* Objects per intersection pass on this GPU: render.batch, bounded by its uniform vectors. */

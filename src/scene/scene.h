@@ -21,7 +21,9 @@
 #define SCENE_MAX_STEPS_PER_SEGMENT 10000 /* integration steps */
 #define SCENE_MAX_STEPS_PER_PASS 64 /* integration steps unrolled in one shader */
 #define SCENE_MAX_BATCH 16          /* objects intersected in one pass */
-#define SCENE_MAX_SUBDIVISION 128   /* a sphere's mesh then has 129 x 257 vertices: 16-bit indices */
+#define SCENE_MAX_SUBDIVISION 128
+#define SCENE_MAX_ORBIT_ROWS 4096   /* orbit table rows per side: 2 x 4096 rows of a float texture */
+#define SCENE_MAX_ORBIT_COLUMNS 4095 /* samples along each tabulated orbit (one more texel: its end) */   /* a sphere's mesh then has 129 x 257 vertices: 16-bit indices */
 /* Pixels along either side of a texture or a sky cube face, as its PNG header declares it: one
  * decoded image of 8192 x 8192 is 256 MiB of RGBA8. */
 #define SCENE_MAX_TEXTURE_SIZE 8192
@@ -135,7 +137,12 @@ struct render_settings {
     double grow_fraction;
     double step_min, step_max;
     enum moving_objects_method moving_objects;
-    int polygon_subdivision;  /* MOVING_POLYGONS: segments along each edge of a primitive's mesh */
+    int polygon_subdivision;
+    /* method orbit_table: largest distance of a segment's chord from the exact orbit (scene
+     * units), which sets each ray's number of segments (at most `segments`); the table's rows per
+     * side of the critical launch angle and samples along each orbit */
+    double chord_tolerance;
+    int orbit_rows, orbit_columns;  /* MOVING_POLYGONS: segments along each edge of a primitive's mesh */
 };
 
 /* The bounds adaptive steps stay within (the defaults resolved). */

@@ -27,6 +27,9 @@ static void render_defaults(struct render_settings *r)
     r->grow_fraction = 1.0 / 32.0;
     r->step_min = 0.0;
     r->step_max = 0.0;
+    r->chord_tolerance = 1e-3;
+    r->orbit_rows = 512;
+    r->orbit_columns = 128;
 }
 
 double render_step_min(const struct render_settings *r)

@@ -17,7 +17,7 @@ static const char *const model_names[] = {
     "flat", "lorenz", "rossler", "potential", "refraction", "schwarzschild", NULL
 };
 static const char *const primitive_names[] = {"sphere", "triangle", "disk", "rect", NULL};
-static const char *const method_names[] = {"euler", "rk4", "dopri5", NULL};
+static const char *const method_names[] = {"euler", "rk4", "dopri5", "orbit_table", NULL};
 static const char *const step_control_names[] = {"fixed", "doubling", "embedded", NULL};
 static const char *const switch_names[] = {"off", "on", NULL};
 static const char *const precision_names[] = {"auto", "fp32", "fp16", NULL};
@@ -427,6 +427,12 @@ const struct scene_key scene_keys[] = {
     {SECTION_RENDER, "moving_objects", CHOICE(moving_names, set_moving_objects)},
     {SECTION_RENDER, "polygon_subdivision", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SUBDIVISION,
      .offset = AT_SCENE(render.polygon_subdivision)},
+    {SECTION_RENDER, "chord_tolerance", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .flags = KEY_ABOVE_LO,
+     .offset = AT_SCENE(render.chord_tolerance)},
+    {SECTION_RENDER, "orbit_rows", KEY_INTEGER, .lo = 4, .hi = SCENE_MAX_ORBIT_ROWS,
+     .offset = AT_SCENE(render.orbit_rows)},
+    {SECTION_RENDER, "orbit_columns", KEY_INTEGER, .lo = 4, .hi = SCENE_MAX_ORBIT_COLUMNS,
+     .offset = AT_SCENE(render.orbit_columns)},
 
     {SECTION_MODEL, "type", CHOICE(model_names, set_model_type)},
     {SECTION_MODEL, "center", KEY_VECTOR, ANY, .applies = ALL_MODELS_BUT_FLAT,

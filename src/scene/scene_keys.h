@@ -11,7 +11,7 @@
 /* Rectangle half-edges may deviate from a right angle by this much (cosine of their angle). */
 #define SCENE_RECT_ORTHO_TOL 1e-6
 /* Capacity of per-key bookkeeping arrays; the table is checked against it at compile time. */
-#define SCENE_KEY_TABLE_MAX 96
+#define SCENE_KEY_TABLE_MAX 128
 
 enum scene_section_kind {
     SECTION_SCENE,

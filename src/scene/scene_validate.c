@@ -69,6 +69,12 @@ static int validate_render(const struct scene *s, struct scene_error *err)
         return invalid(s, err, "render.step_control = embedded needs render.method = dopri5 (the embedded "
                        "pair gives the error estimate); use step_control = doubling with %s",
                        method_name(r->method));
+    if (r->method == METHOD_ORBIT_TABLE && s->model.type != MODEL_SCHWARZSCHILD && s->model.type != MODEL_FLAT)
+        return invalid(s, err, "render.method = orbit_table follows the exact orbits of Schwarzschild space; model %s "
+                       "has none: use euler, rk4 or dopri5", model_name(s->model.type));
+    if (r->method == METHOD_ORBIT_TABLE && r->step_control != STEP_FIXED)
+        return invalid(s, err, "render.method = orbit_table takes no steps, so render.step_control must be fixed; "
+                       "its chords are set by render.chord_tolerance");
     double lo = render_step_min(r), hi = render_step_max(r);
     if (r->step_control != STEP_FIXED && !(lo <= r->step_size && r->step_size <= hi))
         return invalid(s, err, "render.step (%g) must lie within render.step_min (%g) and render.step_max (%g)",

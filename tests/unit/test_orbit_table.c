@@ -156,7 +156,7 @@ static int cmp(const void *a, const void *b)
 
 static struct orbit_table_params params(double mass, double r_o, double r_far, int rows, int columns)
 {
-    struct orbit_table_params p = {mass, r_o, r_far, rows, columns, INFINITY, 1};
+    struct orbit_table_params p = {mass, r_o, r_far, rows, columns, INFINITY, 1, 0.0};
     return p;
 }
 

@@ -1,0 +1,187 @@
+// Exact Schwarzschild photon orbits from the orbit table (src/physics/orbit_table.h): a ray seen
+// by the static observer at the camera at angle psi from the outward radial direction runs in
+// the plane of e1 (outward radial) and e2 (its own direction across it), at u = 1/r(phi). The
+// table is sampled at texel centres only (NEAREST), and interpolated here exactly as
+// orbit_table_eval() does in C: Catmull-Rom across rows, cubic Hermite along the orbit.
+uniform sampler2D u_orbit_table;
+uniform vec2 u_orbit_texel;           // 1 / (texture width, height)
+uniform float u_orbit_rows;           // rows per side of the critical angle
+uniform float u_orbit_columns;        // samples along each orbit; column u_orbit_columns holds
+                                      // (phi_end / sin psi, segments, phi_end, psi), the columns
+                                      // after it the chord schedule's u_orbit_warps samples
+uniform float u_orbit_warps;
+uniform vec2 u_orbit_span;            // row coordinate of each side's outermost row
+uniform float u_orbit_epsilon;        // the row coordinate ln(d / epsilon) + d / even_scale of a ray
+uniform float u_orbit_even_scale;     // at d from psi_c (uniforms: a literal 1e-7 could fold to 0)
+
+struct orbit_ray {
+    vec3 e1, e2;
+    float side_first, side_last;      // texel rows of the ray's side of the critical angle
+    float row0;                       // first of the four rows, as a texel row
+    float row_fraction;               // the ray's place between rows row0 + 1 and row0 + 2
+    vec4 weights;                     // Catmull-Rom weights of rows row0 .. row0 + 3
+    float phi_end;                    // angle swept to the orbit's end
+    float segments;                   // chords along the orbit
+};
+
+#define ORBIT_TEXEL(col, row) texture2D(u_orbit_table, (vec2(col, row) + 0.5) * u_orbit_texel)
+
+// The launch angle is measured from the radial axis nearer the critical cone (towards the mass
+// when r_o > 3M), as chi, so that chi - chi_c keeps its relative precision next to the shadow's
+// edge, where the orbit's swept angle diverges as -ln|chi - chi_c|. A camera at rest takes chi
+// from the pixel itself: the unnormalised view direction F + x R + y U is split along the axis
+// and across it with coefficients the CPU computed in double, and x, y are taken relative to the
+// pixel where the axis itself is seen (a hi + lo pair), so no O(1) terms cancel. A moving camera
+// aberrates the direction first and takes chi from the float direction.
+uniform vec3 u_orbit_axis;            // unit radial axis at the camera: -e1 or +e1
+uniform vec2 u_orbit_critical_chi;    // chi_c as hi + lo
+uniform float u_orbit_axis_sign;      // psi_c - psi = sign (chi - chi_c)
+#ifndef OBSERVER_MOVING
+uniform vec2 u_orbit_axis_pixel_hi;   // image pixel where the axis is seen (or the image centre)
+uniform vec2 u_orbit_axis_pixel_lo;
+uniform vec2 u_orbit_pixel_scale;     // 2 / image size: ndc per pixel
+uniform vec3 u_orbit_across0;         // across-axis part of the view direction at that pixel
+uniform vec3 u_orbit_across_x;        // ... per ndc unit of x and of y
+uniform vec3 u_orbit_across_y;
+uniform vec3 u_orbit_along;           // along-axis part: at that pixel, per ndc unit of x and y
+#endif
+
+// The angle of (x, y), y >= 0, in [0, pi], to a float rounding or two (Cephes' atanf: octant
+// reduction and its minimax polynomial). Mesa 22.3's built-in atan is off by up to 3.3e-6 rad on
+// llvmpipe (measured), which next to the shadow's edge the orbit magnifies a thousandfold.
+float orbit_angle(float y, float x)
+{
+    float ax = abs(x);
+    float big = max(ax, y);
+    float small = min(ax, y);
+    float t = small / max(big, 1e-30);
+    bool upper = t > 0.41421356237309503;
+    float z_upper = (t - 1.0) / (t + 1.0);
+    float z = upper ? z_upper : t;
+    float z2 = z * z;
+    float p = (((0.0805374449538 * z2 - 0.138776856032) * z2 + 0.199777106478) * z2 - 0.333329491539) * z2 * z + z;
+    float quarter_pi = 0.78539816339744831;
+    float half_pi = 1.5707963267948966;
+    float pi = 3.1415926535897931;
+    float zero = 0.0;
+    float base = upper ? quarter_pi : zero;
+    float octant = base + p;
+    float steep = half_pi - octant;
+    float first = y > ax ? steep : octant;
+    float behind = pi - first;
+    return x < 0.0 ? behind : first;
+}
+
+orbit_ray orbit_ray_of()
+{
+    orbit_ray ray;
+    ray.e1 = normalize(u_camera_position - u_model_center);
+#ifdef OBSERVER_MOVING
+    vec3 d = observer_scene_direction(observer_view_direction());
+    float along = dot(d, u_orbit_axis);
+    vec3 across = d - along * u_orbit_axis;
+#else
+    vec2 pixel = u_pixel_origin + gl_FragCoord.xy;
+    vec2 offset = ((pixel - u_orbit_axis_pixel_hi) - u_orbit_axis_pixel_lo) * u_orbit_pixel_scale;
+    vec3 across = u_orbit_across0 + offset.x * u_orbit_across_x + offset.y * u_orbit_across_y;
+    float along = u_orbit_along.x + offset.x * u_orbit_along.y + offset.y * u_orbit_along.z;
+#endif
+    float across_length = length(across);
+    float chi = orbit_angle(across_length, along);
+    float sin_psi = across_length / sqrt(along * along + across_length * across_length);
+    // a radial ray has no plane of its own: any plane through it holds it (phi_end is 0)
+    vec3 axis_x = vec3(1.0, 0.0, 0.0);
+    vec3 axis_y = vec3(0.0, 1.0, 0.0);
+    vec3 any_axis = abs(ray.e1.x) < 0.9 ? axis_x : axis_y;
+    vec3 any_across = normalize(cross(ray.e1, any_axis));
+    vec3 own_across = across / max(across_length, 1e-30);
+    ray.e2 = across_length > 0.0 ? own_across : any_across;
+    float from_critical = (chi - u_orbit_critical_chi.x) - u_orbit_critical_chi.y;
+    bool escapes = u_orbit_axis_sign * from_critical > 0.0;
+    float distance = max(abs(from_critical), u_orbit_epsilon);
+    float coordinate = log(distance / u_orbit_epsilon) + distance / u_orbit_even_scale;
+    float span = escapes ? u_orbit_span.x : u_orbit_span.y;
+    float last_row = u_orbit_rows - 1.0;
+    float row = clamp(coordinate / span, 0.0, 1.0) * last_row;
+    float i = min(floor(row), last_row - 1.0);
+    float f = row - i;
+    float f2 = f * f;
+    float f3 = f2 * f;
+    ray.row_fraction = f;
+    ray.weights = 0.5 * vec4(-f3 + 2.0 * f2 - f, 3.0 * f3 - 5.0 * f2 + 2.0, -3.0 * f3 + 4.0 * f2 + f, f3 - f2);
+    float side_base = escapes ? 0.0 : u_orbit_rows;
+    ray.row0 = i - 1.0;
+    float phi_over_sin = 0.0;
+    for (int m = 0; m < 4; m++) {
+        float r = clamp(ray.row0 + float(m), 0.0, last_row) + side_base;
+        phi_over_sin += ray.weights[m] * ORBIT_TEXEL(u_orbit_columns, r).x;
+    }
+    ray.row0 += side_base;
+    ray.side_first = side_base;
+    ray.side_last = side_base + last_row;
+    ray.phi_end = phi_over_sin * sin_psi;
+    float n0 = ORBIT_TEXEL(u_orbit_columns, i + side_base).y;
+    float n1 = ORBIT_TEXEL(u_orbit_columns, i + 1.0 + side_base).y;
+    ray.segments = max(n0, n1);
+    return ray;
+}
+
+// u and du/ds at fraction s of the orbit.
+vec2 orbit_at(orbit_ray ray, float s)
+{
+    float last_column = u_orbit_columns - 1.0;
+    float c = clamp(s, 0.0, 1.0) * last_column;
+    float j = min(floor(c), last_column - 1.0);
+    float g = c - j;
+    float g2 = g * g;
+    float g3 = g2 * g;
+    float dj = 1.0 / last_column;
+    vec4 value = vec4(2.0 * g3 - 3.0 * g2 + 1.0, (g3 - 2.0 * g2 + g) * dj, -2.0 * g3 + 3.0 * g2, (g3 - g2) * dj);
+    vec4 slope = vec4((6.0 * g2 - 6.0 * g) / dj, 3.0 * g2 - 4.0 * g + 1.0, (-6.0 * g2 + 6.0 * g) / dj,
+                      3.0 * g2 - 2.0 * g);
+    vec2 sum = vec2(0.0);
+    for (int m = 0; m < 4; m++) {
+        float r = clamp(ray.row0 + float(m), ray.side_first, ray.side_last);
+        vec4 a = ORBIT_TEXEL(j, r);
+        vec4 b = ORBIT_TEXEL(j + 1.0, r);
+        vec4 samples = vec4(a.x, a.y, b.x, b.y);
+        sum += ray.weights[m] * vec2(dot(value, samples), dot(slope, samples));
+    }
+    return sum;
+}
+
+// The fraction s where chord k of the ray's ends: the chord schedule (equal sag, see
+// src/physics/orbit_table.c) interpolated linearly, along it and between the two nearest rows,
+// so that it stays increasing in k.
+float orbit_chord_end(orbit_ray ray, float k)
+{
+    float last = u_orbit_warps - 1.0;
+    float x = clamp(k / ray.segments, 0.0, 1.0) * last;
+    float m = min(floor(x), last - 1.0);
+    float g = x - m;
+    float column = u_orbit_columns + 1.0 + m;
+    float row = ray.row0 + 1.0;
+    float a0 = ORBIT_TEXEL(column, row).x;
+    float b0 = ORBIT_TEXEL(column + 1.0, row).x;
+    float a1 = ORBIT_TEXEL(column, row + 1.0).x;
+    float b1 = ORBIT_TEXEL(column + 1.0, row + 1.0).x;
+    float end = mix(mix(a0, b0, g), mix(a1, b1, g), ray.row_fraction);
+    float whole = 1.0;
+    return k < ray.segments ? end : whole;
+}
+
+// The point of the orbit at fraction s, where it has u, du/ds = q.
+vec3 orbit_point(orbit_ray ray, vec2 q, float s)
+{
+    float phi = s * ray.phi_end;
+    return u_model_center + (cos(phi) * ray.e1 + sin(phi) * ray.e2) / q.x;
+}
+
+// d(point)/ds there.
+vec3 orbit_velocity(orbit_ray ray, vec2 q, float s)
+{
+    float phi = s * ray.phi_end;
+    vec3 radial = cos(phi) * ray.e1 + sin(phi) * ray.e2;
+    vec3 around = cos(phi) * ray.e2 - sin(phi) * ray.e1;
+    return (-q.y / (q.x * q.x)) * radial + (ray.phi_end / q.x) * around;
+}

@@ -1,0 +1,185 @@
+/* Stage 2 without integration, for Schwarzschild (render.method = orbit_table): each segment is a
+ * chord between exact points of the ray's orbit, read from the orbit table (physics/orbit_table.h)
+ * that the CPU builds in double precision for the scene's mass and the camera's radius, and
+ * rebuilds when either changes (the kiosk's mass knob, a moving camera). */
+#include "render/stages.h"
+#include "gl/texture.h"
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* Escaping orbits are tabulated this fraction beyond the farthest point of the bounding sphere. */
+#define ORBIT_FAR_MARGIN 1e-3
+/* An exit point is put this fraction outside the bounding sphere, 16 float roundings. */
+#define ORBIT_OUTSIDE_MARGIN 1e-6
+
+/* A lower bound of the distance from c to the object's points (0 when it may reach c): the
+ * distance to its bounding ball, and for the flat primitives to their plane. */
+static double object_distance(const struct object *o, vec3d c)
+{
+    vec3d centre = o->center, normal = o->normal;
+    double reach = o->radius;
+    if (o->type == PRIM_RECT) {
+        reach = v3_len(v3_add(o->axis_u, o->axis_v));
+        normal = v3_cross(o->axis_u, o->axis_v);
+    } else if (o->type == PRIM_TRIANGLE) {
+        centre = v3_scale(v3_add(o->vertex[0], v3_add(o->vertex[1], o->vertex[2])), 1.0 / 3.0);
+        reach = 0.0;
+        for (int k = 0; k < 3; k++)
+            reach = fmax(reach, v3_len(v3_sub(o->vertex[k], centre)));
+        normal = v3_cross(v3_sub(o->vertex[1], o->vertex[0]), v3_sub(o->vertex[2], o->vertex[0]));
+    }
+    double d = v3_len(v3_sub(centre, c)) - reach;
+    if (o->type != PRIM_SPHERE && v3_len(normal) > 0.0)
+        d = fmax(d, fabs(v3_dot(v3_normalize(normal), v3_sub(c, centre))));
+    return d;
+}
+
+void orbit_table_params_of(const struct scene *s, struct orbit_table_params *p)
+{
+    const struct render_settings *r = &s->render;
+    memset(p, 0, sizeof *p);
+    p->mass = s->model.mass;
+    p->r_observer = v3_len(v3_sub(s->camera.position, s->model.center));
+    p->r_far = (v3_len(v3_sub(r->bound_center, s->model.center)) + r->bound_radius) * (1.0 + ORBIT_FAR_MARGIN);
+    p->rows_per_side = r->orbit_rows;
+    p->columns = r->orbit_columns;
+    /* a ray that can meet nothing needs no chords but its end: one segment */
+    p->chord_tolerance = s->n_objects > 0 ? r->chord_tolerance : INFINITY;
+    p->max_segments = r->segments;
+    p->clear_radius = INFINITY;
+    for (int i = 0; i < s->n_objects; i++)
+        p->clear_radius = fmin(p->clear_radius, object_distance(&s->objects[i], s->model.center));
+    if (!(p->clear_radius > 0.0))
+        p->clear_radius = 0.0;
+}
+
+int orbit_prepare(struct renderer *r, char *err, size_t errlen)
+{
+    struct orbit_table_params p;
+    orbit_table_params_of(r->scene, &p);
+    if (r->orbit_texture && memcmp(&p, &r->orbit.p, sizeof p) == 0)
+        return 0;
+    orbit_release(r);
+    if (orbit_table_build(&r->orbit, &p, err, errlen) != 0)
+        return -1;
+    if (r->orbit.width > r->caps.max_texture_size || r->orbit.height > r->caps.max_texture_size) {
+        snprintf(err, errlen, "the orbit table (%dx%d) exceeds this GPU's texture limit %d: lower "
+                 "render.orbit_rows or render.orbit_columns", r->orbit.width, r->orbit.height, r->caps.max_texture_size);
+        orbit_release(r);
+        return -1;
+    }
+    const struct float_format *f = r->path.format;
+    r->orbit_texture = texture_create_nearest(f->internal_format, f->format, GL_FLOAT, r->orbit.width, r->orbit.height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, r->orbit.width, r->orbit.height, f->format, GL_FLOAT, r->orbit.texels);
+    return gl_check("uploading the orbit table", err, errlen);
+}
+
+void orbit_release(struct renderer *r)
+{
+    if (r->orbit_texture)
+        glDeleteTextures(1, &r->orbit_texture);
+    r->orbit_texture = 0;
+    orbit_table_free(&r->orbit);
+}
+
+struct orbit_args {
+    const struct renderer *r;
+    int segment;
+};
+
+/* Below this cosine between the view direction and the radial axis the axis is not seen in the
+ * image plane ahead (or too far out of it): chi is taken about the image centre instead. */
+#define ORBIT_AXIS_SEEN_COSINE 0.1
+
+/* The uniforms by which orbit_table.glsl measures each pixel's angle chi from the radial axis
+ * (see there), in double here. */
+static void set_orbit_axis(GLuint p, const struct renderer *r)
+{
+    const struct scene *s = r->scene;
+    const struct orbit_table *t = &r->orbit;
+    vec3d e1 = v3_normalize(v3_sub(s->camera.position, s->model.center));
+    vec3d axis = t->critical_inward ? v3_scale(e1, -1.0) : e1;
+    double chi_c = t->critical_from_axis;
+    uniform_vec3(p, "u_orbit_axis", axis);
+    glUniform2f(glGetUniformLocation(p, "u_orbit_critical_chi"), (float)chi_c, (float)(chi_c - (float)chi_c));
+    uniform_float(p, "u_orbit_axis_sign", t->critical_inward ? 1.0 : -1.0);
+    if (observer_moving(s))
+        return;
+    /* the camera basis of observer.glsl: direction F + x R + y U at ndc (x, y) */
+    vec3d f = v3_normalize(v3_sub(s->camera.look_at, s->camera.position));
+    vec3d right = v3_normalize(v3_cross(f, s->camera.up));
+    vec3d up = v3_cross(right, f);
+    double tan_half = tan(s->camera.fov_deg * PI_D / 360.0);
+    double w = s->render.width, h = s->render.height;
+    vec3d rx = v3_scale(right, tan_half * w / h), uy = v3_scale(up, tan_half);
+    double alpha = v3_dot(axis, f), x0 = 0.0, y0 = 0.0;
+    if (alpha > ORBIT_AXIS_SEEN_COSINE) {
+        x0 = v3_dot(axis, rx) / (alpha * v3_dot(rx, rx));
+        y0 = v3_dot(axis, uy) / (alpha * v3_dot(uy, uy));
+    }
+    vec3d w0 = v3_add(f, v3_add(v3_scale(rx, x0), v3_scale(uy, y0)));
+    vec3d across0 = v3_sub(w0, v3_scale(axis, v3_dot(w0, axis)));
+    if (alpha > ORBIT_AXIS_SEEN_COSINE)
+        across0 = v3(0.0, 0.0, 0.0);    /* exactly: the axis is seen there */
+    double px = (x0 + 1.0) * 0.5 * w, py = (y0 + 1.0) * 0.5 * h;
+    glUniform2f(glGetUniformLocation(p, "u_orbit_axis_pixel_hi"), (float)px, (float)py);
+    glUniform2f(glGetUniformLocation(p, "u_orbit_axis_pixel_lo"), (float)(px - (float)px), (float)(py - (float)py));
+    glUniform2f(glGetUniformLocation(p, "u_orbit_pixel_scale"), (float)(2.0 / w), (float)(2.0 / h));
+    uniform_vec3(p, "u_orbit_across0", across0);
+    uniform_vec3(p, "u_orbit_across_x", v3_sub(rx, v3_scale(axis, v3_dot(rx, axis))));
+    uniform_vec3(p, "u_orbit_across_y", v3_sub(uy, v3_scale(axis, v3_dot(uy, axis))));
+    uniform_vec3(p, "u_orbit_along", v3(v3_dot(w0, axis), v3_dot(rx, axis), v3_dot(uy, axis)));
+}
+
+static void set_orbit(GLuint p, const void *arg)
+{
+    const struct orbit_args *a = arg;
+    const struct renderer *r = a->r;
+    const struct scene *s = r->scene;
+    const struct orbit_table *t = &r->orbit;
+    observer_set_uniforms(p, r);
+    model_set_uniforms(p, &s->model);
+    bounds_set_uniforms(p, s);
+    uniform_float(p, "u_bound_outside", s->render.bound_radius * (1.0 + ORBIT_OUTSIDE_MARGIN));
+    uniform_float(p, "u_segment_index", a->segment);
+    glActiveTexture(GL_TEXTURE0 + UNIT_ORBIT);
+    glBindTexture(GL_TEXTURE_2D, r->orbit_texture);
+    glUniform1i(glGetUniformLocation(p, "u_orbit_table"), UNIT_ORBIT);
+    glUniform2f(glGetUniformLocation(p, "u_orbit_texel"), 1.0f / (float)t->width, 1.0f / (float)t->height);
+    uniform_float(p, "u_orbit_rows", t->p.rows_per_side);
+    uniform_float(p, "u_orbit_columns", t->p.columns);
+    uniform_float(p, "u_orbit_warps", ORBIT_WARP_SAMPLES);
+    set_orbit_axis(p, r);
+    glUniform2f(glGetUniformLocation(p, "u_orbit_span"), (float)t->log_span[0], (float)t->log_span[1]);
+    uniform_float(p, "u_orbit_epsilon", ORBIT_CRITICAL_EPSILON);
+    uniform_float(p, "u_orbit_even_scale", ORBIT_EVEN_SCALE);
+}
+
+int stage_orbit(struct renderer *r, int segment, int segment_start, char *err, size_t errlen)
+{
+    struct raystate *rs = &r->rs;
+    const char *const files[] = {"common.glsl", "model_schwarzschild.glsl", "observer.glsl", "orbit_table.glsl",
+                                 "stage_orbit.glsl", NULL};
+    char defines[sizeof r->model_defines + sizeof r->observer_defines];
+    snprintf(defines, sizeof defines, "%s%s", r->model_defines, r->observer_defines);
+    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, err, errlen);
+    if (!sp)
+        return -1;
+    int out_pos = 0;
+    while (out_pos == segment_start || out_pos == rs->cur_position)
+        out_pos++;
+    int out_vel = 1 - rs->cur_velocity;
+    struct pass_input in[] = {
+        {"u_ray_position", rs->position[rs->cur_position]},
+        {"u_ray_velocity", rs->velocity[rs->cur_velocity]},
+        {"u_hit", rs->hit[rs->cur_hit]},
+    };
+    struct orbit_args a = {r, segment};
+    if (pass_run(r, sp, rs->position[out_pos], rs->velocity[out_vel], in, 3, set_orbit, &a, err, errlen) != 0)
+        return -1;
+    rs->cur_position = out_pos;
+    rs->cur_velocity = out_vel;
+    return gl_check("orbit segments", err, errlen);
+}
