@@ -160,14 +160,20 @@ float orbit_chord_end(orbit_ray ray, float k)
     float m = min(floor(x), last - 1.0);
     float g = x - m;
     float column = u_orbit_columns + 1.0 + m;
+    float next_column = column + 1.0;
     float row = ray.row0 + 1.0;
-    float a0 = ORBIT_TEXEL(column, row).x;
-    float b0 = ORBIT_TEXEL(column + 1.0, row).x;
-    float a1 = ORBIT_TEXEL(column, row + 1.0).x;
-    float b1 = ORBIT_TEXEL(column + 1.0, row + 1.0).x;
-    float end = mix(mix(a0, b0, g), mix(a1, b1, g), ray.row_fraction);
-    float whole = 1.0;
-    return k < ray.segments ? end : whole;
+    float next_row = row + 1.0;
+    // the first and the last end are the orbit's own ends: no fetch (the selects below keep the
+    // arithmetic outside the branch, see the precision note in common.glsl)
+    float end = k <= 0.0 ? 0.0 : 1.0;
+    if (k > 0.0 && k < ray.segments) {
+        float a0 = ORBIT_TEXEL(column, row).x;
+        float b0 = ORBIT_TEXEL(next_column, row).x;
+        float a1 = ORBIT_TEXEL(column, next_row).x;
+        float b1 = ORBIT_TEXEL(next_column, next_row).x;
+        end = mix(mix(a0, b0, g), mix(a1, b1, g), ray.row_fraction);
+    }
+    return end;
 }
 
 // The point of the orbit at fraction s, where it has u, du/ds = q.
@@ -184,4 +190,63 @@ vec3 orbit_velocity(orbit_ray ray, vec2 q, float s)
     vec3 radial = cos(phi) * ray.e1 + sin(phi) * ray.e2;
     vec3 around = cos(phi) * ray.e2 - sin(phi) * ray.e1;
     return (-q.y / (q.x * q.x)) * radial + (ray.phi_end / q.x) * around;
+}
+
+// Chord k of the ray: its end point b, and the fraction s of the orbit reached and its u, du/ds
+// there (q), from which orbit_tangent gives the direction.
+// Where the chord's end lies outside the bounding sphere, the end moves back to where the orbit
+// itself crosses it (safeguarded Newton on |p(s) - centre|^2 - R^2) and is put just outside it,
+// so that the termination test sees it; the tangent there is the exit direction, as the CPU
+// reference takes it.
+uniform vec3 u_bound_center;
+uniform float u_bound_radius2;
+uniform float u_bound_outside;        // bounding radius (1 + a margin): where an exit point is put
+
+const int ORBIT_CROSSING_ITERATIONS = 2;
+
+void orbit_chord(orbit_ray ray, float k, out vec3 b, out vec2 q, out float s)
+{
+    float s0 = orbit_chord_end(ray, k);
+    float s1 = orbit_chord_end(ray, k + 1.0);
+    q = orbit_at(ray, s1);
+    vec3 p = orbit_point(ray, q, s1);
+    s = s1;
+    vec3 from_bound = p - u_bound_center;
+    if (dot(from_bound, from_bound) >= u_bound_radius2) {
+        // first guess: where the tangent line at s1 meets the sphere (far out the orbit is nearly
+        // straight), then Newton's steps on the orbit itself, kept inside the bracket [s0, s1]
+        vec3 velocity = orbit_velocity(ray, q, s1);
+        float a2 = dot(velocity, velocity);
+        float half_b = dot(from_bound, velocity);
+        float c = dot(from_bound, from_bound) - u_bound_radius2;
+        float root = sqrt(max(half_b * half_b - a2 * c, 0.0));
+        float back = (-half_b - root) / a2;
+        float back_other = (-half_b + root) / a2;
+        float step_back = back_other <= 0.0 ? back_other : back;
+        float inside = s0;
+        float outside = s1;
+        s = clamp(s1 + step_back, s0, s1);
+        float half_sum = 0.5;
+        for (int i = 0; i < ORBIT_CROSSING_ITERATIONS; i++) {
+            vec2 qi = orbit_at(ray, s);
+            vec3 pi = orbit_point(ray, qi, s) - u_bound_center;
+            float g = dot(pi, pi) - u_bound_radius2;
+            float slope = 2.0 * dot(pi, orbit_velocity(ray, qi, s));
+            inside = g < 0.0 ? s : inside;
+            outside = g < 0.0 ? outside : s;
+            float newton = s - g / slope;
+            float middle = half_sum * (inside + outside);
+            s = newton >= inside && newton <= outside ? newton : middle;
+        }
+        q = orbit_at(ray, s);
+        vec3 crossing = orbit_point(ray, q, s) - u_bound_center;
+        p = u_bound_center + crossing * (u_bound_outside / length(crossing));
+    }
+    b = p;
+}
+
+// The orbit's unit tangent at fraction s, where it has u, du/ds = q.
+vec3 orbit_tangent(orbit_ray ray, vec2 q, float s)
+{
+    return normalize(orbit_velocity(ray, q, s));
 }

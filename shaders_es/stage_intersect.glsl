@@ -5,11 +5,13 @@
 // only the primitives of this batch. The depth key (segment index + fraction) orders hits along the
 // curved ray; a closer hit replaces the stored one, in scene order, exactly as one pass per object
 // would; the closest is shaded once.
+#ifndef SINGLE_PASS
 uniform sampler2D u_segment_start;
 uniform sampler2D u_segment_end;
 uniform sampler2D u_hit;
 uniform sampler2D u_image;
 uniform float u_segment_index;
+#endif
 // Per slot, five geometry vectors (which depends on the primitive, see src/render/stage_intersect.c)
 // and five material vectors.
 uniform vec4 u_geometry[5 * BATCH_SIZE];
@@ -117,10 +119,13 @@ struct candidate {
     vec2 uv;
 };
 
+// the segment index of the chord being tested (u_segment_index, or the single pass's loop)
+float intersect_segment_index;
+
 // Computed for every object, then selected: see the precision note in common.glsl.
 void consider(bool found, float t, vec3 normal, vec2 uv, float slot, inout candidate best)
 {
-    float key = u_segment_index + t;
+    float key = intersect_segment_index + t;
     bool closer = found && key < best.key;
     best.key = closer ? key : best.key;
     best.t = closer ? t : best.t;
@@ -129,17 +134,20 @@ void consider(bool found, float t, vec3 normal, vec2 uv, float slot, inout candi
     best.uv = closer ? uv : best.uv;
 }
 
-void main()
+// Every object of the batch against chord a -> b of segment `segment`: best keeps the closest hit
+// (a closer one replaces it, in scene order, exactly as one pass per object would).
+void intersect_chord(vec3 a, vec3 b, float segment, inout candidate best)
 {
-    vec4 hit = fetch(u_hit);
-    vec4 image = fetch(u_image);
-    vec3 a = fetch(u_segment_start).xyz;
-    vec3 b = fetch(u_segment_end).xyz;
-    candidate best = candidate(hit.w, 0.0, -1.0, vec3(0.0), vec2(0.0));
+    intersect_segment_index = segment;
     float t;
     vec3 normal;
     vec2 uv;
     BATCH_TESTS
+}
+
+// The hit record and the shaded colour (object id in alpha) of candidate best on chord a -> b.
+void intersect_shade(candidate best, vec3 a, vec3 b, out vec4 new_hit, out vec4 new_image)
+{
     // the chosen object's material
     vec4 color_checker = MATERIAL(0, 0), emission_id = MATERIAL(0, 1), factors = MATERIAL(0, 2),
          checker_color = MATERIAL(0, 3), emitter = MATERIAL(0, 4);
@@ -181,12 +189,26 @@ void main()
 #endif
     surface_material m = surface_material(color_checker.rgb * texel, color_checker.w, emission_id.rgb, factors,
                                         checker_color.rgb);
+    new_hit = vec4(p, best.key);
+    new_image = vec4(shade(p, best.normal, best.uv, normalize(b - a), m), emission_id.w);
+}
+
+#ifndef SINGLE_PASS
+void main()
+{
+    vec4 hit = fetch(u_hit);
+    vec4 image = fetch(u_image);
+    vec3 a = fetch(u_segment_start).xyz;
+    vec3 b = fetch(u_segment_end).xyz;
+    candidate best = candidate(hit.w, 0.0, -1.0, vec3(0.0), vec2(0.0));
+    intersect_chord(a, b, u_segment_index, best);
     // computed before the select: see the precision note in common.glsl
-    vec4 new_hit = vec4(p, best.key);
-    vec4 new_image = vec4(shade(p, best.normal, best.uv, normalize(b - a), m), emission_id.w);
+    vec4 new_hit, new_image;
+    intersect_shade(best, a, b, new_hit, new_image);
     bool found = best.slot >= 0.0;
     hit = found ? new_hit : hit;
     image = found ? new_image : image;
     WRITE_TARGET0(hit);
     WRITE_TARGET1(image);
 }
+#endif

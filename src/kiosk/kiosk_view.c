@@ -80,6 +80,9 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char 
     if (renderer_run(v->renderer, 0, 0, k->preview_width, k->preview_height, NULL, NULL, err, errlen) != 0)
         return -1;
     struct renderer_textures t;
+    /* the pipeline view shows every ray's final state, which a single-pass frame writes on demand */
+    if (v->pipeline_view && renderer_complete_state(v->renderer, err, errlen) != 0)
+        return -1;
     renderer_textures(v->renderer, &t);
     int rc = v->pipeline_view ? compositor_put_pipeline(&v->comp, &t, v->live.render.bound_radius,
                                                         v->live.render.segments, v->live.render.step_size, err,

@@ -89,6 +89,7 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
 
 const struct render_path *renderer_path(const struct renderer *r) { return &r->path; }
 const struct gl_caps *renderer_caps(const struct renderer *r) { return &r->caps; }
+const char *renderer_pipeline(const struct renderer *r) { return r->pipeline_name ? r->pipeline_name : "multipass"; }
 
 int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int height, segment_hook hook,
                  void *hook_arg, char *err, size_t errlen)
@@ -112,6 +113,21 @@ int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int 
     glDisable(GL_DEPTH_TEST);
     r->origin_x = origin_x;
     r->origin_y = origin_y;
+    if (!hook && orbit_frame_applies(r)) {
+        /* the whole ray in one pass; a per-segment hook (trace) needs the multipass scheme */
+        if (orbit_prepare(r, err, errlen) != 0 || stage_orbit_frame(r, 0, err, errlen) != 0 ||
+            stage_sky(r, err, errlen) != 0)
+            return -1;
+        r->pipeline_name = "single pass";
+        r->state_pending = 1;
+        glFinish();
+        r->seconds = now_seconds() - t0;
+        r->image_width = width;
+        r->image_height = height;
+        return 0;
+    }
+    r->pipeline_name = "multipass";
+    r->state_pending = 0;
     if (stage_setup(r, err, errlen) != 0)
         return -1;
     int early_z = s->render.early_z;
@@ -205,6 +221,8 @@ int renderer_read(struct renderer *r, struct render_result *out, int with_state,
         return -1;
     if (!with_state)
         return 0;
+    if (renderer_complete_state(r, err, errlen) != 0)
+        return -1;
     float **dst[4] = {&out->position, &out->velocity, &out->hit, &out->image};
     GLuint src[4] = {rs->result_position, rs->result_velocity, rs->result_hit, rs->result_image};
     for (int k = 0; k < 4; k++) {
@@ -217,6 +235,15 @@ int renderer_read(struct renderer *r, struct render_result *out, int with_state,
             return -1;
     }
     return 0;
+}
+
+int renderer_complete_state(struct renderer *r, char *err, size_t errlen)
+{
+    if (!r->state_pending)
+        return 0;
+    r->state_pending = 0;
+    glDisable(GL_DEPTH_TEST);
+    return stage_orbit_frame(r, 1, err, errlen);
 }
 
 void renderer_textures(const struct renderer *r, struct renderer_textures *out)

@@ -43,12 +43,18 @@ int renderer_read_position(struct renderer *r, int x, int y, float xyzw[4], char
 void render_result_free(struct render_result *res);
 /* The textures of the last run, on the GPU, for a display to draw from (the kiosk's compositor and
  * pipeline view): the final image (RGBA8) and each ray's final state (layout: common.glsl).
- * Valid until the next run or renderer_destroy; all 0 before the first run. */
+ * Valid until the next run or renderer_destroy; all 0 before the first run. A single-pass frame
+ * writes the hit and position textures only when renderer_complete_state (or renderer_read with
+ * the state) asks for them. */
 struct renderer_textures {
     int width, height;
     GLuint image, position, velocity, hit, outcome;
 };
 void renderer_textures(const struct renderer *r, struct renderer_textures *out);
+/* The single-pass frame's deferred hit and position (a no-op after a multipass frame). */
+int renderer_complete_state(struct renderer *r, char *err, size_t errlen);
+/* "multipass" or "single pass": how the last run was scheduled. */
+const char *renderer_pipeline(const struct renderer *r);
 void renderer_destroy(struct renderer *r);
 
 #endif

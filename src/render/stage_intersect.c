@@ -20,12 +20,6 @@ static const char *const prim_files[PRIM_COUNT] = {"prim_sphere.glsl", "prim_tri
                                                    "prim_rect.glsl"};
 static const char *const prim_defines[PRIM_COUNT] = {"SPHERE", "TRIANGLE", "DISK", "RECT"};
 
-struct batch {
-    const struct renderer *r;
-    int object[SCENE_MAX_BATCH];  /* scene indices, in scene order */
-    int count;
-    int segment;
-};
 
 static void pack3(float *out, vec3d v, double w)
 {
@@ -91,7 +85,7 @@ static int pack_motion(const struct object *o, float out[MOTION_VECS][4])
     return moving;
 }
 
-static int batch_moves(const struct batch *b)
+static int batch_moves(const struct object_batch *b)
 {
     struct object_motion m;
     for (int i = 0; i < b->count; i++)
@@ -100,7 +94,7 @@ static int batch_moves(const struct batch *b)
     return 0;
 }
 
-static int batch_clocks(const struct batch *b)
+static int batch_clocks(const struct object_batch *b)
 {
     int clocks = 0;
     for (int i = 0; i < b->count; i++)
@@ -108,9 +102,9 @@ static int batch_clocks(const struct batch *b)
     return clocks;
 }
 
-static void set_batch(GLuint p, const void *arg)
+void object_batch_set_uniforms(GLuint p, const void *arg)
 {
-    const struct batch *b = arg;
+    const struct object_batch *b = arg;
     const struct scene *s = b->r->scene;
     float geometry[SCENE_MAX_BATCH][GEOMETRY_VECS][4], material[SCENE_MAX_BATCH][MATERIAL_VECS][4];
     float motion[SCENE_MAX_BATCH][MOTION_VECS][4];
@@ -155,7 +149,7 @@ static void set_batch(GLuint p, const void *arg)
 }
 
 /* Variant defines of a batch: its size, its primitive list in order, its textured slots. */
-static int batch_defines(const struct batch *b, char *out, size_t len)
+int object_batch_defines(const struct object_batch *b, char *out, size_t len)
 {
     const struct scene *s = b->r->scene;
     int has[PRIM_COUNT] = {0}, textured = 0;
@@ -193,6 +187,32 @@ static int batch_defines(const struct batch *b, char *out, size_t len)
     return 0;
 }
 
+int object_batch_files(const struct object_batch *b, const char **files, int n)
+{
+    int seen[PRIM_COUNT] = {0};
+    for (int i = 0; i < b->count; i++) {
+        enum primitive_type t = b->r->scene->objects[b->object[i]].type;
+        if (!seen[t]++)
+            files[n++] = prim_files[t];
+    }
+    return n;
+}
+
+int object_batch_all(const struct renderer *r, struct object_batch *b)
+{
+    const struct scene *s = r->scene;
+    memset(b, 0, sizeof *b);
+    b->r = r;
+    int textured = 0;
+    for (int i = 0; i < s->n_objects; i++) {
+        if (polygons_draw_object(r, i))
+            return -1;
+        textured += s->objects[i].material.texture >= 0;
+        b->object[b->count++] = i;
+    }
+    return s->n_objects <= intersect_batch_limit(r) && textured <= r->caps.max_texture_units - FIRST_OBJECT_UNIT ? 0 : -1;
+}
+
 int intersect_batch_limit(const struct renderer *r)
 {
     int per_object = GEOMETRY_VECS + MATERIAL_VECS + (scene_has_moving_objects(r->scene) ? MOTION_VECS : 0);
@@ -201,21 +221,16 @@ int intersect_batch_limit(const struct renderer *r)
     return limit < 1 ? 1 : limit;
 }
 
-static int intersect_batch(struct renderer *r, const struct batch *b, int segment_start, char *err, size_t errlen)
+static int intersect_batch(struct renderer *r, const struct object_batch *b, int segment_start, char *err, size_t errlen)
 {
     struct raystate *rs = &r->rs;
     char defines[1024];
-    if (batch_defines(b, defines, sizeof defines) != 0) {
+    if (object_batch_defines(b, defines, sizeof defines) != 0) {
         snprintf(err, errlen, "internal: the defines of an object batch do not fit");
         return -1;
     }
     const char *files[PRIM_COUNT + 6] = {"common.glsl"};
-    int n = 1, seen[PRIM_COUNT] = {0};
-    for (int i = 0; i < b->count; i++) {
-        enum primitive_type t = r->scene->objects[b->object[i]].type;
-        if (!seen[t]++)
-            files[n++] = prim_files[t];
-    }
+    int n = object_batch_files(b, files, 1);
     files[n++] = "observer.glsl";
     files[n++] = "shade.glsl";
     files[n++] = "stage_intersect.glsl";
@@ -230,7 +245,7 @@ static int intersect_batch(struct renderer *r, const struct batch *b, int segmen
         {"u_hit", rs->hit[rs->cur_hit]},
         {"u_image", rs->image[rs->cur_hit]},
     };
-    if (pass_run(r, sp, rs->hit[out], rs->image[out], in, 4, set_batch, b, err, errlen) != 0)
+    if (pass_run(r, sp, rs->hit[out], rs->image[out], in, 4, object_batch_set_uniforms, b, err, errlen) != 0)
         return -1;
     rs->cur_hit = out;
     return 0;
@@ -243,7 +258,7 @@ int stage_intersect_all(struct renderer *r, int segment, int segment_start, char
     int max_textured = r->caps.max_texture_units - FIRST_OBJECT_UNIT;
     int next = 0;
     while (next < s->n_objects) {
-        struct batch b = {.r = r, .count = 0, .segment = segment};
+        struct object_batch b = {.r = r, .count = 0, .segment = segment};
         int textured = 0;
         for (; next < s->n_objects && b.count < limit; next++) {
             if (polygons_draw_object(r, next))

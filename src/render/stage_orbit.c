@@ -89,6 +89,12 @@ struct orbit_args {
     int segment;
 };
 
+static void set_orbit(GLuint p, const void *arg)
+{
+    const struct orbit_args *a = arg;
+    orbit_set_uniforms(p, a->r, a->segment);
+}
+
 /* Below this cosine between the view direction and the radial axis the axis is not seen in the
  * image plane ahead (or too far out of it): chi is taken about the image centre instead. */
 #define ORBIT_AXIS_SEEN_COSINE 0.1
@@ -133,17 +139,15 @@ static void set_orbit_axis(GLuint p, const struct renderer *r)
     uniform_vec3(p, "u_orbit_along", v3(v3_dot(w0, axis), v3_dot(rx, axis), v3_dot(uy, axis)));
 }
 
-static void set_orbit(GLuint p, const void *arg)
+void orbit_set_uniforms(GLuint p, const struct renderer *r, int segment)
 {
-    const struct orbit_args *a = arg;
-    const struct renderer *r = a->r;
     const struct scene *s = r->scene;
     const struct orbit_table *t = &r->orbit;
     observer_set_uniforms(p, r);
     model_set_uniforms(p, &s->model);
     bounds_set_uniforms(p, s);
     uniform_float(p, "u_bound_outside", s->render.bound_radius * (1.0 + ORBIT_OUTSIDE_MARGIN));
-    uniform_float(p, "u_segment_index", a->segment);
+    uniform_float(p, "u_segment_index", segment);
     glActiveTexture(GL_TEXTURE0 + UNIT_ORBIT);
     glBindTexture(GL_TEXTURE_2D, r->orbit_texture);
     glUniform1i(glGetUniformLocation(p, "u_orbit_table"), UNIT_ORBIT);

@@ -32,6 +32,8 @@ struct renderer {
     char model_file[64];          /* model_NAME.glsl; model_flat.glsl for straight rays */
     int straight;                 /* rays are straight: one segment, not integrated */
     int image_width, image_height;
+    const char *pipeline_name;    /* of the last run: "multipass" or "single pass" */
+    int state_pending;            /* single pass: hit and position not yet written */
     long passes;
     double seconds;
     struct orbit_table orbit;     /* render.method = orbit_table: the table of the last run */
@@ -73,10 +75,32 @@ void orbit_table_params_of(const struct scene *s, struct orbit_table_params *p);
 int orbit_prepare(struct renderer *r, char *err, size_t errlen);
 void orbit_release(struct renderer *r);
 int stage_orbit(struct renderer *r, int segment, int segment_start, char *err, size_t errlen);
+/* The orbit stage's uniforms (table, camera, bounds, the pixel's axis; segment for the orbit stage). */
+void orbit_set_uniforms(GLuint p, const struct renderer *r, int segment);
+/* render.pipeline = single (stage_orbit_frame.c): 1 when this frame runs in one pass (the method
+ * is orbit_table, every object fits one intersection batch, and single or auto is asked for);
+ * the pass itself: image and velocity (state 0, what the sky stage needs), or hit and position
+ * (state 1, for the read-back of the ray state). */
+int orbit_frame_applies(const struct renderer *r);
+int stage_orbit_frame(struct renderer *r, int state, char *err, size_t errlen);
 /* Every object against the current segment, render.batch objects per pass. */
 int stage_intersect_all(struct renderer *r, int segment, int segment_start, char *err, size_t errlen);
 /* Objects per intersection pass on this GPU: render.batch, bounded by its uniform vectors. */
 int intersect_batch_limit(const struct renderer *r);
+/* The objects one intersection pass tests (stage_intersect.c), for every stage that tests objects:
+ * its variant defines, its primitives' shader files (appended to files from index n; returns the
+ * new count), its uniforms (a set_uniforms_fn), and a batch of every object of the scene (-1 where
+ * they do not fit one pass on this GPU, or the polygon method draws one). */
+struct object_batch {
+    const struct renderer *r;
+    int object[SCENE_MAX_BATCH];  /* scene indices, in scene order */
+    int count;
+    int segment;
+};
+int object_batch_defines(const struct object_batch *b, char *out, size_t len);
+int object_batch_files(const struct object_batch *b, const char **files, int n);
+void object_batch_set_uniforms(GLuint p, const void *batch);
+int object_batch_all(const struct renderer *r, struct object_batch *b);
 int stage_terminate(struct renderer *r, int segment, char *err, size_t errlen);
 /* Retire finished rays (all: every ray) into the result textures; mark them for early-z. */
 int stage_retire(struct renderer *r, int all, char *err, size_t errlen);

@@ -41,6 +41,10 @@ enum sky_type { SKY_COLOR, SKY_CUBEMAP };
 /* How moving objects are drawn: traced per pixel in their rest frames (exact), or as the paper's
  * comparison, their tessellated surface's vertices transformed and the triangles rasterised. */
 enum moving_objects_method { MOVING_RAYS, MOVING_POLYGONS };
+/* How a frame is scheduled on the GPU: auto picks the fewest passes this scene and GPU allow;
+ * multipass is the paper's scheme (one pass per stage and segment); single follows every ray
+ * to its end in one fragment-shader loop (render.method = orbit_table). */
+enum pipeline_choice { PIPELINE_AUTO, PIPELINE_MULTIPASS, PIPELINE_SINGLE };
 
 struct camera {
     vec3d position;
@@ -142,7 +146,8 @@ struct render_settings {
      * units), which sets each ray's number of segments (at most `segments`); the table's rows per
      * side of the critical launch angle and samples along each orbit */
     double chord_tolerance;
-    int orbit_rows, orbit_columns;  /* MOVING_POLYGONS: segments along each edge of a primitive's mesh */
+    int orbit_rows, orbit_columns;
+    enum pipeline_choice pipeline;  /* MOVING_POLYGONS: segments along each edge of a primitive's mesh */
 };
 
 /* The bounds adaptive steps stay within (the defaults resolved). */

@@ -30,6 +30,7 @@ static void render_defaults(struct render_settings *r)
     r->chord_tolerance = 1e-3;
     r->orbit_rows = 512;
     r->orbit_columns = 128;
+    r->pipeline = PIPELINE_AUTO;
 }
 
 double render_step_min(const struct render_settings *r)

@@ -26,6 +26,7 @@ static const char *const profile_names[] = {"yukawa", "polynomial", NULL};
 static const char *const sky_names[] = {"color", "cubemap", NULL};
 static const char *const effects_names[] = {"geometry", "doppler", "searchlight", NULL};
 static const char *const moving_names[] = {"rays", "polygons", NULL};
+static const char *const pipeline_names[] = {"auto", "multipass", "single", NULL};
 
 _Static_assert(sizeof model_names / sizeof model_names[0] == MODEL_COUNT + 1,
                "one name per model type");
@@ -261,6 +262,13 @@ static int set_effects(struct scene *s, void *t, const union scene_key_value *v,
     return 0;
 }
 
+static int set_pipeline(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
+{
+    (void)t, (void)r, (void)n;
+    s->render.pipeline = (enum pipeline_choice)v->choice;
+    return 0;
+}
+
 static int set_moving_objects(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
 {
     (void)t, (void)r, (void)n;
@@ -431,6 +439,7 @@ const struct scene_key scene_keys[] = {
      .offset = AT_SCENE(render.chord_tolerance)},
     {SECTION_RENDER, "orbit_rows", KEY_INTEGER, .lo = 4, .hi = SCENE_MAX_ORBIT_ROWS,
      .offset = AT_SCENE(render.orbit_rows)},
+    {SECTION_RENDER, "pipeline", CHOICE(pipeline_names, set_pipeline)},
     {SECTION_RENDER, "orbit_columns", KEY_INTEGER, .lo = 4, .hi = SCENE_MAX_ORBIT_COLUMNS,
      .offset = AT_SCENE(render.orbit_columns)},
 

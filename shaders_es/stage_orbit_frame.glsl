@@ -1,0 +1,59 @@
+// render.method = orbit_table in one pass (render.pipeline = single): each pixel follows its orbit
+// chord by chord (orbit_chord, as the orbit stage), tests every object of the scene against each
+// chord (intersect_chord, as the intersection stage) and ends at the first hit, at the horizon or
+// where it leaves the bounding sphere (as the termination stage). It writes what the multipass
+// scheme leaves in the result textures: image and velocity, all the sky stage needs
+// (ORBIT_FRAME_STATE undefined), or hit and position (ORBIT_FRAME_STATE 1), only when they are
+// read. MAX_SEGMENTS is the scene's render.segments.
+uniform vec3 u_capture_center;
+uniform float u_capture_radius2;
+
+void main()
+{
+    orbit_ray ray = orbit_ray_of();
+    vec3 a = u_camera_position;
+    vec3 hit_a = a;
+    vec3 hit_b = a;
+    vec3 b = a;
+    vec2 q = vec2(1.0, 0.0);
+    float s = 0.0;
+    float steps = 0.0;
+    float code = CODE_UNFINISHED;
+    float end_key = NO_HIT;
+    candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec2(0.0));
+    for (int i = 0; i < MAX_SEGMENTS; i++) {
+        float k = float(i);
+        if (k >= ray.segments)
+            break;
+        orbit_chord(ray, k, b, q, s);
+        steps = k + 1.0;
+        intersect_chord(a, b, k, best);
+        hit_a = a;
+        hit_b = b;
+        vec3 from_bound = b - u_bound_center;
+        vec3 from_mass = b - u_capture_center;
+        bool captured = u_capture_radius2 > 0.0 && dot(from_mass, from_mass) <= u_capture_radius2;
+        bool outside = dot(from_bound, from_bound) >= u_bound_radius2;
+        float end_code = captured ? CODE_CAPTURED : CODE_SKY;
+        bool found = best.slot >= 0.0;
+        bool ends = !found && (captured || outside);
+        code = ends ? end_code : code;
+        end_key = ends ? steps : end_key;
+        if (found || ends)
+            break;
+        a = b;
+    }
+    vec3 tangent = orbit_tangent(ray, q, s);
+    vec4 new_hit, new_image;
+    intersect_shade(best, hit_a, hit_b, new_hit, new_image);
+    bool found = best.slot >= 0.0;
+    vec4 end_hit = vec4(b, end_key);
+    vec4 end_image = vec4(0.0, 0.0, 0.0, code);
+#ifdef ORBIT_FRAME_STATE
+    WRITE_TARGET0(found ? new_hit : end_hit);
+    WRITE_TARGET1(vec4(b, steps));
+#else
+    WRITE_TARGET0(found ? new_image : end_image);
+    WRITE_TARGET1(vec4(tangent, s));
+#endif
+}
