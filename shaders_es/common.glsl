@@ -14,7 +14,11 @@ const float CODE_FAILED = -4.0;        // the integration produced a non-finite 
 // Precision traps of GLSL ES on Mesa 22.3 (checked on llvmpipe; the fp32 render tests catch them):
 // - an expression with a literal constant written inside a branch of ?: or if is evaluated
 //   at 16-bit precision: compute it into a named local first, then select;
-// - constant expressions such as 7.0 / 9.0 fold at 16-bit precision: write the literal.
+// - constant expressions such as 7.0 / 9.0 fold at 16-bit precision: write the literal;
+// - a value kept from inside a loop that breaks early (the single pass, stage_orbit_frame.glsl)
+//   can come out of it at 16-bit precision: keep the loop's inputs (fraction s, u, du/ds) and
+//   compute the outputs (end point, tangent) again after the loop;
+// - Mesa's atan is off by up to 3.3e-6 rad on llvmpipe: orbit_table.glsl has an accurate one.
 
 uniform vec2 u_inv_size;               // 1 / ray-state texture size
 

@@ -11,8 +11,9 @@ uniform float u_orbit_columns;        // samples along each orbit; column u_orbi
                                       // after it the chord schedule's u_orbit_warps samples
 uniform float u_orbit_warps;
 uniform vec2 u_orbit_span;            // row coordinate of each side's outermost row
-uniform float u_orbit_epsilon;        // the row coordinate ln(d / epsilon) + d / even_scale of a ray
-uniform float u_orbit_even_scale;     // at d from psi_c (uniforms: a literal 1e-7 could fold to 0)
+uniform vec2 u_orbit_epsilon;         // the row coordinate ln(d / epsilon) + d / even_scale of a ray
+uniform float u_orbit_even_scale;     // at d from psi_c, epsilon per side (uniforms: a literal 1e-7
+                                      // could fold to 0)
 
 struct orbit_ray {
     vec3 e1, e2;
@@ -98,8 +99,9 @@ orbit_ray orbit_ray_of()
     ray.e2 = across_length > 0.0 ? own_across : any_across;
     float from_critical = (chi - u_orbit_critical_chi.x) - u_orbit_critical_chi.y;
     bool escapes = u_orbit_axis_sign * from_critical > 0.0;
-    float distance = max(abs(from_critical), u_orbit_epsilon);
-    float coordinate = log(distance / u_orbit_epsilon) + distance / u_orbit_even_scale;
+    float epsilon = escapes ? u_orbit_epsilon.x : u_orbit_epsilon.y;
+    float distance = max(abs(from_critical), epsilon);
+    float coordinate = log(distance / epsilon) + distance / u_orbit_even_scale;
     float span = escapes ? u_orbit_span.x : u_orbit_span.y;
     float last_row = u_orbit_rows - 1.0;
     float row = clamp(coordinate / span, 0.0, 1.0) * last_row;
@@ -192,8 +194,9 @@ vec3 orbit_velocity(orbit_ray ray, vec2 q, float s)
     return (-q.y / (q.x * q.x)) * radial + (ray.phi_end / q.x) * around;
 }
 
-// Chord k of the ray: its end point b, and the fraction s of the orbit reached and its u, du/ds
-// there (q), from which orbit_tangent gives the direction.
+// Chord k of the ray: the fraction s of the orbit where it ends and u, du/ds there (q), and
+// whether it leaves the bounding sphere; orbit_chord_point gives its end point, orbit_tangent the
+// direction there.
 // Where the chord's end lies outside the bounding sphere, the end moves back to where the orbit
 // itself crosses it (safeguarded Newton on |p(s) - centre|^2 - R^2) and is put just outside it,
 // so that the termination test sees it; the tangent there is the exit direction, as the CPU
@@ -204,7 +207,7 @@ uniform float u_bound_outside;        // bounding radius (1 + a margin): where a
 
 const int ORBIT_CROSSING_ITERATIONS = 2;
 
-void orbit_chord(orbit_ray ray, float k, out vec3 b, out vec2 q, out float s)
+void orbit_chord(orbit_ray ray, float k, out vec2 q, out float s, out bool leaves)
 {
     float s0 = orbit_chord_end(ray, k);
     float s1 = orbit_chord_end(ray, k + 1.0);
@@ -212,7 +215,8 @@ void orbit_chord(orbit_ray ray, float k, out vec3 b, out vec2 q, out float s)
     vec3 p = orbit_point(ray, q, s1);
     s = s1;
     vec3 from_bound = p - u_bound_center;
-    if (dot(from_bound, from_bound) >= u_bound_radius2) {
+    leaves = dot(from_bound, from_bound) >= u_bound_radius2;
+    if (leaves) {
         // first guess: where the tangent line at s1 meets the sphere (far out the orbit is nearly
         // straight), then Newton's steps on the orbit itself, kept inside the bracket [s0, s1]
         vec3 velocity = orbit_velocity(ray, q, s1);
@@ -239,10 +243,17 @@ void orbit_chord(orbit_ray ray, float k, out vec3 b, out vec2 q, out float s)
             s = newton >= inside && newton <= outside ? newton : middle;
         }
         q = orbit_at(ray, s);
-        vec3 crossing = orbit_point(ray, q, s) - u_bound_center;
-        p = u_bound_center + crossing * (u_bound_outside / length(crossing));
     }
-    b = p;
+}
+
+// The end point of a chord that orbit_chord found: on the orbit, or where the orbit leaves the
+// bounding sphere, put just outside it.
+vec3 orbit_chord_point(orbit_ray ray, vec2 q, float s, bool leaves)
+{
+    vec3 p = orbit_point(ray, q, s);
+    vec3 crossing = p - u_bound_center;
+    vec3 outside = u_bound_center + crossing * (u_bound_outside / length(crossing));
+    return leaves ? outside : p;
 }
 
 // The orbit's unit tangent at fraction s, where it has u, du/ds = q.

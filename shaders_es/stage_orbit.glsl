@@ -16,10 +16,11 @@ void main()
     bool running = fetch(u_hit).w >= NO_HIT && position.w >= 0.0;
     orbit_ray ray = orbit_ray_of();
     float k = u_segment_index;
-    vec3 b;
     vec2 q;
     float s;
-    orbit_chord(ray, k, b, q, s);
+    bool leaves;
+    orbit_chord(ray, k, q, s, leaves);
+    vec3 b = orbit_chord_point(ray, q, s, leaves);
     vec3 tangent = orbit_tangent(ray, q, s);
     bool moves = running && k < ray.segments;
     float next_steps = k + 1.0;

@@ -17,6 +17,7 @@ void main()
     vec3 b = a;
     vec2 q = vec2(1.0, 0.0);
     float s = 0.0;
+    bool leaves = false;
     float steps = 0.0;
     float code = CODE_UNFINISHED;
     float end_key = NO_HIT;
@@ -25,7 +26,8 @@ void main()
         float k = float(i);
         if (k >= ray.segments)
             break;
-        orbit_chord(ray, k, b, q, s);
+        orbit_chord(ray, k, q, s, leaves);
+        b = orbit_chord_point(ray, q, s, leaves);
         steps = k + 1.0;
         intersect_chord(a, b, k, best);
         hit_a = a;
@@ -43,15 +45,17 @@ void main()
             break;
         a = b;
     }
+    // the final state again from (q, s), outside the loop: see the precision note in common.glsl
+    vec3 end = orbit_chord_point(ray, q, s, leaves);
     vec3 tangent = orbit_tangent(ray, q, s);
     vec4 new_hit, new_image;
     intersect_shade(best, hit_a, hit_b, new_hit, new_image);
     bool found = best.slot >= 0.0;
-    vec4 end_hit = vec4(b, end_key);
+    vec4 end_hit = vec4(end, end_key);
     vec4 end_image = vec4(0.0, 0.0, 0.0, code);
 #ifdef ORBIT_FRAME_STATE
     WRITE_TARGET0(found ? new_hit : end_hit);
-    WRITE_TARGET1(vec4(b, steps));
+    WRITE_TARGET1(vec4(end, steps));
 #else
     WRITE_TARGET0(found ? new_image : end_image);
     WRITE_TARGET1(vec4(tangent, s));

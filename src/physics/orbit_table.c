@@ -1,6 +1,8 @@
 /* Photon orbits of Schwarzschild space tabulated for a static observer (orbit_table.h). */
 #include "physics/orbit_table.h"
 #include <math.h>
+#include <pthread.h>
+#include <unistd.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,6 +17,8 @@ static const double pi = 3.14159265358979323846;
  * a critical orbit, which the row spacing keeps out). */
 #define ORBIT_MAX_STEPS 200000
 #define ORBIT_MAX_SWEEP 2000.0
+/* threads that build the rows */
+#define ORBIT_MAX_THREADS 8
 
 double orbit_critical_from_axis(double mass, double r_observer, int *inward)
 {
@@ -104,6 +108,7 @@ struct orbit_knots {
     double *phi, *u, *w;
     int n, cap;
     double mass;
+    int hint;                     /* the step of the last evaluation: evaluations mostly move on */
 };
 
 static int knots_push(struct orbit_knots *k, double phi, double u, double w)
@@ -139,7 +144,7 @@ static void knots_free(struct orbit_knots *k)
 
 /* u and du/dphi at phi: quintic Hermite through the knots' u, u' and u'' = 3 M u^2 - u, which
  * keeps the integration's order between the steps. */
-static void knots_eval(const struct orbit_knots *k, double phi, double *u, double *w)
+static void knots_eval(struct orbit_knots *k, double phi, double *u, double *w)
 {
     int lo = 0, hi = k->n - 1;
     if (phi <= k->phi[0]) {
@@ -152,6 +157,14 @@ static void knots_eval(const struct orbit_knots *k, double phi, double *u, doubl
         *w = k->w[hi];
         return;
     }
+    int last = k->hint;
+    if (last >= 0 && last + 1 < k->n && k->phi[last] <= phi && phi < k->phi[last + 1]) {
+        lo = last;
+        hi = last + 1;
+    } else if (last >= 0 && last + 2 < k->n && k->phi[last + 1] <= phi && phi < k->phi[last + 2]) {
+        lo = last + 1;
+        hi = last + 2;
+    }
     while (hi - lo > 1) {
         int mid = (lo + hi) / 2;
         if (k->phi[mid] <= phi)
@@ -159,6 +172,7 @@ static void knots_eval(const struct orbit_knots *k, double phi, double *u, doubl
         else
             hi = mid;
     }
+    k->hint = lo;
     double h = k->phi[hi] - k->phi[lo];
     double t = (phi - k->phi[lo]) / h, t2 = t * t, t3 = t2 * t, t4 = t3 * t, t5 = t4 * t;
     double u0 = k->u[lo], w0 = k->w[lo], a0 = binet_accel(k->mass, u0);
@@ -239,17 +253,17 @@ int orbit_trace(double mass, double r_observer, double psi, double u_far, double
 
 /* Row coordinate of distance d from the critical angle: logarithmic next to it, where phi_end
  * diverges as -ln d, and even far from it, where the orbits change evenly with psi. */
-static double row_coordinate(double d)
+static double row_coordinate(double d, double epsilon)
 {
-    return log(d / ORBIT_CRITICAL_EPSILON) + d / ORBIT_EVEN_SCALE;
+    return log(d / epsilon) + d / ORBIT_EVEN_SCALE;
 }
 
 /* Its inverse, by Newton's method in ln d (the coordinate is convex and increasing in ln d). */
-static double row_distance(double coordinate)
+static double row_distance(double coordinate, double epsilon)
 {
-    double x = fmin(coordinate + log(ORBIT_CRITICAL_EPSILON), log(ORBIT_EVEN_SCALE * coordinate + 1e-300));
+    double x = fmin(coordinate + log(epsilon), log(ORBIT_EVEN_SCALE * coordinate + 1e-300));
     for (int i = 0; i < 100; i++) {
-        double g = row_coordinate(exp(x)) - coordinate, dg = 1.0 + exp(x) / ORBIT_EVEN_SCALE;
+        double g = row_coordinate(exp(x), epsilon) - coordinate, dg = 1.0 + exp(x) / ORBIT_EVEN_SCALE;
         double next = x - g / dg;
         if (fabs(next - x) < 1e-15 * fmax(1.0, fabs(x)))
             return exp(next);
@@ -261,7 +275,7 @@ static double row_distance(double coordinate)
 static double row_angle(const struct orbit_table *t, enum orbit_side side, int i)
 {
     double frac = (double)i / (t->p.rows_per_side - 1);
-    double d = row_distance(frac * t->log_span[side]);
+    double d = row_distance(frac * t->log_span[side], t->epsilon[side]);
     return side == ORBIT_ESCAPES ? t->psi_c - d : t->psi_c + d;
 }
 
@@ -269,7 +283,7 @@ double orbit_table_row(const struct orbit_table *t, double psi, enum orbit_side 
 {
     *side = psi < t->psi_c ? ORBIT_ESCAPES : ORBIT_CAPTURED;
     double d = fabs(psi - t->psi_c);
-    double frac = row_coordinate(fmax(d, ORBIT_CRITICAL_EPSILON)) / t->log_span[*side];
+    double frac = row_coordinate(fmax(d, t->epsilon[*side]), t->epsilon[*side]) / t->log_span[*side];
     frac = fmin(fmax(frac, 0.0), 1.0);
     return frac * (t->p.rows_per_side - 1);
 }
@@ -278,14 +292,14 @@ double orbit_table_row(const struct orbit_table *t, double psi, enum orbit_side 
  * kappa L^2 / 8 from it, so pieces of equal sigma = int sqrt(kappa) dl stray about equally. For
  * r = 1/u(phi), kappa = 3 M u^5 / (u^2 + u'^2)^(3/2) and dl = sqrt(u^2 + u'^2) / u^2 dphi, so
  * dsigma/dphi = sqrt(3 M u) (u^2 + u'^2)^(-1/4). */
-#define SIGMA_SUBSAMPLES 8
+#define SIGMA_SUBSAMPLES 2
 /* Inside the clear radius chords need not follow the orbit, but a chord's ends must not jump
  * across a dip into it either: a tenth of the weight keeps a few chords there. */
 #define SIGMA_CLEAR_WEIGHT 0.1
 
 /* warp[m], m = 0 .. ORBIT_WARP_SAMPLES - 1: the fraction s of the orbit where sigma reaches
  * m / (ORBIT_WARP_SAMPLES - 1) of its total; the identity where the orbit does not bend. */
-static double row_warp(const struct orbit_knots *k, double mass, double clear_radius, int columns, double *warp)
+static double row_warp(struct orbit_knots *k, double mass, double clear_radius, int columns, double *warp)
 {
     int n = SIGMA_SUBSAMPLES * (columns - 1);
     double phi_end = k->phi[k->n - 1], u_clear = clear_radius > 0.0 ? 1.0 / clear_radius : INFINITY;
@@ -297,7 +311,7 @@ static double row_warp(const struct orbit_knots *k, double mass, double clear_ra
     for (int i = 0; i <= n; i++) {
         double u, w;
         knots_eval(k, phi_end * i / n, &u, &w);
-        double rate = sqrt(3.0 * mass * u) * pow(u * u + w * w, -0.25) * (u < u_clear ? 1.0 : SIGMA_CLEAR_WEIGHT);
+        double rate = sqrt(3.0 * mass * u) / sqrt(sqrt(u * u + w * w)) * (u < u_clear ? 1.0 : SIGMA_CLEAR_WEIGHT);
         if (i > 0)
             sigma[i] = sigma[i - 1] + 0.5 * (rate + prev_rate) * phi_end / n;
         prev_rate = rate;
@@ -333,9 +347,9 @@ static double warp_at(const double *warp, double x)
 
 /* Largest distance of the orbit from its n chords, from points between the chords' exact ends;
  * points inside the clear radius, where nothing can be met, do not count. */
-static double chord_sag(const struct orbit_knots *k, const double *warp, int n, double clear_radius)
+static double chord_sag(struct orbit_knots *k, const double *warp, int n, double clear_radius)
 {
-    const int inner = 16;
+    const int inner = 8;
     double u_clear = clear_radius > 0.0 ? 1.0 / clear_radius : INFINITY;
     double phi_end = k->phi[k->n - 1], worst = 0.0;
     for (int p = 0; p < n; p++) {
@@ -359,15 +373,20 @@ static double chord_sag(const struct orbit_knots *k, const double *warp, int n, 
 
 /* The fewest chords of equal sigma that stray at most chord_tolerance: from the estimate
  * sigma / sqrt(8 tolerance), raised until the measured distance keeps within it. */
-static int row_segments(const struct orbit_table *t, const struct orbit_knots *k, const double *warp, double sigma)
+static int row_segments(const struct orbit_table *t, struct orbit_knots *k, const double *warp, double sigma)
 {
     if (!isfinite(t->p.chord_tolerance))
         return 1;
     double estimate = ceil(sigma / sqrt(8.0 * t->p.chord_tolerance));
     int n = estimate < 1.0 ? 1 : estimate > t->p.max_segments ? t->p.max_segments : (int)estimate;
-    while (n < t->p.max_segments && chord_sag(k, warp, n, t->p.clear_radius) > t->p.chord_tolerance) {
-        int more = n + n / 4 + 1;
-        n = more < t->p.max_segments ? more : t->p.max_segments;
+    for (;;) {
+        double sag = chord_sag(k, warp, n, t->p.clear_radius);
+        if (!(sag > t->p.chord_tolerance) || n >= t->p.max_segments)
+            break;
+        /* a chord's sag falls as the square of its count: aim there, and at least a quarter more */
+        double aim = ceil(n * sqrt(sag / t->p.chord_tolerance) * 1.05), more = n + n / 4 + 1;
+        double next = aim > more ? aim : more;
+        n = next > t->p.max_segments ? t->p.max_segments : (int)next;
     }
     return n;
 }
@@ -377,6 +396,76 @@ static double seconds_now(void)
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* One row: its orbit traced, sampled, its chord schedule. 0, or -1 with err. */
+static int build_row(struct orbit_table *t, int row, double *phi_s, char *err, size_t errlen)
+{
+    const struct orbit_table_params *p = &t->p;
+    int cols = p->columns;
+    enum orbit_side side = row < p->rows_per_side ? ORBIT_ESCAPES : ORBIT_CAPTURED;
+    double psi = row_angle(t, side, row % p->rows_per_side);
+    struct orbit_knots k;
+    int captured = -1;
+    if (trace_knots(p->mass, p->r_observer, psi, t->u_far, t->u_capture, &k, &captured) != 0 ||
+        captured != (side == ORBIT_CAPTURED)) {
+        if (captured >= 0)
+            knots_free(&k);
+        snprintf(err, errlen, "orbit table: the orbit launched at %.17g rad (critical %.17g, M = %.17g, r_o = %.17g) "
+                 "did not end as its side of the critical angle says", psi, t->psi_c, p->mass, p->r_observer);
+        return -1;
+    }
+    double phi_end = k.phi[k.n - 1];
+    double *u = t->u + (size_t)row * cols, *du = t->du_ds + (size_t)row * cols;
+    for (int j = 0; j < cols; j++) {
+        phi_s[j] = phi_end * j / (cols - 1);
+        double w;
+        knots_eval(&k, phi_s[j], &u[j], &w);
+        du[j] = w * phi_end;
+        float *texel = t->texels + ((size_t)row * t->width + j) * 4;
+        texel[0] = (float)u[j];
+        texel[1] = (float)du[j];
+    }
+    t->psi[row] = psi;
+    t->phi_over_sin[row] = phi_end / sin(psi);
+    double warp[ORBIT_WARP_SAMPLES];
+    double sigma = row_warp(&k, p->mass, p->clear_radius, cols, warp);
+    if (sigma < 0.0) {
+        knots_free(&k);
+        snprintf(err, errlen, "orbit table: out of memory");
+        return -1;
+    }
+    for (int m = 0; m < ORBIT_WARP_SAMPLES; m++)
+        t->texels[((size_t)row * t->width + cols + 1 + m) * 4] = (float)warp[m];
+    t->segments[row] = row_segments(t, &k, warp, sigma);
+    float *last = t->texels + ((size_t)row * t->width + cols) * 4;
+    last[0] = (float)t->phi_over_sin[row];
+    last[1] = (float)t->segments[row];
+    last[2] = (float)phi_end;
+    last[3] = (float)psi;
+    knots_free(&k);
+    return 0;
+}
+
+/* Rows first, first + stride, ... of the table, on a thread of their own. */
+struct row_worker {
+    struct orbit_table *t;
+    int first, stride, status;
+    pthread_t thread;
+    char err[320];
+};
+
+static void *build_rows(void *arg)
+{
+    struct row_worker *w = arg;
+    double *phi_s = malloc((size_t)w->t->p.columns * sizeof *phi_s);
+    w->status = phi_s ? 0 : -1;
+    if (!phi_s)
+        snprintf(w->err, sizeof w->err, "orbit table: out of memory");
+    for (int row = w->first; row < w->t->height && w->status == 0; row += w->stride)
+        w->status = build_row(w->t, row, phi_s, w->err, sizeof w->err);
+    free(phi_s);
+    return NULL;
 }
 
 int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p, char *err, size_t errlen)
@@ -395,12 +484,15 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
     t->psi_max = fmax(pi - ORBIT_RADIAL_GAP, 0.5 * (t->psi_c + pi));
     double extent[2] = {t->psi_c - t->psi_min, t->psi_max - t->psi_c};
     for (int side = 0; side < 2; side++) {
-        if (!(extent[side] > 10.0 * ORBIT_CRITICAL_EPSILON)) {
-            snprintf(err, errlen, "orbit table: the observer at r = %.17g (M = %.17g) is too close to the horizon "
-                     "or too far for the table's rows", p->r_observer, p->mass);
+        /* a small mass's capture cone (or an observer next to the horizon's escape cone) is narrower
+         * than epsilon: its rows then start a thousandth of its width from psi_c */
+        t->epsilon[side] = fmin(ORBIT_CRITICAL_EPSILON, 1e-3 * extent[side]);
+        if (!(extent[side] > 0.0) || !(t->epsilon[side] > 0.0)) {
+            snprintf(err, errlen, "orbit table: the observer at r = %.17g (M = %.17g) leaves no launch angles on one "
+                     "side of the critical angle %.17g", p->r_observer, p->mass, t->psi_c);
             return -1;
         }
-        t->log_span[side] = row_coordinate(extent[side]);
+        t->log_span[side] = row_coordinate(extent[side], t->epsilon[side]);
     }
     t->u_observer = 1.0 / p->r_observer;
     t->u_far = 1.0 / p->r_far;
@@ -414,63 +506,46 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
     t->phi_over_sin = calloc(rows, sizeof *t->phi_over_sin);
     t->psi = calloc(rows, sizeof *t->psi);
     t->segments = calloc(rows, sizeof *t->segments);
-    double *phi_s = calloc(cols, sizeof *phi_s);
-    if (!t->texels || !t->u || !t->du_ds || !t->phi_over_sin || !t->psi || !t->segments || !phi_s) {
-        free(phi_s);
+    if (!t->texels || !t->u || !t->du_ds || !t->phi_over_sin || !t->psi || !t->segments) {
         orbit_table_free(t);
         snprintf(err, errlen, "orbit table: out of memory");
         return -1;
     }
-    for (int row = 0; row < rows; row++) {
-        enum orbit_side side = row < p->rows_per_side ? ORBIT_ESCAPES : ORBIT_CAPTURED;
-        double psi = row_angle(t, side, row % p->rows_per_side);
-        struct orbit_knots k;
-        int captured = -1;
-        if (trace_knots(p->mass, p->r_observer, psi, t->u_far, t->u_capture, &k, &captured) != 0 ||
-            captured != (side == ORBIT_CAPTURED)) {
-            if (captured >= 0)
-                knots_free(&k);
-            free(phi_s);
-            orbit_table_free(t);
-            snprintf(err, errlen, "orbit table: the orbit launched at %.17g rad (critical %.17g, M = %.17g, r_o = %.17g) "
-                     "did not end as its side of the critical angle says", psi, t->psi_c, p->mass, p->r_observer);
-            return -1;
+    /* the rows are independent: one thread per core, at most ORBIT_MAX_THREADS */
+    long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    int threads = cores < 1 ? 1 : cores > ORBIT_MAX_THREADS ? ORBIT_MAX_THREADS : (int)cores;
+    struct row_worker workers[ORBIT_MAX_THREADS];
+    int started = 0;
+    for (int i = 0; i < threads; i++) {
+        workers[i] = (struct row_worker){.t = t, .first = i, .stride = threads};
+        if (i > 0 && pthread_create(&workers[i].thread, NULL, build_rows, &workers[i]) == 0)
+            started |= 1 << i;
+        else if (i > 0)
+            workers[i].stride = -1;   /* not started: its rows are built below */
+    }
+    build_rows(&workers[0]);
+    int status = workers[0].status;
+    const char *why = workers[0].err;
+    for (int i = 1; i < threads; i++) {
+        if (started & (1 << i)) {
+            pthread_join(workers[i].thread, NULL);
+        } else {
+            workers[i].stride = threads;
+            build_rows(&workers[i]);
         }
-        double phi_end = k.phi[k.n - 1];
-        double *u = t->u + (size_t)row * cols, *du = t->du_ds + (size_t)row * cols;
-        for (int j = 0; j < cols; j++) {
-            phi_s[j] = phi_end * j / (cols - 1);
-            double w;
-            knots_eval(&k, phi_s[j], &u[j], &w);
-            du[j] = w * phi_end;
-            float *texel = t->texels + ((size_t)row * t->width + j) * 4;
-            texel[0] = (float)u[j];
-            texel[1] = (float)du[j];
+        if (workers[i].status != 0 && status == 0) {
+            status = -1;
+            why = workers[i].err;
         }
-        t->psi[row] = psi;
-        t->phi_over_sin[row] = phi_end / sin(psi);
-        double warp[ORBIT_WARP_SAMPLES];
-        double sigma = row_warp(&k, p->mass, p->clear_radius, cols, warp);
-        if (sigma < 0.0) {
-            knots_free(&k);
-            free(phi_s);
-            orbit_table_free(t);
-            snprintf(err, errlen, "orbit table: out of memory");
-            return -1;
-        }
-        for (int m = 0; m < ORBIT_WARP_SAMPLES; m++)
-            t->texels[((size_t)row * t->width + cols + 1 + m) * 4] = (float)warp[m];
-        t->segments[row] = row_segments(t, &k, warp, sigma);
+    }
+    if (status != 0) {
+        snprintf(err, errlen, "%s", why);
+        orbit_table_free(t);
+        return -1;
+    }
+    for (int row = 0; row < rows; row++)
         if (t->segments[row] > t->max_segments)
             t->max_segments = t->segments[row];
-        float *last = t->texels + ((size_t)row * t->width + cols) * 4;
-        last[0] = (float)t->phi_over_sin[row];
-        last[1] = (float)t->segments[row];
-        last[2] = (float)phi_end;
-        last[3] = (float)psi;
-        knots_free(&k);
-    }
-    free(phi_s);
     t->build_seconds = seconds_now() - t0;
     return 0;
 }

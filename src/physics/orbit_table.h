@@ -23,7 +23,8 @@ enum orbit_side { ORBIT_ESCAPES, ORBIT_CAPTURED };
 
 /* Rows are at psi_c -+ d, evenly spaced in the coordinate ln(d / epsilon) + d / even_scale:
  * logarithmic next to psi_c, even beyond even_scale (rad). The float launch angle of a camera ray
- * is good to about 1e-7 rad, so rows closer than epsilon to psi_c would tell nothing. */
+ * is good to about 1e-7 rad, so rows closer than epsilon to psi_c would tell nothing; a side
+ * narrower than 1000 epsilon (the capture cone of a tiny mass) takes a thousandth of its width. */
 #define ORBIT_CRITICAL_EPSILON 1e-7
 #define ORBIT_EVEN_SCALE 0.25
 /* The outermost rows, rad from the radial directions, where cot psi stays finite; phi_end is
@@ -60,6 +61,7 @@ struct orbit_table {
     int critical_inward;
     double psi_min, psi_max;   /* the outermost rows */
     double log_span[2];        /* each side's extent in the row coordinate */
+    double epsilon[2];         /* each side's epsilon: ORBIT_CRITICAL_EPSILON, or less for a narrow side */
     double u_observer, u_far, u_capture;
     /* texture layout: width columns + 1 + ORBIT_WARP_SAMPLES, height 2 rows_per_side (escaping
      * rows first, from psi_c outwards); texel (j, row) = (u(s_j), du/ds(s_j), 0, 0) with

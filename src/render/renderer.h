@@ -56,5 +56,9 @@ int renderer_complete_state(struct renderer *r, char *err, size_t errlen);
 /* "multipass" or "single pass": how the last run was scheduled. */
 const char *renderer_pipeline(const struct renderer *r);
 void renderer_destroy(struct renderer *r);
+/* render.method = orbit_table: the orbit table this scene needs now (its mass, the camera's radius,
+ * the bounding sphere, the chord tolerance and the objects' distances from the mass). */
+struct orbit_table_params;
+void orbit_table_params_for(const struct scene *s, struct orbit_table_params *p);
 
 #endif

@@ -35,7 +35,7 @@ static double object_distance(const struct object *o, vec3d c)
     return d;
 }
 
-void orbit_table_params_of(const struct scene *s, struct orbit_table_params *p)
+void orbit_table_params_for(const struct scene *s, struct orbit_table_params *p)
 {
     const struct render_settings *r = &s->render;
     memset(p, 0, sizeof *p);
@@ -57,7 +57,7 @@ void orbit_table_params_of(const struct scene *s, struct orbit_table_params *p)
 int orbit_prepare(struct renderer *r, char *err, size_t errlen)
 {
     struct orbit_table_params p;
-    orbit_table_params_of(r->scene, &p);
+    orbit_table_params_for(r->scene, &p);
     if (r->orbit_texture && memcmp(&p, &r->orbit.p, sizeof p) == 0)
         return 0;
     orbit_release(r);
@@ -157,7 +157,7 @@ void orbit_set_uniforms(GLuint p, const struct renderer *r, int segment)
     uniform_float(p, "u_orbit_warps", ORBIT_WARP_SAMPLES);
     set_orbit_axis(p, r);
     glUniform2f(glGetUniformLocation(p, "u_orbit_span"), (float)t->log_span[0], (float)t->log_span[1]);
-    uniform_float(p, "u_orbit_epsilon", ORBIT_CRITICAL_EPSILON);
+    glUniform2f(glGetUniformLocation(p, "u_orbit_epsilon"), (float)t->epsilon[0], (float)t->epsilon[1]);
     uniform_float(p, "u_orbit_even_scale", ORBIT_EVEN_SCALE);
 }
 

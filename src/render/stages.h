@@ -71,7 +71,6 @@ int stage_setup(struct renderer *r, char *err, size_t errlen);
 int stage_integrate(struct renderer *r, int segment_start, char *err, size_t errlen);
 /* render.method = orbit_table (stage_orbit.c): the table for the scene as it is now, built and
  * uploaded when its parameters changed; one pass per segment along the exact orbits. */
-void orbit_table_params_of(const struct scene *s, struct orbit_table_params *p);
 int orbit_prepare(struct renderer *r, char *err, size_t errlen);
 void orbit_release(struct renderer *r);
 int stage_orbit(struct renderer *r, int segment, int segment_start, char *err, size_t errlen);
