@@ -207,9 +207,8 @@ uniform float u_bound_outside;        // bounding radius (1 + a margin): where a
 
 const int ORBIT_CROSSING_ITERATIONS = 2;
 
-void orbit_chord(orbit_ray ray, float k, out vec2 q, out float s, out bool leaves)
+void orbit_chord_from(orbit_ray ray, float s0, float k, out vec2 q, out float s, out bool leaves)
 {
-    float s0 = orbit_chord_end(ray, k);
     float s1 = orbit_chord_end(ray, k + 1.0);
     q = orbit_at(ray, s1);
     vec3 p = orbit_point(ray, q, s1);
@@ -244,6 +243,12 @@ void orbit_chord(orbit_ray ray, float k, out vec2 q, out float s, out bool leave
         }
         q = orbit_at(ray, s);
     }
+}
+
+// The same from the chord's start: the previous chord's end, or orbit_chord_end(ray, k).
+void orbit_chord(orbit_ray ray, float k, out vec2 q, out float s, out bool leaves)
+{
+    orbit_chord_from(ray, orbit_chord_end(ray, k), k, q, s, leaves);
 }
 
 // The end point of a chord that orbit_chord found: on the orbit, or where the orbit leaves the

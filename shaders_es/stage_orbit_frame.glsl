@@ -4,7 +4,7 @@
 // where it leaves the bounding sphere (as the termination stage). It writes what the multipass
 // scheme leaves in the result textures: image and velocity, all the sky stage needs
 // (ORBIT_FRAME_STATE undefined), or hit and position (ORBIT_FRAME_STATE 1), only when they are
-// read. MAX_SEGMENTS is the scene's render.segments.
+// read. MAX_SEGMENTS is the scene's render.max_chords.
 uniform vec3 u_capture_center;
 uniform float u_capture_radius2;
 
@@ -26,7 +26,7 @@ void main()
         float k = float(i);
         if (k >= ray.segments)
             break;
-        orbit_chord(ray, k, q, s, leaves);
+        orbit_chord_from(ray, s, k, q, s, leaves);
         b = orbit_chord_point(ray, q, s, leaves);
         steps = k + 1.0;
         intersect_chord(a, b, k, best);

@@ -65,6 +65,14 @@ void kiosk_preview_scene(const struct scene *full, const struct kiosk_main *k, s
         out->render.steps_per_segment = full->render.steps_per_segment * PREVIEW_SEGMENT_FACTOR;
         out->render.segments = (full->render.segments + fewer - 1) / fewer;
     }
+    if (full->render.method == METHOD_ORBIT_TABLE) {
+        /* exact orbits need no steps: the preview takes a coarse table, built in about 10 ms for
+         * every turn of the mass knob, and chords PREVIEW_CHORD_FACTOR times as far from the orbit */
+        out->render.orbit_rows = full->render.orbit_rows < PREVIEW_ORBIT_ROWS ? full->render.orbit_rows : PREVIEW_ORBIT_ROWS;
+        out->render.orbit_columns =
+            full->render.orbit_columns < PREVIEW_ORBIT_COLUMNS ? full->render.orbit_columns : PREVIEW_ORBIT_COLUMNS;
+        out->render.chord_tolerance = full->render.chord_tolerance * PREVIEW_CHORD_FACTOR;
+    }
 }
 
 int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char *err, size_t errlen)

@@ -8,7 +8,10 @@
  * canvas is whole. A band integrates as many steps as a preview (at most preview pixels x
  * PREVIEW_STEP_FACTOR rays), so input waits about one preview frame; and there are at least
  * refine_frames bands. The bands follow from sizes alone, never from timing, so a run is the
- * same on any machine. Scenes with adaptive steps keep their own step control in the preview. */
+ * same on any machine. Scenes with adaptive steps keep their own step control in the preview.
+ * A scene on exact orbits (render.method = orbit_table) previews with a coarse table of at most
+ * PREVIEW_ORBIT_ROWS x PREVIEW_ORBIT_COLUMNS and chords PREVIEW_CHORD_FACTOR times as far from the
+ * orbit; the renderer keeps that table and the refined one side by side. */
 #ifndef BT_KIOSK_VIEW_H
 #define BT_KIOSK_VIEW_H
 #include "kiosk/compositor.h"
@@ -17,6 +20,9 @@
 
 #define PREVIEW_STEP_FACTOR 2
 #define PREVIEW_SEGMENT_FACTOR 2
+#define PREVIEW_ORBIT_ROWS 128
+#define PREVIEW_ORBIT_COLUMNS 32
+#define PREVIEW_CHORD_FACTOR 4.0
 
 struct kiosk_view {
     const struct kiosk_config *cfg;

@@ -5,7 +5,8 @@
  * Same semantics as the GPU path: the ray obeys dx/dlambda = v, dv/dlambda = f(x, v) of the
  * scene's model; it ends at its first object hit, where it leaves the bounding sphere (sky), where
  * it enters the capture radius (captured), or when lambda reaches segments * steps_per_segment *
- * step (unfinished). In flat space the ray is one straight segment, as on the GPU. */
+ * step (unfinished; with method orbit_table, which has no budget, never). In flat space the ray is
+ * one straight segment, as on the GPU. */
 #ifndef BT_REFERENCE_H
 #define BT_REFERENCE_H
 #include "scene/scene.h"

@@ -46,7 +46,7 @@ void orbit_table_params_for(const struct scene *s, struct orbit_table_params *p)
     p->columns = r->orbit_columns;
     /* a ray that can meet nothing needs no chords but its end: one segment */
     p->chord_tolerance = s->n_objects > 0 ? r->chord_tolerance : INFINITY;
-    p->max_segments = r->segments;
+    p->max_segments = r->max_chords;
     p->clear_radius = INFINITY;
     for (int i = 0; i < s->n_objects; i++)
         p->clear_radius = fmin(p->clear_radius, object_distance(&s->objects[i], s->model.center));
@@ -54,19 +54,42 @@ void orbit_table_params_for(const struct scene *s, struct orbit_table_params *p)
         p->clear_radius = 0.0;
 }
 
+static void swap_tables(struct renderer *r)
+{
+    struct orbit_table t = r->orbit;
+    GLuint texture = r->orbit_texture;
+    r->orbit = r->orbit_spare;
+    r->orbit_texture = r->orbit_spare_texture;
+    r->orbit_spare = t;
+    r->orbit_spare_texture = texture;
+}
+
+static void release_table(struct orbit_table *t, GLuint *texture)
+{
+    if (*texture)
+        glDeleteTextures(1, texture);
+    *texture = 0;
+    orbit_table_free(t);
+}
+
+/* Two tables are kept: the kiosk's coarse preview table and its refined frame's, which alternate
+ * while the knobs rest, are each built once. */
 int orbit_prepare(struct renderer *r, char *err, size_t errlen)
 {
     struct orbit_table_params p;
     orbit_table_params_for(r->scene, &p);
     if (r->orbit_texture && memcmp(&p, &r->orbit.p, sizeof p) == 0)
         return 0;
-    orbit_release(r);
+    swap_tables(r);
+    if (r->orbit_texture && memcmp(&p, &r->orbit.p, sizeof p) == 0)
+        return 0;
+    release_table(&r->orbit, &r->orbit_texture);
     if (orbit_table_build(&r->orbit, &p, err, errlen) != 0)
         return -1;
     if (r->orbit.width > r->caps.max_texture_size || r->orbit.height > r->caps.max_texture_size) {
         snprintf(err, errlen, "the orbit table (%dx%d) exceeds this GPU's texture limit %d: lower "
                  "render.orbit_rows or render.orbit_columns", r->orbit.width, r->orbit.height, r->caps.max_texture_size);
-        orbit_release(r);
+        release_table(&r->orbit, &r->orbit_texture);
         return -1;
     }
     const struct float_format *f = r->path.format;
@@ -78,10 +101,8 @@ int orbit_prepare(struct renderer *r, char *err, size_t errlen)
 
 void orbit_release(struct renderer *r)
 {
-    if (r->orbit_texture)
-        glDeleteTextures(1, &r->orbit_texture);
-    r->orbit_texture = 0;
-    orbit_table_free(&r->orbit);
+    release_table(&r->orbit, &r->orbit_texture);
+    release_table(&r->orbit_spare, &r->orbit_spare_texture);
 }
 
 struct orbit_args {

@@ -59,7 +59,7 @@ int stage_orbit_frame(struct renderer *r, int state, char *err, size_t errlen)
     {
         char defines[sizeof batch + sizeof r->model_defines + 128];
         snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define MAX_SEGMENTS %d\n%s", r->model_defines,
-                 batch, r->scene->render.segments, state ? "#define ORBIT_FRAME_STATE 1\n" : "");
+                 batch, r->scene->render.max_chords, state ? "#define ORBIT_FRAME_STATE 1\n" : "");
         const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, err, errlen);
         if (!sp)
             return -1;

@@ -38,6 +38,8 @@ struct renderer {
     double seconds;
     struct orbit_table orbit;     /* render.method = orbit_table: the table of the last run */
     GLuint orbit_texture;         /* the same as a float texture; 0 before the first */
+    struct orbit_table orbit_spare;  /* the one before it (stage_orbit.c) */
+    GLuint orbit_spare_texture;
     float quad_z;                 /* NDC depth of the pass quads: 0 (heavy passes), -1 (retire) */
     int depth_write_last;         /* pass_run writes depth in the last draw of a stage only */
 };

@@ -22,6 +22,7 @@
 #define SCENE_MAX_STEPS_PER_PASS 64 /* integration steps unrolled in one shader */
 #define SCENE_MAX_BATCH 16          /* objects intersected in one pass */
 #define SCENE_MAX_SUBDIVISION 128
+#define SCENE_MAX_CHORDS 10000     /* render.max_chords: loop iterations of the single pass */
 #define SCENE_MAX_ORBIT_ROWS 4096   /* orbit table rows per side: 2 x 4096 rows of a float texture */
 #define SCENE_MAX_ORBIT_COLUMNS 4095 /* samples along each tabulated orbit (one more texel: its end) */   /* a sphere's mesh then has 129 x 257 vertices: 16-bit indices */
 /* Pixels along either side of a texture or a sky cube face, as its PNG header declares it: one
@@ -146,6 +147,7 @@ struct render_settings {
      * units), which sets each ray's number of segments (at most `segments`); the table's rows per
      * side of the critical launch angle and samples along each orbit */
     double chord_tolerance;
+    int max_chords;           /* method orbit_table: most chords a ray's orbit is split into */
     int orbit_rows, orbit_columns;
     enum pipeline_choice pipeline;  /* MOVING_POLYGONS: segments along each edge of a primitive's mesh */
 };

@@ -28,6 +28,7 @@ static void render_defaults(struct render_settings *r)
     r->step_min = 0.0;
     r->step_max = 0.0;
     r->chord_tolerance = 1e-3;
+    r->max_chords = 1000;
     r->orbit_rows = 512;
     r->orbit_columns = 128;
     r->pipeline = PIPELINE_AUTO;

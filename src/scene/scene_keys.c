@@ -437,6 +437,8 @@ const struct scene_key scene_keys[] = {
      .offset = AT_SCENE(render.polygon_subdivision)},
     {SECTION_RENDER, "chord_tolerance", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .flags = KEY_ABOVE_LO,
      .offset = AT_SCENE(render.chord_tolerance)},
+    {SECTION_RENDER, "max_chords", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_CHORDS,
+     .offset = AT_SCENE(render.max_chords)},
     {SECTION_RENDER, "orbit_rows", KEY_INTEGER, .lo = 4, .hi = SCENE_MAX_ORBIT_ROWS,
      .offset = AT_SCENE(render.orbit_rows)},
     {SECTION_RENDER, "pipeline", CHOICE(pipeline_names, set_pipeline)},
