@@ -18,34 +18,42 @@ struct pareto_config {
     int fp16, k1;
     int scene_method;             /* keep the scene's method (the variants of the scene default) */
     double step_max_factor;       /* adaptive: step_max = scene step x factor (0: the default, x64) */
+    double chord_tolerance;       /* method orbit_table: render.chord_tolerance (0: the scene's) */
+    int multipass;                /* method orbit_table: the paper's scheme instead of the single pass */
 };
 
 static const struct pareto_config configs[] = {
-    {"scene default", 0, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 1, 0},
-    {"scene default, K = 1", 0, 1.0, 1.0, STEP_FIXED, 0, 0, 1, 1, 0},
-    {"scene default, fp16", 0, 1.0, 1.0, STEP_FIXED, 0, 1, 0, 1, 0},
-    {"euler, step x2", METHOD_EULER, 2.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
-    {"euler, step x1", METHOD_EULER, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
-    {"euler, step x0.5", METHOD_EULER, 0.5, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
-    {"rk4, step x4", METHOD_RK4, 4.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
-    {"rk4, step x2", METHOD_RK4, 2.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
-    {"rk4, step x1", METHOD_RK4, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
-    {"rk4, step x0.5", METHOD_RK4, 0.5, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
-    {"dopri5, step x4", METHOD_DOPRI5, 4.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
-    {"dopri5, step x2", METHOD_DOPRI5, 2.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0},
-    {"rk4, segment x0.5", METHOD_RK4, 1.0, 0.5, STEP_FIXED, 0, 0, 0, 0, 0},
-    {"rk4, segment x0.2", METHOD_RK4, 1.0, 0.2, STEP_FIXED, 0, 0, 0, 0, 0},
-    {"rk4, step x2, segment x0.4", METHOD_RK4, 2.0, 0.4, STEP_FIXED, 0, 0, 0, 0, 0},
-    {"rk4 doubling, tol 1e-3", METHOD_RK4, 1.0, 1.0, STEP_DOUBLING, 1e-3, 0, 0, 0, 0},
-    {"rk4 doubling, tol 1e-4", METHOD_RK4, 1.0, 1.0, STEP_DOUBLING, 1e-4, 0, 0, 0, 0},
-    {"rk4 doubling, tol 1e-5", METHOD_RK4, 1.0, 1.0, STEP_DOUBLING, 1e-5, 0, 0, 0, 0},
-    {"dopri5 embedded, tol 1e-4", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-4, 0, 0, 0, 0},
-    {"dopri5 embedded, tol 1e-6", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-6, 0, 0, 0, 0},
-    {"dopri5 embedded, tol 1e-8", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-8, 0, 0, 0, 0},
-    {"dopri5 embedded, tol 1e-6, step max x4", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-6, 0, 0, 0, 4.0},
-    {"dopri5 embedded, tol 1e-8, step max x4", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-8, 0, 0, 0, 4.0},
+    {"scene default", 0, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 1, 0, 0, 0},
+    {"scene default, K = 1", 0, 1.0, 1.0, STEP_FIXED, 0, 0, 1, 1, 0, 0, 0},
+    {"scene default, fp16", 0, 1.0, 1.0, STEP_FIXED, 0, 1, 0, 1, 0, 0, 0},
+    {"euler, step x2", METHOD_EULER, 2.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
+    {"euler, step x1", METHOD_EULER, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
+    {"euler, step x0.5", METHOD_EULER, 0.5, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4, step x4", METHOD_RK4, 4.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4, step x2", METHOD_RK4, 2.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4, step x1", METHOD_RK4, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4, step x0.5", METHOD_RK4, 0.5, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
+    {"dopri5, step x4", METHOD_DOPRI5, 4.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
+    {"dopri5, step x2", METHOD_DOPRI5, 2.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4, segment x0.5", METHOD_RK4, 1.0, 0.5, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4, segment x0.2", METHOD_RK4, 1.0, 0.2, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4, step x2, segment x0.4", METHOD_RK4, 2.0, 0.4, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4 doubling, tol 1e-3", METHOD_RK4, 1.0, 1.0, STEP_DOUBLING, 1e-3, 0, 0, 0, 0, 0, 0},
+    {"rk4 doubling, tol 1e-4", METHOD_RK4, 1.0, 1.0, STEP_DOUBLING, 1e-4, 0, 0, 0, 0, 0, 0},
+    {"rk4 doubling, tol 1e-5", METHOD_RK4, 1.0, 1.0, STEP_DOUBLING, 1e-5, 0, 0, 0, 0, 0, 0},
+    {"dopri5 embedded, tol 1e-4", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-4, 0, 0, 0, 0, 0, 0},
+    {"dopri5 embedded, tol 1e-6", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-6, 0, 0, 0, 0, 0, 0},
+    {"dopri5 embedded, tol 1e-8", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-8, 0, 0, 0, 0, 0, 0},
+    {"dopri5 embedded, tol 1e-6, step max x4", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-6, 0, 0, 0, 4.0, 0, 0},
+    {"dopri5 embedded, tol 1e-8, step max x4", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-8, 0, 0, 0, 4.0, 0, 0},
+    /* exact orbits (Schwarzschild only; they come last, so other models take the configurations above) */
+    {"orbit table, chord 1e-2", METHOD_ORBIT_TABLE, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 1e-2, 0},
+    {"orbit table, chord 1e-3", METHOD_ORBIT_TABLE, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 1e-3, 0},
+    {"orbit table, chord 1e-4", METHOD_ORBIT_TABLE, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 1e-4, 0},
+    {"orbit table, chord 1e-3, multipass", METHOD_ORBIT_TABLE, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 1e-3, 1},
 };
 #define N_CONFIGS (int)(sizeof configs / sizeof configs[0])
+#define N_ORBIT_CONFIGS 4
 
 struct pareto_scene {
     const char *title, *scene;
@@ -67,6 +75,7 @@ const int bench_pareto_count = N_SCENES * N_CONFIGS;
 struct pareto_point {
     double seconds, outcome_pct, sky_p99, hit_p99;
     int front;
+    long passes;
 };
 
 /* Largest K <= 64 dividing n (a segment ends on a pass boundary). */
@@ -107,6 +116,16 @@ static void apply_config(struct scene *s, const struct pareto_config *c)
     r->steps_per_pass = c->k1 ? 1 : unroll_for(r->steps_per_segment);
     if (c->fp16)
         r->precision = PRECISION_FP16;
+    if (c->chord_tolerance > 0.0)
+        r->chord_tolerance = c->chord_tolerance;
+    if (r->method == METHOD_ORBIT_TABLE)
+        r->pipeline = c->multipass ? PIPELINE_MULTIPASS : PIPELINE_AUTO;
+}
+
+/* The orbit table needs 32-bit floats: a scene on exact orbits has no fp16 variant of its default. */
+static int config_applies(const struct scene *s, const struct pareto_config *c)
+{
+    return !(c->fp16 && c->scene_method && s->render.method == METHOD_ORBIT_TABLE);
 }
 
 static double nan_as_zero(double x)
@@ -119,9 +138,9 @@ static double nan_as_zero(double x)
 static void mark_front(struct pareto_point *p, int n)
 {
     for (int i = 0; i < n; i++) {
-        p[i].front = 1;
+        p[i].front = !isnan(p[i].seconds);
         for (int j = 0; j < n && p[i].front; j++) {
-            if (j == i)
+            if (j == i || isnan(p[j].seconds))
                 continue;
             double a[4] = {p[j].seconds, p[j].outcome_pct, nan_as_zero(p[j].sky_p99), nan_as_zero(p[j].hit_p99)};
             double b[4] = {p[i].seconds, p[i].outcome_pct, nan_as_zero(p[i].sky_p99), nan_as_zero(p[i].hit_p99)};
@@ -154,10 +173,14 @@ static int measure_scene(struct bench *b, int k, struct pareto_point *pts, struc
                    base.render.height);
     if (cpu_render(&base, &o, &ref, err, errlen) != 0)
         return -1;
-    int n = b->quick ? 3 : N_CONFIGS;
+    int n = b->quick ? 3 : base.model.type == MODEL_SCHWARZSCHILD ? N_CONFIGS : N_CONFIGS - N_ORBIT_CONFIGS;
     for (int c = 0; c < n; c++) {
         static struct scene s;
         s = base;
+        if (!config_applies(&base, &configs[c])) {
+            pts[c] = (struct pareto_point){NAN, NAN, NAN, NAN, 0, 0};
+            continue;
+        }
         apply_config(&s, &configs[c]);
         struct scene_error e;
         if (scene_validate(&s, &e) != 0) {
@@ -175,7 +198,8 @@ static int measure_scene(struct bench *b, int k, struct pareto_point *pts, struc
         }
         dump_free(&d);
         b->done++;
-        pts[c] = (struct pareto_point){t.median, 100.0 * cr.outcome_fraction, cr.sky_angle.p99, cr.hit_relative.p99, 0};
+        pts[c] = (struct pareto_point){t.median, 100.0 * cr.outcome_fraction, cr.sky_angle.p99, cr.hit_relative.p99, 0,
+                                      t.passes};
     }
     cpu_image_free(&ref);
     mark_front(pts, n);
@@ -219,7 +243,7 @@ static void print_quality_choice(struct bench *b, const struct quality_bound *q,
     }
     int best = -1;
     for (int c = 0; c < n; c++)
-        if (meets_quality(q, &p[c]) && (best < 0 || p[c].seconds < p[best].seconds))
+        if (!isnan(p[c].seconds) && meets_quality(q, &p[c]) && (best < 0 || p[c].seconds < p[best].seconds))
             best = c;
     fprintf(b->md, "The scene file's [quality] (differing pixels <= %g%%, exit p99 <= %g rad, hit p99 <= %g of "
                    "size; negative: not stated): its default %s it; ", q->differing_percent, q->exit_p99, q->hit_p99,
@@ -233,22 +257,27 @@ static void print_quality_choice(struct bench *b, const struct quality_bound *q,
 
 static void print_scene(struct bench *b, int k, const struct pareto_point *p, int n, const struct quality_bound *q)
 {
-    fprintf(b->md, "### %s\n\n| configuration | seconds | differing pixels | exit p99 (rad) | hit p99 (of size) | "
-                   "front |\n|---|---|---|---|---|---|\n", scenes[k].title);
-    for (int c = 0; c < n; c++)
-        fprintf(b->md, "| %s | %.4f | %.3f%% | %.2g | %.2g | %s |\n", configs[c].name, p[c].seconds, p[c].outcome_pct,
-                p[c].sky_p99, p[c].hit_p99, p[c].front ? "yes" : "" );
-    static const double sky_levels[] = {1e-2, 1e-3, 1e-4}, pct_levels[] = {1.0, 0.1};
+    fprintf(b->md, "### %s\n\n| configuration | seconds | passes | differing pixels | exit p99 (rad) | hit p99 (of size) | "
+                   "front |\n|---|---|---|---|---|---|---|\n", scenes[k].title);
+    for (int c = 0; c < n; c++) {
+        if (isnan(p[c].seconds)) {
+            fprintf(b->md, "| %s | n/a (the orbit table needs fp32) | | | | | |\n", configs[c].name);
+            continue;
+        }
+        fprintf(b->md, "| %s | %.4f | %ld | %.3f%% | %.2g | %.2g | %s |\n", configs[c].name, p[c].seconds, p[c].passes,
+                p[c].outcome_pct, p[c].sky_p99, p[c].hit_p99, p[c].front ? "yes" : "" );
+    }
+    static const double sky_levels[] = {1e-2, 1e-3, 1e-4, 1e-5}, pct_levels[] = {1.0, 0.1};
     fprintf(b->md, "\nCheapest configuration reaching: ");
-    for (int i = 0; i < 5; i++) {
-        int sky = i < 3;
-        double level = sky ? sky_levels[i] : pct_levels[i - 3];
+    for (int i = 0; i < 6; i++) {
+        int sky = i < 4;
+        double level = sky ? sky_levels[i] : pct_levels[i - 4];
         int c = cheapest(p, n, sky, level);
         char found[96] = "none";
         if (c >= 0)
             snprintf(found, sizeof found, "%s (%.4f s)", configs[c].name, p[c].seconds);
         fprintf(b->md, sky ? "exit p99 <= %g rad: %s; " : "differing pixels <= %g%%: %s", level, found);
-        fprintf(b->md, "%s", i == 3 ? "; " : i == 4 ? ".\n\n" : "");
+        fprintf(b->md, "%s", i == 4 ? "; " : i == 5 ? ".\n\n" : "");
     }
     fprintf(b->md, "The scene's own default is %son the front. ", p[0].front ? "" : "not ");
     if (scenes[k].sky_only)
@@ -257,8 +286,8 @@ static void print_scene(struct bench *b, int k, const struct pareto_point *p, in
         print_quality_choice(b, q, p, n);
 }
 
-#define SKY_TARGET_RAD 1e-3
-#define SKY_TARGET_SECONDS 0.1
+#define SKY_TARGET_RAD 1e-5
+#define SKY_TARGET_SECONDS 0.03
 
 int bench_pareto(struct bench *b, char *err, size_t errlen)
 {
@@ -277,7 +306,9 @@ int bench_pareto(struct bench *b, char *err, size_t errlen)
                    "direction error of sky pixels and of the hit error relative to the object's size. "
                    "\"step xF\" multiplies the step and keeps the segment length; \"segment xF\" multiplies the "
                    "segment and keeps the step and the path; \"step max x4\" bounds adaptive steps at 4 times the "
-                   "scene's step. A configuration is on the "
+                   "scene's step. \"orbit table, chord C\" (Schwarzschild only) integrates nothing: each ray "
+                   "follows its exact orbit from the table, in chords within C of it, in one pass "
+                   "(render.pipeline = single) or in the paper's multipass scheme. A configuration is on the "
                    "front when no other is as fast and as accurate in all three measures and better in one. "
                    "An adaptive configuration has a budget of steps, not of path; rays it leaves unfinished "
                    "count as differing. Plot: `bench/pareto.png`.\n\n", b->width, b->height, b->runs);

@@ -24,6 +24,8 @@ int render_frame(const struct scene *s, const char *backend, struct render_resul
         if (renderer_run(r, 0, 0, s->render.width, s->render.height, NULL, NULL, err, errlen) == 0 &&
             renderer_read(r, out, with_state, err, errlen) == 0)
             rc = 0;
+        if (info)
+            snprintf(info->pipeline, sizeof info->pipeline, "%s", renderer_pipeline(r));
         renderer_destroy(r);
     }
     gl_context_destroy(ctx);

@@ -13,21 +13,24 @@
 #include <time.h>
 
 /* The default configuration of a scene, and variations that show what each knob costs and buys. */
-enum variation { VAR_DEFAULT, VAR_FP16, VAR_OTHER_METHOD, VAR_SHORT_SEGMENTS, VAR_CPU_LOOSE, VAR_COUNT };
+enum variation { VAR_DEFAULT, VAR_FP16, VAR_OTHER_METHOD, VAR_SHORT_SEGMENTS, VAR_TIGHT_CHORDS, VAR_CPU_LOOSE, VAR_COUNT };
 
 static const char *const variation_names[VAR_COUNT] = {
-    "scene default", "fp16 ray state", "other method", "segments 1/5 as long", "CPU rtol 1e-6"};
+    "scene default", "fp16 ray state", "other method", "segments 1/5 as long", "chords within 1/10 the tolerance",
+    "CPU rtol 1e-6"};
 
 /* Apply a variation to s; 0 when it does not apply to this scene. */
 static int vary(struct scene *s, enum variation v)
 {
     struct render_settings *r = &s->render;
-    int flat = s->model.type == MODEL_FLAT;
+    int flat = s->model.type == MODEL_FLAT, orbit = r->method == METHOD_ORBIT_TABLE;
     switch (v) {
     case VAR_FP16:
+        /* the orbit table needs 32-bit floats */
         r->precision = PRECISION_FP16;
-        return 1;
+        return !orbit;
     case VAR_OTHER_METHOD:
+        /* exact orbits against the integration they replace (rk4 at the scene's step) */
         r->method = r->method == METHOD_RK4 ? METHOD_EULER : METHOD_RK4;
         /* the embedded error estimate belongs to dopri5: the other method takes fixed steps (step
          * doubling cannot meet a tolerance below the fp32 rounding of positions) */
@@ -36,13 +39,17 @@ static int vary(struct scene *s, enum variation v)
         return !flat;
     case VAR_SHORT_SEGMENTS:
         /* same steps, five times as many segments: only the chord of each segment changes */
-        if (flat || r->steps_per_segment % 5 != 0)
+        if (flat || orbit || r->steps_per_segment % 5 != 0)
             return 0;
         r->steps_per_segment /= 5;
         r->segments *= 5;
         while (r->steps_per_segment % r->steps_per_pass != 0)
             r->steps_per_pass--;
         return 1;
+    case VAR_TIGHT_CHORDS:
+        /* exact orbits: only the chords of each segment, and so the hits, change */
+        r->chord_tolerance /= 10.0;
+        return orbit && !flat;
     case VAR_DEFAULT:
     case VAR_CPU_LOOSE:
     default:
@@ -81,10 +88,13 @@ static void write_row(FILE *f, const struct scene *s, const char *variation, con
         snprintf(psnr, sizeof psnr, "%.1f", c->psnr_db);
     int cpu = strncmp(m->engine, "cpu", 3) == 0, flat = s->model.type == MODEL_FLAT;
     snprintf(k, sizeof k, cpu || flat ? "–" : "%d", r->steps_per_pass);
-    char step[32], per_segment[16], segments[16];
-    snprintf(step, sizeof step, cpu || flat ? "–" : "%g", r->step_size);
-    snprintf(per_segment, sizeof per_segment, cpu || flat ? "–" : "%d", r->steps_per_segment);
-    snprintf(segments, sizeof segments, cpu || flat ? "–" : "%d", r->segments);
+    char step[32], per_segment[16], segments[32];
+    int orbit = !cpu && !flat && r->method == METHOD_ORBIT_TABLE;
+    if (orbit)
+        snprintf(k, sizeof k, "–");
+    snprintf(step, sizeof step, cpu || flat ? "–" : orbit ? "chord %g" : "%g", orbit ? r->chord_tolerance : r->step_size);
+    snprintf(per_segment, sizeof per_segment, cpu || flat || orbit ? "–" : "%d", r->steps_per_segment);
+    snprintf(segments, sizeof segments, cpu || flat ? "–" : orbit ? "<= %d chords" : "%d", orbit ? r->max_chords : r->segments);
     static const char *const control[] = {"", " doubling", " embedded"};
     char method[48];
     snprintf(method, sizeof method, "%s%s", cpu ? "dopri5" : flat ? "straight" : method_name(r->method),
@@ -201,7 +211,10 @@ static void write_preamble(FILE *f, const char *dir, int width, int height)
                "one configuration with the reference pixel by pixel (metrics defined in docs/ERRORS.md).\n"
                "Image size: %s. Hit errors are relative to the size of the object hit; sky angles are\n"
                "between the final ray directions. GPU time is the passes with glFinish; CPU time is wall\n"
-               "time on all threads. Times on a shared machine are noisy: compare rows of one run.\n\n",
+               "time on all threads (a single GPU run: it includes building the orbit table). Times on a\n"
+               "shared machine are noisy: compare rows of one run. A scene on exact orbits (method\n"
+               "orbit_table) integrates nothing: its step column gives its chord tolerance, its segments\n"
+               "column its chord limit, and its \"other method\" row the RK4 integration it replaces.\n\n",
             dir, width ? "as given on the command line" : "each scene's own render.width x height");
     (void)height;
 }
