@@ -23,13 +23,16 @@ static int renderer_follow_scene(struct renderer *r, char *err, size_t errlen)
     const struct scene *scene = r->scene;
     /* a model with its fields off is flat space: nothing is integrated (model_is_straight) */
     r->straight = model_is_straight(&scene->model);
+    /* exact orbits need fp32 textures; without them the rays are integrated (the path says so) */
+    r->method = scene->render.method == METHOD_ORBIT_TABLE && !r->path.fp32 ? METHOD_RK4 : scene->render.method;
+    r->exact_orbits = !r->straight && r->method == METHOD_ORBIT_TABLE;
     snprintf(r->model_file, sizeof r->model_file, "model_%s.glsl",
              r->straight ? "flat" : model_name(scene->model.type));
     static const char *const method_defines[] = {"EULER", "RK4", "DOPRI5", "ORBIT_TABLE"};
     static const char *const control_defines[] = {"FIXED", "DOUBLING", "EMBEDDED"};
     snprintf(r->model_defines, sizeof r->model_defines,
              "#define MODEL_%s 1\n#define METHOD_%s 1\n#define STEP_%s 1\n#define STEPS_PER_PASS %d\n%s",
-             r->straight ? "FLAT" : "CURVED", method_defines[scene->render.method],
+             r->straight ? "FLAT" : "CURVED", method_defines[r->method],
              control_defines[scene->render.step_control], scene->render.steps_per_pass,
              !r->straight && scene->model.type == MODEL_POTENTIAL && scene->model.profile == PROFILE_POLYNOMIAL
                  ? "#define PROFILE_POLYNOMIAL 1\n" : "");
@@ -71,12 +74,18 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
         return NULL;
     }
     if (scene->render.method == METHOD_ORBIT_TABLE && !r->path.fp32) {
-        snprintf(err, errlen, "render.method = orbit_table needs 32-bit float textures, and this GPU's path is %s: "
-                 "use render.method = rk4", r->path.name);
-        *bad_input = 1;
-        quad_release();
-        free(r);
-        return NULL;
+        if (scene->render.precision == PRECISION_FP16) {
+            snprintf(err, errlen, "render.method = orbit_table needs 32-bit float textures, and render.precision = "
+                     "fp16 asks for 16-bit ones: use render.method = rk4 or precision auto");
+            *bad_input = 1;
+            quad_release();
+            free(r);
+            return NULL;
+        }
+        /* a GPU without them draws the scene integrated, and says so */
+        size_t used = strlen(r->path.description);
+        snprintf(r->path.description + used, sizeof r->path.description - used,
+                 "; render.method = orbit_table needs 32-bit float textures: rays integrated with rk4 instead");
     }
     program_cache_init(&r->programs, &r->caps.shader, r->path.mrt);
     if (renderer_follow_scene(r, err, errlen) != 0 || textures_load(r, err, errlen) != 0 ||
@@ -144,7 +153,7 @@ int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int 
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
     }
-    int orbit = !r->straight && s->render.method == METHOD_ORBIT_TABLE;
+    int orbit = r->exact_orbits;
     if (orbit && orbit_prepare(r, err, errlen) != 0)
         return -1;
     int segments = r->straight ? 1 : orbit ? r->orbit.max_segments : s->render.segments;

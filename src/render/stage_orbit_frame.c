@@ -12,7 +12,7 @@ int orbit_frame_applies(const struct renderer *r)
 {
     const struct scene *s = r->scene;
     struct object_batch b;
-    return !r->straight && s->render.method == METHOD_ORBIT_TABLE && s->render.pipeline != PIPELINE_MULTIPASS &&
+    return r->exact_orbits && s->render.pipeline != PIPELINE_MULTIPASS &&
            object_batch_all(r, &b) == 0;
 }
 

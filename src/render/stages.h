@@ -31,6 +31,8 @@ struct renderer {
     char model_defines[256];      /* model, method, steps per pass */
     char model_file[64];          /* model_NAME.glsl; model_flat.glsl for straight rays */
     int straight;                 /* rays are straight: one segment, not integrated */
+    enum integration_method method;  /* the scene's, or rk4 where orbit_table lacks fp32 textures */
+    int exact_orbits;             /* rays follow tabulated exact orbits (not straight, orbit_table) */
     int image_width, image_height;
     const char *pipeline_name;    /* of the last run: "multipass" or "single pass" */
     int state_pending;            /* single pass: hit and position not yet written */

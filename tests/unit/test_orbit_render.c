@@ -327,8 +327,10 @@ static void test_rebuild_time_printed(void **state)
     }
 }
 
-/* ---- 7. refusals ---- */
+/* ---- 7. without 32-bit float textures ---- */
 
+/* fp16 forced with orbit_table contradicts itself and is refused; a GPU that has only fp16 (the
+ * fault hook makes llvmpipe's 32-bit formats fail) draws the scene integrated, and says so. */
 static void test_needs_fp32(void **state)
 {
     (void)state;
@@ -338,10 +340,25 @@ static void test_needs_fp32(void **state)
     char err[512];
     int bad = 0;
     struct renderer *r = renderer_create(hc_context(), &s, err, sizeof err, &bad);
-    print_message("fp16: %s\n", r ? "(accepted)" : err);
+    print_message("fp16 forced: %s\n", r ? "(accepted)" : err);
     assert_null(r);
     assert_int_equal(bad, 1);
     assert_non_null(strstr(err, "orbit_table"));
+    s.render.precision = PRECISION_AUTO;
+    setenv("BT_FAULT", "float_render", 1);
+    struct gl_context *ctx = gl_context_create("egl", err, sizeof err);
+    assert_non_null(ctx);
+    r = renderer_create(ctx, &s, err, sizeof err, &bad);
+    unsetenv("BT_FAULT");
+    if (!r)
+        fail_msg("fp16 only: %s", err);
+    const char *how = renderer_path(r)->description;
+    print_message("fp16 only: %s\n", how);
+    assert_non_null(strstr(how, "integrated with rk4"));
+    assert_int_equal(renderer_run(r, 0, 0, 16, 12, NULL, NULL, err, sizeof err), 0);
+    assert_string_equal(renderer_pipeline(r), "multipass");
+    renderer_destroy(r);
+    gl_context_destroy(ctx);
 }
 
 int main(void)
