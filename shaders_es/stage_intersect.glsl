@@ -193,6 +193,51 @@ void intersect_shade(candidate best, vec3 a, vec3 b, out vec4 new_hit, out vec4 
     new_image = vec4(shade(p, best.normal, best.uv, normalize(b - a), m), emission_id.w);
 }
 
+#ifdef ORBIT_HITS
+// Hits on the orbit, not on its chord (render.method = orbit_table; orbit_table.glsl comes first): a hit found on chord a -> b,
+// which runs from fraction s_a to s_b of the ray's orbit, is found again on the two halves of that
+// stretch of orbit, split where the hit was, ORBIT_HIT_LEVELS times: every split brings both ends
+// of the chord that carries the hit back onto the orbit, and the chord's distance from the orbit
+// falls about fourfold each time. Every object is tested again on each half, so a hit that the
+// orbit reaches first is the one kept. Where neither half meets anything (a chord that grazed an
+// edge the orbit misses), the chord's hit stays. Used by the intersection stage and by the single
+// pass alike, with the same arithmetic, so both find the same hits.
+const int ORBIT_HIT_LEVELS = 3;
+
+// best: the hit on chord a -> b (segment `segment`); a and b become the ends of the short chord
+// that carries the hit, and best its fraction, normal and uv there (its depth key is kept).
+void orbit_refine_hit(orbit_ray ray, float s_a, float s_b, float segment, inout vec3 a, inout vec3 b,
+                      inout candidate best)
+{
+    float lo = s_a;
+    float hi = s_b;
+    float none = NO_HIT;
+    float no_slot = -1.0;
+    for (int level = 0; level < ORBIT_HIT_LEVELS; level++) {
+        float s_m = lo + best.t * (hi - lo);
+        vec2 q = orbit_at(ray, s_m);
+        vec3 m = orbit_point(ray, q, s_m);
+        candidate first = candidate(none, 0.0, no_slot, vec3(0.0), vec2(0.0));
+        candidate second = candidate(none, 0.0, no_slot, vec3(0.0), vec2(0.0));
+        intersect_chord(a, m, segment, first);
+        intersect_chord(m, b, segment, second);
+        bool in_first = first.slot >= 0.0;
+        bool in_second = !in_first && second.slot >= 0.0;
+        float key = best.key;
+        best = in_first ? first : in_second ? second : best;
+        best.key = key;
+        float new_lo = in_second ? s_m : lo;
+        float new_hi = in_first ? s_m : hi;
+        vec3 new_a = in_second ? m : a;
+        vec3 new_b = in_first ? m : b;
+        lo = new_lo;
+        hi = new_hi;
+        a = new_a;
+        b = new_b;
+    }
+}
+#endif
+
 #ifndef SINGLE_PASS
 void main()
 {
@@ -202,10 +247,21 @@ void main()
     vec3 b = fetch(u_segment_end).xyz;
     candidate best = candidate(hit.w, 0.0, -1.0, vec3(0.0), vec2(0.0));
     intersect_chord(a, b, u_segment_index, best);
+    bool found = best.slot >= 0.0;
+#ifdef ORBIT_HITS
+    // the segment's chord runs from fraction s_a of the orbit to s_b (the orbit stage's own
+    // arithmetic, again): the hit is found again on the orbit (orbit_hit.glsl)
+    orbit_ray ray = orbit_ray_of();
+    float s_a = orbit_chord_end(ray, u_segment_index);
+    vec2 q_b;
+    float s_b;
+    bool leaves;
+    orbit_chord_from(ray, s_a, u_segment_index, q_b, s_b, leaves);
+    orbit_refine_hit(ray, s_a, s_b, u_segment_index, a, b, best);
+#endif
     // computed before the select: see the precision note in common.glsl
     vec4 new_hit, new_image;
     intersect_shade(best, a, b, new_hit, new_image);
-    bool found = best.slot >= 0.0;
     hit = found ? new_hit : hit;
     image = found ? new_image : image;
     WRITE_TARGET0(hit);

@@ -18,6 +18,9 @@ void main()
     vec2 q = vec2(1.0, 0.0);
     float s = 0.0;
     bool leaves = false;
+    float hit_s_a = 0.0;
+    float hit_s_b = 0.0;
+    float hit_segment = 0.0;
     float steps = 0.0;
     float code = CODE_UNFINISHED;
     float end_key = NO_HIT;
@@ -26,12 +29,16 @@ void main()
         float k = float(i);
         if (k >= ray.segments)
             break;
-        orbit_chord_from(ray, s, k, q, s, leaves);
+        float s_a = s;
+        orbit_chord_from(ray, s_a, k, q, s, leaves);
         b = orbit_chord_point(ray, q, s, leaves);
         steps = k + 1.0;
         intersect_chord(a, b, k, best);
         hit_a = a;
         hit_b = b;
+        hit_s_a = s_a;
+        hit_s_b = s;
+        hit_segment = k;
         vec3 from_bound = b - u_bound_center;
         vec3 from_mass = b - u_capture_center;
         bool captured = u_capture_radius2 > 0.0 && dot(from_mass, from_mass) <= u_capture_radius2;
@@ -48,6 +55,7 @@ void main()
     // the final state again from (q, s), outside the loop: see the precision note in common.glsl
     vec3 end = orbit_chord_point(ray, q, s, leaves);
     vec3 tangent = orbit_tangent(ray, q, s);
+    orbit_refine_hit(ray, hit_s_a, hit_s_b, hit_segment, hit_a, hit_b, best);
     vec4 new_hit, new_image;
     intersect_shade(best, hit_a, hit_b, new_hit, new_image);
     bool found = best.slot >= 0.0;

@@ -12,6 +12,8 @@
 /* uniform vectors a pass needs besides its objects: lights, ambient, segment, sizes, camera, observer
  * and black-body table (rounded up) */
 #define RESERVED_UNIFORM_VECS (20 + 3 * SCENE_MAX_LIGHTS)
+/* ... and the orbit table's (orbit_table.glsl), where hits are found again on the orbit */
+#define ORBIT_UNIFORM_VECS 16
 /* texture units 0-3 carry the ray state, the black-body table UNIT_BLACKBODY (4); object textures
  * start here */
 #define FIRST_OBJECT_UNIT 5
@@ -134,6 +136,8 @@ void object_batch_set_uniforms(GLuint p, const void *arg)
         glUniform1iv(textures, b->count, units);
     uniform_float(p, "u_segment_index", b->segment);
     uniform_vec3(p, "u_ambient_light", s->ambient_light);
+    if (b->r->exact_orbits)       /* hits found again on the orbit */
+        orbit_set_uniforms(p, b->r, b->segment);
     /* the camera and the time: for the Doppler colours, moving objects and clocks only */
     if (doppler_colour(s) || batch_moves(b) || batch_clocks(b))
         observer_set_uniforms(p, b->r);
@@ -179,12 +183,21 @@ int object_batch_defines(const struct object_batch *b, char *out, size_t len)
     for (int t = 0; t < PRIM_COUNT && used < len; t++)
         if (has[t])
             used += (size_t)snprintf(out + used, len - used, "\n#define HAS_PRIM_%s 1", prim_defines[t]);
+    if (b->r->exact_orbits && used < len)
+        used += (size_t)snprintf(out + used, len - used, "\n#define ORBIT_HITS 1");
     if (used < len)
         used += (size_t)snprintf(out + used, len - used, "\n%s", b->r->observer_defines);
     if (used + 2 >= len)
         return -1;
     strcat(out, "\n");
     return 0;
+}
+
+/* Texture units left for object textures: above the ray state and the black-body table, below the
+ * orbit table (the last unit) when rays follow exact orbits. */
+static int object_texture_units(const struct renderer *r)
+{
+    return r->caps.max_texture_units - FIRST_OBJECT_UNIT - (r->exact_orbits ? 1 : 0);
 }
 
 int object_batch_files(const struct object_batch *b, const char **files, int n)
@@ -210,13 +223,14 @@ int object_batch_all(const struct renderer *r, struct object_batch *b)
         textured += s->objects[i].material.texture >= 0;
         b->object[b->count++] = i;
     }
-    return s->n_objects <= intersect_batch_limit(r) && textured <= r->caps.max_texture_units - FIRST_OBJECT_UNIT ? 0 : -1;
+    return s->n_objects <= intersect_batch_limit(r) && textured <= object_texture_units(r) ? 0 : -1;
 }
 
 int intersect_batch_limit(const struct renderer *r)
 {
     int per_object = GEOMETRY_VECS + MATERIAL_VECS + (scene_has_moving_objects(r->scene) ? MOTION_VECS : 0);
-    int by_uniforms = (r->caps.max_fragment_uniform_vectors - RESERVED_UNIFORM_VECS) / per_object;
+    int reserved = RESERVED_UNIFORM_VECS + (r->exact_orbits ? ORBIT_UNIFORM_VECS : 0);
+    int by_uniforms = (r->caps.max_fragment_uniform_vectors - reserved) / per_object;
     int limit = r->scene->render.batch < by_uniforms ? r->scene->render.batch : by_uniforms;
     return limit < 1 ? 1 : limit;
 }
@@ -229,9 +243,13 @@ static int intersect_batch(struct renderer *r, const struct object_batch *b, int
         snprintf(err, errlen, "internal: the defines of an object batch do not fit");
         return -1;
     }
-    const char *files[PRIM_COUNT + 6] = {"common.glsl"};
+    const char *files[PRIM_COUNT + 8] = {"common.glsl"};
     int n = object_batch_files(b, files, 1);
     files[n++] = "observer.glsl";
+    if (r->exact_orbits) {
+        files[n++] = "model_schwarzschild.glsl";
+        files[n++] = "orbit_table.glsl";
+    }
     files[n++] = "shade.glsl";
     files[n++] = "stage_intersect.glsl";
     files[n] = NULL;
@@ -255,7 +273,7 @@ int stage_intersect_all(struct renderer *r, int segment, int segment_start, char
 {
     const struct scene *s = r->scene;
     int limit = intersect_batch_limit(r);
-    int max_textured = r->caps.max_texture_units - FIRST_OBJECT_UNIT;
+    int max_textured = object_texture_units(r);
     int next = 0;
     while (next < s->n_objects) {
         struct object_batch b = {.r = r, .count = 0, .segment = segment};

@@ -169,9 +169,9 @@ void orbit_set_uniforms(GLuint p, const struct renderer *r, int segment)
     bounds_set_uniforms(p, s);
     uniform_float(p, "u_bound_outside", s->render.bound_radius * (1.0 + ORBIT_OUTSIDE_MARGIN));
     uniform_float(p, "u_segment_index", segment);
-    glActiveTexture(GL_TEXTURE0 + UNIT_ORBIT);
+    glActiveTexture(GL_TEXTURE0 + UNIT_ORBIT(r));
     glBindTexture(GL_TEXTURE_2D, r->orbit_texture);
-    glUniform1i(glGetUniformLocation(p, "u_orbit_table"), UNIT_ORBIT);
+    glUniform1i(glGetUniformLocation(p, "u_orbit_table"), UNIT_ORBIT(r));
     glUniform2f(glGetUniformLocation(p, "u_orbit_texel"), 1.0f / (float)t->width, 1.0f / (float)t->height);
     uniform_float(p, "u_orbit_rows", t->p.rows_per_side);
     uniform_float(p, "u_orbit_columns", t->p.columns);

@@ -45,7 +45,7 @@ int stage_orbit_frame(struct renderer *r, int state, char *err, size_t errlen)
         }
     } else {
         /* nothing to meet: an empty batch of one slot keeps the shading code well-formed */
-        snprintf(batch, sizeof batch, "#define BATCH_SIZE 1\n#define LIGHT_COUNT %d\n#define BATCH_TESTS\n%s\n",
+        snprintf(batch, sizeof batch, "#define BATCH_SIZE 1\n#define LIGHT_COUNT %d\n#define BATCH_TESTS\n#define ORBIT_HITS 1\n%s\n",
                  r->scene->n_lights, r->observer_defines);
     }
     const char *files[PRIM_COUNT + 10] = {"common.glsl", "model_schwarzschild.glsl"};

@@ -10,8 +10,8 @@
 #define UNIT_SKY 6
 /* the black-body table: below the object textures, which start at FIRST_OBJECT_UNIT (intersect) */
 #define UNIT_BLACKBODY 4
-/* the orbit table: after the three ray-state inputs of the orbit stage */
-#define UNIT_ORBIT 3
+/* the orbit table: the GPU's last texture unit (object textures stay below it) */
+#define UNIT_ORBIT(r) ((r)->caps.max_texture_units - 1)
 
 struct renderer {
     const struct scene *scene;
