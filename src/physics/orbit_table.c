@@ -571,16 +571,26 @@ static void catmull_rom(double f, double wgt[4])
     wgt[3] = 0.5 * (f3 - f2);
 }
 
+/* The rows about launch angle psi: its side, the row i at or below it (0 .. rows - 2) and its
+ * fraction f towards row i + 1. */
+static int row_stencil(const struct orbit_table *t, double psi, enum orbit_side *side, double *f)
+{
+    int rps = t->p.rows_per_side;
+    double q = orbit_table_row(t, psi, side);
+    int i = (int)floor(q);
+    if (i > rps - 2)
+        i = rps - 2;
+    *f = q - i;
+    return i;
+}
+
 void orbit_table_eval(const struct orbit_table *t, double psi, double s, struct orbit_point *out, double *phi_end,
                       int *segments)
 {
     enum orbit_side side;
     int rps = t->p.rows_per_side, cols = t->p.columns;
-    double q = orbit_table_row(t, psi, &side);
-    int i = (int)floor(q);
-    if (i > rps - 2)
-        i = rps - 2;
-    double f = q - i, wr[4];
+    double f, wr[4];
+    int i = row_stencil(t, psi, &side, &f);
     catmull_rom(f, wr);
     double c = fmin(fmax(s, 0.0), 1.0) * (cols - 1);
     int j = (int)floor(c);
@@ -614,11 +624,8 @@ double orbit_table_chord_end(const struct orbit_table *t, double psi, int k, int
 {
     enum orbit_side side;
     int rps = t->p.rows_per_side, cols = t->p.columns;
-    double q = orbit_table_row(t, psi, &side);
-    int i = (int)floor(q);
-    if (i > rps - 2)
-        i = rps - 2;
-    double f = q - i, ends[2];
+    double f, ends[2];
+    int i = row_stencil(t, psi, &side, &f);
     for (int m = 0; m < 2; m++) {
         double warp[ORBIT_WARP_SAMPLES];
         const float *texel = t->texels + ((size_t)(side * rps + i + m) * t->width + cols + 1) * 4;

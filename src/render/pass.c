@@ -13,6 +13,27 @@ void uniform_float(GLuint program, const char *name, double v)
     glUniform1f(glGetUniformLocation(program, name), (float)v);
 }
 
+int pass_move_rays(struct renderer *r, const struct stage_program *sp, int segment_start, set_uniforms_fn set_uniforms,
+                   const void *arg, char *err, size_t errlen)
+{
+    struct raystate *rs = &r->rs;
+    /* write to the one position copy that is neither the segment start nor the current one */
+    int out_pos = 0;
+    while (out_pos == segment_start || out_pos == rs->cur_position)
+        out_pos++;
+    int out_vel = 1 - rs->cur_velocity;
+    struct pass_input in[] = {
+        {"u_ray_position", rs->position[rs->cur_position]},
+        {"u_ray_velocity", rs->velocity[rs->cur_velocity]},
+        {"u_hit", rs->hit[rs->cur_hit]},
+    };
+    if (pass_run(r, sp, rs->position[out_pos], rs->velocity[out_vel], in, 3, set_uniforms, arg, err, errlen) != 0)
+        return -1;
+    rs->cur_position = out_pos;
+    rs->cur_velocity = out_vel;
+    return 0;
+}
+
 int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GLuint out1,
              const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
              char *err, size_t errlen)

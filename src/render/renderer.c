@@ -87,6 +87,17 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
         snprintf(r->path.description + used, sizeof r->path.description - used,
                  "; render.method = orbit_table needs 32-bit float textures: rays integrated with rk4 instead");
     }
+    int table_width = scene->render.orbit_columns + 1 + ORBIT_WARP_SAMPLES, table_height = 2 * scene->render.orbit_rows;
+    if (scene->render.method == METHOD_ORBIT_TABLE && r->path.fp32 &&
+        (table_width > r->caps.max_texture_size || table_height > r->caps.max_texture_size)) {
+        snprintf(err, errlen, "the orbit table (%dx%d texels for render.orbit_columns = %d, render.orbit_rows = %d) "
+                 "exceeds this GPU's texture limit %d", table_width, table_height, scene->render.orbit_columns,
+                 scene->render.orbit_rows, r->caps.max_texture_size);
+        *bad_input = 1;
+        quad_release();
+        free(r);
+        return NULL;
+    }
     program_cache_init(&r->programs, &r->caps.shader, r->path.mrt);
     if (renderer_follow_scene(r, err, errlen) != 0 || textures_load(r, err, errlen) != 0 ||
         polygons_load(r, err, errlen) != 0) {

@@ -20,27 +20,13 @@ static void set_integrate(GLuint p, const void *arg)
 int stage_integrate(struct renderer *r, int segment_start, char *err, size_t errlen)
 {
     const struct scene *s = r->scene;
-    struct raystate *rs = &r->rs;
     const char *const files[] = {"common.glsl", r->model_file, "stage_integrate.glsl", NULL};
     const struct stage_program *sp = program_cache_get(&r->programs, files, r->model_defines, 1, err, errlen);
     if (!sp)
         return -1;
     int passes = r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass;
-    for (int k = 0; k < passes; k++) {
-        /* write to the one position copy that is neither the segment start nor the current one */
-        int out_pos = 0;
-        while (out_pos == segment_start || out_pos == rs->cur_position)
-            out_pos++;
-        int out_vel = 1 - rs->cur_velocity;
-        struct pass_input in[] = {
-            {"u_ray_position", rs->position[rs->cur_position]},
-            {"u_ray_velocity", rs->velocity[rs->cur_velocity]},
-            {"u_hit", rs->hit[rs->cur_hit]},
-        };
-        if (pass_run(r, sp, rs->position[out_pos], rs->velocity[out_vel], in, 3, set_integrate, s, err, errlen) != 0)
+    for (int k = 0; k < passes; k++)
+        if (pass_move_rays(r, sp, segment_start, set_integrate, s, err, errlen) != 0)
             return -1;
-        rs->cur_position = out_pos;
-        rs->cur_velocity = out_vel;
-    }
     return gl_check("ray integration", err, errlen);
 }

@@ -184,7 +184,6 @@ void orbit_set_uniforms(GLuint p, const struct renderer *r, int segment)
 
 int stage_orbit(struct renderer *r, int segment, int segment_start, char *err, size_t errlen)
 {
-    struct raystate *rs = &r->rs;
     const char *const files[] = {"common.glsl", "model_schwarzschild.glsl", "observer.glsl", "orbit_table.glsl",
                                  "stage_orbit.glsl", NULL};
     char defines[sizeof r->model_defines + sizeof r->observer_defines];
@@ -192,19 +191,8 @@ int stage_orbit(struct renderer *r, int segment, int segment_start, char *err, s
     const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, err, errlen);
     if (!sp)
         return -1;
-    int out_pos = 0;
-    while (out_pos == segment_start || out_pos == rs->cur_position)
-        out_pos++;
-    int out_vel = 1 - rs->cur_velocity;
-    struct pass_input in[] = {
-        {"u_ray_position", rs->position[rs->cur_position]},
-        {"u_ray_velocity", rs->velocity[rs->cur_velocity]},
-        {"u_hit", rs->hit[rs->cur_hit]},
-    };
     struct orbit_args a = {r, segment};
-    if (pass_run(r, sp, rs->position[out_pos], rs->velocity[out_vel], in, 3, set_orbit, &a, err, errlen) != 0)
+    if (pass_move_rays(r, sp, segment_start, set_orbit, &a, err, errlen) != 0)
         return -1;
-    rs->cur_position = out_pos;
-    rs->cur_velocity = out_vel;
     return gl_check("orbit segments", err, errlen);
 }

@@ -58,6 +58,11 @@ int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GL
              const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
              char *err, size_t errlen);
 
+/* One pass that moves the rays (integrate, orbit): reads the current position, velocity and hit,
+ * writes the next position (keeping the segment's start) and velocity. */
+int pass_move_rays(struct renderer *r, const struct stage_program *sp, int segment_start, set_uniforms_fn set_uniforms,
+                   const void *arg, char *err, size_t errlen);
+
 void model_set_uniforms(GLuint program, const struct model *m);
 void bounds_set_uniforms(GLuint program, const struct scene *s);
 void uniform_vec3(GLuint program, const char *name, vec3d v);

@@ -26,6 +26,17 @@ check "no overwrite" 2 "--out: refusing to replace" -- $BT render --scene $S --s
 check "render osmesa" 0 "on osmesa" -- $BT render --scene $S --size 32x24 --backend osmesa --out "$TMP/b.png"
 check "trace json" 0 "\"outcome\": \"(object|sky)\"" -- $BT trace --scene $S --size 32x24 --pixel 16 12
 check "info" 0 "RGBA32F +works" -- $BT info
+# exact orbits: single pass on both back-ends, the multipass scheme on request, refusals where they
+# do not apply, integration where the GPU lacks 32-bit float textures
+B=assets/scenes/schwarzschild.scene
+check "orbit table egl" 0 "2 passes \(single pass\)" -- $BT render --scene $B --size 32x24 --backend egl --out "$TMP/o1.png"
+check "orbit table osmesa" 0 "on osmesa.*\(single pass\)" -- $BT render --scene $B --size 32x24 --backend osmesa --out "$TMP/o2.png"
+check "orbit table multipass" 0 "\(multipass\)" -- $BT render --scene $B --size 32x24 --set render.pipeline=multipass --out "$TMP/o3.png"
+check "orbit table, other model" 2 "orbit_table follows the exact orbits of Schwarzschild space" -- $BT render --scene assets/scenes/lorenz.scene --set render.method=orbit_table --out "$TMP/o4.png"
+check "single pass needs orbits" 2 "render.pipeline = single .* needs render.method = orbit_table" -- $BT render --scene $S --set render.pipeline=single --out "$TMP/o5.png"
+check "orbit table, adaptive" 2 "step_control must be fixed" -- $BT render --scene $B --set render.step_control=doubling --out "$TMP/o6.png"
+check "orbit table, fp16 forced" 2 "orbit_table needs 32-bit float textures" -- $BT render --scene $B --size 32x24 --precision fp16 --out "$TMP/o7.png"
+check "orbit table on gles2" 0 "integrated with rk4 instead" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT render --scene $B --size 32x24 --backend egl --out "$TMP/o8.png"
 # a GLES 2.0 device: no sized float formats, only half floats; fp32 forced is a clear error
 check "gles2 info" 0 "render path: +fp16" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT info --backend egl
 check "gles2 render" 0 "fp16.*reduced accuracy" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT render --scene $S --size 32x24 --backend egl --out "$TMP/c.png"
