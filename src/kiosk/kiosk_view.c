@@ -66,7 +66,7 @@ void kiosk_preview_scene(const struct scene *full, const struct kiosk_main *k, s
         out->render.segments = (full->render.segments + fewer - 1) / fewer;
     }
     if (full->render.method == METHOD_ORBIT_TABLE) {
-        /* exact orbits need no steps: the preview takes a coarse table, built in about 10 ms for
+        /* exact orbits need no steps: the preview takes a coarse table, cheap to build again at
          * every turn of the mass knob, and chords PREVIEW_CHORD_FACTOR times as far from the orbit */
         out->render.orbit_rows = full->render.orbit_rows < PREVIEW_ORBIT_ROWS ? full->render.orbit_rows : PREVIEW_ORBIT_ROWS;
         out->render.orbit_columns =
