@@ -15,9 +15,10 @@ const float CODE_FAILED = -4.0;        // the integration produced a non-finite 
 // - an expression with a literal constant written inside a branch of ?: or if is evaluated
 //   at 16-bit precision: compute it into a named local first, then select;
 // - constant expressions such as 7.0 / 9.0 fold at 16-bit precision: write the literal;
-// - a value kept from inside a loop that breaks early (the single pass, stage_orbit_frame.glsl)
-//   can come out of it at 16-bit precision: keep the loop's inputs (fraction s, u, du/ds) and
-//   compute the outputs (end point, tangent) again after the loop;
+// - a value assigned in the turn of a loop that breaks in that same turn can come out of it at
+//   16-bit precision: break at the top of the next turn instead (stage_frame.glsl), or keep the
+//   loop's inputs and compute the outputs again after it (stage_orbit_frame.glsl);
+// - int is mediump by default, kept in 16 bits: a loop counter bound beyond 32767 is highp;
 // - Mesa's atan is off by up to 3.3e-6 rad on llvmpipe: orbit_table.glsl has an accurate one.
 
 uniform vec2 u_inv_size;               // 1 / ray-state texture size

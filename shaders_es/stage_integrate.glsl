@@ -1,9 +1,11 @@
 // Stage 2, ray integration (paper sections 3.2 and 4.2): STEPS_PER_PASS steps of eq. (1) unrolled
 // in one shader, of fixed size or adaptive (the ray's step lives in velocity.w). A ray stops moving once it has a hit, has left the bounding sphere, has been
 // captured, or its state stopped being finite; the last finite state is kept.
+#ifndef SINGLE_PASS
 uniform sampler2D u_ray_position;
 uniform sampler2D u_ray_velocity;
 uniform sampler2D u_hit;
+#endif
 uniform vec3 u_bound_center;
 uniform float u_bound_radius2;        // squared radius of the bounding sphere
 uniform vec3 u_capture_center;
@@ -138,16 +140,12 @@ void controlled_step(vec3 x, vec3 v, float h, out vec3 x1, out vec3 v1, out bool
 }
 #endif
 
-// The ray state is updated here, in main, with selects: see the precision note in common.glsl.
-void main()
+// One pass's worth of the ray's motion: STEPS_PER_PASS steps from (x, v) with step h, or flat
+// space's single straight segment; the ray state is updated with selects (see the precision note
+// in common.glsl). The integration stage runs it once a pass; the single pass
+// (stage_frame.glsl) runs it steps_per_segment / STEPS_PER_PASS times a segment, the same arithmetic.
+void integrate_pass(inout vec3 x, inout vec3 v, inout float steps, inout float h, bool running)
 {
-    vec4 position = fetch(u_ray_position);
-    vec4 velocity = fetch(u_ray_velocity);
-    vec3 x = position.xyz;
-    vec3 v = velocity.xyz;
-    float steps = position.w;
-    float h = velocity.w;
-    bool running = fetch(u_hit).w >= NO_HIT && steps >= 0.0 && travelling(x);
 #ifdef MODEL_FLAT
     // Flat space is not integrated: one straight segment to where the ray leaves the bounding sphere.
     vec3 d = normalize(v);
@@ -177,6 +175,20 @@ void main()
         running = running && ok && travelling(x);
     }
 #endif
+}
+
+#ifndef SINGLE_PASS
+void main()
+{
+    vec4 position = fetch(u_ray_position);
+    vec4 velocity = fetch(u_ray_velocity);
+    vec3 x = position.xyz;
+    vec3 v = velocity.xyz;
+    float steps = position.w;
+    float h = velocity.w;
+    bool running = fetch(u_hit).w >= NO_HIT && steps >= 0.0 && travelling(x);
+    integrate_pass(x, v, steps, h, running);
     WRITE_TARGET0(vec4(x, steps));
     WRITE_TARGET1(vec4(v, h));
 }
+#endif

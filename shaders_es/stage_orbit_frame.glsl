@@ -3,7 +3,7 @@
 // chord (intersect_chord, as the intersection stage) and ends at the first hit, at the horizon or
 // where it leaves the bounding sphere (as the termination stage). It writes what the multipass
 // scheme leaves in the result textures: image and velocity, all the sky stage needs
-// (ORBIT_FRAME_STATE undefined), or hit and position (ORBIT_FRAME_STATE 1), only when they are
+// (FRAME_STATE undefined), or hit and position (FRAME_STATE 1), only when they are
 // read. MAX_SEGMENTS is the scene's render.max_chords.
 uniform vec3 u_capture_center;
 uniform float u_capture_radius2;
@@ -61,7 +61,7 @@ void main()
     bool found = best.slot >= 0.0;
     vec4 end_hit = vec4(end, end_key);
     vec4 end_image = vec4(0.0, 0.0, 0.0, code);
-#ifdef ORBIT_FRAME_STATE
+#ifdef FRAME_STATE
     WRITE_TARGET0(found ? new_hit : end_hit);
     WRITE_TARGET1(vec4(end, steps));
 #else

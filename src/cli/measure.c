@@ -36,8 +36,8 @@ int measure_gpu(const struct scene *s, const char *backend, struct measured *m, 
     m->seconds = res.seconds;
     m->work = res.passes;
     m->nonfinite = count_nonfinite(&res);
-    snprintf(m->how, sizeof m->how, "%s on %s (%s), %.3f s, %ld passes (%s)", info.path_description, info.backend,
-             info.renderer, res.seconds, res.passes, info.pipeline);
+    snprintf(m->how, sizeof m->how, "%s on %s (%s), %.3f s, %ld passes (%s: %s)", info.path_description,
+             info.backend, info.renderer, res.seconds, res.passes, info.pipeline, info.pipeline_why);
     render_result_free(&res);
     return 0;
 }

@@ -249,6 +249,14 @@ int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, char *err, si
     copy_string(c->vendor, sizeof c->vendor, GL_VENDOR);
     copy_string(c->glsl_version, sizeof c->glsl_version, GL_SHADING_LANGUAGE_VERSION);
     parse_version(c);
+    /* GLSL ES 3.00 (and desktop GLSL) runs loops of any length; GLSL ES 1.00's appendix A lets a
+     * GLES2 device refuse or cut a long fragment loop, so the single pass is not taken there
+     * unless forced (render.pipeline = single) */
+    c->long_loops = !c->is_es || c->major >= 3;
+    snprintf(c->long_loops_why, sizeof c->long_loops_why,
+             c->long_loops ? "%s %d.%d runs fragment-shader loops of any length"
+                           : "%s %d.%d need not run long fragment-shader loops (GLSL ES 1.00, appendix A)",
+             c->is_es ? "OpenGL ES" : "OpenGL", c->major, c->minor);
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &c->max_texture_size);
     c->max_draw_buffers = 1;
     if (!c->is_es || c->major >= 3 || gl_has_extension("GL_EXT_draw_buffers"))

@@ -27,6 +27,8 @@ struct gl_caps {
     int max_fragment_uniform_vectors, max_texture_units;
     int mrt_works;
     char mrt_why[160];
+    int long_loops;                  /* fragment loops of any length: the single-pass frame */
+    char long_loops_why[160];
     int n_formats;
     struct float_format formats[CAPS_MAX_FORMATS];
     struct shader_target shader;     /* preamble settings for this context */

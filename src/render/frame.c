@@ -24,8 +24,10 @@ int render_frame(const struct scene *s, const char *backend, struct render_resul
         if (renderer_run(r, 0, 0, s->render.width, s->render.height, NULL, NULL, err, errlen) == 0 &&
             renderer_read(r, out, with_state, err, errlen) == 0)
             rc = 0;
-        if (info)
+        if (info) {
             snprintf(info->pipeline, sizeof info->pipeline, "%s", renderer_pipeline(r));
+            snprintf(info->pipeline_why, sizeof info->pipeline_why, "%s", renderer_pipeline_why(r));
+        }
         renderer_destroy(r);
     }
     gl_context_destroy(ctx);

@@ -10,6 +10,7 @@ struct frame_info {
     char path_description[256];
     char renderer[160];
     char pipeline[16];        /* "multipass" or "single pass" */
+    char pipeline_why[200];   /* why that one (renderer_pipeline_why) */
 };
 
 /* Returns 0, or -1 with err; *bad_input tells a user error (exit 2) from a runtime failure (1). */

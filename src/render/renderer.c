@@ -99,8 +99,17 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
         return NULL;
     }
     program_cache_init(&r->programs, &r->caps.shader, r->path.mrt);
-    if (renderer_follow_scene(r, err, errlen) != 0 || textures_load(r, err, errlen) != 0 ||
-        polygons_load(r, err, errlen) != 0) {
+    if (renderer_follow_scene(r, err, errlen) != 0) {
+        renderer_destroy(r);
+        return NULL;
+    }
+    struct object_batch all;
+    if (scene->render.pipeline == PIPELINE_SINGLE && frame_batch(r, &all, err, errlen) != 0) {
+        *bad_input = 1;      /* asked for, and refused before any work */
+        renderer_destroy(r);
+        return NULL;
+    }
+    if (textures_load(r, err, errlen) != 0 || polygons_load(r, err, errlen) != 0) {
         renderer_destroy(r);
         return NULL;
     }
@@ -110,6 +119,7 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
 const struct render_path *renderer_path(const struct renderer *r) { return &r->path; }
 const struct gl_caps *renderer_caps(const struct renderer *r) { return &r->caps; }
 const char *renderer_pipeline(const struct renderer *r) { return r->pipeline_name ? r->pipeline_name : "multipass"; }
+const char *renderer_pipeline_why(const struct renderer *r) { return r->pipeline_why; }
 
 int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int height, segment_hook hook,
                  void *hook_arg, char *err, size_t errlen)
@@ -133,9 +143,9 @@ int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int 
     glDisable(GL_DEPTH_TEST);
     r->origin_x = origin_x;
     r->origin_y = origin_y;
-    if (!hook && orbit_frame_applies(r)) {
-        /* the whole ray in one pass; a per-segment hook (trace) needs the multipass scheme */
-        if (orbit_prepare(r, err, errlen) != 0 || stage_orbit_frame(r, 0, err, errlen) != 0 ||
+    if (frame_choose(r, hook != NULL, r->pipeline_why, sizeof r->pipeline_why)) {
+        /* the whole ray in one pass */
+        if ((r->exact_orbits && orbit_prepare(r, err, errlen) != 0) || stage_frame(r, 0, err, errlen) != 0 ||
             stage_sky(r, err, errlen) != 0)
             return -1;
         r->pipeline_name = "single pass";
@@ -263,7 +273,7 @@ int renderer_complete_state(struct renderer *r, char *err, size_t errlen)
         return 0;
     r->state_pending = 0;
     glDisable(GL_DEPTH_TEST);
-    return stage_orbit_frame(r, 1, err, errlen);
+    return stage_frame(r, 1, err, errlen);
 }
 
 void renderer_textures(const struct renderer *r, struct renderer_textures *out)

@@ -55,6 +55,9 @@ void renderer_textures(const struct renderer *r, struct renderer_textures *out);
 int renderer_complete_state(struct renderer *r, char *err, size_t errlen);
 /* "multipass" or "single pass": how the last run was scheduled. */
 const char *renderer_pipeline(const struct renderer *r);
+/* Why the last run took that pipeline, in words ("render.pipeline = multipass", "OpenGL ES 3.2
+ * runs fragment-shader loops of any length", ...). */
+const char *renderer_pipeline_why(const struct renderer *r);
 void renderer_destroy(struct renderer *r);
 /* render.method = orbit_table: the orbit table this scene needs now (its mass, the camera's radius,
  * the bounding sphere, the chord tolerance and the objects' distances from the mass). */

@@ -3,9 +3,9 @@
 #include "render/stages.h"
 #include <stdio.h>
 
-static void set_integrate(GLuint p, const void *arg)
+void integrate_set_uniforms(GLuint p, const void *scene)
 {
-    const struct scene *s = arg;
+    const struct scene *s = scene;
     const struct render_settings *r = &s->render;
     model_set_uniforms(p, &s->model);
     bounds_set_uniforms(p, s);
@@ -26,7 +26,7 @@ int stage_integrate(struct renderer *r, int segment_start, char *err, size_t err
         return -1;
     int passes = r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass;
     for (int k = 0; k < passes; k++)
-        if (pass_move_rays(r, sp, segment_start, set_integrate, s, err, errlen) != 0)
+        if (pass_move_rays(r, sp, segment_start, integrate_set_uniforms, s, err, errlen) != 0)
             return -1;
     return gl_check("ray integration", err, errlen);
 }

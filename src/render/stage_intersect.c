@@ -14,6 +14,8 @@
 #define RESERVED_UNIFORM_VECS (20 + 3 * SCENE_MAX_LIGHTS)
 /* ... and the orbit table's (orbit_table.glsl), where hits are found again on the orbit */
 #define ORBIT_UNIFORM_VECS 16
+/* ... and the single pass's, for the integration (model, step control, bounds, rounded up) */
+#define FRAME_UNIFORM_VECS 16
 /* texture units 0-3 carry the ray state, the black-body table UNIT_BLACKBODY (4); object textures
  * start here */
 #define FIRST_OBJECT_UNIT 5
@@ -217,22 +219,38 @@ int object_batch_all(const struct renderer *r, struct object_batch *b)
     memset(b, 0, sizeof *b);
     b->r = r;
     int textured = 0;
+    if (s->n_objects > frame_object_limit(r))
+        return -1;
     for (int i = 0; i < s->n_objects; i++) {
         if (polygons_draw_object(r, i))
             return -1;
         textured += s->objects[i].material.texture >= 0;
         b->object[b->count++] = i;
     }
-    return s->n_objects <= intersect_batch_limit(r) && textured <= object_texture_units(r) ? 0 : -1;
+    return textured <= object_texture_units(r) ? 0 : -1;
+}
+
+/* Objects one pass can hold on this GPU, whatever render.batch asks: its fragment uniform vectors
+ * after the pass's own (the single pass adds the integration's: model, step control, bounds). */
+static int pass_capacity(const struct renderer *r, int single_pass)
+{
+    int per_object = GEOMETRY_VECS + MATERIAL_VECS + (scene_has_moving_objects(r->scene) ? MOTION_VECS : 0);
+    int reserved = RESERVED_UNIFORM_VECS + (r->exact_orbits ? ORBIT_UNIFORM_VECS : 0) +
+                   (single_pass ? FRAME_UNIFORM_VECS : 0);
+    int by_uniforms = (r->caps.max_fragment_uniform_vectors - reserved) / per_object;
+    int limit = by_uniforms < SCENE_MAX_BATCH ? by_uniforms : SCENE_MAX_BATCH;
+    return limit < 1 ? 1 : limit;
 }
 
 int intersect_batch_limit(const struct renderer *r)
 {
-    int per_object = GEOMETRY_VECS + MATERIAL_VECS + (scene_has_moving_objects(r->scene) ? MOTION_VECS : 0);
-    int reserved = RESERVED_UNIFORM_VECS + (r->exact_orbits ? ORBIT_UNIFORM_VECS : 0);
-    int by_uniforms = (r->caps.max_fragment_uniform_vectors - reserved) / per_object;
-    int limit = r->scene->render.batch < by_uniforms ? r->scene->render.batch : by_uniforms;
-    return limit < 1 ? 1 : limit;
+    int capacity = pass_capacity(r, 0);
+    return r->scene->render.batch < capacity ? r->scene->render.batch : capacity;
+}
+
+int frame_object_limit(const struct renderer *r)
+{
+    return pass_capacity(r, 1);
 }
 
 static int intersect_batch(struct renderer *r, const struct object_batch *b, int segment_start, char *err, size_t errlen)

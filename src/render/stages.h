@@ -35,6 +35,7 @@ struct renderer {
     int exact_orbits;             /* rays follow tabulated exact orbits (not straight, orbit_table) */
     int image_width, image_height;
     const char *pipeline_name;    /* of the last run: "multipass" or "single pass" */
+    char pipeline_why[200];       /* why the last run took it */
     int state_pending;            /* single pass: hit and position not yet written */
     long passes;
     double seconds;
@@ -78,6 +79,8 @@ void textures_release(struct renderer *r);
 
 int stage_setup(struct renderer *r, char *err, size_t errlen);
 int stage_integrate(struct renderer *r, int segment_start, char *err, size_t errlen);
+/* The integration stage's uniforms (model, bounds, step control): a set_uniforms_fn of a scene. */
+void integrate_set_uniforms(GLuint p, const void *scene);
 /* render.method = orbit_table (stage_orbit.c): the table for the scene as it is now, built and
  * uploaded when its parameters changed; one pass per segment along the exact orbits. */
 int orbit_prepare(struct renderer *r, char *err, size_t errlen);
@@ -85,20 +88,17 @@ void orbit_release(struct renderer *r);
 int stage_orbit(struct renderer *r, int segment, int segment_start, char *err, size_t errlen);
 /* The orbit stage's uniforms (table, camera, bounds, the pixel's axis; segment for the orbit stage). */
 void orbit_set_uniforms(GLuint p, const struct renderer *r, int segment);
-/* render.pipeline = single (stage_orbit_frame.c): 1 when this frame runs in one pass (the method
- * is orbit_table, every object fits one intersection batch, and single or auto is asked for);
- * the pass itself: image and velocity (state 0, what the sky stage needs), or hit and position
- * (state 1, for the read-back of the ray state). */
-int orbit_frame_applies(const struct renderer *r);
-int stage_orbit_frame(struct renderer *r, int state, char *err, size_t errlen);
 /* Every object against the current segment, render.batch objects per pass. */
 int stage_intersect_all(struct renderer *r, int segment, int segment_start, char *err, size_t errlen);
 /* Objects per intersection pass on this GPU: render.batch, bounded by its uniform vectors. */
 int intersect_batch_limit(const struct renderer *r);
+/* Objects the single pass can test on this GPU (its uniform vectors; render.batch does not apply). */
+int frame_object_limit(const struct renderer *r);
 /* The objects one intersection pass tests (stage_intersect.c), for every stage that tests objects:
  * its variant defines, its primitives' shader files (appended to files from index n; returns the
- * new count), its uniforms (a set_uniforms_fn), and a batch of every object of the scene (-1 where
- * they do not fit one pass on this GPU, or the polygon method draws one). */
+ * new count), its uniforms (a set_uniforms_fn), and a batch of every object of the scene for the
+ * single pass (-1 where they do not fit one pass on this GPU, frame_object_limit, or the polygon
+ * method draws one). */
 struct object_batch {
     const struct renderer *r;
     int object[SCENE_MAX_BATCH];  /* scene indices, in scene order */
@@ -109,6 +109,15 @@ int object_batch_defines(const struct object_batch *b, char *out, size_t len);
 int object_batch_files(const struct object_batch *b, const char **files, int n);
 void object_batch_set_uniforms(GLuint p, const void *batch);
 int object_batch_all(const struct renderer *r, struct object_batch *b);
+/* render.pipeline (stage_frame.c): 1 when this frame runs in one pass, with why in words (the
+ * choice forced, or auto: this GPU runs long fragment loops, every object fits one intersection
+ * batch and no hook reads the rays back after every segment); 0 for the multipass scheme, with
+ * why. The pass itself: image and velocity (state 0, what the sky stage needs), or hit and
+ * position (state 1, for the read-back of the ray state). */
+int frame_choose(const struct renderer *r, int per_segment_hook, char *why, size_t whylen);
+int stage_frame(struct renderer *r, int state, char *err, size_t errlen);
+/* Every object of the scene as the single pass's batch; -1 with err saying why they do not fit. */
+int frame_batch(const struct renderer *r, struct object_batch *b, char *err, size_t errlen);
 int stage_terminate(struct renderer *r, int segment, char *err, size_t errlen);
 /* Retire finished rays (all: every ray) into the result textures; mark them for early-z. */
 int stage_retire(struct renderer *r, int all, char *err, size_t errlen);

@@ -75,9 +75,6 @@ static int validate_render(const struct scene *s, struct scene_error *err)
     if (r->method == METHOD_ORBIT_TABLE && r->step_control != STEP_FIXED)
         return invalid(s, err, "render.method = orbit_table takes no steps, so render.step_control must be fixed; "
                        "its chords are set by render.chord_tolerance");
-    if (r->pipeline == PIPELINE_SINGLE && r->method != METHOD_ORBIT_TABLE)
-        return invalid(s, err, "render.pipeline = single follows each ray in one pass along its tabulated orbit: it "
-                       "needs render.method = orbit_table (method %s runs the multipass scheme)", method_name(r->method));
     double lo = render_step_min(r), hi = render_step_max(r);
     if (r->step_control != STEP_FIXED && !(lo <= r->step_size && r->step_size <= hi))
         return invalid(s, err, "render.step (%g) must lie within render.step_min (%g) and render.step_max (%g)",

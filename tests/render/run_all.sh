@@ -29,11 +29,18 @@ check "info" 0 "RGBA32F +works" -- $BT info
 # exact orbits: single pass on both back-ends, the multipass scheme on request, refusals where they
 # do not apply, integration where the GPU lacks 32-bit float textures
 B=assets/scenes/schwarzschild.scene
-check "orbit table egl" 0 "2 passes \(single pass\)" -- $BT render --scene $B --size 32x24 --backend egl --out "$TMP/o1.png"
-check "orbit table osmesa" 0 "on osmesa.*\(single pass\)" -- $BT render --scene $B --size 32x24 --backend osmesa --out "$TMP/o2.png"
-check "orbit table multipass" 0 "\(multipass\)" -- $BT render --scene $B --size 32x24 --set render.pipeline=multipass --out "$TMP/o3.png"
+check "orbit table egl" 0 "2 passes \(single pass: OpenGL ES 3.2 runs" -- $BT render --scene $B --size 32x24 --backend egl --out "$TMP/o1.png"
+check "orbit table osmesa" 0 "on osmesa.*\(single pass: " -- $BT render --scene $B --size 32x24 --backend osmesa --out "$TMP/o2.png"
+check "orbit table multipass" 0 "\(multipass: render.pipeline = multipass\)" -- $BT render --scene $B --size 32x24 --set render.pipeline=multipass --out "$TMP/o3.png"
 check "orbit table, other model" 2 "orbit_table follows the exact orbits of Schwarzschild space" -- $BT render --scene assets/scenes/lorenz.scene --set render.method=orbit_table --out "$TMP/o4.png"
-check "single pass needs orbits" 2 "render.pipeline = single .* needs render.method = orbit_table" -- $BT render --scene $S --set render.pipeline=single --out "$TMP/o5.png"
+# integrated rays: the single pass where the GPU runs long loops, the multipass scheme on a GLES2
+# device unless forced, and always for trace, which reads every segment back
+L=assets/scenes/lorenz.scene
+check "integrated single pass egl" 0 "2 passes \(single pass: OpenGL ES 3.2 runs" -- $BT render --scene $L --size 32x24 --backend egl --out "$TMP/o5.png"
+check "integrated single pass osmesa" 0 "on osmesa.* 2 passes \(single pass: " -- $BT render --scene $L --size 32x24 --backend osmesa --out "$TMP/o9.png"
+check "gles2 multipass" 0 "\(multipass: OpenGL ES 2.0 need not run long fragment-shader loops" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT render --scene $L --size 32x24 --backend egl --out "$TMP/o10.png"
+check "gles2 single forced" 0 "2 passes \(single pass: render.pipeline = single\)" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT render --scene $L --size 32x24 --backend egl --set render.pipeline=single --out "$TMP/o11.png"
+check "trace runs multipass" 0 "trace runs the multipass scheme" -- $BT trace --scene $L --size 32x24 --pixel 16 12 --set render.pipeline=single
 check "orbit table, adaptive" 2 "step_control must be fixed" -- $BT render --scene $B --set render.step_control=doubling --out "$TMP/o6.png"
 check "orbit table, fp16 forced" 2 "orbit_table needs 32-bit float textures" -- $BT render --scene $B --size 32x24 --precision fp16 --out "$TMP/o7.png"
 check "orbit table on gles2" 0 "integrated with rk4 instead" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT render --scene $B --size 32x24 --backend egl --out "$TMP/o8.png"
@@ -45,8 +52,8 @@ check "gles2 fp32 forced" 2 "fp32.*RGBA/FLOAT" -- env MESA_GLES_VERSION_OVERRIDE
 # fails the probe's read-back): auto must fall back to 16-bit floats, proved, not assumed
 check "fp32 targets missing" 0 "fp16(\+mrt)?: RGBA16F.*reduced accuracy" -- env MESA_EXTENSION_OVERRIDE="-GL_EXT_color_buffer_float" $BT render --scene $S --size 32x24 --backend egl --out "$TMP/f.png"
 # a broken shader directory: clear message naming the file and line, exit 1
-mkdir -p "$TMP/shaders" && cp shaders_es/*.glsl "$TMP/shaders/" && echo "this is not glsl" >> "$TMP/shaders/stage_setup.glsl"
-check "broken shader" 1 "stage_setup.glsl:[0-9]+" -- $BT render --scene $S --size 32x24 --shader-dir "$TMP/shaders" --out "$TMP/g.png"
+mkdir -p "$TMP/shaders" && cp shaders_es/*.glsl "$TMP/shaders/" && echo "this is not glsl" >> "$TMP/shaders/stage_integrate.glsl"
+check "broken shader" 1 "stage_integrate.glsl:[0-9]+" -- $BT render --scene $S --size 32x24 --shader-dir "$TMP/shaders" --out "$TMP/g.png"
 # the CPU reference: same outputs as the GPU engine; on the flat test scene both give the same outcomes
 check "render cpu" 0 "CPU reference" -- $BT render --scene $S --size 32x24 --engine cpu --out "$TMP/cpu.png" --dump "$TMP/cpu.dump"
 check "render gpu dump" 0 "hit an object" -- $BT render --scene $S --size 32x24 --out "$TMP/gpu.png" --dump "$TMP/gpu.dump"

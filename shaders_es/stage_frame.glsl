@@ -1,0 +1,67 @@
+// The whole frame in one pass (render.pipeline = single) for integrated rays: each pixel sets its
+// ray up (as the setup stage), integrates it segment by segment (integrate_pass, as the
+// integration stage, PASSES_PER_SEGMENT times a segment), tests every object of the scene against
+// each segment's chord (intersect_chord, as the intersection stage) and ends at the first hit or
+// where the segment's end left the bounding sphere, fell into the horizon or stopped being finite
+// (as the termination stage). The same functions, in the same order, on the same 32-bit values,
+// so the rays are the multipass scheme's bit for bit (tests/unit/test_acceleration.c). It writes
+// what that scheme leaves in the result textures: image and velocity, all the sky stage needs
+// (FRAME_STATE undefined), or hit and position (FRAME_STATE 1), only when they are read.
+uniform float u_step_size;
+uniform float u_segments;             // render.segments (1 for straight rays)
+
+// the loop's constant bound, SCENE_MAX_SEGMENTS; the scene's own count stops it (u_segments). Its
+// counter is highp: GLSL ES's default int is mediump, which Mesa keeps in 16 bits, and a bound
+// beyond 32767 wrapped there would end the loop before its first turn.
+const highp int FRAME_MAX_SEGMENTS = 100000;
+
+void main()
+{
+    vec3 view = observer_scene_direction(observer_view_direction());
+    vec3 x = u_camera_position;
+    vec3 v = model_initial_velocity(u_camera_position, view);
+    float steps = 0.0;
+    bool stop = false;
+    float h = u_step_size;
+    vec3 a = x;
+    float code = CODE_UNFINISHED;
+    float end_key = NO_HIT;
+    candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec2(0.0));
+    for (highp int i = 0; i < FRAME_MAX_SEGMENTS; i++) {
+        float k = float(i);
+        if (k >= u_segments || stop)
+            break;
+        a = x;
+        for (int p = 0; p < PASSES_PER_SEGMENT; p++) {
+            bool running = steps >= 0.0 && travelling(x);
+            integrate_pass(x, v, steps, h, running);
+        }
+        intersect_chord(a, x, k, best);
+        vec3 from_bound = x - u_bound_center;
+        vec3 from_mass = x - u_capture_center;
+        bool captured = u_capture_radius2 > 0.0 && dot(from_mass, from_mass) <= u_capture_radius2;
+        bool outside = dot(from_bound, from_bound) >= u_bound_radius2;
+        float end_code = steps < 0.0 ? CODE_FAILED : captured ? CODE_CAPTURED : CODE_SKY;
+        bool found = best.slot >= 0.0;
+        bool ends = !found && (steps < 0.0 || captured || outside);
+        float next_key = k + 1.0;
+        code = ends ? end_code : code;
+        end_key = ends ? next_key : end_key;
+        stop = found || ends;
+    }
+    vec4 new_hit, new_image;
+    intersect_shade(best, a, x, new_hit, new_image);
+    bool found = best.slot >= 0.0;
+    // a ray still travelling keeps the "no hit yet" of the setup stage's fill
+    vec4 ended_hit = vec4(x, end_key);
+    vec4 no_hit = vec4(0.0, 0.0, 0.0, NO_HIT);
+    vec4 end_hit = end_key < NO_HIT ? ended_hit : no_hit;
+    vec4 end_image = vec4(0.0, 0.0, 0.0, code);
+#ifdef FRAME_STATE
+    WRITE_TARGET0(found ? new_hit : end_hit);
+    WRITE_TARGET1(vec4(x, steps));
+#else
+    WRITE_TARGET0(found ? new_image : end_image);
+    WRITE_TARGET1(vec4(v, h));
+#endif
+}

@@ -1,0 +1,117 @@
+/* render.pipeline = single: the whole frame in one fragment-shader loop per ray instead of four or
+ * more passes per segment. Integrated rays run shaders_es/stage_frame.glsl, rays on exact orbits
+ * (render.method = orbit_table) shaders_es/stage_orbit_frame.glsl. Both call the very shader
+ * functions of the setup, integration (or orbit), intersection and termination stages, and write
+ * the result textures of the multipass scheme, two colour targets a pass as every stage here:
+ * image and velocity, which the sky stage needs, and on demand (a dump, trace or the kiosk's
+ * pipeline view) hit and position in a second pass of the same loop. */
+#include "render/stages.h"
+#include <stdio.h>
+#include <string.h>
+
+int frame_choose(const struct renderer *r, int per_segment_hook, char *why, size_t whylen)
+{
+    const struct scene *s = r->scene;
+    struct object_batch b;
+    if (s->render.pipeline == PIPELINE_MULTIPASS) {
+        snprintf(why, whylen, "render.pipeline = multipass");
+        return 0;
+    }
+    if (per_segment_hook) {
+        snprintf(why, whylen, "the rays are read back after every segment");
+        return 0;
+    }
+    if (s->render.pipeline == PIPELINE_SINGLE) {
+        snprintf(why, whylen, "render.pipeline = single");
+        return 1;
+    }
+    if (!r->caps.long_loops) {
+        snprintf(why, whylen, "%s", r->caps.long_loops_why);
+        return 0;
+    }
+    if (object_batch_all(r, &b) != 0) {
+        snprintf(why, whylen, "the scene's objects do not fit one pass (at most %d here%s)",
+                 frame_object_limit(r), s->render.moving_objects == MOVING_POLYGONS ? ", or are drawn as polygons"
+                                                                                         : "");
+        return 0;
+    }
+    snprintf(why, whylen, "%s", r->caps.long_loops_why);
+    return 1;
+}
+
+int frame_batch(const struct renderer *r, struct object_batch *b, char *err, size_t errlen)
+{
+    if (object_batch_all(r, b) == 0)
+        return 0;
+    snprintf(err, errlen, "render.pipeline = single: the scene's %d objects do not fit one pass on this GPU "
+             "(at most %d, their textures within its texture units, none drawn as polygons); use "
+             "render.pipeline = multipass or auto", r->scene->n_objects, frame_object_limit(r));
+    return -1;
+}
+
+struct frame_args {
+    const struct renderer *r;
+    struct object_batch batch;
+};
+
+static void set_frame(GLuint p, const void *arg)
+{
+    const struct frame_args *a = arg;
+    const struct renderer *r = a->r;
+    object_batch_set_uniforms(p, &a->batch);
+    if (r->exact_orbits) {
+        orbit_set_uniforms(p, r, 0);
+        return;
+    }
+    integrate_set_uniforms(p, r->scene);
+    observer_set_uniforms(p, r);
+    uniform_float(p, "u_step_size", r->scene->render.step_size);
+    uniform_float(p, "u_segments", r->straight ? 1 : r->scene->render.segments);
+}
+
+int stage_frame(struct renderer *r, int state, char *err, size_t errlen)
+{
+    struct raystate *rs = &r->rs;
+    const struct scene *s = r->scene;
+    struct frame_args a = {.r = r};
+    if (frame_batch(r, &a.batch, err, errlen) != 0)
+        return -1;
+    char batch[1024];
+    if (a.batch.count > 0) {
+        if (object_batch_defines(&a.batch, batch, sizeof batch) != 0) {
+            snprintf(err, errlen, "internal: the defines of the single pass do not fit");
+            return -1;
+        }
+    } else {
+        /* nothing to meet: an empty batch of one slot keeps the shading code well-formed */
+        snprintf(batch, sizeof batch, "#define BATCH_SIZE 1\n#define LIGHT_COUNT %d\n#define BATCH_TESTS\n%s%s\n",
+                 s->n_lights, r->exact_orbits ? "#define ORBIT_HITS 1\n" : "", r->observer_defines);
+    }
+    const char *files[PRIM_COUNT + 10] = {"common.glsl", r->model_file};
+    int n = object_batch_files(&a.batch, files, 2);
+    files[n++] = "observer.glsl";
+    if (r->exact_orbits)
+        files[n++] = "orbit_table.glsl";
+    files[n++] = "shade.glsl";
+    files[n++] = "stage_intersect.glsl";
+    files[n++] = r->exact_orbits ? "stage_orbit_frame.glsl" : "stage_integrate.glsl";
+    if (!r->exact_orbits)
+        files[n++] = "stage_frame.glsl";
+    files[n] = NULL;
+    char defines[sizeof batch + sizeof r->model_defines + 128];
+    if (r->exact_orbits)
+        snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define MAX_SEGMENTS %d\n%s", r->model_defines,
+                 batch, s->render.max_chords, state ? "#define FRAME_STATE 1\n" : "");
+    else
+        snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define PASSES_PER_SEGMENT %d\n%s",
+                 r->model_defines, batch, r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass,
+                 state ? "#define FRAME_STATE 1\n" : "");
+    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, err, errlen);
+    if (!sp)
+        return -1;
+    GLuint out0 = state ? rs->result_hit : rs->result_image;
+    GLuint out1 = state ? rs->result_position : rs->result_velocity;
+    if (pass_run(r, sp, out0, out1, NULL, 0, set_frame, &a, err, errlen) != 0)
+        return -1;
+    return gl_check("the single-pass frame", err, errlen);
+}
