@@ -40,8 +40,9 @@ void bench_progress(struct bench *b, const char *fmt, ...) __attribute__((format
 int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_timing *t, struct dump *d, char *err,
                size_t errlen);
 
-/* Acceleration presets (the Table 1 columns). */
-enum bench_accel { ACCEL_NONE, ACCEL_PAPER, ACCEL_ALL, ACCEL_COUNT };
+/* Acceleration presets (the Table 1 columns): the paper's scheme without and with its techniques
+ * and with all of the multipass scheme's; then all of them in the single pass. */
+enum bench_accel { ACCEL_NONE, ACCEL_PAPER, ACCEL_ALL, ACCEL_SINGLE, ACCEL_COUNT };
 extern const char *const bench_accel_names[ACCEL_COUNT];
 void bench_apply_accel(struct scene *s, enum bench_accel a);
 
@@ -60,6 +61,8 @@ int bench_unrolling(struct bench *b, char *err, size_t errlen);
 int bench_batching(struct bench *b, char *err, size_t errlen);
 int bench_early_z(struct bench *b, char *err, size_t errlen);
 int bench_pareto(struct bench *b, char *err, size_t errlen);
+/* the paper's multipass scheme against the single pass, every model at its scene's own size */
+int bench_pipelines(struct bench *b, char *err, size_t errlen);
 /* configurations bench_pareto times in all (for the progress count) */
 extern const int bench_pareto_count;
 int bench_limit(struct bench *b, char *err, size_t errlen);

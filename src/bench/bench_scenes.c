@@ -5,7 +5,7 @@
 #include "bench/bench.h"
 #include "scene/scene_keys.h"
 
-const char *const bench_accel_names[ACCEL_COUNT] = {"none", "paper", "all"};
+const char *const bench_accel_names[ACCEL_COUNT] = {"none", "paper", "all", "single"};
 
 void bench_apply_accel(struct scene *s, enum bench_accel a)
 {
@@ -16,6 +16,7 @@ void bench_apply_accel(struct scene *s, enum bench_accel a)
     r->early_z = 0;
     r->step_control = STEP_FIXED;
     r->termination_interval = 1;
+    r->pipeline = PIPELINE_MULTIPASS;
     if (a == ACCEL_NONE)
         return;
     /* paper (section 4): early ray termination and step doubling. The tolerance is a hundredth
@@ -29,6 +30,10 @@ void bench_apply_accel(struct scene *s, enum bench_accel a)
     /* all: and the whole segment in one pass, every object in one pass */
     r->steps_per_pass = r->steps_per_segment <= SCENE_MAX_STEPS_PER_PASS ? r->steps_per_segment : 1;
     r->batch = SCENE_MAX_BATCH;
+    if (a == ACCEL_ALL)
+        return;
+    /* single: the same settings, the whole ray in one pass (early-z and batches do not apply) */
+    r->pipeline = PIPELINE_SINGLE;
 }
 
 int bench_load_scene(struct scene *s, const char *name, int w, int h, char *err, size_t errlen)

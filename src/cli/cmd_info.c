@@ -11,7 +11,7 @@ static void usage(FILE *out)
     fprintf(out, "usage: bentray info [--backend egl|osmesa|auto|all] [--shader-dir DIR]\n"
                  "Probe the headless GL back-ends and print their versions, renderer, the float\n"
                  "render-target formats that really work, MRT, fragment highp, and the render path\n"
-                 "bentray would choose. --backend all (the default) probes every back-end built in.\n");
+                 "and pipeline bentray would choose. --backend all (the default) probes every back-end built in.\n");
 }
 
 static void print_caps(const struct gl_caps *c)
@@ -34,6 +34,11 @@ static void print_caps(const struct gl_caps *c)
         printf("render path:     %s\n", path.description);
     else
         printf("render path:     none: %s\n", err);
+    if (c->long_loops)
+        printf("pipeline:        single pass where the scene's objects fit one pass, else multipass (%s)\n",
+               c->long_loops_why);
+    else
+        printf("pipeline:        multipass; the single pass only when forced (%s)\n", c->long_loops_why);
 }
 
 int cmd_info(int argc, char **argv)

@@ -48,6 +48,8 @@
     X(void, GenFramebuffers, (GLsizei n, GLuint *framebuffers)) \
     X(void, GenRenderbuffers, (GLsizei n, GLuint *renderbuffers)) \
     X(void, GenTextures, (GLsizei n, GLuint *textures)) \
+    X(void, GetActiveUniform, (GLuint program, GLuint index, GLsizei bufSize, GLsizei *length, GLint *size, \
+                               GLenum *type, GLchar *name)) \
     X(GLenum, GetError, (void)) \
     X(void, GetIntegerv, (GLenum pname, GLint *data)) \
     X(void, GetProgramInfoLog, (GLuint program, GLsizei bufSize, GLsizei *length, GLchar *infoLog)) \
@@ -123,6 +125,7 @@ const char *gl_api_load(void *(*get_proc)(const char *name));
 #define glGenFramebuffers bt_gl.GenFramebuffers
 #define glGenRenderbuffers bt_gl.GenRenderbuffers
 #define glGenTextures bt_gl.GenTextures
+#define glGetActiveUniform bt_gl.GetActiveUniform
 #define glGetError bt_gl.GetError
 #define glGetIntegerv bt_gl.GetIntegerv
 #define glGetProgramInfoLog bt_gl.GetProgramInfoLog

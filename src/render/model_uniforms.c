@@ -2,22 +2,22 @@
  * knob turns); the model's type is a compile-time choice (see renderer.c). */
 #include "render/stages.h"
 
-void model_set_uniforms(GLuint p, const struct model *m)
+void model_set_uniforms(const struct program_uniforms *p, const struct model *m)
 {
     uniform_vec3(p, "u_model_center", m->center);
     uniform_float(p, "u_model_scale", m->scale);
     uniform_float(p, "u_model_strength", m->strength);
-    glUniform3f(glGetUniformLocation(p, "u_lorenz"), (float)m->sigma, (float)m->rho, (float)m->beta);
-    glUniform3f(glGetUniformLocation(p, "u_rossler"), (float)m->ross_a, (float)m->ross_b, (float)m->ross_c);
-    glUniform2f(glGetUniformLocation(p, "u_yukawa"), (float)m->zeta, (float)m->mu);
+    glUniform3f(program_uniform(p, "u_lorenz"), (float)m->sigma, (float)m->rho, (float)m->beta);
+    glUniform3f(program_uniform(p, "u_rossler"), (float)m->ross_a, (float)m->ross_b, (float)m->ross_c);
+    glUniform2f(program_uniform(p, "u_yukawa"), (float)m->zeta, (float)m->mu);
     uniform_float(p, "u_poly_radius", m->radius);
-    glUniform4f(glGetUniformLocation(p, "u_refraction"), (float)m->amplitude, (float)m->shell_radius,
+    glUniform4f(program_uniform(p, "u_refraction"), (float)m->amplitude, (float)m->shell_radius,
                 (float)m->shell_width, (float)m->noise_amplitude);
     uniform_float(p, "u_noise_frequency", m->noise_frequency);
     uniform_float(p, "u_mass", m->mass);
 }
 
-void bounds_set_uniforms(GLuint p, const struct scene *s)
+void bounds_set_uniforms(const struct program_uniforms *p, const struct scene *s)
 {
     double capture = model_capture_radius(&s->model);
     uniform_vec3(p, "u_bound_center", s->render.bound_center);

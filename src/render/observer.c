@@ -20,7 +20,7 @@ static double gravity_mass(const struct scene *s)
     return s->model.type == MODEL_SCHWARZSCHILD ? s->model.mass : 0.0;
 }
 
-void observer_set_uniforms(GLuint p, const struct renderer *r)
+void observer_set_uniforms(const struct program_uniforms *p, const struct renderer *r)
 {
     const struct scene *s = r->scene;
     vec3d forward = v3_normalize(v3_sub(s->camera.look_at, s->camera.position));
@@ -32,8 +32,8 @@ void observer_set_uniforms(GLuint p, const struct renderer *r)
     uniform_vec3(p, "u_camera_forward", forward);
     uniform_vec3(p, "u_camera_right", v3_scale(right, tan_half * aspect));
     uniform_vec3(p, "u_camera_up", v3_scale(up, tan_half));
-    glUniform2f(glGetUniformLocation(p, "u_pixel_origin"), (float)r->origin_x, (float)r->origin_y);
-    glUniform2f(glGetUniformLocation(p, "u_image_size"), (float)s->render.width, (float)s->render.height);
+    glUniform2f(program_uniform(p, "u_pixel_origin"), (float)r->origin_x, (float)r->origin_y);
+    glUniform2f(program_uniform(p, "u_image_size"), (float)s->render.width, (float)s->render.height);
     uniform_float(p, "u_observer_time", s->observer.time);
     if (observer_moving(s)) {
         uniform_vec3(p, "u_observer_beta", s->observer.velocity);
@@ -43,7 +43,7 @@ void observer_set_uniforms(GLuint p, const struct renderer *r)
         return;
     glActiveTexture(GL_TEXTURE0 + UNIT_BLACKBODY);
     glBindTexture(GL_TEXTURE_2D, r->blackbody_lut);
-    glUniform1i(glGetUniformLocation(p, "u_blackbody"), UNIT_BLACKBODY);
+    glUniform1i(program_uniform(p, "u_blackbody"), UNIT_BLACKBODY);
     uniform_float(p, "u_blackbody_log_min", log(BLACKBODY_T_MIN_K));
     uniform_float(p, "u_blackbody_texels", (BLACKBODY_LUT_SIZE - 1) / log(BLACKBODY_T_MAX_K / BLACKBODY_T_MIN_K));
     uniform_float(p, "u_blackbody_size", BLACKBODY_LUT_SIZE);

@@ -3,14 +3,14 @@
 #include "gl/quad.h"
 #include <stdio.h>
 
-void uniform_vec3(GLuint program, const char *name, vec3d v)
+void uniform_vec3(const struct program_uniforms *program, const char *name, vec3d v)
 {
-    glUniform3f(glGetUniformLocation(program, name), (float)v.x, (float)v.y, (float)v.z);
+    glUniform3f(program_uniform(program, name), (float)v.x, (float)v.y, (float)v.z);
 }
 
-void uniform_float(GLuint program, const char *name, double v)
+void uniform_float(const struct program_uniforms *program, const char *name, double v)
 {
-    glUniform1f(glGetUniformLocation(program, name), (float)v);
+    glUniform1f(program_uniform(program, name), (float)v);
 }
 
 int pass_move_rays(struct renderer *r, const struct stage_program *sp, int segment_start, set_uniforms_fn set_uniforms,
@@ -47,21 +47,21 @@ int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GL
             fbo = raystate_fbo(rs, k == 0 ? out0 : out1, 0, err, errlen);
         if (!fbo)
             return -1;
-        GLuint prog = sp->program[k];
+        const struct program_uniforms *prog = &sp->program[k];
         glBindFramebuffer(GL_FRAMEBUFFER, fbo);
         glViewport(0, 0, rs->width, rs->height);
-        glUseProgram(prog);
-        glUniform2f(glGetUniformLocation(prog, "u_inv_size"), 1.0f / (float)rs->width, 1.0f / (float)rs->height);
+        glUseProgram(prog->id);
+        glUniform2f(program_uniform(prog, "u_inv_size"), 1.0f / (float)rs->width, 1.0f / (float)rs->height);
         for (int i = 0; i < n_inputs; i++) {
             glActiveTexture(GL_TEXTURE0 + i);
             glBindTexture(GL_TEXTURE_2D, inputs[i].texture);
-            glUniform1i(glGetUniformLocation(prog, inputs[i].sampler), i);
+            glUniform1i(program_uniform(prog, inputs[i].sampler), i);
         }
         if (set_uniforms)
             set_uniforms(prog, arg);
         if (r->depth_write_last)
             glDepthMask(k == sp->n_programs - 1 ? GL_TRUE : GL_FALSE);
-        quad_draw(prog, r->quad_z);
+        quad_draw(prog->id, r->quad_z);
         if (r->depth_write_last)
             glDepthMask(GL_FALSE);
         r->passes++;

@@ -1,6 +1,86 @@
 #include "render/programs.h"
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+
+static int by_name(const void *a, const void *b)
+{
+    return strcmp(((const struct uniform_slot *)a)->name, ((const struct uniform_slot *)b)->name);
+}
+
+static void uniforms_release(struct program_uniforms *p)
+{
+    for (int i = 0; i < p->n; i++)
+        free(p->slots[i].name);
+    free(p->slots);
+    if (p->id)
+        glDeleteProgram(p->id);
+    memset(p, 0, sizeof *p);
+}
+
+static int add_slot(struct program_uniforms *p, int *capacity, const char *name, GLint location)
+{
+    if (p->n == *capacity) {
+        int grown = *capacity ? 2 * *capacity : 32;
+        struct uniform_slot *slots = realloc(p->slots, (size_t)grown * sizeof *slots);
+        if (!slots)
+            return -1;
+        p->slots = slots;
+        *capacity = grown;
+    }
+    p->slots[p->n].name = strdup(name);
+    if (!p->slots[p->n].name)
+        return -1;
+    p->slots[p->n++].location = location;
+    return 0;
+}
+
+/* The active uniforms of a linked program and their locations: each by its name, an array also by
+ * its bare name and by every element's ("u_light_color[2]"); -1 when out of memory. */
+static int uniforms_read(struct program_uniforms *p, GLuint id, char *err, size_t errlen)
+{
+    GLint count = 0, longest = 0;
+    memset(p, 0, sizeof *p);
+    p->id = id;
+    glGetProgramiv(id, GL_ACTIVE_UNIFORMS, &count);
+    glGetProgramiv(id, GL_ACTIVE_UNIFORM_MAX_LENGTH, &longest);
+    size_t name_len = (size_t)longest + 16;
+    char *name = malloc(name_len), *element = malloc(name_len);
+    int capacity = 0, rc = name && element ? 0 : -1;
+    for (GLint i = 0; i < count && rc == 0; i++) {
+        GLsizei length = 0;
+        GLint size = 0;
+        GLenum type = 0;
+        glGetActiveUniform(id, (GLuint)i, longest + 1, &length, &size, &type, name);
+        name[length] = '\0';
+        char *bracket = strstr(name, "[0]");
+        int array = bracket && bracket[3] == '\0';
+        if (array)
+            *bracket = '\0';
+        rc = add_slot(p, &capacity, name, glGetUniformLocation(id, name));
+        for (GLint k = 0; array && k < size && rc == 0; k++) {
+            snprintf(element, name_len, "%s[%d]", name, (int)k);
+            rc = add_slot(p, &capacity, element, glGetUniformLocation(id, element));
+        }
+    }
+    free(name);
+    free(element);
+    if (rc != 0) {
+        snprintf(err, errlen, "out of memory listing a program's uniforms");
+        return -1;
+    }
+    if (p->n > 0)
+        qsort(p->slots, (size_t)p->n, sizeof *p->slots, by_name);
+    return 0;
+}
+
+GLint program_uniform(const struct program_uniforms *p, const char *name)
+{
+    struct uniform_slot key = {(char *)name, -1};
+    const struct uniform_slot *slot =
+        p->n > 0 ? bsearch(&key, p->slots, (size_t)p->n, sizeof *p->slots, by_name) : NULL;
+    return slot ? slot->location : -1;
+}
 
 void program_cache_init(struct program_cache *pc, const struct shader_target *target, int mrt)
 {
@@ -13,7 +93,7 @@ void program_cache_release(struct program_cache *pc)
 {
     for (int i = 0; i < pc->n; i++)
         for (int k = 0; k < pc->entries[i].sp.n_programs; k++)
-            glDeleteProgram(pc->entries[i].sp.program[k]);
+            uniforms_release(&pc->entries[i].sp.program[k]);
     pc->n = 0;
 }
 
@@ -44,36 +124,45 @@ const struct stage_program *program_cache_get_vertex(struct program_cache *pc, c
         snprintf(err, errlen, "internal: more than %d shader variants", PROGRAMS_MAX);
         return NULL;
     }
-    struct stage_program sp = {{0, 0}, 0};
+    GLuint ids[2] = {0, 0};
+    int n_programs;
     struct shader_target t = pc->target;
     char full[PROGRAMS_KEY_LEN + 64];
     if (!two_targets) {
         snprintf(full, sizeof full, "#define BT_TARGET 0\n%s", defines);
         t.draw_buffers_ext = 0;
-        sp.program[0] = shader_program_build(&t, full, vertex, fragment_files, err, errlen);
-        sp.n_programs = 1;
+        ids[0] = shader_program_build(&t, full, vertex, fragment_files, err, errlen);
+        n_programs = 1;
     } else if (pc->mrt) {
         snprintf(full, sizeof full, "#define BT_MRT 1\n#define BT_TARGET 0\n%s", defines);
         t.draw_buffers_ext = t.dialect == DIALECT_GLSL_ES_100;
-        sp.program[0] = shader_program_build(&t, full, vertex, fragment_files, err, errlen);
-        sp.n_programs = 1;
+        ids[0] = shader_program_build(&t, full, vertex, fragment_files, err, errlen);
+        n_programs = 1;
     } else {
         t.draw_buffers_ext = 0;
         for (int k = 0; k < 2; k++) {
             snprintf(full, sizeof full, "#define BT_TARGET %d\n%s", k, defines);
-            sp.program[k] = shader_program_build(&t, full, vertex, fragment_files, err, errlen);
-            if (!sp.program[k])
+            ids[k] = shader_program_build(&t, full, vertex, fragment_files, err, errlen);
+            if (!ids[k])
                 break;
         }
-        sp.n_programs = 2;
+        n_programs = 2;
     }
-    for (int k = 0; k < sp.n_programs; k++)
-        if (!sp.program[k]) {
-            for (int j = 0; j < sp.n_programs; j++)
-                if (sp.program[j])
-                    glDeleteProgram(sp.program[j]);
-            return NULL;
+    struct stage_program sp;
+    memset(&sp, 0, sizeof sp);
+    sp.n_programs = n_programs;
+    int failed = 0;
+    for (int k = 0; k < n_programs; k++)
+        failed |= !ids[k] || uniforms_read(&sp.program[k], ids[k], err, errlen) != 0;
+    if (failed) {
+        for (int k = 0; k < n_programs; k++) {
+            if (sp.program[k].id)
+                uniforms_release(&sp.program[k]);
+            else if (ids[k])
+                glDeleteProgram(ids[k]);
         }
+        return NULL;
+    }
     snprintf(pc->entries[pc->n].key, sizeof pc->entries[pc->n].key, "%s", key);
     pc->entries[pc->n].sp = sp;
     return &pc->entries[pc->n++].sp;

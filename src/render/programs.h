@@ -7,9 +7,24 @@
 #define PROGRAMS_MAX 64
 #define PROGRAMS_KEY_LEN 1280
 
+/* A linked program and where its active uniforms are, read from GL once when it is built
+ * (glGetActiveUniform): the stages set uniforms by name every pass without asking GL. */
+struct program_uniforms {
+    GLuint id;
+    int n;
+    struct uniform_slot {
+        char *name;              /* as GL reports it, an array's "[0]" cut off; its elements too */
+        GLint location;
+    } *slots;                    /* sorted by name */
+};
+
+/* The location of the uniform `name` (an array by its bare name or an element's), -1 where it has no
+ * such active uniform (GL ignores a glUniform* at -1, as for an unknown name). */
+GLint program_uniform(const struct program_uniforms *p, const char *name);
+
 /* A stage that writes two targets: one program with MRT, or one program per target. */
 struct stage_program {
-    GLuint program[2];
+    struct program_uniforms program[2];
     int n_programs;
 };
 

@@ -54,7 +54,7 @@ struct frame_args {
     struct object_batch batch;
 };
 
-static void set_frame(GLuint p, const void *arg)
+static void set_frame(const struct program_uniforms *p, const void *arg)
 {
     const struct frame_args *a = arg;
     const struct renderer *r = a->r;

@@ -3,7 +3,7 @@
 #include "render/stages.h"
 #include <stdio.h>
 
-void integrate_set_uniforms(GLuint p, const void *scene)
+void integrate_set_uniforms(const struct program_uniforms *p, const void *scene)
 {
     const struct scene *s = scene;
     const struct render_settings *r = &s->render;

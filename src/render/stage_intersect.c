@@ -106,7 +106,7 @@ static int batch_clocks(const struct object_batch *b)
     return clocks;
 }
 
-void object_batch_set_uniforms(GLuint p, const void *arg)
+void object_batch_set_uniforms(const struct program_uniforms *p, const void *arg)
 {
     const struct object_batch *b = arg;
     const struct scene *s = b->r->scene;
@@ -128,12 +128,12 @@ void object_batch_set_uniforms(GLuint p, const void *arg)
             units[i] = unit++;
         }
     }
-    glUniform4fv(glGetUniformLocation(p, "u_geometry"), GEOMETRY_VECS * b->count, &geometry[0][0][0]);
-    glUniform4fv(glGetUniformLocation(p, "u_materials"), MATERIAL_VECS * b->count, &material[0][0][0]);
+    glUniform4fv(program_uniform(p, "u_geometry"), GEOMETRY_VECS * b->count, &geometry[0][0][0]);
+    glUniform4fv(program_uniform(p, "u_materials"), MATERIAL_VECS * b->count, &material[0][0][0]);
     if (batch_moves(b)) {
-        glUniform4fv(glGetUniformLocation(p, "u_motion"), MOTION_VECS * b->count, &motion[0][0][0]);
+        glUniform4fv(program_uniform(p, "u_motion"), MOTION_VECS * b->count, &motion[0][0][0]);
     }
-    GLint textures = glGetUniformLocation(p, "u_textures");
+    GLint textures = program_uniform(p, "u_textures");
     if (textures >= 0)
         glUniform1iv(textures, b->count, units);
     uniform_float(p, "u_segment_index", b->segment);

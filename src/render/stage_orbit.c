@@ -110,7 +110,7 @@ struct orbit_args {
     int segment;
 };
 
-static void set_orbit(GLuint p, const void *arg)
+static void set_orbit(const struct program_uniforms *p, const void *arg)
 {
     const struct orbit_args *a = arg;
     orbit_set_uniforms(p, a->r, a->segment);
@@ -122,7 +122,7 @@ static void set_orbit(GLuint p, const void *arg)
 
 /* The uniforms by which orbit_table.glsl measures each pixel's angle chi from the radial axis
  * (see there), in double here. */
-static void set_orbit_axis(GLuint p, const struct renderer *r)
+static void set_orbit_axis(const struct program_uniforms *p, const struct renderer *r)
 {
     const struct scene *s = r->scene;
     const struct orbit_table *t = &r->orbit;
@@ -130,7 +130,7 @@ static void set_orbit_axis(GLuint p, const struct renderer *r)
     vec3d axis = t->critical_inward ? v3_scale(e1, -1.0) : e1;
     double chi_c = t->critical_from_axis;
     uniform_vec3(p, "u_orbit_axis", axis);
-    glUniform2f(glGetUniformLocation(p, "u_orbit_critical_chi"), (float)chi_c, (float)(chi_c - (float)chi_c));
+    glUniform2f(program_uniform(p, "u_orbit_critical_chi"), (float)chi_c, (float)(chi_c - (float)chi_c));
     uniform_float(p, "u_orbit_axis_sign", t->critical_inward ? 1.0 : -1.0);
     if (observer_moving(s))
         return;
@@ -151,16 +151,16 @@ static void set_orbit_axis(GLuint p, const struct renderer *r)
     if (alpha > ORBIT_AXIS_SEEN_COSINE)
         across0 = v3(0.0, 0.0, 0.0);    /* exactly: the axis is seen there */
     double px = (x0 + 1.0) * 0.5 * w, py = (y0 + 1.0) * 0.5 * h;
-    glUniform2f(glGetUniformLocation(p, "u_orbit_axis_pixel_hi"), (float)px, (float)py);
-    glUniform2f(glGetUniformLocation(p, "u_orbit_axis_pixel_lo"), (float)(px - (float)px), (float)(py - (float)py));
-    glUniform2f(glGetUniformLocation(p, "u_orbit_pixel_scale"), (float)(2.0 / w), (float)(2.0 / h));
+    glUniform2f(program_uniform(p, "u_orbit_axis_pixel_hi"), (float)px, (float)py);
+    glUniform2f(program_uniform(p, "u_orbit_axis_pixel_lo"), (float)(px - (float)px), (float)(py - (float)py));
+    glUniform2f(program_uniform(p, "u_orbit_pixel_scale"), (float)(2.0 / w), (float)(2.0 / h));
     uniform_vec3(p, "u_orbit_across0", across0);
     uniform_vec3(p, "u_orbit_across_x", v3_sub(rx, v3_scale(axis, v3_dot(rx, axis))));
     uniform_vec3(p, "u_orbit_across_y", v3_sub(uy, v3_scale(axis, v3_dot(uy, axis))));
     uniform_vec3(p, "u_orbit_along", v3(v3_dot(w0, axis), v3_dot(rx, axis), v3_dot(uy, axis)));
 }
 
-void orbit_set_uniforms(GLuint p, const struct renderer *r, int segment)
+void orbit_set_uniforms(const struct program_uniforms *p, const struct renderer *r, int segment)
 {
     const struct scene *s = r->scene;
     const struct orbit_table *t = &r->orbit;
@@ -171,14 +171,14 @@ void orbit_set_uniforms(GLuint p, const struct renderer *r, int segment)
     uniform_float(p, "u_segment_index", segment);
     glActiveTexture(GL_TEXTURE0 + UNIT_ORBIT(r));
     glBindTexture(GL_TEXTURE_2D, r->orbit_texture);
-    glUniform1i(glGetUniformLocation(p, "u_orbit_table"), UNIT_ORBIT(r));
-    glUniform2f(glGetUniformLocation(p, "u_orbit_texel"), 1.0f / (float)t->width, 1.0f / (float)t->height);
+    glUniform1i(program_uniform(p, "u_orbit_table"), UNIT_ORBIT(r));
+    glUniform2f(program_uniform(p, "u_orbit_texel"), 1.0f / (float)t->width, 1.0f / (float)t->height);
     uniform_float(p, "u_orbit_rows", t->p.rows_per_side);
     uniform_float(p, "u_orbit_columns", t->p.columns);
     uniform_float(p, "u_orbit_warps", ORBIT_WARP_SAMPLES);
     set_orbit_axis(p, r);
-    glUniform2f(glGetUniformLocation(p, "u_orbit_span"), (float)t->log_span[0], (float)t->log_span[1]);
-    glUniform2f(glGetUniformLocation(p, "u_orbit_epsilon"), (float)t->epsilon[0], (float)t->epsilon[1]);
+    glUniform2f(program_uniform(p, "u_orbit_span"), (float)t->log_span[0], (float)t->log_span[1]);
+    glUniform2f(program_uniform(p, "u_orbit_epsilon"), (float)t->epsilon[0], (float)t->epsilon[1]);
     uniform_float(p, "u_orbit_even_scale", ORBIT_EVEN_SCALE);
 }
 

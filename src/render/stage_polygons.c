@@ -74,7 +74,7 @@ static void attribute(GLuint p, const char *name, int size, size_t offset)
     glEnableVertexAttribArray((GLuint)loc);
 }
 
-static void draw_object(struct renderer *r, GLuint p, int k)
+static void draw_object(struct renderer *r, const struct program_uniforms *p, int k)
 {
     const struct scene *s = r->scene;
     const struct object *o = &s->objects[k];
@@ -82,9 +82,9 @@ static void draw_object(struct renderer *r, GLuint p, int k)
     object_motion(o, &m);
     float material[5][4];
     intersect_pack_material(&o->material, k, material);
-    glUniform4fv(glGetUniformLocation(p, "u_material"), 5, &material[0][0]);
+    glUniform4fv(program_uniform(p, "u_material"), 5, &material[0][0]);
     uniform_float(p, "u_object_id", k);
-    glUniform4f(glGetUniformLocation(p, "u_body_motion"), (float)m.beta.x, (float)m.beta.y, (float)m.beta.z,
+    glUniform4f(program_uniform(p, "u_body_motion"), (float)m.beta.x, (float)m.beta.y, (float)m.beta.z,
                 (float)m.gamma);
     uniform_vec3(p, "u_body_origin", m.origin);
     /* Eq. 5: the observation event in the rest frame */
@@ -93,13 +93,13 @@ static void draw_object(struct renderer *r, GLuint p, int k)
     if (o->material.texture >= 0) {
         glActiveTexture(GL_TEXTURE0 + UNIT_POLYGON_TEXTURE);
         glBindTexture(GL_TEXTURE_2D, r->textures[o->material.texture]);
-        glUniform1i(glGetUniformLocation(p, "u_texture"), UNIT_POLYGON_TEXTURE);
+        glUniform1i(program_uniform(p, "u_texture"), UNIT_POLYGON_TEXTURE);
     }
     glBindBuffer(GL_ARRAY_BUFFER, r->mesh_buffers[k][0]);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->mesh_buffers[k][1]);
-    attribute(p, "a_rest_position", 3, offsetof(struct mesh_vertex, rest));
-    attribute(p, "a_rest_normal", 3, offsetof(struct mesh_vertex, normal));
-    attribute(p, "a_uv", 2, offsetof(struct mesh_vertex, uv));
+    attribute(p->id, "a_rest_position", 3, offsetof(struct mesh_vertex, rest));
+    attribute(p->id, "a_rest_normal", 3, offsetof(struct mesh_vertex, normal));
+    attribute(p->id, "a_uv", 2, offsetof(struct mesh_vertex, uv));
     glDrawElements(GL_TRIANGLES, r->mesh_indices[k], GL_UNSIGNED_SHORT, 0);
     r->passes++;
 }
@@ -143,17 +143,17 @@ int stage_polygons(struct renderer *r, char *err, size_t errlen)
             GLuint fbo = raystate_fbo(rs, out0, sp->n_programs == 1 ? rs->result_image : 0, err, errlen);
             if (!fbo)
                 return -1;
-            GLuint p = sp->program[t];
+            const struct program_uniforms *p = &sp->program[t];
             glBindFramebuffer(GL_FRAMEBUFFER, fbo);
             glViewport(0, 0, rs->width, rs->height);
-            glUseProgram(p);
-            glUniform2f(glGetUniformLocation(p, "u_inv_size"), 1.0f / (float)rs->width, 1.0f / (float)rs->height);
+            glUseProgram(p->id);
+            glUniform2f(program_uniform(p, "u_inv_size"), 1.0f / (float)rs->width, 1.0f / (float)rs->height);
             glActiveTexture(GL_TEXTURE0);
             glBindTexture(GL_TEXTURE_2D, rs->hit[rs->cur_hit]);
-            glUniform1i(glGetUniformLocation(p, "u_hit"), 0);
+            glUniform1i(program_uniform(p, "u_hit"), 0);
             glActiveTexture(GL_TEXTURE1);
             glBindTexture(GL_TEXTURE_2D, rs->position[rs->cur_position]);
-            glUniform1i(glGetUniformLocation(p, "u_segment_end"), 1);
+            glUniform1i(program_uniform(p, "u_segment_end"), 1);
             observer_set_uniforms(p, r);
             uniform_float(p, "u_far", 4.0 * s->render.bound_radius);
             uniform_vec3(p, "u_ambient_light", s->ambient_light);

@@ -8,7 +8,7 @@ struct retire_args {
     int all;
 };
 
-static void set_retire(GLuint p, const void *arg)
+static void set_retire(const struct program_uniforms *p, const void *arg)
 {
     const struct retire_args *a = arg;
     uniform_float(p, "u_retire_all", a->all ? 1.0 : 0.0);

@@ -6,14 +6,14 @@
 
 static const char *const fill_files[] = {"common.glsl", "stage_fill.glsl", NULL};
 
-static void set_fill(GLuint p, const void *arg)
+static void set_fill(const struct program_uniforms *p, const void *arg)
 {
     (void)arg;
-    glUniform4f(glGetUniformLocation(p, "u_fill0"), 0.0f, 0.0f, 0.0f, DEPTH_NO_HIT);
-    glUniform4f(glGetUniformLocation(p, "u_fill1"), 0.0f, 0.0f, 0.0f, (float)OUTCOME_UNFINISHED);
+    glUniform4f(program_uniform(p, "u_fill0"), 0.0f, 0.0f, 0.0f, DEPTH_NO_HIT);
+    glUniform4f(program_uniform(p, "u_fill1"), 0.0f, 0.0f, 0.0f, (float)OUTCOME_UNFINISHED);
 }
 
-static void set_camera(GLuint p, const void *arg)
+static void set_camera(const struct program_uniforms *p, const void *arg)
 {
     const struct renderer *r = arg;
     observer_set_uniforms(p, r);

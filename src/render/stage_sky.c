@@ -2,7 +2,7 @@
 #include "render/stages.h"
 #include <stdio.h>
 
-static void set_sky(GLuint p, const void *arg)
+static void set_sky(const struct program_uniforms *p, const void *arg)
 {
     const struct renderer *r = arg;
     if (doppler_colour(r->scene)) {
@@ -12,7 +12,7 @@ static void set_sky(GLuint p, const void *arg)
     if (r->sky_cubemap) {
         glActiveTexture(GL_TEXTURE0 + UNIT_SKY);
         glBindTexture(GL_TEXTURE_CUBE_MAP, r->sky_cubemap);
-        glUniform1i(glGetUniformLocation(p, "u_sky"), UNIT_SKY);
+        glUniform1i(program_uniform(p, "u_sky"), UNIT_SKY);
     } else {
         uniform_vec3(p, "u_sky_color", r->scene->sky.color);
     }

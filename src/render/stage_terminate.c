@@ -7,7 +7,7 @@ struct terminate_args {
     int segment;
 };
 
-static void set_terminate(GLuint p, const void *arg)
+static void set_terminate(const struct program_uniforms *p, const void *arg)
 {
     const struct terminate_args *a = arg;
     bounds_set_uniforms(p, a->scene);

@@ -52,7 +52,7 @@ struct pass_input {
     GLuint texture;
 };
 
-typedef void (*set_uniforms_fn)(GLuint program, const void *arg);
+typedef void (*set_uniforms_fn)(const struct program_uniforms *program, const void *arg);
 
 /* Draw the quad with each program of the stage into out0 (and out1), inputs bound as samplers. */
 int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GLuint out1,
@@ -64,15 +64,15 @@ int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GL
 int pass_move_rays(struct renderer *r, const struct stage_program *sp, int segment_start, set_uniforms_fn set_uniforms,
                    const void *arg, char *err, size_t errlen);
 
-void model_set_uniforms(GLuint program, const struct model *m);
-void bounds_set_uniforms(GLuint program, const struct scene *s);
-void uniform_vec3(GLuint program, const char *name, vec3d v);
-void uniform_float(GLuint program, const char *name, double v);
+void model_set_uniforms(const struct program_uniforms *program, const struct model *m);
+void bounds_set_uniforms(const struct program_uniforms *program, const struct scene *s);
+void uniform_vec3(const struct program_uniforms *program, const char *name, vec3d v);
+void uniform_float(const struct program_uniforms *program, const char *name, double v);
 
 int textures_load(struct renderer *r, char *err, size_t errlen);
 /* shaders_es/observer.glsl: camera, observer velocity, black-body table (observer.c) */
 int observer_defines(const struct scene *s, char *out, size_t len);
-void observer_set_uniforms(GLuint program, const struct renderer *r);
+void observer_set_uniforms(const struct program_uniforms *program, const struct renderer *r);
 int observer_lut_load(struct renderer *r, char *err, size_t errlen);
 void observer_lut_release(struct renderer *r);
 void textures_release(struct renderer *r);
@@ -80,14 +80,14 @@ void textures_release(struct renderer *r);
 int stage_setup(struct renderer *r, char *err, size_t errlen);
 int stage_integrate(struct renderer *r, int segment_start, char *err, size_t errlen);
 /* The integration stage's uniforms (model, bounds, step control): a set_uniforms_fn of a scene. */
-void integrate_set_uniforms(GLuint p, const void *scene);
+void integrate_set_uniforms(const struct program_uniforms *p, const void *scene);
 /* render.method = orbit_table (stage_orbit.c): the table for the scene as it is now, built and
  * uploaded when its parameters changed; one pass per segment along the exact orbits. */
 int orbit_prepare(struct renderer *r, char *err, size_t errlen);
 void orbit_release(struct renderer *r);
 int stage_orbit(struct renderer *r, int segment, int segment_start, char *err, size_t errlen);
 /* The orbit stage's uniforms (table, camera, bounds, the pixel's axis; segment for the orbit stage). */
-void orbit_set_uniforms(GLuint p, const struct renderer *r, int segment);
+void orbit_set_uniforms(const struct program_uniforms *p, const struct renderer *r, int segment);
 /* Every object against the current segment, render.batch objects per pass. */
 int stage_intersect_all(struct renderer *r, int segment, int segment_start, char *err, size_t errlen);
 /* Objects per intersection pass on this GPU: render.batch, bounded by its uniform vectors. */
@@ -107,7 +107,7 @@ struct object_batch {
 };
 int object_batch_defines(const struct object_batch *b, char *out, size_t len);
 int object_batch_files(const struct object_batch *b, const char **files, int n);
-void object_batch_set_uniforms(GLuint p, const void *batch);
+void object_batch_set_uniforms(const struct program_uniforms *p, const void *batch);
 int object_batch_all(const struct renderer *r, struct object_batch *b);
 /* render.pipeline (stage_frame.c): 1 when this frame runs in one pass, with why in words (the
  * choice forced, or auto: this GPU runs long fragment loops, every object fits one intersection

@@ -46,6 +46,8 @@ check "orbit table, fp16 forced" 2 "orbit_table needs 32-bit float textures" -- 
 check "orbit table on gles2" 0 "integrated with rk4 instead" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT render --scene $B --size 32x24 --backend egl --out "$TMP/o8.png"
 # a GLES 2.0 device: no sized float formats, only half floats; fp32 forced is a clear error
 check "gles2 info" 0 "render path: +fp16" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT info --backend egl
+check "gles2 info pipeline" 0 "pipeline: +multipass; the single pass only when forced \(OpenGL ES 2.0 need not" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT info --backend egl
+check "info pipeline" 0 "pipeline: +single pass where .*OpenGL ES 3.2 runs" -- $BT info --backend egl
 check "gles2 render" 0 "fp16.*reduced accuracy" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT render --scene $S --size 32x24 --backend egl --out "$TMP/c.png"
 check "gles2 fp32 forced" 2 "fp32.*RGBA/FLOAT" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT render --scene $S --size 32x24 --backend egl --precision fp32 --out "$TMP/d.png"
 # EXT_color_buffer_float removed (Mesa 22.3 warns it "cannot be disabled", yet RGBA32F then
