@@ -2,6 +2,7 @@
 #include "cli/commands.h"
 #include "cli/options.h"
 #include "io/png_io.h"
+#include "io/output_file.h"
 #include "cli/measure.h"
 #include <stdio.h>
 #include <string.h>
@@ -13,7 +14,8 @@ static void usage(FILE *out)
             "usage: bentray render --scene FILE [options]\n"
             "Render a scene headless to a PNG.\n"
             "  --scene FILE         scene file (assets/scenes/*.scene; format in docs/SCENES.md)\n"
-            "  --out FILE.png       output image (default: NAME.png, NAME from the scene)\n"
+            "  --out FILE.png       output image (default: NAME.png in the working directory, NAME the\n"
+            "                       scene's name with characters other than letters, digits, - _ . as _)\n"
             "  --dump FILE          also write per-pixel results (format in docs/DUMP.md)\n"
             "  --force              replace existing output files\n"
             "  --size WxH           image size (overrides render.width/height)\n"
@@ -70,6 +72,22 @@ static int render_with(const struct common_options *o, const struct scene *s, st
     return bad_input ? EXIT_USAGE : EXIT_RUNTIME;
 }
 
+/* The image's name when --out is not given: the scene's name with every character outside
+ * letters, digits, '-', '_' and '.' replaced by '_' and no leading dot, in the working directory
+ * ("../escaped" gives "_._escaped.png"). */
+static void default_output_name(const char *scene_name, char *out, size_t len)
+{
+    char name[SCENE_NAME_LEN];
+    size_t n = 0;
+    for (const char *c = scene_name; *c && n + 1 < sizeof name; c++) {
+        int plain = (*c >= 'a' && *c <= 'z') || (*c >= 'A' && *c <= 'Z') || (*c >= '0' && *c <= '9') ||
+                    *c == '-' || *c == '_' || (*c == '.' && n > 0);
+        name[n++] = plain ? *c : '_';
+    }
+    name[n] = '\0';
+    snprintf(out, len, "%s.png", n > 0 ? name : "bentray");
+}
+
 int cmd_render(int argc, char **argv)
 {
     struct common_options o = {.backend = "auto"};
@@ -101,17 +119,23 @@ int cmd_render(int argc, char **argv)
         return rc;
     char default_out[SCENE_NAME_LEN + 8];
     if (!out_path) {
-        snprintf(default_out, sizeof default_out, "%s.png", s.name);
+        default_output_name(s.name, default_out, sizeof default_out);
         out_path = default_out;
     }
     /* refuse before the work, not after: a long render must not end in "file exists" */
     const char *outputs[2] = {out_path, dump_path};
-    for (int k = 0; k < 2; k++)
-        if (outputs[k] && !force && access(outputs[k], F_OK) == 0) {
-            fprintf(stderr, "bentray render: %s: refusing to replace existing file %s (use --force to overwrite "
-                            "it)\n", k ? "--dump" : "--out", outputs[k]);
+    for (int k = 0; k < 2; k++) {
+        char why[1024];
+        if (outputs[k] && output_check(outputs[k], force, why, sizeof why) != 0) {
+            fprintf(stderr, "bentray render: %s: %s\n", k ? "--dump" : "--out", why);
             return EXIT_USAGE;
         }
+    }
+    if (dump_path && output_same(out_path, dump_path)) {
+        fprintf(stderr, "bentray render: --out and --dump name the same file %s: give them different names\n",
+                dump_path);
+        return EXIT_USAGE;
+    }
     struct measured r = {0};
     char err[2048];
     rc = render_with(&o, &s, &r);

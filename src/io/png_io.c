@@ -6,6 +6,7 @@
  * brighten ordinary 16-bit textures. Here 16-bit samples are only rescaled and, as for every
  * other format, no gamma conversion is applied: textures are used as stored. */
 #include "io/png_io.h"
+#include "io/output_file.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -28,63 +29,6 @@ static void set_err(char *err, size_t errlen, const char *fmt, ...)
     va_end(ap);
 }
 
-static void set_exists_err(char *err, size_t errlen, const char *path)
-{
-    set_err(err, errlen, "refusing to replace existing file %s (use --force to overwrite it)",
-            path);
-}
-
-/* Opens a new file next to PATH, so that the final rename stays within one file system and is
- * atomic. O_EXCL keeps two writers (or a stale leftover) from sharing a temporary. */
-static int open_temp(const char *path, char *tmp, size_t tmplen)
-{
-    static unsigned counter;
-    for (int attempt = 0; attempt < 100; attempt++) {
-        int n = snprintf(tmp, tmplen, "%s.tmp-%ld-%u", path, (long)getpid(), counter++);
-        if (n < 0 || (size_t)n >= tmplen) {
-            errno = ENAMETOOLONG;
-            return -1;
-        }
-        int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd >= 0 || errno != EEXIST)
-            return fd;
-    }
-    errno = EEXIST;
-    return -1;
-}
-
-/* Moves the finished temporary into place. Without OVERWRITE, link() is used because it fails
- * when the name exists, which closes the gap between the earlier check and the rename; file
- * systems without hard links fall back to check-then-rename. */
-static int commit_temp(const char *tmp, const char *path, int overwrite, char *err, size_t errlen)
-{
-    if (!overwrite) {
-        if (link(tmp, path) == 0) {
-            unlink(tmp);
-            return 0;
-        }
-        int e = errno;
-        if (e == EEXIST) {
-            set_exists_err(err, errlen, path);
-            return -1;
-        }
-        struct stat st;
-        if (e != EPERM && e != ENOTSUP && e != EOPNOTSUPP && e != ENOSYS && e != EMLINK) {
-            set_err(err, errlen, "cannot write %s: %s", path, strerror(e));
-            return -1;
-        }
-        if (stat(path, &st) == 0) {
-            set_exists_err(err, errlen, path);
-            return -1;
-        }
-    }
-    if (rename(tmp, path) != 0) {
-        set_err(err, errlen, "cannot write %s: %s", path, strerror(errno));
-        return -1;
-    }
-    return 0;
-}
-
 int png_write_rgba8(const char *path, int width, int height, const unsigned char *rgba_top_down,
                     int overwrite, char *err, size_t errlen)
 {
@@ -94,68 +38,26 @@ int png_write_rgba8(const char *path, int width, int height, const unsigned char
                 width, height);
         return -1;
     }
-
-    /* Checked first only for a clear message before any work; commit_temp has the last word. */
-    struct stat st;
-    if (stat(path, &st) == 0) {
-        if (S_ISDIR(st.st_mode)) {
-            set_err(err, errlen, "cannot write %s: %s", path, strerror(EISDIR));
-            return -1;
-        }
-        if (!overwrite) {
-            set_exists_err(err, errlen, path);
-            return -1;
-        }
-    }
-
-    size_t tmplen = strlen(path) + 48;
-    char *tmp = malloc(tmplen);
-    if (!tmp) {
-        set_err(err, errlen, "cannot write %s: out of memory", path);
+    struct output_file o;
+    if (output_open(&o, path, overwrite, err, errlen) != 0)
         return -1;
-    }
-    int fd = open_temp(path, tmp, tmplen);
-    if (fd < 0) {
-        set_err(err, errlen, "cannot write %s: %s", path, strerror(errno));
-        free(tmp);
-        return -1;
-    }
-    FILE *fp = fdopen(fd, "wb");
-    if (!fp) {
-        set_err(err, errlen, "cannot write %s: %s", path, strerror(errno));
-        close(fd);
-        unlink(tmp);
-        free(tmp);
-        return -1;
-    }
-
     png_image image;
     memset(&image, 0, sizeof image);
     image.version = PNG_IMAGE_VERSION;
     image.width = (png_uint_32)width;
     image.height = (png_uint_32)height;
     image.format = PNG_FORMAT_RGBA;
-
-    int ok = png_image_write_to_stdio(&image, fp, 0, rgba_top_down, 0, NULL) != 0;
+    errno = 0;
+    int ok = png_image_write_to_stdio(&image, o.fp, 0, rgba_top_down, 0, NULL) != 0;
     if (!ok)
-        set_err(err, errlen, "cannot write %s: %s", path, image.message);
+        set_err(err, errlen, "cannot write %s: %s%s%s", path, image.message, errno ? ": " : "",
+                errno ? strerror(errno) : "");
     png_image_free(&image);
-
-    /* A full disk often shows only at flush or close time, so both are checked. */
-    if (ok && (fflush(fp) != 0 || ferror(fp) || fsync(fileno(fp)) != 0)) {
-        set_err(err, errlen, "cannot write %s: %s", path, strerror(errno));
-        ok = 0;
+    if (!ok) {
+        output_abort(&o);
+        return -1;
     }
-    if (fclose(fp) != 0 && ok) {
-        set_err(err, errlen, "cannot write %s: %s", path, strerror(errno));
-        ok = 0;
-    }
-    if (ok && commit_temp(tmp, path, overwrite, err, errlen) != 0)
-        ok = 0;
-    if (!ok)
-        unlink(tmp);
-    free(tmp);
-    return ok ? 0 : -1;
+    return output_commit(&o, err, errlen);
 }
 
 struct read_ctx {

@@ -1,4 +1,5 @@
 #include "ref/dump.h"
+#include "io/output_file.h"
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
@@ -71,20 +72,10 @@ static void decode(const unsigned char *p, struct dump_record *r)
 
 int dump_write(const char *path, const struct dump *d, int overwrite, char *err, size_t errlen)
 {
-    int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | (overwrite ? 0 : O_EXCL) | O_CLOEXEC, 0644);
-    if (fd < 0) {
-        if (errno == EEXIST)
-            snprintf(err, errlen, "refusing to replace existing file %s (use --force to overwrite it)", path);
-        else
-            snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
+    struct output_file o;
+    if (output_open(&o, path, overwrite, err, errlen) != 0)
         return -1;
-    }
-    FILE *f = fdopen(fd, "wb");
-    if (!f) {
-        close(fd);
-        snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
-        return -1;
-    }
+    FILE *f = o.fp;
     unsigned char header[DUMP_HEADER_SIZE] = {0}, rec[DUMP_RECORD_SIZE];
     memcpy(header, DUMP_MAGIC, 8);
     put_u32(header + 8, DUMP_VERSION);
@@ -105,14 +96,13 @@ int dump_write(const char *path, const struct dump *d, int overwrite, char *err,
         encode(rec, &d->records[i]);
         ok = fwrite(rec, sizeof rec, 1, f) == 1;
     }
-    if (fclose(f) != 0)
-        ok = 0;
     if (!ok) {
+        /* the old file, if any, is untouched: only the temporary goes */
         snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
-        unlink(path);
+        output_abort(&o);
         return -1;
     }
-    return 0;
+    return output_commit(&o, err, errlen);
 }
 
 int dump_read(const char *path, struct dump *d, char *err, size_t errlen)

@@ -56,6 +56,23 @@ check "fp32 targets missing" 0 "fp16(\+mrt)?: RGBA16F.*reduced accuracy" -- env 
 # a broken shader directory: clear message naming the file and line, exit 1
 mkdir -p "$TMP/shaders" && cp shaders_es/*.glsl "$TMP/shaders/" && echo "this is not glsl" >> "$TMP/shaders/stage_integrate.glsl"
 check "broken shader" 1 "stage_integrate.glsl:[0-9]+" -- $BT render --scene $S --size 32x24 --shader-dir "$TMP/shaders" --out "$TMP/g.png"
+# outputs: checked before any work, never anything but a regular file replaced, a link replaced
+# itself and never followed, the old file kept whole when the new one cannot be written
+W="$TMP/outputs" && mkdir -p "$W"
+check "out and dump the same" 2 "--out and --dump name the same file" -- $BT render --scene $S --size 8x6 --out "$W/x" --dump "$W/./x" --force
+check "out directory missing" 2 "--out: cannot write .*nodir/x.png: directory .*nodir: No such file" -- $BT render --scene $S --size 8x6 --out "$W/nodir/x.png"
+mkfifo "$W/fifo"
+check "dump onto a FIFO" 2 "--dump: .*fifo is a FIFO: bentray replaces only regular files" -- $BT render --scene $S --size 8x6 --out "$W/f.png" --dump "$W/fifo" --force
+check "out onto a directory" 2 "--out: .* is a directory: bentray replaces only regular files" -- $BT render --scene $S --size 8x6 --out "$W" --force
+echo keep > "$W/target" && ln -s "$W/target" "$W/link" && ln -s "$W/none" "$W/dangling"
+check "dump link replaced, target kept" 0 "^keep$" -- sh -c "$BT render --scene $S --size 8x6 --out $W/l.png --dump $W/link --force >/dev/null && test ! -L $W/link && cat $W/target"
+check "dangling link refused before work" 2 "--out: refusing to replace existing file .*dangling" -- $BT render --scene $S --size 8x6 --out "$W/dangling"
+echo "old data" > "$W/old.dump"
+check "file-size limit keeps the old dump" 0 "^old data; 0 temporaries$" -- sh -c "(ulimit -f 8; $BT render --scene $S --size 64x48 --out $W/o.png --dump $W/old.dump --force) >/dev/null 2>&1; echo \"\$(cat $W/old.dump); \$(ls $W | grep -c tmp-) temporaries\""
+sed 's/^name = .*/name = ..\/esc"aped/' $S > assets/scenes/.escape_test.scene
+ABS_BT="$(cd "$(dirname "$BT")" && pwd)/$(basename "$BT")"
+check "default name stays here" 0 "^_\._esc_aped.png$" -- sh -c "cd $W && $ABS_BT render --scene $PWD/assets/scenes/.escape_test.scene --size 8x6 --quiet && test -f $W/_._esc_aped.png && test ! -e $TMP/esc*"
+rm -f assets/scenes/.escape_test.scene
 # the CPU reference: same outputs as the GPU engine; on the flat test scene both give the same outcomes
 check "render cpu" 0 "CPU reference" -- $BT render --scene $S --size 32x24 --engine cpu --out "$TMP/cpu.png" --dump "$TMP/cpu.dump"
 check "render gpu dump" 0 "hit an object" -- $BT render --scene $S --size 32x24 --out "$TMP/gpu.png" --dump "$TMP/gpu.dump"
