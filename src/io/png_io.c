@@ -7,6 +7,7 @@
  * other format, no gamma conversion is applied: textures are used as stored. */
 #include "io/png_io.h"
 #include "io/output_file.h"
+#include "io/text_file.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -161,9 +162,10 @@ int png_read_rgba8(const char *path, int max_size, int *width, int *height,
     memset(&ctx, 0, sizeof ctx);
     ctx.max_size = max_size;
 
-    ctx.fp = fopen(path, "rb");
+    char why[256];
+    ctx.fp = regular_file_open(path, "image", why, sizeof why);
     if (!ctx.fp) {
-        set_err(err, errlen, "cannot read %s: %s", path, strerror(errno));
+        set_err(err, errlen, "%s: %s", path, why);
         return -1;
     }
     /* Checking the signature ourselves gives a plain message instead of libpng's. */

@@ -1,21 +1,52 @@
 /* Whole-file reading, line splitting and edit distance for the INI readers (scene, kiosk). */
 #include "io/text_file.h"
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 /* edit_distance() keeps one row of this many columns on the stack */
 #define EDIT_MAX_LEN 256
 #define EDIT_TOO_FAR 1000
 
-char *text_file_read(const char *path, long max_bytes, const char *what, size_t *len, char *msg, size_t msglen)
+FILE *regular_file_open(const char *path, const char *what, char *msg, size_t msglen)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) {
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
         snprintf(msg, msglen, "cannot open the %s: %s", what, strerror(errno));
         return NULL;
     }
+    struct stat st;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        int e = errno;
+        snprintf(msg, msglen, "cannot read the %s: %s", what,
+                 S_ISFIFO(st.st_mode) ? "it is a FIFO, not a regular file"
+                 : S_ISDIR(st.st_mode) ? "it is a directory, not a regular file"
+                 : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "it is a device, not a regular file"
+                 : S_ISSOCK(st.st_mode) ? "it is a socket, not a regular file" : strerror(e));
+        close(fd);
+        return NULL;
+    }
+    /* a regular file never blocks; reads go on as usual */
+    int flags = fcntl(fd, F_GETFL);
+    if (flags >= 0)
+        fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
+    FILE *f = fdopen(fd, "rb");
+    if (!f) {
+        snprintf(msg, msglen, "cannot open the %s: %s", what, strerror(errno));
+        close(fd);
+    }
+    return f;
+}
+
+char *text_file_read(const char *path, long max_bytes, const char *what, size_t *len, char *msg, size_t msglen)
+{
+    FILE *f = regular_file_open(path, what, msg, msglen);
+    if (!f)
+        return NULL;
     char *text = malloc((size_t)max_bytes + 2);
     if (!text) {
         fclose(f);

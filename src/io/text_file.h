@@ -5,6 +5,13 @@
 #define BT_TEXT_FILE_H
 #include <stddef.h>
 
+#include <stdio.h>
+
+/* Opens path for reading only if it is a regular file: a FIFO, device, socket or directory is
+ * refused at once (the open itself never blocks: O_NONBLOCK, then fstat). NULL with the reason in
+ * msg ("cannot open the WHAT: ..."). */
+FILE *regular_file_open(const char *path, const char *what, char *msg, size_t msglen);
+
 /* The file's bytes (NUL-terminated for convenience) and their count, or NULL with the reason in msg:
  * it cannot be opened or read, or it is larger than max_bytes ("not a WHAT?"). what names the kind
  * of file in the messages ("scene file"). */

@@ -1,5 +1,6 @@
 #include "ref/dump.h"
 #include "io/output_file.h"
+#include "io/text_file.h"
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
@@ -108,9 +109,10 @@ int dump_write(const char *path, const struct dump *d, int overwrite, char *err,
 int dump_read(const char *path, struct dump *d, char *err, size_t errlen)
 {
     memset(d, 0, sizeof *d);
-    FILE *f = fopen(path, "rb");
+    char why[256];
+    FILE *f = regular_file_open(path, "dump", why, sizeof why);
     if (!f) {
-        snprintf(err, errlen, "cannot read %s: %s", path, strerror(errno));
+        snprintf(err, errlen, "%s: %s", path, why);
         return -1;
     }
     unsigned char header[DUMP_HEADER_SIZE], rec[DUMP_RECORD_SIZE];

@@ -73,6 +73,11 @@ sed 's/^name = .*/name = ..\/esc"aped/' $S > assets/scenes/.escape_test.scene
 ABS_BT="$(cd "$(dirname "$BT")" && pwd)/$(basename "$BT")"
 check "default name stays here" 0 "^_\._esc_aped.png$" -- sh -c "cd $W && $ABS_BT render --scene $PWD/assets/scenes/.escape_test.scene --size 8x6 --quiet && test -f $W/_._esc_aped.png && test ! -e $TMP/esc*"
 rm -f assets/scenes/.escape_test.scene
+# inputs: a FIFO (or any non-regular file) is refused at once, never waited on
+check "scene is a FIFO" 2 "cannot read the scene file: it is a FIFO" -- timeout 60 $BT render --scene "$W/fifo" --out "$W/q.png"
+check "compare dump is a FIFO" 2 "cannot read the dump: it is a FIFO" -- timeout 60 $BT compare "$W/fifo" "$W/fifo"
+check "kiosk config is a FIFO" 2 "cannot read the kiosk configuration: it is a FIFO" -- timeout 60 $BT kiosk --config "$W/fifo" --display headless --frames 1 --out "$W/kf"
+check "scene is a directory" 2 "cannot read the scene file: it is a directory" -- $BT render --scene "$W" --out "$W/q.png"
 # the CPU reference: same outputs as the GPU engine; on the flat test scene both give the same outcomes
 check "render cpu" 0 "CPU reference" -- $BT render --scene $S --size 32x24 --engine cpu --out "$TMP/cpu.png" --dump "$TMP/cpu.dump"
 check "render gpu dump" 0 "hit an object" -- $BT render --scene $S --size 32x24 --out "$TMP/gpu.png" --dump "$TMP/gpu.dump"
