@@ -44,14 +44,39 @@ static void print_vec(const char *name, const float *v, const char *after)
     printf("  \"%s\": [%.9g, %.9g, %.9g]%s\n", name, v[0], v[1], v[2], after);
 }
 
+/* A JSON string: quotes, backslashes and control characters escaped (RFC 8259), bytes >= 0x80
+ * passed through (the scene's text is UTF-8). */
+static void print_string(const char *text)
+{
+    putchar('"');
+    for (const unsigned char *c = (const unsigned char *)text; *c; c++) {
+        if (*c == '"' || *c == '\\')
+            printf("\\%c", *c);
+        else if (*c == '\n')
+            fputs("\\n", stdout);
+        else if (*c == '\t')
+            fputs("\\t", stdout);
+        else if (*c < 0x20 || *c == 0x7f)
+            printf("\\u%04x", *c);
+        else
+            putchar(*c);
+    }
+    putchar('"');
+}
+
 static void print_json(const struct scene *s, long px, long py, const char *engine, const struct dump_record *rec,
                        const struct polyline *pl)
 {
-    printf("{\n  \"scene\": \"%s\",\n  \"pixel\": [%ld, %ld],\n  \"engine\": \"%s\",\n", s->name, px, py, engine);
-    printf("  \"model\": \"%s\",\n  \"outcome\": \"%s\",\n", model_name(s->model.type),
+    printf("{\n  \"scene\": ");
+    print_string(s->name);
+    printf(",\n  \"pixel\": [%ld, %ld],\n  \"engine\": ", px, py);
+    print_string(engine);
+    printf(",\n  \"model\": \"%s\",\n  \"outcome\": \"%s\",\n", model_name(s->model.type),
            dump_outcome_name(rec->outcome));
     if (rec->outcome >= 0) {
-        printf("  \"object\": \"%s\",\n", s->objects[rec->outcome].name);
+        printf("  \"object\": ");
+        print_string(s->objects[rec->outcome].name);
+        printf(",\n");
         print_vec("hit", rec->hit, ",");
     }
     printf("  \"depth\": %.9g,\n  \"steps\": %u,\n", rec->depth, rec->steps);

@@ -78,6 +78,10 @@ check "scene is a FIFO" 2 "cannot read the scene file: it is a FIFO" -- timeout 
 check "compare dump is a FIFO" 2 "cannot read the dump: it is a FIFO" -- timeout 60 $BT compare "$W/fifo" "$W/fifo"
 check "kiosk config is a FIFO" 2 "cannot read the kiosk configuration: it is a FIFO" -- timeout 60 $BT kiosk --config "$W/fifo" --display headless --frames 1 --out "$W/kf"
 check "scene is a directory" 2 "cannot read the scene file: it is a directory" -- $BT render --scene "$W" --out "$W/q.png"
+# trace's JSON escapes the scene's text: a name with quotes and a backslash injects no key
+sed 's/^name = .*/name = a"b\\c", "x": 1/' $S > "$W/quote.scene" && sed -i "s#\.\./#$PWD/assets/#" "$W/quote.scene"
+printf '%s\n' '  "scene": "a\"b\\c\", \"x\": 1",' > "$W/quote.want"
+check "trace escapes strings" 0 "^1$" -- sh -c "$BT trace --scene $W/quote.scene --size 8x6 --pixel 4 3 | grep -cxF -f $W/quote.want"
 # the CPU reference: same outputs as the GPU engine; on the flat test scene both give the same outcomes
 check "render cpu" 0 "CPU reference" -- $BT render --scene $S --size 32x24 --engine cpu --out "$TMP/cpu.png" --dump "$TMP/cpu.dump"
 check "render gpu dump" 0 "hit an object" -- $BT render --scene $S --size 32x24 --out "$TMP/gpu.png" --dump "$TMP/gpu.dump"
