@@ -14,6 +14,11 @@ int gl_backend_built(const char *name)
     return 0;
 }
 
+static struct gl_context *current;
+
+struct gl_context *gl_context_current(void) { return current; }
+void gl_context_now_current(struct gl_context *ctx) { current = ctx; }
+
 static struct gl_context *with_api(struct gl_context *ctx, char *err, size_t errlen)
 {
     if (!ctx)
@@ -24,6 +29,7 @@ static struct gl_context *with_api(struct gl_context *ctx, char *err, size_t err
         ctx->destroy(ctx);
         return NULL;
     }
+    current = ctx;
     return ctx;
 }
 
@@ -51,6 +57,9 @@ struct gl_context *gl_context_create(const char *name, char *err, size_t errlen)
 
 void gl_context_destroy(struct gl_context *ctx)
 {
-    if (ctx)
-        ctx->destroy(ctx);
+    if (!ctx)
+        return;
+    if (current == ctx)
+        current = NULL;     /* its quad goes with it */
+    ctx->destroy(ctx);
 }

@@ -17,7 +17,16 @@ struct gl_context {
     void *(*get_proc)(const char *name);
     void (*destroy)(struct gl_context *ctx);
     void *priv;
+    /* the full-screen pass quad of this context (src/gl/quad.c): its buffer and how many users
+     * (probe, renderers, compositor) share it */
+    unsigned quad_buffer;
+    int quad_users;
 };
+
+/* The context whose GL entry points are loaded, made current by gl_context_create or a screen
+ * (gl_context_now_current); NULL when none is. One context is current at a time. */
+struct gl_context *gl_context_current(void);
+void gl_context_now_current(struct gl_context *ctx);
 
 /* Each returns NULL with a message in err when the back-end is unavailable. */
 struct gl_context *init_egl_surfaceless(char *err, size_t errlen);

@@ -1,18 +1,28 @@
 #include "gl/quad.h"
+#include "gl/context.h"
 
-static GLuint quad_buffer;
-/* renderers sharing the current context share the quad: the last one to go deletes it */
-static int quad_users;
+/* The quad belongs to the current context (struct gl_context): a buffer name of one context means
+ * nothing in the next. Without a registered context, one of its own. */
+static struct gl_context orphan;
+
+static struct gl_context *owner(void)
+{
+    struct gl_context *ctx = gl_context_current();
+    return ctx ? ctx : &orphan;
+}
 
 int quad_init(void)
 {
     static const GLfloat corners[] = {-1, -1, 1, -1, -1, 1, 1, 1};
-    if (quad_users++ > 0) {
+    struct gl_context *ctx = owner();
+    if (ctx->quad_users++ > 0) {
         quad_bind();
         return glGetError() == GL_NO_ERROR ? 0 : -1;
     }
-    glGenBuffers(1, &quad_buffer);
-    glBindBuffer(GL_ARRAY_BUFFER, quad_buffer);
+    GLuint buffer = 0;
+    glGenBuffers(1, &buffer);
+    ctx->quad_buffer = buffer;
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
     glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
     glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, 0);
     glEnableVertexAttribArray(0);
@@ -21,16 +31,19 @@ int quad_init(void)
 
 void quad_release(void)
 {
-    if (quad_users > 0 && --quad_users > 0)
+    struct gl_context *ctx = owner();
+    if (ctx->quad_users > 0 && --ctx->quad_users > 0)
         return;
-    if (quad_buffer)
-        glDeleteBuffers(1, &quad_buffer);
-    quad_buffer = 0;
+    if (ctx->quad_buffer) {
+        GLuint buffer = ctx->quad_buffer;
+        glDeleteBuffers(1, &buffer);
+    }
+    ctx->quad_buffer = 0;
 }
 
 void quad_bind(void)
 {
-    glBindBuffer(GL_ARRAY_BUFFER, quad_buffer);
+    glBindBuffer(GL_ARRAY_BUFFER, owner()->quad_buffer);
     glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, 0);
     glEnableVertexAttribArray(0);
     for (GLuint a = 1; a < 8; a++)     /* GLES2 guarantees 8 attributes; meshes used 1 and 2 */

@@ -131,6 +131,7 @@ int screen_egl_attach(struct gl_context *ctx, EGLConfig config, void *native_win
         snprintf(err, errlen, "%s: the GL entry point %s is missing", egl->who, missing);
         return -1;
     }
+    gl_context_now_current(ctx);
     return 0;
 }
 

@@ -26,6 +26,8 @@ check "no overwrite" 2 "--out: refusing to replace" -- $BT render --scene $S --s
 check "render osmesa" 0 "on osmesa" -- $BT render --scene $S --size 32x24 --backend osmesa --out "$TMP/b.png"
 check "trace json" 0 "\"outcome\": \"(object|sky)\"" -- $BT trace --scene $S --size 32x24 --pixel 16 12
 check "info" 0 "RGBA32F +works" -- $BT info
+# each context has its own pass quad: OSMesa probed after EGL works as well as alone
+check "info both back-ends work" 0 "^2$" -- sh -c "$BT info | grep -cE '^render path: +fp32\+mrt'"
 # exact orbits: single pass on both back-ends, the multipass scheme on request, refusals where they
 # do not apply, integration where the GPU lacks 32-bit float textures
 B=assets/scenes/schwarzschild.scene
