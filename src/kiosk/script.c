@@ -1,6 +1,7 @@
 /* The scripted-input file: parsed whole before the kiosk starts, so that a bad script is refused
  * before anything is shown. */
 #include "kiosk/script.h"
+#include "io/text_file.h"
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -34,8 +35,9 @@ static int parse_event(struct script_event *ev, char *text, const char *path, in
     char *end;
     errno = 0;
     ev->t = strtod(time_word, &end);
-    if (*end || errno || !isfinite(ev->t) || ev->t < 0.0)
-        return refuse(err, errlen, path, line, "expected a time in seconds (0 or more), got \"%s\"", time_word);
+    if (*end || errno || !isfinite(ev->t) || ev->t < 0.0 || ev->t > SCRIPT_MAX_SECONDS)
+        return refuse(err, errlen, path, line, "expected a time in seconds from 0 to %.0f, got \"%s\"",
+                      SCRIPT_MAX_SECONDS, time_word);
     ev->line = line;
     if (!kind)
         return refuse(err, errlen, path, line, "expected an event after the time: turn, press or frame");
@@ -59,7 +61,8 @@ static int parse_event(struct script_event *ev, char *text, const char *path, in
         ev->knob = strcmp(a, "speed") == 0 ? SCRIPT_KNOB_SPEED : SCRIPT_KNOB_MASS;
         errno = 0;
         long counts = b ? strtol(b, &end, 10) : 0;
-        if (!b || *end || errno || labs(counts) > SCRIPT_MAX_COUNTS)
+        /* compared on both sides: labs() of LONG_MIN is undefined */
+        if (!b || *end || errno || counts < -SCRIPT_MAX_COUNTS || counts > SCRIPT_MAX_COUNTS)
             return refuse(err, errlen, path, line, "turn %s: expected counts from -%d to +%d, got \"%s\"", a,
                           SCRIPT_MAX_COUNTS, SCRIPT_MAX_COUNTS, b ? b : "");
         ev->counts = counts;
@@ -74,9 +77,10 @@ static int parse_event(struct script_event *ev, char *text, const char *path, in
 int script_load(struct script *sc, const char *path, char *err, size_t errlen)
 {
     sc->n = 0;
-    FILE *f = fopen(path, "r");
+    char why[256];
+    FILE *f = regular_file_open(path, "script", why, sizeof why);
     if (!f) {
-        snprintf(err, errlen, "%s: cannot read the script: %s", path, strerror(errno));
+        snprintf(err, errlen, "%s: %s", path, why);
         return -1;
     }
     char text[SCRIPT_LINE_MAX + 2];

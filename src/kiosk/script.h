@@ -6,8 +6,9 @@
  *     2.0  press next_scene     an action: next_scene, previous_scene, cycle_effects, reset,
  *                               pipeline_view
  *     2.5  frame                headless: write the frame shown now
- * Refused with FILE:LINE: unknown words, a time that goes back, NaN or negative times, counts
- * beyond +-1000 in one event, more than SCRIPT_MAX_EVENTS events, trailing text. */
+ * Refused with FILE:LINE: unknown words, a time that goes back, NaN, negative times or times beyond
+ * SCRIPT_MAX_SECONDS, counts beyond +-1000 in one event, more than SCRIPT_MAX_EVENTS events,
+ * trailing text. Any file that is not a regular file (a FIFO) is refused at once. */
 #ifndef BT_SCRIPT_H
 #define BT_SCRIPT_H
 #include <stddef.h>
@@ -15,6 +16,7 @@
 
 #define SCRIPT_MAX_EVENTS 4096
 #define SCRIPT_MAX_COUNTS 1000       /* detents in one event: more is a typo */
+#define SCRIPT_MAX_SECONDS 86400.0   /* an event's time: a day; later is a typo the kiosk would wait for */
 
 enum script_kind { SCRIPT_TURN, SCRIPT_PRESS, SCRIPT_FRAME };
 enum script_knob { SCRIPT_KNOB_SPEED, SCRIPT_KNOB_MASS };

@@ -136,6 +136,10 @@ static void test_script(void **state)
         {"nan frame\n", ":1: expected a time"},
         {"-1 frame\n", ":1: expected a time"},
         {"1 turn speed +5000\n", ":1: turn speed: expected counts from -1000 to +1000"},
+        /* LONG_MIN, whose labs() would be undefined */
+        {"0.5 turn speed -9223372036854775808\n", ":1: turn speed: expected counts from -1000 to +1000"},
+        /* a far-future event would keep a headless kiosk waiting */
+        {"0.5 frame\n1e15 frame\n", ":2: expected a time in seconds from 0 to 86400"},
         {"1 turn volume 3\n", ":1: turn: expected the knob speed or mass"},
         {"1 press launch\n", ":1: press: expected next_scene"},
         {"1 frame now\n", ":1: unexpected \"now\""},
@@ -148,7 +152,7 @@ static void test_script(void **state)
             fail_msg("script \"%s\": got \"%s\", want \"%s\"", bad[i].text, err, bad[i].want);
     }
     assert_int_equal(script_load(&sc, "build/no_such_script.txt", err, sizeof err), -1);
-    assert_non_null(strstr(err, "no_such_script.txt: cannot read"));
+    assert_non_null(strstr(err, "no_such_script.txt: cannot open the script"));
 }
 
 /* One renderer whose scene the knobs change between frames draws what a fresh renderer draws, while
