@@ -5,7 +5,7 @@
 #include "gl/shader.h"
 
 #define PROGRAMS_MAX 64
-#define PROGRAMS_KEY_LEN 1280
+#define PROGRAMS_KEY_LEN 6144   /* defines of a single pass over 64 objects included */
 
 /* A linked program and where its active uniforms are, read from GL once when it is built
  * (glGetActiveUniform): the stages set uniforms by name every pass without asking GL. */

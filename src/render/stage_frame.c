@@ -76,7 +76,7 @@ int stage_frame(struct renderer *r, int state, char *err, size_t errlen)
     struct frame_args a = {.r = r};
     if (frame_batch(r, &a.batch, err, errlen) != 0)
         return -1;
-    char batch[1024];
+    char batch[4096];
     if (a.batch.count > 0) {
         if (object_batch_defines(&a.batch, batch, sizeof batch) != 0) {
             snprintf(err, errlen, "internal: the defines of the single pass do not fit");

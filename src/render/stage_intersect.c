@@ -110,9 +110,9 @@ void object_batch_set_uniforms(const struct program_uniforms *p, const void *arg
 {
     const struct object_batch *b = arg;
     const struct scene *s = b->r->scene;
-    float geometry[SCENE_MAX_BATCH][GEOMETRY_VECS][4], material[SCENE_MAX_BATCH][MATERIAL_VECS][4];
-    float motion[SCENE_MAX_BATCH][MOTION_VECS][4];
-    GLint units[SCENE_MAX_BATCH];
+    float geometry[OBJECT_BATCH_MAX][GEOMETRY_VECS][4], material[OBJECT_BATCH_MAX][MATERIAL_VECS][4];
+    float motion[OBJECT_BATCH_MAX][MOTION_VECS][4];
+    GLint units[OBJECT_BATCH_MAX];
     int unit = FIRST_OBJECT_UNIT;
     for (int i = 0; i < b->count; i++) {
         const struct object *o = &s->objects[b->object[i]];
@@ -238,7 +238,8 @@ static int pass_capacity(const struct renderer *r, int single_pass)
     int reserved = RESERVED_UNIFORM_VECS + (r->exact_orbits ? ORBIT_UNIFORM_VECS : 0) +
                    (single_pass ? FRAME_UNIFORM_VECS : 0);
     int by_uniforms = (r->caps.max_fragment_uniform_vectors - reserved) / per_object;
-    int limit = by_uniforms < SCENE_MAX_BATCH ? by_uniforms : SCENE_MAX_BATCH;
+    int most = single_pass ? OBJECT_BATCH_MAX : SCENE_MAX_BATCH;
+    int limit = by_uniforms < most ? by_uniforms : most;
     return limit < 1 ? 1 : limit;
 }
 
@@ -256,7 +257,7 @@ int frame_object_limit(const struct renderer *r)
 static int intersect_batch(struct renderer *r, const struct object_batch *b, int segment_start, char *err, size_t errlen)
 {
     struct raystate *rs = &r->rs;
-    char defines[1024];
+    char defines[4096];
     if (object_batch_defines(b, defines, sizeof defines) != 0) {
         snprintf(err, errlen, "internal: the defines of an object batch do not fit");
         return -1;

@@ -99,9 +99,12 @@ int frame_object_limit(const struct renderer *r);
  * new count), its uniforms (a set_uniforms_fn), and a batch of every object of the scene for the
  * single pass (-1 where they do not fit one pass on this GPU, frame_object_limit, or the polygon
  * method draws one). */
+/* objects one batch may hold: render.batch (at most SCENE_MAX_BATCH) for an intersection pass,
+ * every object of the scene for the single pass; either within the GPU's uniform vectors */
+#define OBJECT_BATCH_MAX SCENE_MAX_OBJECTS
 struct object_batch {
     const struct renderer *r;
-    int object[SCENE_MAX_BATCH];  /* scene indices, in scene order */
+    int object[OBJECT_BATCH_MAX];  /* scene indices, in scene order */
     int count;
     int segment;
 };

@@ -165,6 +165,38 @@ static void test_single_pass_is_exact(void **state)
         assert_true(seen[o] > 0);
 }
 
+/* More objects than one intersection pass holds (SCENE_MAX_BATCH): the multipass scheme needs two
+ * batches, the single pass tests them all in its loop; the same rays. */
+static void test_single_pass_many_objects(void **state)
+{
+    (void)state;
+    static struct scene s;
+    static const char *const sets[] = {"render.method=rk4", NULL};
+    hc_load(&s, "schwarzschild", W, H, sets);
+    int added = 0;
+    while (s.n_objects < SCENE_MAX_BATCH + 8) {
+        char name[32];
+        snprintf(name, sizeof name, "ball%d", added);
+        struct object *o = hc_add_object(&s, PRIM_SPHERE, name);
+        double a = 2.0 * 3.14159265358979 * added / 24.0;
+        o->center = v3(4.0 * cos(a), 0.6 * sin(3.0 * a), 4.0 * sin(a));
+        o->radius = 0.35;
+        added++;
+    }
+    hc_validate(&s);
+    struct hc_gpu multi, single;
+    s.render.pipeline = PIPELINE_MULTIPASS;
+    hc_gpu_render(&s, &multi);
+    s.render.pipeline = PIPELINE_AUTO;
+    hc_gpu_render(&s, &single);
+    print_message("%d objects: multipass %ld passes, single pass %ld\n", s.n_objects, multi.res.passes,
+                  single.res.passes);
+    assert_same_rays(&single, &multi, "more objects than a batch");
+    assert_true(single.res.passes <= 5);
+    hc_gpu_free(&multi);
+    hc_gpu_free(&single);
+}
+
 /* A black hole with nothing but sky: rays pass at every distance from the photon sphere. */
 static void load_sky_only(struct scene *s, const char *const *sets)
 {
@@ -300,6 +332,7 @@ int main(void)
         cmocka_unit_test(test_batches_are_exact),
         cmocka_unit_test(test_unrolling_is_exact),
         cmocka_unit_test(test_single_pass_is_exact),
+        cmocka_unit_test(test_single_pass_many_objects),
         cmocka_unit_test(test_step_doubling_adapts),
         cmocka_unit_test(test_embedded_pair),
         cmocka_unit_test(test_dopri5_matches_model_step),
