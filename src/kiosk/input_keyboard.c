@@ -90,12 +90,25 @@ static int keyboard_drain(struct input_source *src, double now, struct input_eve
             }
             break;
         }
+        struct pollfd hup = {.fd = k->fd, .events = POLLIN, .revents = 0};
+        if (got == 0 && k->is_tty && !(poll(&hup, 1, 0) > 0 && (hup.revents & (POLLHUP | POLLERR | POLLNVAL)))) {
+            /* a terminal answers 0 when nothing is waiting (where its VMIN was reset to 0) as well as
+             * when it hung up; only a hang-up, which poll reports, ends the keyboard */
+            if (!read_any && k->n_pending == 1)
+                n += emit(src, now, KEY_CODE_ESCAPE, 0x1b, &out[n]);
+            if (!read_any)
+                k->n_pending = 0;
+            break;
+        }
         if (got <= 0) {
             k->ended = 1;
             src->finished = 1;
             if (got < 0)
                 fprintf(src->log, "input %s: reading the keyboard failed: %s; keys are no longer read\n",
                         src->cfg->name, strerror(errno));
+            else
+                fprintf(src->log, "input %s: the keyboard's input ended; keys are no longer read\n",
+                        src->cfg->name);
             break;
         }
         read_any = 1;
@@ -148,7 +161,9 @@ struct input_source *input_open_keyboard(const struct kiosk_config *c, int index
     if (isatty(k->fd) && tcgetattr(k->fd, &k->saved) == 0) {
         struct termios raw = k->saved;
         raw.c_lflag &= ~(tcflag_t)(ICANON | ECHO);
-        raw.c_cc[VMIN] = 0;
+        /* VMIN 1 with O_NONBLOCK: a terminal with no key waiting answers EAGAIN, as a pipe does;
+         * with VMIN 0 it would answer 0, which reads as the end of input */
+        raw.c_cc[VMIN] = 1;
         raw.c_cc[VTIME] = 0;
         k->is_tty = tcsetattr(k->fd, TCSANOW, &raw) == 0;
     }
