@@ -136,9 +136,10 @@ static int collect_lines(const struct hud_view *v, char lines[][HUD_LINE_LEN], e
     }
     if (v->effects)
         LINE(LINE_BODY, "effects: %s", v->effects);
-    if (v->fps >= 0.0 && v->refining)
+    /* no rate while none was drawn in the last second: "0.0 frames/s" reads as broken */
+    if (v->fps > 0.0 && v->refining)
         LINE(LINE_BODY, "%.1f frames/s   refining...", v->fps);
-    else if (v->fps >= 0.0)
+    else if (v->fps > 0.0)
         LINE(LINE_BODY, "%.1f frames/s", v->fps);
     else if (v->refining)
         LINE(LINE_BODY, "refining...");

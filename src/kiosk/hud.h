@@ -24,7 +24,7 @@ struct hud_view {
     double speed_param, mass_param;
     const char *effects;             /* "geometry", "Doppler colour", "Doppler colour + searchlight";
                                         NULL where the scene has no black body to shift */
-    double fps;                      /* frames shown per second, measured; < 0: not yet known */
+    double fps;                      /* frames shown per second, measured; <= 0: not shown */
     int refining;                    /* 1 while the picture is still being refined */
     /* The knob turned in the last moments: a short indicator of its value within its range. */
     enum hud_knob indicator;

@@ -133,6 +133,11 @@ static void test_lines_optional(void **state)
     assert_true(find_line(lines, n, "refining...") >= 0);
     assert_string_equal(lines[n - 1], v.notice);
     assert_int_equal(hud_lines(&v, lines, 2), 2);
+    /* refining while no frame was drawn in the last second: no "0.0 frames/s" */
+    v.fps = 0.0;
+    n = hud_lines(&v, lines, HUD_MAX_LINES);
+    assert_int_equal(find_line(lines, n, "frames/s"), -1);
+    assert_true(find_line(lines, n, "refining...") >= 0);
 
     v.has_mass = 0;
     n = hud_lines(&v, lines, HUD_MAX_LINES);
