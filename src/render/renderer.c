@@ -109,7 +109,7 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
         renderer_destroy(r);
         return NULL;
     }
-    if (textures_load(r, err, errlen) != 0 || polygons_load(r, err, errlen) != 0) {
+    if (textures_load(r, err, errlen, bad_input) != 0 || polygons_load(r, err, errlen) != 0) {
         renderer_destroy(r);
         return NULL;
     }

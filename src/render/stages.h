@@ -69,7 +69,8 @@ void bounds_set_uniforms(const struct program_uniforms *program, const struct sc
 void uniform_vec3(const struct program_uniforms *program, const char *name, vec3d v);
 void uniform_float(const struct program_uniforms *program, const char *name, double v);
 
-int textures_load(struct renderer *r, char *err, size_t errlen);
+/* The scene's textures and sky; a file that cannot be decoded sets *bad_input (exit 2). */
+int textures_load(struct renderer *r, char *err, size_t errlen, int *bad_input);
 /* shaders_es/observer.glsl: camera, observer velocity, black-body table (observer.c) */
 int observer_defines(const struct scene *s, char *out, size_t len);
 void observer_set_uniforms(const struct program_uniforms *program, const struct renderer *r);

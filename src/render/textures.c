@@ -4,13 +4,20 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-static int upload(GLenum target, const char *path, int max_size, char *err, size_t errlen)
+/* A texture that cannot be decoded is the scene's bad input: the message names the scene file and
+ * the line of the key that named it (the validation read only the PNG's header). */
+static int upload(GLenum target, const struct scene *s, const char *key, int line, const char *path, int max_size,
+                  char *err, size_t errlen, int *bad_input)
 {
     int w, h;
     unsigned char *rgba = NULL;
     char msg[400];
     if (png_read_rgba8(path, max_size, &w, &h, &rgba, msg, sizeof msg) != 0) {
-        snprintf(err, errlen, "%s", msg);
+        if (line > 0)
+            snprintf(err, errlen, "%s:%d: %s: %s", s->path, line, key, msg);
+        else
+            snprintf(err, errlen, "%s: %s: %s", s->path, key, msg);
+        *bad_input = 1;
         return -1;
     }
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -19,7 +26,7 @@ static int upload(GLenum target, const char *path, int max_size, char *err, size
     return 0;
 }
 
-int textures_load(struct renderer *r, char *err, size_t errlen)
+int textures_load(struct renderer *r, char *err, size_t errlen, int *bad_input)
 {
     const struct scene *s = r->scene;
     int max_size = r->caps.max_texture_size < SCENE_MAX_TEXTURE_SIZE ? r->caps.max_texture_size : SCENE_MAX_TEXTURE_SIZE;
@@ -31,7 +38,8 @@ int textures_load(struct renderer *r, char *err, size_t errlen)
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        if (upload(GL_TEXTURE_2D, s->textures[i], max_size, err, errlen) != 0)
+        if (upload(GL_TEXTURE_2D, s, "texture", s->texture_line[i], s->textures[i], max_size, err, errlen,
+                   bad_input) != 0)
             return -1;
     }
     if (s->sky.type == SKY_CUBEMAP) {
@@ -45,7 +53,8 @@ int textures_load(struct renderer *r, char *err, size_t errlen)
         for (int f = 0; f < 6; f++) {
             char path[SCENE_PATH_LEN + 16];
             snprintf(path, sizeof path, "%s_%s.png", s->sky.cubemap, faces[f]);
-            if (upload(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, path, max_size, err, errlen) != 0)
+            if (upload(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, s, "cubemap", s->cubemap_line, path, max_size, err,
+                       errlen, bad_input) != 0)
                 return -1;
         }
     }

@@ -200,6 +200,8 @@ struct scene {
     struct light lights[SCENE_MAX_LIGHTS];
     int n_textures;
     char textures[SCENE_MAX_TEXTURES][SCENE_PATH_LEN]; /* resolved paths of PNG textures */
+    int texture_line[SCENE_MAX_TEXTURES];  /* line of the first key that named each (0: --set or code) */
+    int cubemap_line;                      /* line of [sky] cubemap (0: --set or code) */
     struct quality_bound quality;
     struct scene_kiosk kiosk;
 };

@@ -235,6 +235,15 @@ static int on_pair(void *user, const char *inih_section, const char *name, const
     r->key_line[key] = r->line;
     if (strcmp(name, "type") == 0)
         r->type_line = r->line;
+    /* where each image came from, for a file that turns out unreadable only when it is decoded */
+    struct scene *s = r->s;
+    if (section == SECTION_OBJECT && strcmp(name, "texture") == 0 && s->n_objects > 0) {
+        int t = s->objects[s->n_objects - 1].material.texture;
+        if (t >= 0 && s->texture_line[t] == 0)
+            s->texture_line[t] = r->line;
+    }
+    if (section == SECTION_SKY && strcmp(name, "cubemap") == 0)
+        s->cubemap_line = r->line;
     return 1;
 }
 

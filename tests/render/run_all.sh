@@ -84,6 +84,10 @@ check "scene is a directory" 2 "cannot read the scene file: it is a directory" -
 sed 's/^name = .*/name = a"b\\c", "x": 1/' $S > "$W/quote.scene" && sed -i "s#\.\./#$PWD/assets/#" "$W/quote.scene"
 printf '%s\n' '  "scene": "a\"b\\c\", \"x\": 1",' > "$W/quote.want"
 check "trace escapes strings" 0 "^1$" -- sh -c "$BT trace --scene $W/quote.scene --size 8x6 --pixel 4 3 | grep -cxF -f $W/quote.want"
+# a texture whose header reads but whose data is cut off: bad input (exit 2) at the key that named it
+mkdir -p "$W/tx/scenes" "$W/tx/textures" "$W/tx/sky" && cp assets/sky/grid_* "$W/tx/sky/" && cp $S "$W/tx/scenes/"
+head -c $(( $(stat -c %s assets/textures/checker_grey.png) / 2 )) assets/textures/checker_grey.png > "$W/tx/textures/checker_grey.png"
+check "truncated texture" 2 "tx/scenes/test.scene:59: texture: cannot read .*checker_grey.png: the file is truncated" -- $BT render --scene "$W/tx/scenes/test.scene" --size 8x6 --out "$W/tx/o.png"
 # the CPU reference: same outputs as the GPU engine; on the flat test scene both give the same outcomes
 check "render cpu" 0 "CPU reference" -- $BT render --scene $S --size 32x24 --engine cpu --out "$TMP/cpu.png" --dump "$TMP/cpu.dump"
 check "render gpu dump" 0 "hit an object" -- $BT render --scene $S --size 32x24 --out "$TMP/gpu.png" --dump "$TMP/gpu.dump"
