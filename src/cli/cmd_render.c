@@ -55,6 +55,26 @@ static void summarise(const struct measured *m, const struct scene *s)
         fprintf(stderr, "warning: %ld non-finite values in the ray state\n", m->nonfinite);
 }
 
+/* Warnings that --quiet does not hide: an image that says nothing about the scene. Every ray failed
+ * (the model's numbers overflow), or a segment so long that its chord cuts straight across the
+ * bounding sphere. */
+static void warn_meaningless(const struct measured *m, const struct scene *s)
+{
+    const struct dump *d = &m->dump;
+    size_t n = (size_t)d->width * d->height, failed = 0;
+    for (size_t i = 0; i < n; i++)
+        failed += d->records[i].outcome == DUMP_FAILED;
+    if (n > 0 && failed * 2 >= n)
+        fprintf(stderr, "warning: %zu of %zu rays failed (their state stopped being finite): the model's settings "
+                        "(%s, strength or step) give no meaningful image\n", failed, n, model_name(s->model.type));
+    const struct render_settings *r = &s->render;
+    double segment = r->step_size * r->steps_per_segment;
+    if (!model_is_straight(&s->model) && r->method != METHOD_ORBIT_TABLE && segment > 2.0 * r->bound_radius)
+        fprintf(stderr, "warning: one segment (render.step %g x %d steps) is longer than the bounding sphere's "
+                        "diameter %g: its chord cuts across the scene, so hits and bends mean little\n",
+                r->step_size, r->steps_per_segment, 2.0 * r->bound_radius);
+}
+
 /* Either engine; returns an exit code, m filled on EXIT_OK. */
 static int render_with(const struct common_options *o, const struct scene *s, struct measured *m)
 {
@@ -150,6 +170,7 @@ int cmd_render(int argc, char **argv)
     if (rc == EXIT_OK) {
         if (!quiet)
             summarise(&r, &s);
+        warn_meaningless(&r, &s);
         printf("%s\n", out_path);
     }
     measured_free(&r);
