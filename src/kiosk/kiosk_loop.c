@@ -35,6 +35,17 @@ static void catch_stop_signals(void)
     sigemptyset(&sa.sa_mask);
     sigaction(SIGTERM, &sa, NULL);
     sigaction(SIGINT, &sa, NULL);
+    /* the terminal or session went away: stop as cleanly as for SIGTERM */
+    sigaction(SIGHUP, &sa, NULL);
+    /* a reader that went away (a closed log pipe) is a failed write, not the end of the exhibit;
+     * the user signals mean nothing here and must not kill it */
+    struct sigaction ignore;
+    memset(&ignore, 0, sizeof ignore);
+    ignore.sa_handler = SIG_IGN;
+    sigemptyset(&ignore.sa_mask);
+    sigaction(SIGPIPE, &ignore, NULL);
+    sigaction(SIGUSR1, &ignore, NULL);
+    sigaction(SIGUSR2, &ignore, NULL);
 }
 
 struct kiosk {

@@ -25,11 +25,24 @@ check "kiosk without devices" 0 "^1 1 1 1 2 frames$" -- sh -c "$BT kiosk --confi
     echo \$(ls $TMP/absent/frame_*.png | wc -l) frames"
 # --check-inputs: the script's events, one line each, then it ends with the script
 check "kiosk check inputs" 0 "input replay: turn speed \+20.*input replay: press next_scene" -- sh -c "$BT kiosk --config $K --out $TMP --check-inputs | tr '\n' ' '"
-# SIGTERM ends the loop at once (the headless kiosk with no frame limit runs until stopped)
+# SIGTERM ends the loop at its next turn (the headless kiosk with no frame limit runs until
+# stopped). The time it took is printed; the bound is 30 s, which no plausible load reaches: this
+# proves the clean stop, not its speed. The signal is sent once the kiosk has logged that it runs,
+# so a slow start cannot turn it into a kill.
 mkdir -p "$TMP/term"
-check "kiosk stops on SIGTERM" 0 "^logged, exit 0 within 1 s$" -- sh -c "$BT kiosk --config $K --out $TMP/term --frames 0 2>$TMP/term/log & pid=\$!; sleep 2; kill -TERM \$pid;
-    t=0; while kill -0 \$pid 2>/dev/null && [ \$t -lt 10 ]; do sleep 0.1; t=\$((t+1)); done;
-    wait \$pid; rc=\$?; grep -q 'stopped after .* (signal)' $TMP/term/log && [ \$t -lt 10 ] && echo \"logged, exit \$rc within 1 s\""
+stop_check() {  # name, signal, then the signals sent before it that must change nothing
+    local name=$1 sig=$2; shift 2
+    check "$name" 0 "^logged, exit 0 after [0-9.]+ s$" -- sh -c "$BT kiosk --config $K --out $TMP/term --frames 0 --force 2>$TMP/term/log & pid=\$!;
+    t=0; while ! grep -q . $TMP/term/log 2>/dev/null && [ \$t -lt 300 ]; do sleep 0.1; t=\$((t+1)); done;
+    for s in $*; do kill -\$s \$pid; sleep 0.2; done; kill -0 \$pid || { cat $TMP/term/log; exit 1; };
+    start=\$(date +%s%N); kill -$sig \$pid;
+    t=0; while kill -0 \$pid 2>/dev/null && [ \$t -lt 300 ]; do sleep 0.1; t=\$((t+1)); done;
+    wait \$pid; rc=\$?; took=\$(( (\$(date +%s%N) - start) / 1000000 ));
+    grep -q 'stopped after .* (signal)' $TMP/term/log && [ \$t -lt 300 ] && echo \"logged, exit \$rc after \$((took / 1000)).\$((took % 1000 / 100)) s\""
+    grep -h "logged, exit" "$TMP/out" 2>/dev/null | sed "s/^/    $name: /"
+}
+stop_check "kiosk stops on SIGTERM" TERM
+stop_check "kiosk stops on SIGHUP, ignores SIGUSR1 and SIGPIPE" HUP USR1 PIPE
 # a scene change keeps the knobs' values where the new scene takes them, and puts them back to their
 # start where it does not (here a mass whose horizon would swallow the camera): the kiosk goes on
 mkdir -p "$TMP/switch" "$TMP/start"
