@@ -1,5 +1,7 @@
 /* The kiosk's loop. */
 #include "kiosk/kiosk_loop.h"
+#include "io/output_file.h"
+#include <dirent.h>
 #include "io/png_io.h"
 #include "kiosk/hud.h"
 #include "kiosk/kiosk_events.h"
@@ -461,13 +463,29 @@ static int headless_preflight(const struct kiosk *k, char *err, size_t errlen)
         snprintf(err, errlen, "%s: [display] headless_out: %s is not a directory", k->cfg->path, d->headless_out);
         return -1;
     }
-    char first[KIOSK_PATH_LEN + 32];
-    snprintf(first, sizeof first, "%s/frame_0001.png", d->headless_out);
-    if (!k->opt->force && stat(first, &st) == 0) {
-        snprintf(err, errlen, "%s exists: frames of an earlier run are not replaced without --force", first);
+    /* any frame of an earlier run, not only the first: a stray frame_0007.png would otherwise
+     * stop the kiosk at its seventh frame */
+    DIR *dir = opendir(d->headless_out);
+    if (!dir) {
+        snprintf(err, errlen, "%s: [display] headless_out: %s: %s", k->cfg->path, d->headless_out, strerror(errno));
         return -1;
     }
-    return 0;
+    int rc = 0;
+    for (struct dirent *e; rc == 0 && (e = readdir(dir));) {
+        unsigned number;
+        int end = 0;
+        if (sscanf(e->d_name, "frame_%u.png%n", &number, &end) != 1 || end == 0 || e->d_name[end] != '\0')
+            continue;
+        char path[KIOSK_PATH_LEN + 300];
+        snprintf(path, sizeof path, "%s/%s", d->headless_out, e->d_name);
+        char why[600];
+        if (output_check(path, k->opt->force, why, sizeof why) != 0) {
+            snprintf(err, errlen, "[display] headless_out: %s: a frame of an earlier run", why);
+            rc = -1;
+        }
+    }
+    closedir(dir);
+    return rc;
 }
 
 /* The screen. A KMS display with nothing plugged in is waited for (the monitor may be switched on

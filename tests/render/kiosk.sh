@@ -25,6 +25,9 @@ check "kiosk without devices" 0 "^1 1 1 1 2 frames$" -- sh -c "$BT kiosk --confi
     echo \$(ls $TMP/absent/frame_*.png | wc -l) frames"
 # --check-inputs: the script's events, one line each, then it ends with the script
 check "kiosk check inputs" 0 "input replay: turn speed \+20.*input replay: press next_scene" -- sh -c "$BT kiosk --config $K --out $TMP --check-inputs | tr '\n' ' '"
+# a stray frame of an earlier run anywhere in the sequence is refused before the kiosk starts
+mkdir -p "$TMP/stray" && touch "$TMP/stray/frame_0007.png"
+check "kiosk stray frame" 2 "refusing to replace existing file .*stray/frame_0007.png .*a frame of an earlier run" -- $BT kiosk --config $K --out "$TMP/stray" --frames 8
 # SIGTERM ends the loop at its next turn (the headless kiosk with no frame limit runs until
 # stopped). The time it took is printed; the bound is 30 s, which no plausible load reaches: this
 # proves the clean stop, not its speed. The signal is sent once the kiosk has logged that it runs,
