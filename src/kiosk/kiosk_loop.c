@@ -27,27 +27,27 @@ static void on_stop_signal(int sig)
     stop_requested = 1;
 }
 
-/* No SA_RESTART: a signal cuts poll() short, so the loop sees it at once. */
+static void set_action(int sig, void (*handler)(int))
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = handler;
+    sigemptyset(&sa.sa_mask);
+    sigaction(sig, &sa, NULL);
+}
+
+/* No SA_RESTART: a signal cuts poll() short, so the loop sees it at once. SIGHUP (the terminal or
+ * session went away) stops as cleanly as SIGTERM. A reader that went away (a closed log pipe) is a
+ * failed write, not the end of the exhibit, and the user signals mean nothing here: ignored. */
 static void catch_stop_signals(void)
 {
     stop_requested = 0;
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_stop_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGTERM, &sa, NULL);
-    sigaction(SIGINT, &sa, NULL);
-    /* the terminal or session went away: stop as cleanly as for SIGTERM */
-    sigaction(SIGHUP, &sa, NULL);
-    /* a reader that went away (a closed log pipe) is a failed write, not the end of the exhibit;
-     * the user signals mean nothing here and must not kill it */
-    struct sigaction ignore;
-    memset(&ignore, 0, sizeof ignore);
-    ignore.sa_handler = SIG_IGN;
-    sigemptyset(&ignore.sa_mask);
-    sigaction(SIGPIPE, &ignore, NULL);
-    sigaction(SIGUSR1, &ignore, NULL);
-    sigaction(SIGUSR2, &ignore, NULL);
+    set_action(SIGTERM, on_stop_signal);
+    set_action(SIGINT, on_stop_signal);
+    set_action(SIGHUP, on_stop_signal);
+    set_action(SIGPIPE, SIG_IGN);
+    set_action(SIGUSR1, SIG_IGN);
+    set_action(SIGUSR2, SIG_IGN);
 }
 
 struct kiosk {
