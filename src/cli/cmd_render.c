@@ -55,15 +55,22 @@ static void summarise(const struct measured *m, const struct scene *s)
         fprintf(stderr, "warning: %ld non-finite values in the ray state\n", m->nonfinite);
 }
 
-/* Warnings that --quiet does not hide: an image that says nothing about the scene. Every ray failed
- * (the model's numbers overflow), or a segment so long that its chord cuts straight across the
- * bounding sphere. */
+/* Warnings that --quiet does not hide: an image that says little about the scene. A tenth or more of
+ * the rays still travelling at the end, half or more failed (the model's numbers overflow), or a
+ * segment so long that its chord cuts straight across the bounding sphere. */
 static void warn_meaningless(const struct measured *m, const struct scene *s)
 {
     const struct dump *d = &m->dump;
-    size_t n = (size_t)d->width * d->height, failed = 0;
-    for (size_t i = 0; i < n; i++)
+    size_t n = (size_t)d->width * d->height, failed = 0, unfinished = 0;
+    for (size_t i = 0; i < n; i++) {
         failed += d->records[i].outcome == DUMP_FAILED;
+        unfinished += d->records[i].outcome == DUMP_UNFINISHED;
+    }
+    /* a tenth of the image showing the sky where the rays are not leaving is no longer a detail */
+    if (n > 0 && unfinished * 10 >= n)
+        fprintf(stderr, "warning: %zu of %zu rays (%.0f%%) were still travelling after the last segment: they show "
+                        "the sky in their last direction, not where they would leave (raise render.segments)\n",
+                unfinished, n, 100.0 * (double)unfinished / (double)n);
     if (n > 0 && failed * 2 >= n)
         fprintf(stderr, "warning: %zu of %zu rays failed (their state stopped being finite): the model's settings "
                         "(%s, strength or step) give no meaningful image\n", failed, n, model_name(s->model.type));

@@ -89,6 +89,7 @@ mkdir -p "$W/tx/scenes" "$W/tx/textures" "$W/tx/sky" && cp assets/sky/grid_* "$W
 head -c $(( $(stat -c %s assets/textures/checker_grey.png) / 2 )) assets/textures/checker_grey.png > "$W/tx/textures/checker_grey.png"
 check "truncated texture" 2 "tx/scenes/test.scene:59: texture: cannot read .*checker_grey.png: the file is truncated" -- $BT render --scene "$W/tx/scenes/test.scene" --size 8x6 --out "$W/tx/o.png"
 # settings that give no meaningful image say so, also under --quiet
+check "unfinished rays warned" 0 "warning: [0-9]+ of 192 rays \([0-9]+%\) were still travelling" -- $BT render --scene assets/scenes/lorenz.scene --size 16x12 --set render.segments=5 --out "$W/s0.png" --quiet
 check "all rays failed warned" 0 "warning: 192 of 192 rays failed" -- $BT render --scene assets/scenes/lorenz.scene --size 16x12 --set model.strength=1e8 --out "$W/s1.png" --quiet
 check "segment too long warned" 0 "warning: one segment .* is longer than the bounding sphere" -- $BT render --scene assets/scenes/schwarzschild.scene --size 16x12 --set render.method=rk4 --set render.step=1e6 --out "$W/s2.png" --quiet
 # the CPU reference: same outputs as the GPU engine; on the flat test scene both give the same outcomes
