@@ -11,7 +11,7 @@ check "kiosk headless without out" 2 "headless_out" -- $BT kiosk --config $K
 mkdir -p "$TMP/kiosk"
 check "kiosk headless run" 0 "stopped after" -- $BT kiosk --config $K --out "$TMP/kiosk" --frames 8
 check "kiosk frames written" 0 "^8 frames$" -- sh -c "echo \$(ls $TMP/kiosk/frame_*.png | wc -l) frames"
-check "kiosk no overwrite" 2 "frame_0001.png exists.*--force" -- $BT kiosk --config $K --out "$TMP/kiosk" --frames 8
+check "kiosk no overwrite" 2 "refusing to replace existing file .*frame_[0-9]+\.png \(use --force to overwrite it\): a frame of an earlier run" -- $BT kiosk --config $K --out "$TMP/kiosk" --frames 8
 check "kiosk osmesa run" 0 "headless screen 160x90 \(OSMesa.*stopped after" -- sh -c "$BT kiosk --config $K --out $TMP/kiosk --frames 2 --backend osmesa --force 2>&1 | tr '\n' ' '"
 # a bad script is refused before anything is shown, with FILE:LINE
 mkdir -p "$TMP/badscript"
