@@ -86,7 +86,7 @@ BENCH_PACKAGES := gnuplot-nox
 deps-bench:
 	@$(MAKE) --no-print-directory deps DEB_PACKAGES="$(BENCH_PACKAGES)"
 
-# The whole benchmark (about an hour here), then the plots from its gnuplot scripts.
+# The whole benchmark (about half an hour here), then the plots from its gnuplot scripts.
 bench: deps deps-bench
 	@$(MAKE) --no-print-directory bentray
 	./bentray bench --out docs --force
