@@ -175,10 +175,10 @@ FUZZ_SRCS_kiosk_config := $(FUZZ_SRCS_text) src/kiosk/kiosk_config.c src/kiosk/k
                           src/kiosk/kiosk_config_keys.c src/kiosk/kiosk_config_paths.c \
                           src/kiosk/kiosk_config_values.c src/kiosk/hid_report.c src/kiosk/quadrature.c \
                           src/kiosk/debounce.c src/kiosk/input_hid_decode.c src/kiosk/input_event.c
-FUZZ_SRCS_dump         := src/ref/dump.c
+FUZZ_SRCS_dump         := $(FUZZ_SRCS_text) src/io/output_file.c src/ref/dump.c
 FUZZ_SRCS_hid          := src/kiosk/hid_report.c
 FUZZ_SRCS_gpio         := src/kiosk/quadrature.c src/kiosk/debounce.c src/kiosk/event_merge.c
-FUZZ_SRCS_script       := src/kiosk/script.c src/kiosk/script_player.c
+FUZZ_SRCS_script       := $(FUZZ_SRCS_text) src/kiosk/script.c src/kiosk/script_player.c
 FUZZ_BINS     := $(FUZZ_TARGETS:%=$(FUZZ_DIR)/fuzz_%)
 # Where the harnesses write their input as a file: from tree/scenes, a scene's ../textures and
 # ../sky, and from tree/kiosk, the configuration's ../assets, are the project's, as from
