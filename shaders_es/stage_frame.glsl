@@ -26,7 +26,7 @@ void main()
     vec3 a = x;
     float code = CODE_UNFINISHED;
     float end_key = NO_HIT;
-    candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec2(0.0));
+    candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
     for (highp int i = 0; i < FRAME_MAX_SEGMENTS; i++) {
         float k = float(i);
         if (k >= u_segments || stop)

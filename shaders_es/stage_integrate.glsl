@@ -140,10 +140,64 @@ void controlled_step(vec3 x, vec3 v, float h, out vec3 x1, out vec3 v1, out bool
 }
 #endif
 
+#ifndef MODEL_FLAT
+// One step as the scheme defines it: a ray stops moving once it left the bounding sphere, fell
+// into the horizon or its state stopped being finite (the last finite state is kept, and the
+// step count turns negative: failed); the ray state is updated with selects (see the precision
+// note in common.glsl).
+void step_checked(inout vec3 x, inout vec3 v, inout float steps, inout float h, inout bool running)
+{
+    vec3 x1, v1;
+    bool accept;
+    float h_next;
+    controlled_step(x, v, h, x1, v1, accept, h_next);
+    bool ok = finite_state(x1, v1) || !accept;
+    bool take = running && ok && accept;
+    float next_steps = steps + 1.0;
+    float failed_steps = -1.0 - steps;
+    x = take ? x1 : x;
+    v = take ? v1 : v;
+    steps = take ? next_steps : (running && !ok ? failed_steps : steps);
+    h = running && ok ? h_next : h;
+    running = running && ok && travelling(x);
+}
+
+// The same step for a ray assumed to keep travelling: the same arithmetic without the selects
+// that stop a ray; `clean` stays true only while that assumption held (the state finite, inside
+// the bounding sphere, outside the horizon), and then the state is exactly step_checked's.
+void step_unchecked(inout vec3 x, inout vec3 v, inout float steps, inout float h, inout bool clean)
+{
+    vec3 x1, v1;
+    bool accept;
+    float h_next;
+    controlled_step(x, v, h, x1, v1, accept, h_next);
+    float next_steps = steps + 1.0;
+    x = accept ? x1 : x;
+    v = accept ? v1 : v;
+    steps = accept ? next_steps : steps;
+    h = h_next;
+    vec3 from_bound = x - u_bound_center;
+    bool inside = dot(from_bound, from_bound) < u_bound_radius2;
+#ifdef MODEL_HORIZON
+    vec3 from_mass = x - u_capture_center;
+    inside = inside && dot(from_mass, from_mass) > u_capture_radius2;
+#endif
+    clean = clean && inside && finite_state(x, v);
+}
+
+#endif
+
 // One pass's worth of the ray's motion: STEPS_PER_PASS steps from (x, v) with step h, or flat
-// space's single straight segment; the ray state is updated with selects (see the precision note
-// in common.glsl). The integration stage runs it once a pass; the single pass
+// space's single straight segment. The integration stage runs it once a pass; the single pass
 // (stage_frame.glsl) runs it steps_per_segment / STEPS_PER_PASS times a segment, the same arithmetic.
+// The steps are first taken unchecked (step_unchecked), which is exact while the ray keeps
+// travelling through all of them, as it does in every pass but its last; only where it did not
+// are they taken again from the pass's start, each checked (step_checked). The rays are the same
+// bit for bit (tests/unit/test_acceleration.c, and the goldens). Why: the checks and selects
+// cost several times the arithmetic of a light model's step. A GPU that runs fragments in groups
+// (llvmpipe: 8) runs the checked loop's turns only while one of the group needs them; llvmpipe
+// still runs its first turn, so a pass costs about one checked step more than its unchecked ones
+// (docs/PIPELINE.md has the measurements).
 void integrate_pass(inout vec3 x, inout vec3 v, inout float steps, inout float h, bool running)
 {
 #ifdef MODEL_FLAT
@@ -159,20 +213,24 @@ void integrate_pass(inout vec3 x, inout vec3 v, inout float steps, inout float h
     x = running ? exit_point : x;
     steps = running ? next_steps : steps;
 #else
+    vec3 x_start = x;
+    vec3 v_start = v;
+    float steps_start = steps;
+    float h_start = h;
+    bool clean = true;
+    for (int i = 0; i < STEPS_PER_PASS; i++)
+        step_unchecked(x, v, steps, h, clean);
+    // a ray that was not travelling keeps its state; one that stopped within the pass starts again
+    bool again = running && !clean;
+    bool keep = !running || again;
+    x = keep ? x_start : x;
+    v = keep ? v_start : v;
+    steps = keep ? steps_start : steps;
+    h = keep ? h_start : h;
     for (int i = 0; i < STEPS_PER_PASS; i++) {
-        vec3 x1, v1;
-        bool accept;
-        float h_next;
-        controlled_step(x, v, h, x1, v1, accept, h_next);
-        bool ok = finite_state(x1, v1) || !accept;
-        bool take = running && ok && accept;
-        float next_steps = steps + 1.0;
-        float failed_steps = -1.0 - steps;
-        x = take ? x1 : x;
-        v = take ? v1 : v;
-        steps = take ? next_steps : (running && !ok ? failed_steps : steps);
-        h = running && ok ? h_next : h;
-        running = running && ok && travelling(x);
+        if (!again)
+            break;
+        step_checked(x, v, steps, h, running);
     }
 #endif
 }

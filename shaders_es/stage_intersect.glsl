@@ -19,7 +19,7 @@ uniform vec4 u_materials[5 * BATCH_SIZE];
 #ifdef TEXTURED
 uniform sampler2D u_textures[BATCH_SIZE];
 // BATCH_TEXTURES lists SAMPLE_TEXTURE(slot) for the textured objects of the batch
-#define SAMPLE_TEXTURE(n) { vec3 sampled = texture2D(u_textures[n], best.uv).rgb; \
+#define SAMPLE_TEXTURE(n) { vec3 sampled = texture2D(u_textures[n], uv).rgb; \
                             texel = best.slot == float(n) ? sampled : texel; }
 #endif
 
@@ -43,9 +43,10 @@ vec3 rest_position(vec3 x, vec4 beta_gamma, vec4 origin)
     float g = beta_gamma.w;
     return r + (g * g / (g + 1.0) * dot(beta_gamma.xyz, r) - g * t) * beta_gamma.xyz;
 }
-#define MOVING_TEST(slot, test) { vec3 a_scene = a; vec3 b_scene = b; \
+#define MOVING_TEST_FULL(slot, test) { vec3 a_scene = a; vec3 b_scene = b; \
     { vec3 a = rest_position(a_scene, MOTION(slot, 0), MOTION(slot, 1)); \
       vec3 b = rest_position(b_scene, MOTION(slot, 0), MOTION(slot, 1)); test } }
+#define MOVING_TEST(slot, test) MOVING_TEST_FULL(slot, test)
 #endif
 
 #define GEOMETRY(slot, k) u_geometry[5 * (slot) + (k)]
@@ -53,77 +54,85 @@ vec3 rest_position(vec3 x, vec4 beta_gamma, vec4 origin)
 
 #ifdef HAS_PRIM_SPHERE
 // g0 = centre, radius; g1 = texture reference axis; g2 = pole
-bool object_sphere(vec3 a, vec3 b, vec4 g0, vec4 g1, vec4 g2, out float t, out vec3 normal, out vec2 uv)
+// surface = the normal, from which sphere_uv finds the texture coordinates of the hit that is kept
+bool object_sphere(vec3 a, vec3 b, vec4 g0, out float t, out vec3 normal, out vec3 surface)
 {
     bool found = hit_sphere(a, b, g0.xyz, g0.w, t);
     vec3 p = mix(a, b, t);
     normal = (p - g0.xyz) / g0.w;
-    vec3 third = cross(g2.xyz, g1.xyz);
-    uv = vec2(atan(dot(normal, third), dot(normal, g1.xyz)) / (2.0 * PI) + 0.5,
-              acos(clamp(dot(normal, g2.xyz), -1.0, 1.0)) / PI);
+    surface = normal;
     return found;
 }
-#define TEST_SPHERE(slot) consider(object_sphere(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), GEOMETRY(slot, 2), \
-                                                 t, normal, uv), t, normal, uv, float(slot), best);
+#define TEST_SPHERE_FULL(slot) consider(object_sphere(a, b, GEOMETRY(slot, 0), t, normal, surface), \
+                                        t, normal, surface, float(slot), best);
+#define TEST_SPHERE(slot) TEST_SPHERE_FULL(slot)
 #endif
 
 #ifdef HAS_PRIM_TRIANGLE
 // g0, g1, g2 = vertices; g3 = uv0, uv1; g4.xy = uv2
+// surface.xy = the texture coordinates
 bool object_triangle(vec3 a, vec3 b, vec4 g0, vec4 g1, vec4 g2, vec4 g3, vec4 g4, out float t, out vec3 normal,
-                     out vec2 uv)
+                     out vec3 surface)
 {
     vec2 bary;
     bool found = hit_triangle(a, b, g0.xyz, g1.xyz, g2.xyz, t, bary);
     normal = normalize(cross(g1.xyz - g0.xyz, g2.xyz - g0.xyz));
-    uv = (1.0 - bary.x - bary.y) * g3.xy + bary.x * g3.zw + bary.y * g4.xy;
+    vec2 uv = (1.0 - bary.x - bary.y) * g3.xy + bary.x * g3.zw + bary.y * g4.xy;
+    surface = vec3(uv, 0.0);
     return found;
 }
-#define TEST_TRIANGLE(slot) consider(object_triangle(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), GEOMETRY(slot, 2), \
-                                                     GEOMETRY(slot, 3), GEOMETRY(slot, 4), t, normal, uv), \
-                                     t, normal, uv, float(slot), best);
+#define TEST_TRIANGLE_FULL(slot) consider(object_triangle(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), \
+                                                          GEOMETRY(slot, 2), GEOMETRY(slot, 3), GEOMETRY(slot, 4), \
+                                                          t, normal, surface), t, normal, surface, float(slot), best);
+#define TEST_TRIANGLE(slot) TEST_TRIANGLE_FULL(slot)
 #endif
 
 #ifdef HAS_PRIM_DISK
 // g0 = centre, outer radius; g1 = normal, inner radius; g2 = texture reference axis
-bool object_disk(vec3 a, vec3 b, vec4 g0, vec4 g1, vec4 g2, out float t, out vec3 normal, out vec2 uv)
+// surface = the hit relative to the centre, from which disk_uv finds the texture coordinates
+bool object_disk(vec3 a, vec3 b, vec4 g0, vec4 g1, out float t, out vec3 normal, out vec3 surface)
 {
     bool found = hit_disk(a, b, g0.xyz, g1.xyz, g1.w, g0.w, t);
-    vec3 p = mix(a, b, t) - g0.xyz;
+    surface = mix(a, b, t) - g0.xyz;
     normal = g1.xyz;
-    vec3 third = cross(g1.xyz, g2.xyz);
-    uv = vec2((length(p) - g1.w) / max(g0.w - g1.w, 1e-6), atan(dot(p, third), dot(p, g2.xyz)) / (2.0 * PI) + 0.5);
     return found;
 }
-#define TEST_DISK(slot) consider(object_disk(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), GEOMETRY(slot, 2), \
-                                             t, normal, uv), t, normal, uv, float(slot), best);
+#define TEST_DISK_FULL(slot) consider(object_disk(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), t, normal, surface), \
+                                      t, normal, surface, float(slot), best);
+#define TEST_DISK(slot) TEST_DISK_FULL(slot)
 #endif
 
 #ifdef HAS_PRIM_RECT
 // g0 = centre; g1, g2 = half edges
-bool object_rect(vec3 a, vec3 b, vec4 g0, vec4 g1, vec4 g2, out float t, out vec3 normal, out vec2 uv)
+// surface.xy = the texture coordinates
+bool object_rect(vec3 a, vec3 b, vec4 g0, vec4 g1, vec4 g2, out float t, out vec3 normal, out vec3 surface)
 {
     vec2 s;
     bool found = hit_rect(a, b, g0.xyz, g1.xyz, g2.xyz, t, s);
     normal = normalize(cross(g1.xyz, g2.xyz));
-    uv = 0.5 * (s + 1.0);
+    vec2 uv = 0.5 * (s + 1.0);
+    surface = vec3(uv, 0.0);
     return found;
 }
-#define TEST_RECT(slot) consider(object_rect(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), GEOMETRY(slot, 2), \
-                                             t, normal, uv), t, normal, uv, float(slot), best);
+#define TEST_RECT_FULL(slot) consider(object_rect(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), GEOMETRY(slot, 2), \
+                                              t, normal, surface), t, normal, surface, float(slot), best);
+#define TEST_RECT(slot) TEST_RECT_FULL(slot)
 #endif
 
-// The closest hit of the batch so far: fraction t, normal, uv; key = depth key; slot < 0: none
+// The closest hit of the batch so far: fraction t, normal, surface (what its texture coordinates
+// come from: texture_coordinates); key = depth key; slot < 0: none. The coordinates of a sphere or
+// a disk take an arctangent: found once for the hit that is kept, not for every test.
 struct candidate {
     float key, t, slot;
     vec3 normal;
-    vec2 uv;
+    vec3 surface;
 };
 
 // the segment index of the chord being tested (u_segment_index, or the single pass's loop)
 float intersect_segment_index;
 
 // Computed for every object, then selected: see the precision note in common.glsl.
-void consider(bool found, float t, vec3 normal, vec2 uv, float slot, inout candidate best)
+void consider(bool found, float t, vec3 normal, vec3 surface, float slot, inout candidate best)
 {
     float key = intersect_segment_index + t;
     bool closer = found && key < best.key;
@@ -131,7 +140,7 @@ void consider(bool found, float t, vec3 normal, vec2 uv, float slot, inout candi
     best.t = closer ? t : best.t;
     best.slot = closer ? slot : best.slot;
     best.normal = closer ? normal : best.normal;
-    best.uv = closer ? uv : best.uv;
+    best.surface = closer ? surface : best.surface;
 }
 
 // Every object of the batch against chord a -> b of segment `segment`: best keeps the closest hit
@@ -141,13 +150,63 @@ void intersect_chord(vec3 a, vec3 b, float segment, inout candidate best)
     intersect_segment_index = segment;
     float t;
     vec3 normal;
-    vec2 uv;
+    vec3 surface;
     BATCH_TESTS
+}
+
+// The texture coordinates of candidate best: what the tests of its object's primitive found, as
+// the reference's intersect_* functions give them (src/physics/intersect.c).
+vec2 texture_coordinates(candidate best)
+{
+    vec4 g0 = GEOMETRY(0, 0), g1 = GEOMETRY(0, 1), g2 = GEOMETRY(0, 2);
+    for (int i = 1; i < BATCH_SIZE; i++) {
+        bool chosen = best.slot == float(i);
+        g0 = chosen ? GEOMETRY(i, 0) : g0;
+        g1 = chosen ? GEOMETRY(i, 1) : g1;
+        g2 = chosen ? GEOMETRY(i, 2) : g2;
+    }
+    // the chosen slot's primitive: BATCH_TESTS with each test replaced by a note of its kind
+    float kind = 0.0;
+#undef TEST_SPHERE
+#undef TEST_DISK
+#undef TEST_RECT
+#undef TEST_TRIANGLE
+#undef MOVING_TEST
+#define TEST_SPHERE(n) kind = best.slot == float(n) ? 1.0 : kind;
+#define TEST_DISK(n) kind = best.slot == float(n) ? 2.0 : kind;
+#define TEST_RECT(slot)
+#define TEST_TRIANGLE(slot)
+#define MOVING_TEST(slot, test) test
+    BATCH_TESTS
+#undef TEST_SPHERE
+#undef TEST_DISK
+#undef TEST_RECT
+#undef TEST_TRIANGLE
+#undef MOVING_TEST
+#define TEST_SPHERE(slot) TEST_SPHERE_FULL(slot)
+#define TEST_DISK(slot) TEST_DISK_FULL(slot)
+#define TEST_RECT(slot) TEST_RECT_FULL(slot)
+#define TEST_TRIANGLE(slot) TEST_TRIANGLE_FULL(slot)
+#define MOVING_TEST(slot, test) MOVING_TEST_FULL(slot, test)
+    // sphere: g1 = texture reference axis, g2 = pole; surface = the normal
+    vec3 normal = best.surface;
+    vec3 sphere_third = cross(g2.xyz, g1.xyz);
+    vec2 sphere_uv = vec2(atan(dot(normal, sphere_third), dot(normal, g1.xyz)) / (2.0 * PI) + 0.5,
+                          acos(clamp(dot(normal, g2.xyz), -1.0, 1.0)) / PI);
+    // disk: g0.w = outer radius, g1 = normal, inner radius, g2 = reference axis; surface = p - centre
+    vec3 p = best.surface;
+    vec3 disk_third = cross(g1.xyz, g2.xyz);
+    vec2 disk_uv = vec2((length(p) - g1.w) / max(g0.w - g1.w, 1e-6),
+                        atan(dot(p, disk_third), dot(p, g2.xyz)) / (2.0 * PI) + 0.5);
+    vec2 flat_uv = best.surface.xy;
+    vec2 round_uv = kind == 1.0 ? sphere_uv : disk_uv;
+    return kind > 0.0 ? round_uv : flat_uv;
 }
 
 // The hit record and the shaded colour (object id in alpha) of candidate best on chord a -> b.
 void intersect_shade(candidate best, vec3 a, vec3 b, out vec4 new_hit, out vec4 new_image)
 {
+    vec2 uv = texture_coordinates(best);
     // the chosen object's material
     vec4 color_checker = MATERIAL(0, 0), emission_id = MATERIAL(0, 1), factors = MATERIAL(0, 2),
          checker_color = MATERIAL(0, 3), emitter = MATERIAL(0, 4);
@@ -190,7 +249,7 @@ void intersect_shade(candidate best, vec3 a, vec3 b, out vec4 new_hit, out vec4 
     surface_material m = surface_material(color_checker.rgb * texel, color_checker.w, emission_id.rgb, factors,
                                         checker_color.rgb);
     new_hit = vec4(p, best.key);
-    new_image = vec4(shade(p, best.normal, best.uv, normalize(b - a), m), emission_id.w);
+    new_image = vec4(shade(p, best.normal, uv, normalize(b - a), m), emission_id.w);
 }
 
 #ifdef ORBIT_HITS
@@ -217,8 +276,8 @@ void orbit_refine_hit(orbit_ray ray, float s_a, float s_b, float segment, inout 
         float s_m = lo + best.t * (hi - lo);
         vec2 q = orbit_at(ray, s_m);
         vec3 m = orbit_point(ray, q, s_m);
-        candidate first = candidate(none, 0.0, no_slot, vec3(0.0), vec2(0.0));
-        candidate second = candidate(none, 0.0, no_slot, vec3(0.0), vec2(0.0));
+        candidate first = candidate(none, 0.0, no_slot, vec3(0.0), vec3(0.0));
+        candidate second = candidate(none, 0.0, no_slot, vec3(0.0), vec3(0.0));
         intersect_chord(a, m, segment, first);
         intersect_chord(m, b, segment, second);
         bool in_first = first.slot >= 0.0;
@@ -245,7 +304,7 @@ void main()
     vec4 image = fetch(u_image);
     vec3 a = fetch(u_segment_start).xyz;
     vec3 b = fetch(u_segment_end).xyz;
-    candidate best = candidate(hit.w, 0.0, -1.0, vec3(0.0), vec2(0.0));
+    candidate best = candidate(hit.w, 0.0, -1.0, vec3(0.0), vec3(0.0));
     intersect_chord(a, b, u_segment_index, best);
     bool found = best.slot >= 0.0;
 #ifdef ORBIT_HITS

@@ -24,7 +24,7 @@ void main()
     float steps = 0.0;
     float code = CODE_UNFINISHED;
     float end_key = NO_HIT;
-    candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec2(0.0));
+    candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
     for (int i = 0; i < MAX_SEGMENTS; i++) {
         float k = float(i);
         if (k >= ray.segments)

@@ -31,8 +31,10 @@ static int renderer_follow_scene(struct renderer *r, char *err, size_t errlen)
     static const char *const method_defines[] = {"EULER", "RK4", "DOPRI5", "ORBIT_TABLE"};
     static const char *const control_defines[] = {"FIXED", "DOUBLING", "EMBEDDED"};
     snprintf(r->model_defines, sizeof r->model_defines,
-             "#define MODEL_%s 1\n#define METHOD_%s 1\n#define STEP_%s 1\n#define STEPS_PER_PASS %d\n%s",
-             r->straight ? "FLAT" : "CURVED", method_defines[r->method],
+             "#define MODEL_%s 1\n%s#define METHOD_%s 1\n#define STEP_%s 1\n#define STEPS_PER_PASS %d\n%s",
+             r->straight ? "FLAT" : "CURVED",
+             !r->straight && model_capture_radius(&scene->model) > 0.0 ? "#define MODEL_HORIZON 1\n" : "",
+             method_defines[r->method],
              control_defines[scene->render.step_control], scene->render.steps_per_pass,
              !r->straight && scene->model.type == MODEL_POTENTIAL && scene->model.profile == PROFILE_POLYNOMIAL
                  ? "#define PROFILE_POLYNOMIAL 1\n" : "");
