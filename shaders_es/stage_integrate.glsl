@@ -218,20 +218,35 @@ void integrate_pass(inout vec3 x, inout vec3 v, inout float steps, inout float h
     float steps_start = steps;
     float h_start = h;
     bool clean = true;
+#ifdef CHECK_EVERY_STEP
+    // every step checked, as the scheme states it: what tests/unit/test_acceleration.c compares with
+    clean = false;
+#else
     for (int i = 0; i < STEPS_PER_PASS; i++)
         step_unchecked(x, v, steps, h, clean);
-    // a ray that was not travelling keeps its state; one that stopped within the pass starts again
+#endif
+    // where the ray stopped within the pass, the pass again from its start, each step checked
     bool again = running && !clean;
-    bool keep = !running || again;
-    x = keep ? x_start : x;
-    v = keep ? v_start : v;
-    steps = keep ? steps_start : steps;
-    h = keep ? h_start : h;
+    vec3 x_checked = x_start;
+    vec3 v_checked = v_start;
+    float steps_checked = steps_start;
+    float h_checked = h_start;
+    bool running_checked = running;
     for (int i = 0; i < STEPS_PER_PASS; i++) {
         if (!again)
             break;
-        step_checked(x, v, steps, h, running);
+        step_checked(x_checked, v_checked, steps_checked, h_checked, running_checked);
     }
+    // the checked state kept apart until here: selected, not assigned in the loop that may break
+    // (see the precision note in common.glsl); a ray that was not travelling keeps its state
+    vec3 x_moved = again ? x_checked : x;
+    vec3 v_moved = again ? v_checked : v;
+    float steps_moved = again ? steps_checked : steps;
+    float h_moved = again ? h_checked : h;
+    x = running ? x_moved : x_start;
+    v = running ? v_moved : v_start;
+    steps = running ? steps_moved : steps_start;
+    h = running ? h_moved : h_start;
 #endif
 }
 

@@ -6,6 +6,11 @@
 #include <stdint.h>
 #include <setjmp.h>
 #include <cmocka.h>
+#include <dirent.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+#include "gl/shader.h"
 #include "hard_cases.h"
 
 #define W 48
@@ -159,6 +164,110 @@ static void test_single_pass_is_exact(void **state)
         hc_gpu_free(&multi);
         hc_gpu_free(&single);
     }
+    print_message("outcomes compared: %ld object, %ld sky, %ld captured, %ld unfinished, %ld failed\n", seen[0],
+                  seen[1], seen[2], seen[3], seen[4]);
+    for (int o = 0; o < 5; o++)
+        assert_true(seen[o] > 0);
+}
+
+/* A copy of shaders_es/ in a fresh directory with CHECK_EVERY_STEP defined in the integration
+ * stage: every step checked, as the scheme states it. */
+static void shaders_checking_every_step(char *dir, size_t len)
+{
+    snprintf(dir, len, "/tmp/bentray-checked-XXXXXX");
+    assert_non_null(mkdtemp(dir));
+    DIR *d = opendir("shaders_es");
+    assert_non_null(d);
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        if (e->d_name[0] == '.')
+            continue;
+        char from[512], to[512];
+        snprintf(from, sizeof from, "shaders_es/%s", e->d_name);
+        snprintf(to, sizeof to, "%s/%s", dir, e->d_name);
+        FILE *in = fopen(from, "rb"), *out = fopen(to, "wb");
+        assert_non_null(in);
+        assert_non_null(out);
+        if (strcmp(e->d_name, "stage_integrate.glsl") == 0)
+            fputs("#define CHECK_EVERY_STEP 1\n", out);
+        char buf[4096];
+        size_t n;
+        while ((n = fread(buf, 1, sizeof buf, in)) > 0)
+            assert_int_equal(fwrite(buf, 1, n, out), n);
+        fclose(in);
+        assert_int_equal(fclose(out), 0);
+    }
+    closedir(d);
+}
+
+static void remove_shader_copy(const char *dir)
+{
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        if (e->d_name[0] == '.')
+            continue;
+        char path[512];
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        unlink(path);
+    }
+    closedir(d);
+    rmdir(dir);
+}
+
+/* The integration takes a pass's steps unchecked and repeats them, each checked, only where a ray
+ * stopped within the pass (stage_integrate.glsl): the same rays as checking every step, bit for
+ * bit. Every model and integrator, fixed and adaptive steps, both pipelines, rays that leave, hit,
+ * fall into the horizon, fail or are still travelling at the end, one step per pass and many. */
+static void test_unchecked_steps_are_exact(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *scene;
+        const char *sets[5];
+    } cases[] = {
+        {"test", {NULL}},
+        {"lorenz", {NULL}},
+        {"lorenz", {"render.pipeline=multipass", NULL}},
+        {"lorenz", {"render.steps_per_pass=1", "render.pipeline=multipass", NULL}},
+        {"rossler", {NULL}},
+        {"potential", {"render.step_control=doubling", "render.tolerance=1e-4", NULL}},
+        {"refraction", {NULL}},
+        {"schwarzschild", {"render.method=rk4", NULL}},
+        {"schwarzschild", {"render.method=rk4", "render.pipeline=multipass", NULL}},
+        {"schwarzschild", {"render.method=euler", "render.step_control=doubling", "render.tolerance=1e-3", NULL}},
+        {"neutron_star", {"render.method=dopri5", "render.step_control=embedded", "render.tolerance=1e-6", NULL}},
+        {"three_ships", {NULL}},
+        /* steps so large that the Lorenz flow overflows inside a vast bounding sphere: failed rays */
+        {"lorenz", {"render.step=5", "render.bound_radius=1e18", NULL}},
+        {"lorenz", {"render.step=5", "render.bound_radius=1e18", "render.pipeline=multipass", NULL}},
+    };
+    char dir[64];
+    shaders_checking_every_step(dir, sizeof dir);
+    long seen[5] = {0};  /* outcomes over all cases: object, sky, captured, unfinished, failed */
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        static struct scene s;
+        struct hc_gpu unchecked, checked;
+        hc_load(&s, cases[k].scene, W, H, cases[k].sets);
+        hc_gpu_render(&s, &unchecked);
+        shader_set_directory(dir);
+        hc_gpu_render(&s, &checked);
+        shader_set_directory(NULL);
+        char what[200];
+        snprintf(what, sizeof what, "%s %s %s %s (unchecked steps against every step checked)", cases[k].scene,
+                 cases[k].sets[0] ? cases[k].sets[0] : "", cases[k].sets[0] && cases[k].sets[1] ? cases[k].sets[1] : "",
+                 cases[k].sets[0] && cases[k].sets[1] && cases[k].sets[2] ? cases[k].sets[2] : "");
+        print_message("%s\n", what);
+        assert_same_rays(&unchecked, &checked, what);
+        for (int i = 0; i < W * H; i++) {
+            int o = checked.dump.records[i].outcome;
+            seen[o >= 0 ? 0 : -o]++;
+        }
+        hc_gpu_free(&unchecked);
+        hc_gpu_free(&checked);
+    }
+    remove_shader_copy(dir);
     print_message("outcomes compared: %ld object, %ld sky, %ld captured, %ld unfinished, %ld failed\n", seen[0],
                   seen[1], seen[2], seen[3], seen[4]);
     for (int o = 0; o < 5; o++)
@@ -333,6 +442,7 @@ int main(void)
         cmocka_unit_test(test_unrolling_is_exact),
         cmocka_unit_test(test_single_pass_is_exact),
         cmocka_unit_test(test_single_pass_many_objects),
+        cmocka_unit_test(test_unchecked_steps_are_exact),
         cmocka_unit_test(test_step_doubling_adapts),
         cmocka_unit_test(test_embedded_pair),
         cmocka_unit_test(test_dopri5_matches_model_step),
