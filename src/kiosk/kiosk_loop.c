@@ -436,6 +436,28 @@ static int preflight(struct kiosk *k, char *err, size_t errlen)
                      c->speed.start, c->mass.start, c->kiosk.scenes[i], serr.message);
             return -1;
         }
+        /* a black hole whose mass the [mass] knob sets directly (no [kiosk] mass_key): at the knob's
+         * largest mass its shadow spans at most the share of the view a scene's [kiosk] may reach */
+        const struct scene *sc = &k->scenes[i];
+        if (sc->model.type == MODEL_SCHWARZSCHILD && sc->kiosk.mass.key[0] == '\0') {
+            trial = *sc;
+            trial.model.mass = c->mass.max;
+            double across = scene_shadow_diameter_deg(&trial);
+            double limit = SCENE_KIOSK_SHADOW_MAX_FRACTION * sc->camera.fov_deg;
+            if (across > limit) {
+                char what[96];
+                if (across >= 360.0)
+                    snprintf(what, sizeof what, "swallow the camera");
+                else
+                    snprintf(what, sizeof what, "cast a shadow %.0f degrees across, over %.0f%% of the view's height",
+                             across, 100.0 * SCENE_KIOSK_SHADOW_MAX_FRACTION);
+                snprintf(err, errlen, "%s: [mass] max = %g would make the black hole of %s %s: give the scene a [kiosk] "
+                         "section (mass_key = model.mass, mass_min, mass_max at most %.3g, mass_steps; "
+                         "docs/SCENES.md) or lower [mass] max", c->path, c->mass.max, c->kiosk.scenes[i], what,
+                         scene_mass_for_shadow(sc, limit));
+                return -1;
+            }
+        }
     }
     static struct script sc;
     for (int i = 0; i < c->n_inputs; i++)

@@ -178,6 +178,9 @@ struct knob_mapping {
 };
 
 #define SCENE_KIOSK_MAX_STEPS 1000   /* detents of a mapped knob from its min to its max */
+/* The kiosk's knobs keep a black hole's shadow within this share of the view's height: beyond it a
+ * visitor sees mostly black (scene_kiosk_validate, and the kiosk for scenes without [kiosk]). */
+#define SCENE_KIOSK_SHADOW_MAX_FRACTION 0.6
 
 struct scene_kiosk {
     struct knob_mapping speed, mass;
@@ -237,6 +240,13 @@ int scene_get_number(const struct scene *s, const char *key, double *out);
  * key accepts that holds the scene's own value. scene_load runs it, before any --set: rendering
  * ignores the section, so an override that changes the model does not make it wrong. */
 int scene_kiosk_validate(const struct scene *s, struct scene_error *err);
+/* Angular diameter, degrees, of the black hole's shadow as the static observer at the camera sees
+ * it (the rays that fall through the horizon: b < 3 sqrt(3) M); 0 where nothing casts one (no mass,
+ * not Schwarzschild), 360 with the camera at or inside the horizon. */
+double scene_shadow_diameter_deg(const struct scene *s);
+/* The largest mass whose shadow, seen from the camera of s, spans at most `diameter_deg`, rounded
+ * down to three significant digits (as messages print it). */
+double scene_mass_for_shadow(const struct scene *s, double diameter_deg);
 /* Cross-field checks after all overrides (e.g. camera not inside the horizon). */
 int scene_validate(const struct scene *s, struct scene_error *err);
 

@@ -6,6 +6,7 @@
 #include <string.h>
 #include "scene/scene.h"
 #include "scene/scene_keys.h"
+#include "physics/orbit_table.h"
 #include "physics/relativity.h"
 
 /* Below this the up vector is taken as parallel to the view direction (sine of their angle). */
@@ -126,6 +127,70 @@ static int validate_observer(const struct scene *s, struct scene_error *err)
     return 0;
 }
 
+static double shadow_diameter_deg(double mass, double r)
+{
+    if (!(mass > 0.0))
+        return 0.0;
+    if (!(r > 2.0 * mass))
+        return 360.0;
+    /* the shadow's radius is measured from the direction to the centre: pi - the critical launch
+     * angle, which is measured from the outward one */
+    const double pi = 3.14159265358979323846;
+    return 2.0 * (pi - orbit_critical_angle(mass, r)) * 180.0 / pi;
+}
+
+static double camera_radius(const struct scene *s)
+{
+    return v3_len(v3_sub(s->camera.position, s->model.center));
+}
+
+double scene_shadow_diameter_deg(const struct scene *s)
+{
+    if (s->model.type != MODEL_SCHWARZSCHILD)
+        return 0.0;
+    return shadow_diameter_deg(s->model.mass, camera_radius(s));
+}
+
+double scene_mass_for_shadow(const struct scene *s, double diameter_deg)
+{
+    /* the shadow grows with the mass, from nothing to the whole sky at r = 2M: bisection */
+    double r = camera_radius(s), lo = 0.0, hi = 0.5 * r;
+    for (int i = 0; i < 200 && hi - lo > 1e-12 * r; i++) {
+        double mid = 0.5 * (lo + hi);
+        if (shadow_diameter_deg(mid, r) <= diameter_deg)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    /* rounded down to three significant digits: a value to write into a scene as it prints */
+    if (!(lo > 0.0))
+        return 0.0;
+    double unit = pow(10.0, floor(log10(lo)) - 2.0);
+    return floor(lo / unit) * unit;
+}
+
+/* [kiosk]: at both ends of a knob's range (the shadow grows with the mass and shrinks as the view
+ * widens, so the ends bound it), a black hole's shadow fills at most SCENE_KIOSK_SHADOW_MAX_FRACTION
+ * of the view's height. */
+static int validate_knob_shadow(const struct scene *s, const char *knob, const struct knob_mapping *m,
+                                const struct scene *trial, int at_max, double value, struct scene_error *err)
+{
+    double across = scene_shadow_diameter_deg(trial);
+    double limit = SCENE_KIOSK_SHADOW_MAX_FRACTION * trial->camera.fov_deg;
+    if (!(across > limit))
+        return 0;
+    char hint[160] = "";
+    if (strcmp(m->key, "model.mass") == 0)
+        snprintf(hint, sizeof hint, "; with this camera and view, %s_max = %.3g keeps it within", knob,
+                 scene_mass_for_shadow(trial, limit));
+    if (across >= 360.0)
+        return invalid(s, err, "[kiosk] %s_%s = %g puts the camera at or inside the black hole's horizon, where "
+                       "everything is black%s", knob, at_max ? "max" : "min", value, hint);
+    return invalid(s, err, "[kiosk] %s_%s = %g: the black hole's shadow would span %.0f degrees of the view's %g, "
+                   "more than %.0f%% of its height: visitors would look at black%s", knob, at_max ? "max" : "min",
+                   value, across, trial->camera.fov_deg, 100.0 * SCENE_KIOSK_SHADOW_MAX_FRACTION, hint);
+}
+
 /* [kiosk]: a knob mapped to a key names a number this scene has, over a range that the key takes
  * at both ends. */
 static int validate_knob(const struct scene *s, const char *knob, const struct knob_mapping *m,
@@ -159,6 +224,8 @@ static int validate_knob(const struct scene *s, const char *knob, const struct k
         snprintf(assignment, sizeof assignment, "%s=%.17g", m->key, ends[i]);
         if (scene_set(&trial, assignment, &e) != 0)
             return invalid(s, err, "[kiosk] %s_%s = %g: %s", knob, i ? "max" : "min", ends[i], e.message);
+        if (validate_knob_shadow(s, knob, m, &trial, i, ends[i], err) != 0)
+            return -1;
     }
     return 0;
 }

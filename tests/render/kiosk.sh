@@ -46,15 +46,25 @@ stop_check() {  # name, signal, then the signals sent before it that must change
 }
 stop_check "kiosk stops on SIGTERM" TERM
 stop_check "kiosk stops on SIGHUP, ignores SIGUSR1 and SIGPIPE" HUP USR1 PIPE
-# a scene change keeps the knobs' values where the new scene takes them, and puts them back to their
-# start where it does not (here a mass whose horizon would swallow the camera): the kiosk goes on
-mkdir -p "$TMP/switch" "$TMP/start"
+# a scene change keeps the knobs' values where the new scene takes them (here the mass knob at the
+# largest mass, which the start-up check below makes every black hole take): the kiosk goes on.
+# The black hole has no [kiosk] section, so the [mass] knob sets its mass itself (the shipped ones
+# map model.mass over a range of their own).
+mkdir -p "$TMP/switch" "$TMP/start" "$TMP/shadow"
+sed '/^\[kiosk\]/,$d; s|\.\./|'"$PWD"'/assets/|g' assets/scenes/schwarzschild.scene > "$TMP/bh.scene"
 printf '0.2 turn mass +200\n0.5 frame\n1.0 press next_scene\n1.5 frame\n' > "$TMP/switch/switch.events"
 sed "s|path = visitor.events|path = $TMP/switch/switch.events|; s|\.\./\.\./assets|$PWD/assets|g;
-     s|^scenes = .*|scenes = $PWD/assets/scenes/starflight.scene, $PWD/assets/scenes/schwarzschild.scene|;
-     s|^start_scene = .*|start_scene = starflight|; s|^max = 1\$|max = 10|" $K > "$TMP/switch/k.conf"
+     s|^scenes = .*|scenes = $PWD/assets/scenes/starflight.scene, $TMP/bh.scene|;
+     s|^start_scene = .*|start_scene = starflight|; s|^max = 1\$|max = 0.2|; s|^assets_root = .*|assets_root = /|" $K > "$TMP/switch/k.conf"
 check "kiosk scene change past a limit" 0 "^exit 0, 2 frames$" -- sh -c "$BT kiosk --config $TMP/switch/k.conf --out $TMP/switch --frames 2 2>/dev/null; echo \"exit \$?, \$(ls $TMP/switch/frame_*.png | wc -l) frames\""
 # every scene must take the knobs' start values (reset and scene changes fall back to them)
 sed "s|path = visitor.events|path = $PWD/tests/kiosk/visitor.events|; s|\.\./\.\./assets|$PWD/assets|g;
-     s|^start = 0.12|start = 5|; s|^max = 1\$|max = 10|" $K > "$TMP/start/k.conf"
-check "kiosk start values checked" 2 "start values .* do not fit .*schwarzschild.scene: .*horizon" -- $BT kiosk --config "$TMP/start/k.conf" --out "$TMP/start"
+     s|^scenes = .*|scenes = $TMP/bh.scene, $PWD/assets/scenes/starflight.scene|;
+     s|^start_scene = .*|start_scene = 0|; s|^start = 0.12|start = 5|; s|^max = 1\$|max = 10|; s|^assets_root = .*|assets_root = /|" $K > "$TMP/start/k.conf"
+check "kiosk start values checked" 2 "start values .* do not fit .*bh.scene: .*horizon" -- $BT kiosk --config "$TMP/start/k.conf" --out "$TMP/start"
+# the [mass] knob's range must leave such a black hole's shadow within 60% of the view's height,
+# and the message says how far it may go (the shipped scenes bound their own range in [kiosk])
+sed "s|path = visitor.events|path = $PWD/tests/kiosk/visitor.events|; s|\.\./\.\./assets|$PWD/assets|g;
+     s|^scenes = .*|scenes = $TMP/bh.scene, $PWD/assets/scenes/starflight.scene|;
+     s|^start_scene = .*|start_scene = 0|; s|^assets_root = .*|assets_root = /|" $K > "$TMP/shadow/k.conf"
+check "kiosk mass range against the shadow" 2 "\[mass\] max = 1 would make the black hole of .*bh.scene cast a shadow 104 degrees across, over 60% of the view's height: .*mass_max at most 0.27" -- $BT kiosk --config "$TMP/shadow/k.conf" --out "$TMP/shadow"

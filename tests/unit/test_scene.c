@@ -449,6 +449,10 @@ static const struct {
     {"kiosk_key_unknown", -1, "mass_key = model.mass: not a number of this scene"},
     {"kiosk_range_outside", -1, "own value 28 lies outside mass_min .. mass_max (30 .. 50)"},
     {"kiosk_range_without_key", -1, "speed_min, speed_max and speed_steps need speed_key"},
+    {"kiosk_shadow_too_large", -1, "mass_max = 2: the black hole's shadow would span 107 degrees of the view's 50, "
+                                    "more than 60% of its height: visitors would look at black; with this camera "
+                                    "and view, mass_max = 0.526 keeps it within"},
+    {"kiosk_mass_into_horizon", -1, "mass_max = 6 puts the camera at or inside the black hole's horizon"},
     {"temperature_negative", 2, "from 0 to 1000000"},
     {"moving_in_curved_space", 0, "[object ball] moves, but light is bent here (model schwarzschild)"},
     {"object_too_fast", 0, "[object ball]: velocity has speed 1 c"},
@@ -484,6 +488,69 @@ static void test_bad_fixtures(void **state)
         if (strcmp(err.where, where) != 0 || !strstr(err.message, bad_scenes[i].words))
             fail_msg("%s: expected \"%s\" with \"%s\", got \"%s\": %s", bad_scenes[i].file, where,
                      bad_scenes[i].words, err.where, err.message);
+    }
+}
+
+/* The black hole's shadow seen by the static observer at the camera (the kiosk's bound on the mass
+ * knob): its angular radius alpha from the direction to the hole obeys sin(alpha) = 3 sqrt(3) M / r
+ * sqrt(1 - 2M/r), with alpha = 90 degrees at the photon sphere r = 3M and beyond 90 inside it. */
+static void test_shadow_size(void **state)
+{
+    (void)state;
+    static struct scene s;
+    scene_defaults(&s);
+    s.model.type = MODEL_SCHWARZSCHILD;
+    s.model.center = v3(0.0, 0.0, 0.0);
+    s.camera.position = v3(0.0, 0.0, 6.0);
+    s.model.mass = 1.0;                               /* r = 6M: sin(alpha) = sqrt(3)/2 sqrt(2/3) */
+    assert_true(fabs(scene_shadow_diameter_deg(&s) - 90.0) < 1e-9);
+    s.model.mass = 2.0;                               /* r = 3M: half the sky */
+    assert_true(fabs(scene_shadow_diameter_deg(&s) - 180.0) < 1e-9);
+    s.model.mass = 2.4;                               /* inside the photon sphere: more than half */
+    double inside = 2.0 * (180.0 - asin(3.0 * sqrt(3.0) * 2.4 / 6.0 * sqrt(1.0 - 4.8 / 6.0)) * 180.0 / 3.14159265358979323846);
+    assert_true(fabs(scene_shadow_diameter_deg(&s) - inside) < 1e-9);
+    s.model.mass = 3.0;                               /* the camera on the horizon */
+    assert_true(scene_shadow_diameter_deg(&s) == 360.0);
+    s.model.mass = 1e-6;                              /* far away: 2 b_c / r */
+    double far = 2.0 * 3.0 * sqrt(3.0) * 1e-6 / 6.0 * 180.0 / 3.14159265358979323846;
+    assert_true(fabs(scene_shadow_diameter_deg(&s) / far - 1.0) < 1e-5);
+    s.model.mass = 0.0;
+    assert_true(scene_shadow_diameter_deg(&s) == 0.0);
+    s.model.type = MODEL_LORENZ;
+    s.model.mass = 1.0;
+    assert_true(scene_shadow_diameter_deg(&s) == 0.0);
+    /* the largest mass for a given shadow is its inverse, rounded down to three digits */
+    s.model.type = MODEL_SCHWARZSCHILD;
+    const double spans[] = {1.0, 30.0, 90.0, 179.0, 250.0};
+    for (size_t i = 0; i < sizeof spans / sizeof spans[0]; i++) {
+        double m = scene_mass_for_shadow(&s, spans[i]);
+        s.model.mass = m;
+        assert_true(scene_shadow_diameter_deg(&s) <= spans[i]);
+        s.model.mass = m * 1.01;
+        assert_true(scene_shadow_diameter_deg(&s) > spans[i]);
+    }
+}
+
+/* Every shipped black hole bounds its mass knob in [kiosk] so that the shadow stays within 60% of
+ * the view's height, and not much below it: the knob's range is the widest the exhibit can show. */
+static void test_shipped_black_holes_bound_the_mass_knob(void **state)
+{
+    (void)state;
+    static const char *const scenes[] = {"schwarzschild", "blackhole_flight", "demo", "neutron_star"};
+    for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++) {
+        static struct scene s;
+        struct scene_error e;
+        char path[128];
+        snprintf(path, sizeof path, "assets/scenes/%s.scene", scenes[i]);
+        if (scene_load(&s, path, &e) != 0)
+            fail_msg("%s: %s", e.where, e.message);
+        assert_string_equal(s.kiosk.mass.key, "model.mass");
+        double own = scene_shadow_diameter_deg(&s);
+        s.model.mass = s.kiosk.mass.max;
+        double limit = SCENE_KIOSK_SHADOW_MAX_FRACTION * s.camera.fov_deg, across = scene_shadow_diameter_deg(&s);
+        print_message("%s: shadow %.1f degrees at the scene's own mass, %.1f at mass_max %g; %.1f allowed\n",
+                      scenes[i], own, across, s.kiosk.mass.max, limit);
+        assert_true(across <= limit && across >= 0.8 * limit);
     }
 }
 
@@ -891,6 +958,8 @@ int main(void)
         cmocka_unit_test(test_layout),
         cmocka_unit_test(test_bad_fixtures),
         cmocka_unit_test(test_every_fixture_is_in_the_table),
+        cmocka_unit_test(test_shadow_size),
+        cmocka_unit_test(test_shipped_black_holes_bound_the_mass_knob),
         cmocka_unit_test(test_duplicate_objects),
         cmocka_unit_test(test_model_keys_follow_the_type),
         cmocka_unit_test(test_textures),
