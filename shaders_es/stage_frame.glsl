@@ -15,6 +15,24 @@ uniform float u_segments;             // render.segments (1 for straight rays)
 // beyond 32767 wrapped there would end the loop before its first turn.
 const highp int FRAME_MAX_SEGMENTS = 100000;
 
+// The end of segment k for a ray that has no hit yet: it left the bounding sphere, fell into the
+// horizon or failed (steps < 0), as the termination stage decides; code and end_key are its
+// outcome and depth key where it ends. Returns whether the ray ends here (or has its hit).
+bool segment_end(vec3 x, float steps, float k, candidate best, inout float code, inout float end_key)
+{
+    vec3 from_bound = x - u_bound_center;
+    vec3 from_mass = x - u_capture_center;
+    bool captured = u_capture_radius2 > 0.0 && dot(from_mass, from_mass) <= u_capture_radius2;
+    bool outside = dot(from_bound, from_bound) >= u_bound_radius2;
+    float end_code = steps < 0.0 ? CODE_FAILED : captured ? CODE_CAPTURED : CODE_SKY;
+    bool found = best.slot >= 0.0;
+    bool ends = !found && (steps < 0.0 || captured || outside);
+    float next_key = k + 1.0;
+    code = ends ? end_code : code;
+    end_key = ends ? next_key : end_key;
+    return found || ends;
+}
+
 void main()
 {
     vec3 view = observer_scene_direction(observer_view_direction());
@@ -24,6 +42,11 @@ void main()
     bool stop = false;
     float h = u_step_size;
     vec3 a = x;
+    vec3 v_a = v;
+    float steps_a = steps;
+    float h_a = h;
+    float k_last = 0.0;
+    bool again = false;
     float code = CODE_UNFINISHED;
     float end_key = NO_HIT;
     candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
@@ -32,23 +55,64 @@ void main()
         if (k >= u_segments || stop)
             break;
         a = x;
+        v_a = v;
+        steps_a = steps;
+        h_a = h;
+        k_last = k;
+        bool clean = true;
+#if defined(MODEL_FLAT) || defined(CHECK_EVERY_STEP)
         for (int p = 0; p < PASSES_PER_SEGMENT; p++) {
             bool running = steps >= 0.0 && travelling(x);
             integrate_pass(x, v, steps, h, running);
         }
-        intersect_chord(a, x, k, best);
-        vec3 from_bound = x - u_bound_center;
-        vec3 from_mass = x - u_capture_center;
-        bool captured = u_capture_radius2 > 0.0 && dot(from_mass, from_mass) <= u_capture_radius2;
-        bool outside = dot(from_bound, from_bound) >= u_bound_radius2;
-        float end_code = steps < 0.0 ? CODE_FAILED : captured ? CODE_CAPTURED : CODE_SKY;
-        bool found = best.slot >= 0.0;
-        bool ends = !found && (steps < 0.0 || captured || outside);
-        float next_key = k + 1.0;
-        code = ends ? end_code : code;
-        end_key = ends ? next_key : end_key;
-        stop = found || ends;
+#else
+        // the segment's steps unchecked (stage_integrate.glsl); a ray that left, fell in or failed
+        // within them takes the segment again after this loop, from its start, each step checked
+        for (int p = 0; p < PASSES_PER_SEGMENT; p++)
+            for (int j = 0; j < STEPS_PER_PASS; j++)
+                step_unchecked(x, v, steps, h, clean);
+#endif
+        candidate tested = best;
+        intersect_chord(a, x, k, tested);
+        best = clean ? tested : best;
+        float new_code = code;
+        float new_end_key = end_key;
+        bool ended = segment_end(x, steps, k, best, new_code, new_end_key);
+        code = clean ? new_code : code;
+        end_key = clean ? new_end_key : end_key;
+        again = !clean;
+        stop = again || ended;
     }
+    // The segment in which a ray left, fell into the horizon or failed, from its start, as the
+    // multipass scheme integrates, intersects and ends it: the same rays bit for bit
+    // (tests/unit/test_acceleration.c). Once per ray, not once per segment.
+    x = again ? a : x;
+    v = again ? v_a : v;
+    steps = again ? steps_a : steps;
+    h = again ? h_a : h;
+    vec3 x_checked = x;
+    vec3 v_checked = v;
+    float steps_checked = steps;
+    float h_checked = h;
+    for (int p = 0; p < PASSES_PER_SEGMENT; p++) {
+        if (!again)
+            break;
+        bool running = steps_checked >= 0.0 && travelling(x_checked);
+        integrate_pass(x_checked, v_checked, steps_checked, h_checked, running);
+    }
+    // selected, not assigned in the loop that may break (see the precision note in common.glsl)
+    x = again ? x_checked : x;
+    v = again ? v_checked : v;
+    steps = again ? steps_checked : steps;
+    h = again ? h_checked : h;
+    candidate tested = best;
+    intersect_chord(a, x, k_last, tested);
+    best = again ? tested : best;
+    float new_code = code;
+    float new_end_key = end_key;
+    segment_end(x, steps, k_last, best, new_code, new_end_key);
+    code = again ? new_code : code;
+    end_key = again ? new_end_key : end_key;
     vec4 new_hit, new_image;
     intersect_shade(best, a, x, new_hit, new_image);
     bool found = best.slot >= 0.0;
