@@ -114,17 +114,18 @@ orbit_ray orbit_ray_of()
     float side_base = escapes ? 0.0 : u_orbit_rows;
     ray.row0 = i - 1.0;
     float phi_over_sin = 0.0;
+    vec4 ends[4];
     for (int m = 0; m < 4; m++) {
         float r = clamp(ray.row0 + float(m), 0.0, last_row) + side_base;
-        phi_over_sin += ray.weights[m] * ORBIT_TEXEL(u_orbit_columns, r).x;
+        ends[m] = ORBIT_TEXEL(u_orbit_columns, r);
+        phi_over_sin += ray.weights[m] * ends[m].x;
     }
     ray.row0 += side_base;
     ray.side_first = side_base;
     ray.side_last = side_base + last_row;
     ray.phi_end = phi_over_sin * sin_psi;
-    float n0 = ORBIT_TEXEL(u_orbit_columns, i + side_base).y;
-    float n1 = ORBIT_TEXEL(u_orbit_columns, i + 1.0 + side_base).y;
-    ray.segments = max(n0, n1);
+    // rows i and i + 1 are the stencil's middle two (0 <= i <= last_row - 1: no clamp)
+    ray.segments = max(ends[1].y, ends[2].y);
     return ray;
 }
 
@@ -144,9 +145,8 @@ vec2 orbit_at(orbit_ray ray, float s)
     vec2 sum = vec2(0.0);
     for (int m = 0; m < 4; m++) {
         float r = clamp(ray.row0 + float(m), ray.side_first, ray.side_last);
-        vec4 a = ORBIT_TEXEL(j, r);
-        vec4 b = ORBIT_TEXEL(j + 1.0, r);
-        vec4 samples = vec4(a.x, a.y, b.x, b.y);
+        // u, du/ds at samples j and j + 1, in one texel
+        vec4 samples = ORBIT_TEXEL(j, r);
         sum += ray.weights[m] * vec2(dot(value, samples), dot(slope, samples));
     }
     return sum;
@@ -162,18 +162,16 @@ float orbit_chord_end(orbit_ray ray, float k)
     float m = min(floor(x), last - 1.0);
     float g = x - m;
     float column = u_orbit_columns + 1.0 + m;
-    float next_column = column + 1.0;
     float row = ray.row0 + 1.0;
     float next_row = row + 1.0;
     // the first and the last end are the orbit's own ends: no fetch (the selects below keep the
     // arithmetic outside the branch, see the precision note in common.glsl)
     float end = k <= 0.0 ? 0.0 : 1.0;
     if (k > 0.0 && k < ray.segments) {
-        float a0 = ORBIT_TEXEL(column, row).x;
-        float b0 = ORBIT_TEXEL(next_column, row).x;
-        float a1 = ORBIT_TEXEL(column, next_row).x;
-        float b1 = ORBIT_TEXEL(next_column, next_row).x;
-        end = mix(mix(a0, b0, g), mix(a1, b1, g), ray.row_fraction);
+        // samples m and m + 1 of both rows, one texel each
+        vec2 near = ORBIT_TEXEL(column, row).xy;
+        vec2 far = ORBIT_TEXEL(column, next_row).xy;
+        end = mix(mix(near.x, near.y, g), mix(far.x, far.y, g), ray.row_fraction);
     }
     return end;
 }

@@ -426,6 +426,12 @@ static int build_row(struct orbit_table *t, int row, double *phi_s, char *err, s
         texel[0] = (float)u[j];
         texel[1] = (float)du[j];
     }
+    /* each texel also holds the next sample's pair: the shader's cubic reads one texel, not two */
+    for (int j = 0; j + 1 < cols; j++) {
+        float *texel = t->texels + ((size_t)row * t->width + j) * 4;
+        texel[2] = texel[4];
+        texel[3] = texel[5];
+    }
     t->psi[row] = psi;
     t->phi_over_sin[row] = phi_end / sin(psi);
     double warp[ORBIT_WARP_SAMPLES];
@@ -435,8 +441,11 @@ static int build_row(struct orbit_table *t, int row, double *phi_s, char *err, s
         snprintf(err, errlen, "orbit table: out of memory");
         return -1;
     }
-    for (int m = 0; m < ORBIT_WARP_SAMPLES; m++)
-        t->texels[((size_t)row * t->width + cols + 1 + m) * 4] = (float)warp[m];
+    for (int m = 0; m < ORBIT_WARP_SAMPLES; m++) {
+        float *texel = t->texels + ((size_t)row * t->width + cols + 1 + m) * 4;
+        texel[0] = (float)warp[m];
+        texel[1] = m + 1 < ORBIT_WARP_SAMPLES ? (float)warp[m + 1] : (float)warp[m];
+    }
     t->segments[row] = row_segments(t, &k, warp, sigma);
     float *last = t->texels + ((size_t)row * t->width + cols) * 4;
     last[0] = (float)t->phi_over_sin[row];

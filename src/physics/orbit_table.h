@@ -64,10 +64,11 @@ struct orbit_table {
     double epsilon[2];         /* each side's epsilon: ORBIT_CRITICAL_EPSILON, or less for a narrow side */
     double u_observer, u_far, u_capture;
     /* texture layout: width columns + 1 + ORBIT_WARP_SAMPLES, height 2 rows_per_side (escaping
-     * rows first, from psi_c outwards); texel (j, row) = (u(s_j), du/ds(s_j), 0, 0) with
-     * s_j = j / (columns - 1); texel (columns, row) = (phi_end / sin psi, segments, phi_end, psi);
-     * texel (columns + 1 + m, row) = (s where chord schedule sample m lies, 0, 0, 0): chord k of n
-     * ends at the warp interpolated linearly at k / n */
+     * rows first, from psi_c outwards); texel (j, row) = (u(s_j), du/ds(s_j), u(s_j+1), du/ds(s_j+1))
+     * with s_j = j / (columns - 1) (the last column's next pair is 0); texel (columns, row) =
+     * (phi_end / sin psi, segments, phi_end, psi); texel (columns + 1 + m, row) = (s where chord
+     * schedule sample m lies, the same for sample m + 1 (or m, the last), 0, 0): chord k of n ends
+     * at the warp interpolated linearly at k / n. Each interpolation reads one texel per row. */
     int width, height;
     float *texels;             /* RGBA, width x height, row-major */
     double *u, *du_ds;         /* the same in double: height x columns */
