@@ -24,6 +24,9 @@ static int parse_int64(const char *text, int64_t *out)
 {
     char *end;
     long long x;
+    /* decimal digits, with a minus sign for a negative number: no plus sign, no blanks */
+    if (!isdigit((unsigned char)text[text[0] == '-']))
+        return -1;
     errno = 0;
     x = strtoll(text, &end, 10);
     if (end == text || *end != '\0' || errno == ERANGE)

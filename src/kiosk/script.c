@@ -78,22 +78,38 @@ int script_load(struct script *sc, const char *path, char *err, size_t errlen)
 {
     sc->n = 0;
     char why[256];
-    FILE *f = regular_file_open(path, "script", why, sizeof why);
-    if (!f) {
+    size_t size;
+    char *text = text_file_read(path, SCRIPT_MAX_BYTES, "script", &size, why, sizeof why);
+    if (!text) {
         snprintf(err, errlen, "%s: %s", path, why);
         return -1;
     }
-    char text[SCRIPT_LINE_MAX + 2];
-    int line = 0, rc = 0;
-    while (rc == 0 && fgets(text, sizeof text, f)) {
-        line++;
-        size_t len = strlen(text);
-        if (len > SCRIPT_LINE_MAX && text[len - 1] != '\n') {
+    /* lines end with LF or CR LF; a UTF-8 byte-order mark may open the file; a NUL byte is refused
+     * (text_lines_next), and so is a carriage return inside a line, where a file with CR line ends
+     * would otherwise lose every event after its first line */
+    struct text_lines lines = {.text = text, .len = size};
+    const char *start;
+    size_t n;
+    int rc = 0, more;
+    while (rc == 0 && (more = text_lines_next(&lines, &start, &n, why, sizeof why)) != 0) {
+        int line = lines.line;
+        if (more < 0) {
+            rc = refuse(err, errlen, path, line, "%s", why);
+            break;
+        }
+        if (n > SCRIPT_LINE_MAX) {
             rc = refuse(err, errlen, path, line, "line longer than %d characters", SCRIPT_LINE_MAX);
             break;
         }
-        text[strcspn(text, "\r\n")] = '\0';
-        char *p = text + strspn(text, " \t");
+        if (memchr(start, '\r', n)) {
+            rc = refuse(err, errlen, path, line, "a carriage return inside the line (a file with CR line ends?): "
+                        "end each line with LF or CR LF");
+            break;
+        }
+        char buf[SCRIPT_LINE_MAX + 1];
+        memcpy(buf, start, n);
+        buf[n] = '\0';
+        char *p = buf + strspn(buf, " \t");
         if (*p == '\0' || *p == '#' || *p == ';')
             continue;
         if (sc->n == SCRIPT_MAX_EVENTS) {
@@ -107,8 +123,6 @@ int script_load(struct script *sc, const char *path, char *err, size_t errlen)
                         sc->events[sc->n - 1].t);
         sc->n += rc == 0;
     }
-    if (rc == 0 && ferror(f))
-        rc = refuse(err, errlen, path, line, "read error");
-    fclose(f);
+    free(text);
     return rc;
 }

@@ -15,6 +15,7 @@
 #include "kiosk/kiosk_config.h"
 
 #define SCRIPT_MAX_EVENTS 4096
+#define SCRIPT_MAX_BYTES (4L << 20)   /* a script file: events and comments */
 #define SCRIPT_MAX_COUNTS 1000       /* detents in one event: more is a typo */
 #define SCRIPT_MAX_SECONDS 86400.0   /* an event's time: a day; later is a typo the kiosk would wait for */
 

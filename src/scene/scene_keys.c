@@ -646,10 +646,14 @@ static int in_range(const struct scene_key *k, double x)
     return 1;
 }
 
+/* Decimal digits, with a minus sign for a negative number: strtol alone would also take a plus
+ * sign and leading blanks ("+32"), which the format does not have. */
 static int parse_integer(const char *text, int *out)
 {
     char *end;
     long x;
+    if (!isdigit((unsigned char)text[text[0] == '-']))
+        return -1;
     errno = 0;
     x = strtol(text, &end, 10);
     if (end == text || errno == ERANGE || x < -2147483647L || x > 2147483647L)

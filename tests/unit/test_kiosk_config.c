@@ -350,6 +350,8 @@ static const struct bad_case bad_cases[] = {
     {"nan", AT_LOAD, KIOSK_OK "[mass]\nmax = nan\n", 4,
      {"key 'max' in [mass]", "got \"nan\"", "not a finite number"}},
     {"inf", AT_LOAD, KIOSK_OK "[mass]\nstep = -inf\n", 4, {"key 'step' in [mass]", "not a finite number"}},
+    {"plus_sign", AT_LOAD, KIOSK_OK "idle_seconds = +120\n", 3,
+     {"key 'idle_seconds' in [kiosk]: expected an integer from 10 to 86400, got \"+120\""}},
     {"trailing_garbage", AT_LOAD, KIOSK_OK "width = 1280px\n", 3,
      {"key 'width' in [kiosk]: expected an integer from 16 to 8192, got \"1280px\""}},
     {"trailing_number", AT_LOAD, KIOSK_OK "[speed]\nstep = 0.05 0.1\n", 4,

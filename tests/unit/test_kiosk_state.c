@@ -154,6 +154,23 @@ static void test_script(void **state)
     }
     assert_int_equal(script_load(&sc, "build/no_such_script.txt", err, sizeof err), -1);
     assert_non_null(strstr(err, "no_such_script.txt: cannot open the script"));
+    /* a byte-order mark and CR LF line ends, as a Windows editor saves it: read as written */
+    write_file("build/test_script_crlf.txt", "\xEF\xBB\xBF" "0 frame\r\n1 turn mass +2\r\n");
+    assert_int_equal(script_load(&sc, "build/test_script_crlf.txt", err, sizeof err), 0);
+    assert_int_equal(sc.n, 2);
+    assert_true(sc.events[1].kind == SCRIPT_TURN && sc.events[1].counts == 2);
+    /* CR line ends alone would make one line of the whole file: refused, not cut at its first CR */
+    write_file("build/test_script_cr.txt", "0 frame\r1 turn mass +2\r");
+    assert_int_equal(script_load(&sc, "build/test_script_cr.txt", err, sizeof err), -1);
+    assert_non_null(strstr(err, "test_script_cr.txt:1: a carriage return inside the line"));
+    /* a NUL byte does not end the line silently: refused with its line */
+    static const char with_nul[] = "0 frame\n1 turn mass +2\0 frame\n";
+    FILE *f = fopen("build/test_script_nul.txt", "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(with_nul, 1, sizeof with_nul - 1, f), sizeof with_nul - 1);
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(script_load(&sc, "build/test_script_nul.txt", err, sizeof err), -1);
+    assert_non_null(strstr(err, "test_script_nul.txt:2: the line holds a NUL byte"));
 }
 
 /* One renderer whose scene the knobs change between frames draws what a fresh renderer draws, while

@@ -424,6 +424,7 @@ static const struct {
     {"uv_count", 3, "2 numbers"},
     {"trailing_garbage", 2, "an integer"},
     {"not_integer", 2, "an integer"},
+    {"integer_plus_sign", 3, "expected an integer from 1 to 100000, got \"+32\""},
     {"integer_range", 2, "from 1 to 8192"},
     {"bad_choice", 2, "one of euler, rk4, dopri5"},
     {"empty_value", 2, "got \"\""},
