@@ -1,5 +1,6 @@
 /* bentray: light on curved paths, traced on the GPU (Weiskopf, Schafhitzel, Ertl 2004). */
 #include "cli/commands.h"
+#include "io/stderr_filter.h"
 #include <stdio.h>
 #include <string.h>
 
@@ -18,11 +19,13 @@ static void usage(FILE *out)
             "  kiosk    the exhibition kiosk: knobs, buttons, preview and refined frames, HUD\n"
             "\n"
             "bentray COMMAND --help shows the options of a command.\n"
-            "exit codes: 0 ok, 1 runtime failure, 2 bad usage or input\n");
+            "exit codes: 0 ok, 1 runtime failure, 2 bad usage or input, 3 a scene missed its own [quality]\n"
+            "(bentray error --check)\n");
 }
 
 int main(int argc, char **argv)
 {
+    stderr_escape_controls();
     if (argc < 2) {
         usage(stderr);
         return EXIT_USAGE;

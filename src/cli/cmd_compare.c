@@ -12,20 +12,22 @@ static void usage(FILE *out)
                  "Prints a table, or JSON with --json. Metrics are defined in docs/ERRORS.md.\n");
 }
 
-/* Read and check one dump; the messages of dump_read name the file already. */
+/* Read and check one dump; the messages of dump_read name the file already. EXIT_OK, EXIT_USAGE
+ * for a bad dump, EXIT_RUNTIME where the machine has too little memory for a good one. */
 static int load(const char *path, struct dump *d)
 {
     char err[512];
-    if (dump_read(path, d, err, sizeof err) != 0) {
+    int rc = dump_read(path, d, err, sizeof err);
+    if (rc != 0) {
         fprintf(stderr, "bentray compare: %s\n", err);
-        return -1;
+        return rc == DUMP_READ_NO_MEMORY ? EXIT_RUNTIME : EXIT_USAGE;
     }
     if (compare_dump_check(d, err, sizeof err) != 0) {
         fprintf(stderr, "bentray compare: %s: %s\n", path, err);
         dump_free(d);
-        return -1;
+        return EXIT_USAGE;
     }
-    return 0;
+    return EXIT_OK;
 }
 
 /* The two dump paths and --json; 1 after --help, -1 on bad usage, else 0. */
@@ -66,11 +68,13 @@ int cmd_compare(int argc, char **argv)
     if (p != 0)
         return p > 0 ? EXIT_OK : EXIT_USAGE;
     struct dump a, b;
-    if (load(paths[0], &a) != 0)
-        return EXIT_USAGE;
-    if (load(paths[1], &b) != 0) {
+    int loaded = load(paths[0], &a);
+    if (loaded != EXIT_OK)
+        return loaded;
+    loaded = load(paths[1], &b);
+    if (loaded != EXIT_OK) {
         dump_free(&a);
-        return EXIT_USAGE;
+        return loaded;
     }
     struct compare_result r;
     char err[512];

@@ -167,8 +167,8 @@ int dump_read(const char *path, struct dump *d, char *err, size_t errlen)
     d->records = malloc(n * sizeof *d->records);
     if (!d->records) {
         fclose(f);
-        snprintf(err, errlen, "out of memory reading %s", path);
-        return -1;
+        snprintf(err, errlen, "out of memory reading %s (%zu records)", path, n);
+        return DUMP_READ_NO_MEMORY;
     }
     for (size_t i = 0; i < n; i++) {
         if (fread(rec, sizeof rec, 1, f) != 1) {

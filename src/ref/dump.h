@@ -40,6 +40,9 @@ struct dump {
 
 const char *dump_outcome_name(int32_t outcome);   /* "sky", "captured", ..., "object" */
 int dump_write(const char *path, const struct dump *d, int overwrite, char *err, size_t errlen);
+/* DUMP_READ_NO_MEMORY: the dump is well formed, but its records do not fit in memory (a failure
+ * of this machine, not of the input) */
+#define DUMP_READ_NO_MEMORY (-2)
 int dump_read(const char *path, struct dump *d, char *err, size_t errlen);
 void dump_free(struct dump *d);
 

@@ -84,6 +84,7 @@ feeds() {
     dump) echo "per-pixel dumps: dump_read, dump_write" ;;
     hid) echo "HID reports and layouts: hid_layout_check, hid_decode, powermate_decode, counter_delta" ;;
     gpio) echo "GPIO edge streams: quadrature, debounce, event_merge" ;;
+    script) echo "kiosk scripts and the attract tour: script_load, script_player" ;;
     *) echo "-" ;;
     esac
 }
@@ -164,6 +165,10 @@ failed=$(awk -F'|' '$4 != 0' "$work/run" | wc -l | tr -d ' ')
     echo "  reported once and exactly when debounce.h says. event_merge of two streams built from the"
     echo "  events: never more than out_cap written, min(out_cap, events) returned, in time order, and"
     echo "  exactly the stable merge."
+    echo "- **script**: the input is written to a file and read by script_load, as the kiosk does at start."
+    echo "  Every refusal names the file; what is accepted can be replayed: at most SCRIPT_MAX_EVENTS"
+    echo "  events, times finite, from 0 and never decreasing, counts within SCRIPT_MAX_COUNTS, known"
+    echo "  actions; the player hands every event out exactly once, in order, however the clock advances."
     echo
     echo "## Reproducers kept"
     echo

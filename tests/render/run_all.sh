@@ -16,6 +16,10 @@ check "missing scene" 2 "nosuch.scene" -- $BT render --scene "$TMP/nosuch.scene"
 check "bad --set key" 2 "\-\-set model.mas=1" -- $BT render --scene $S --set model.mas=1
 check "bad --set value" 2 "expected" -- $BT render --scene assets/scenes/schwarzschild.scene --set model.mass=-1
 check "pixel outside" 2 "outside" -- $BT trace --scene $S --pixel 5000 1
+# a control character in a quoted value is shown as \xNN, never sent raw to the terminal
+printf '[render]\nwidth = 1\033[31mred\n' > "$TMP/escape.scene"
+check "control characters escaped" 2 'got "1\\x1b\[31mred"' -- $BT render --scene "$TMP/escape.scene" --out "$TMP/x.png"
+check "no raw escape character" 0 "^0$" -- sh -c "$BT render --scene $TMP/escape.scene --out $TMP/x.png 2>&1 | tr -dc '\033' | wc -c"
 # every bad scene fixture: exit 2 and a message that names the file
 for f in tests/scenes_bad/*.scene; do
     check "bad scene $(basename "$f")" 2 "$(basename "$f")(:[0-9]+)?: error: " -- $BT render --scene "$f" --out "$TMP/x.png"
@@ -98,6 +102,17 @@ check "render gpu dump" 0 "hit an object" -- $BT render --scene $S --size 32x24 
 check "compare flat" 0 "outcome differs: 0 of 768" -- $BT compare "$TMP/gpu.dump" "$TMP/cpu.dump"
 check "compare json" 0 "\"differ\": 0," -- $BT compare --json "$TMP/gpu.dump" "$TMP/cpu.dump"
 check "compare other scene" 2 "scene" -- sh -c "$BT render --scene assets/scenes/lorenz.scene --size 32x24 --engine cpu --out $TMP/l.png --dump $TMP/l.dump >/dev/null 2>&1; $BT compare $TMP/l.dump $TMP/cpu.dump"
+# a well-formed dump of the largest size, with too little memory for its records: a failure of
+# the machine, exit 1, not bad input (the records are a sparse file: no disk is used)
+{ printf 'BTDUMP\000\000\002\000\000\000\000\010\000\000\000\020\000\000\064\000\000\000'; head -c 32 /dev/zero
+  printf '\000\000\000\000\000\000\000\000'; head -c 32 /dev/zero; } > "$TMP/big.dump"
+truncate -s $((96 + 2048 * 4096 * 52)) "$TMP/big.dump"
+if [ -z "${ASAN_OPTIONS:-}" ]; then
+    check "compare out of memory" 1 "out of memory reading .*big.dump \(8388608 records\)" -- sh -c "ulimit -v 300000; $BT compare $TMP/big.dump $TMP/big.dump"
+else
+    echo "skip compare out of memory: AddressSanitizer reserves more address space than the limit allows"
+fi
+rm -f "$TMP/big.dump"
 check "compare damaged header" 2 "unsupported dump \(version 2, 8192x8192.*at most 8388608 pixels" -- $BT compare tests/fuzz/seeds/dump/oom-header-8192x8192.dump "$TMP/cpu.dump"
 check "compare not a dump" 2 "not a bentray dump" -- $BT compare "$TMP/cpu.png" "$TMP/cpu.dump"
 check "error table" 0 "time: gpu .*cpu dopri5" -- $BT error --scene assets/scenes/schwarzschild.scene --size 24x18
