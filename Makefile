@@ -39,6 +39,17 @@ TEST_BINS := $(TEST_SRCS:tests/unit/%.c=$(BUILD)/tests/%)
 .PHONY: all deps deps-bench demo test test-unit test-render test-sanitize test-valgrind golden assets accuracy bench clean
 all: $(BIN)
 
+# The version: the commit this tree was built from (git describe), or "unknown" outside a checkout;
+# main.o is rebuilt when it changes.
+VERSION := $(shell git describe --always --dirty 2>/dev/null || echo unknown)
+$(BUILD)/gen/version: FORCE
+	@mkdir -p $(dir $@)
+	@echo '$(VERSION)' | cmp -s - $@ || echo '$(VERSION)' > $@
+$(BUILD)/src/main.o: $(BUILD)/gen/version
+$(BUILD)/src/main.o: CFLAGS += -DBENTRAY_VERSION='"$(VERSION)"'
+.PHONY: FORCE
+FORCE:
+
 $(BIN): $(BUILD)/src/main.o $(BUILD)/libbentray.a
 	$(CC) $(CFLAGS) -o $@ $^ $(LDLIBS)
 

@@ -4,6 +4,7 @@
 #include "io/png_io.h"
 #include "io/output_file.h"
 #include "cli/measure.h"
+#include <ctype.h>
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
@@ -115,6 +116,14 @@ static void default_output_name(const char *scene_name, char *out, size_t len)
     snprintf(out, len, "%s.png", n > 0 ? name : "bentray");
 }
 
+/* Whether path ends in ".png", in any case. */
+static int has_png_extension(const char *path)
+{
+    size_t n = strlen(path);
+    return n > 4 && path[n - 4] == '.' && tolower((unsigned char)path[n - 3]) == 'p' &&
+           tolower((unsigned char)path[n - 2]) == 'n' && tolower((unsigned char)path[n - 1]) == 'g';
+}
+
 int cmd_render(int argc, char **argv)
 {
     struct common_options o = {.backend = "auto"};
@@ -139,6 +148,17 @@ int cmd_render(int argc, char **argv)
             usage(stderr);
             return EXIT_USAGE;
         }
+    }
+    /* bentray writes PNG files: a name that promises anything else would be a lie on the disk */
+    if (out_path && strcmp(out_path, "-") == 0) {
+        fprintf(stderr, "bentray render: --out -: the image goes to a file, not to standard output: name a .png "
+                        "file\n");
+        return EXIT_USAGE;
+    }
+    if (out_path && !has_png_extension(out_path)) {
+        fprintf(stderr, "bentray render: --out %s: bentray writes PNG images: give the file the extension .png\n",
+                out_path);
+        return EXIT_USAGE;
     }
     static struct scene s;
     int rc = options_load_scene(&o, "render", &s);

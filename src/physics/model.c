@@ -198,6 +198,27 @@ vec3d model_initial_velocity(const struct model *m, vec3d x, vec3d dir)
     return dir;
 }
 
+/* Schwarzschild: the critical launch angle (b = 3 sqrt(3) M) seen by the static observer at r_o,
+ * measured from the nearer radial direction (src/physics/orbit_table.h tabulates the orbits around
+ * it; the kiosk bounds the shadow's size with it). */
+double orbit_critical_from_axis(double mass, double r_observer, int *inward)
+{
+    double s = 3.0 * sqrt(3.0) * mass * sqrt(1.0 - 2.0 * mass / r_observer) / r_observer;
+    if (s > 1.0)
+        s = 1.0;                      /* r_o = 3M: rounding only */
+    if (inward)
+        *inward = r_observer > 3.0 * mass;
+    return asin(s);
+}
+
+double orbit_critical_angle(double mass, double r_observer)
+{
+    const double pi = 3.14159265358979323846;
+    int inward;
+    double a = orbit_critical_from_axis(mass, r_observer, &inward);
+    return inward ? pi - a : a;
+}
+
 double model_capture_radius(const struct model *m)
 {
     if (m->type == MODEL_SCHWARZSCHILD && m->mass > 0.0)

@@ -47,6 +47,12 @@ vec3d model_accel(const struct model *m, vec3d x, vec3d v);
 vec3d model_initial_velocity(const struct model *m, vec3d x, vec3d dir);
 /* Radius (around center) inside which rays are captured; 0 when the model has none. */
 double model_capture_radius(const struct model *m);
+/* Schwarzschild: the critical launch angle (impact parameter b_c = 3 sqrt(3) M) for the static
+ * observer at r_o > 2M, from the outward radial direction; orbit_critical_from_axis gives it from
+ * the nearer radial direction (*inward: from the inward one, r_o > 3M; may be NULL), without the
+ * rounding of pi - angle. The shadow's angular radius is pi - orbit_critical_angle. */
+double orbit_critical_angle(double mass, double r_observer);
+double orbit_critical_from_axis(double mass, double r_observer, int *inward);
 /* Index of refraction n(x) for MODEL_REFRACTION (1 elsewhere). */
 double model_refraction_index(const struct model *m, vec3d x);
 

@@ -20,23 +20,6 @@ static const double pi = 3.14159265358979323846;
 /* threads that build the rows */
 #define ORBIT_MAX_THREADS 8
 
-double orbit_critical_from_axis(double mass, double r_observer, int *inward)
-{
-    double s = 3.0 * sqrt(3.0) * mass * sqrt(1.0 - 2.0 * mass / r_observer) / r_observer;
-    if (s > 1.0)
-        s = 1.0;                      /* r_o = 3M: rounding only */
-    if (inward)
-        *inward = r_observer > 3.0 * mass;
-    return asin(s);
-}
-
-double orbit_critical_angle(double mass, double r_observer)
-{
-    int inward;
-    double a = orbit_critical_from_axis(mass, r_observer, &inward);
-    return inward ? pi - a : a;
-}
-
 /* ---- Binet's equation in phi: y = (u, w = du/dphi), y' = (w, 3 M u^2 - u) ---- */
 
 static double binet_accel(double mass, double u)

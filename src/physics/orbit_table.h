@@ -18,6 +18,7 @@
 #ifndef BT_ORBIT_TABLE_H
 #define BT_ORBIT_TABLE_H
 #include <stddef.h>
+#include "physics/model.h"
 
 enum orbit_side { ORBIT_ESCAPES, ORBIT_CAPTURED };
 
@@ -83,10 +84,7 @@ struct orbit_table {
 int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p, char *err, size_t errlen);
 void orbit_table_free(struct orbit_table *t);
 
-/* The critical launch angle for M and r_o > 2M; *from_axis and *inward (either may be NULL) say
- * the same from the nearer radial direction, without the rounding of pi - angle. */
-double orbit_critical_angle(double mass, double r_observer);
-double orbit_critical_from_axis(double mass, double r_observer, int *inward);
+/* orbit_critical_angle and orbit_critical_from_axis: physics/model.h */
 /* Side and fractional row (0 .. rows_per_side - 1) of launch angle psi. */
 double orbit_table_row(const struct orbit_table *t, double psi, enum orbit_side *side);
 

@@ -6,7 +6,6 @@
 #include <string.h>
 #include "scene/scene.h"
 #include "scene/scene_keys.h"
-#include "physics/orbit_table.h"
 #include "physics/relativity.h"
 
 /* Below this the up vector is taken as parallel to the view direction (sine of their angle). */

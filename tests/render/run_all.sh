@@ -17,9 +17,9 @@ check "bad --set key" 2 "\-\-set model.mas=1" -- $BT render --scene $S --set mod
 check "bad --set value" 2 "expected" -- $BT render --scene assets/scenes/schwarzschild.scene --set model.mass=-1
 check "pixel outside" 2 "outside" -- $BT trace --scene $S --pixel 5000 1
 # a control character in a quoted value is shown as \xNN, never sent raw to the terminal
-printf '[render]\nwidth = 1\033[31mred\n' > "$TMP/escape.scene"
-check "control characters escaped" 2 'got "1\\x1b\[31mred"' -- $BT render --scene "$TMP/escape.scene" --out "$TMP/x.png"
-check "no raw escape character" 0 "^0$" -- sh -c "$BT render --scene $TMP/escape.scene --out $TMP/x.png 2>&1 | tr -dc '\033' | wc -c"
+printf '[render]\nwidth = 1\033[31mred\n' > "$TMP/ctrl.scene"
+check "control characters escaped" 2 'got "1\\x1b\[31mred"' -- $BT render --scene "$TMP/ctrl.scene" --out "$TMP/x.png"
+check "no raw escape character" 0 "^0$" -- sh -c "$BT render --scene $TMP/ctrl.scene --out $TMP/x.png 2>&1 | tr -dc '\033' | wc -c"
 # every bad scene fixture: exit 2 and a message that names the file
 for f in tests/scenes_bad/*.scene; do
     check "bad scene $(basename "$f")" 2 "$(basename "$f")(:[0-9]+)?: error: " -- $BT render --scene "$f" --out "$TMP/x.png"
@@ -65,14 +65,22 @@ check "broken shader" 1 "stage_integrate.glsl:[0-9]+" -- $BT render --scene $S -
 # outputs: checked before any work, never anything but a regular file replaced, a link replaced
 # itself and never followed, the old file kept whole when the new one cannot be written
 W="$TMP/outputs" && mkdir -p "$W"
-check "out and dump the same" 2 "--out and --dump name the same file" -- $BT render --scene $S --size 8x6 --out "$W/x" --dump "$W/./x" --force
+check "out and dump the same" 2 "--out and --dump name the same file" -- $BT render --scene $S --size 8x6 --out "$W/x.png" --dump "$W/./x.png" --force
 check "out directory missing" 2 "--out: cannot write .*nodir/x.png: directory .*nodir: No such file" -- $BT render --scene $S --size 8x6 --out "$W/nodir/x.png"
 mkfifo "$W/fifo"
 check "dump onto a FIFO" 2 "--dump: .*fifo is a FIFO: bentray replaces only regular files" -- $BT render --scene $S --size 8x6 --out "$W/f.png" --dump "$W/fifo" --force
-check "out onto a directory" 2 "--out: .* is a directory: bentray replaces only regular files" -- $BT render --scene $S --size 8x6 --out "$W" --force
-echo keep > "$W/target" && ln -s "$W/target" "$W/link" && ln -s "$W/none" "$W/dangling"
+mkdir -p "$W/dir.png"
+check "out onto a directory" 2 "--out: .*dir.png is a directory: bentray replaces only regular files" -- $BT render --scene $S --size 8x6 --out "$W/dir.png" --force
+echo keep > "$W/target" && ln -s "$W/target" "$W/link" && ln -s "$W/none" "$W/dangling.png"
 check "dump link replaced, target kept" 0 "^keep$" -- sh -c "$BT render --scene $S --size 8x6 --out $W/l.png --dump $W/link --force >/dev/null && test ! -L $W/link && cat $W/target"
-check "dangling link refused before work" 2 "--out: refusing to replace existing file .*dangling" -- $BT render --scene $S --size 8x6 --out "$W/dangling"
+check "dangling link refused before work" 2 "--out: refusing to replace existing file .*dangling" -- $BT render --scene $S --size 8x6 --out "$W/dangling.png"
+# the image is a PNG file: standard output and other extensions are refused before any work
+check "out to standard output refused" 2 "--out -: the image goes to a file, not to standard output" -- $BT render --scene $S --size 8x6 --out -
+check "out with another extension refused" 2 "--out .*x.jpg: bentray writes PNG images: give the file the extension .png" -- $BT render --scene $S --size 8x6 --out "$W/x.jpg"
+check "out with upper-case extension" 0 "X.PNG" -- $BT render --scene $S --size 8x6 --out "$W/X.PNG"
+# an option's value may be joined to it with '=', and --version names the build
+check "option=value" 0 "eq.png" -- $BT render --scene=$S --size=8x6 --set=render.segments=2 --out="$W/eq.png"
+check "version" 0 "^bentray ([0-9a-f]|unknown)" -- $BT --version
 echo "old data" > "$W/old.dump"
 check "file-size limit keeps the old dump" 0 "^old data; 0 temporaries$" -- sh -c "(ulimit -f 8; $BT render --scene $S --size 64x48 --out $W/o.png --dump $W/old.dump --force) >/dev/null 2>&1; echo \"\$(cat $W/old.dump); \$(ls $W | grep -c tmp-) temporaries\""
 sed 's/^name = .*/name = ..\/esc"aped/' $S > assets/scenes/.escape_test.scene
