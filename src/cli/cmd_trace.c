@@ -84,8 +84,15 @@ static void print_json(const struct scene *s, long px, long py, const char *engi
     print_vec("final_direction", rec->direction, ",");
     printf("  \"polyline\": [\n    [%.9g, %.9g, %.9g]", s->camera.position.x, s->camera.position.y,
            s->camera.position.z);
-    for (int k = 0; k < pl->n; k++)
+    /* a ray that has ended stays where it ended while the remaining segments run: its end once */
+    const float camera[3] = {(float)s->camera.position.x, (float)s->camera.position.y, (float)s->camera.position.z};
+    const float *last = camera;
+    for (int k = 0; k < pl->n; k++) {
+        if (memcmp(pl->points[k], last, 3 * sizeof(float)) == 0)
+            continue;
         printf(",\n    [%.9g, %.9g, %.9g]", pl->points[k][0], pl->points[k][1], pl->points[k][2]);
+        last = pl->points[k];
+    }
     printf("\n  ]\n}\n");
 }
 

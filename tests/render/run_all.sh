@@ -28,6 +28,8 @@ done
 check "render egl" 0 "hit an object" -- $BT render --scene $S --size 32x24 --backend egl --out "$TMP/a.png"
 check "no overwrite" 2 "--out: refusing to replace" -- $BT render --scene $S --size 32x24 --out "$TMP/a.png"
 check "render osmesa" 0 "on osmesa" -- $BT render --scene $S --size 32x24 --backend osmesa --out "$TMP/b.png"
+# a ray that hit an object in segment 14 of 60: its polyline ends there, the end not repeated
+check "trace polyline ends where the ray ends" 0 "^15 points, 0 repeated$" -- sh -c "$BT trace --scene assets/scenes/lorenz.scene --size 32x24 --pixel 16 16 > $TMP/t.json && echo \"\$(grep -c '^    \[' $TMP/t.json) points, \$(grep '^    \[' $TMP/t.json | uniq -d | wc -l) repeated\""
 check "trace json" 0 "\"outcome\": \"(object|sky)\"" -- $BT trace --scene $S --size 32x24 --pixel 16 12
 check "info" 0 "RGBA32F +works" -- $BT info
 # each context has its own pass quad: OSMesa probed after EGL works as well as alone
