@@ -49,8 +49,9 @@ static int parse_number(const char *text, double *out, const char **why)
         *why = "not a finite number";
         return -1;
     }
-    if (errno == ERANGE && fabs(*out) > 1.0) {
-        *why = "too large for a double";
+    /* as a scene number: beyond a double's range either way is refused, a denormal (1e-320) too */
+    if (errno == ERANGE) {
+        *why = "too large or too small for a double";
         return -1;
     }
     return 0;

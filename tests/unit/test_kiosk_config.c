@@ -350,6 +350,8 @@ static const struct bad_case bad_cases[] = {
     {"nan", AT_LOAD, KIOSK_OK "[mass]\nmax = nan\n", 4,
      {"key 'max' in [mass]", "got \"nan\"", "not a finite number"}},
     {"inf", AT_LOAD, KIOSK_OK "[mass]\nstep = -inf\n", 4, {"key 'step' in [mass]", "not a finite number"}},
+    /* a denormal, refused as the scene refuses it */
+    {"denormal", AT_LOAD, KIOSK_OK "[mass]\nstep = 1e-320\n", 4, {"key 'step' in [mass]", "too large or too small for a double"}},
     {"plus_sign", AT_LOAD, KIOSK_OK "idle_seconds = +120\n", 3,
      {"key 'idle_seconds' in [kiosk]: expected an integer from 10 to 86400, got \"+120\""}},
     {"trailing_garbage", AT_LOAD, KIOSK_OK "width = 1280px\n", 3,
