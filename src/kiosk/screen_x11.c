@@ -7,6 +7,7 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <X11/Xlib.h>
+#include <X11/Xatom.h>
 #include <X11/Xutil.h>
 #include <X11/keysym.h>
 #include <stdio.h>
@@ -14,6 +15,8 @@
 #include <string.h>
 
 #define X11_WINDOW_TITLE "bentray kiosk"
+#define X11_WINDOW_CLASS_NAME "bentray-kiosk"
+#define X11_WINDOW_CLASS "Bentray"
 
 /* The window-system half. */
 struct x11_window {
@@ -117,6 +120,44 @@ static int x11_present(struct screen *s, char *err, size_t errlen)
 /* The window in the visual of the EGL config, an ES2 context current on it. The window is made
  * here, between the two steps of screen_egl.h, because its visual comes from the config. On
  * failure the caller's close frees the context and the window. */
+/* What an exhibit's window is: fullscreen (EWMH's _NET_WM_STATE_FULLSCREEN, asked before it is
+ * mapped; the compositor letterboxes the frame into whatever size the window manager gives it),
+ * without a pointer over it, and named for the window manager and its rules (WM_CLASS
+ * "bentray-kiosk", "Bentray"). The size asked for stays the frame's, for a server without a window
+ * manager (Xvfb), where the frame's pixels then stay one to one. */
+static void exhibit_window(Display *dpy, Window window, int width, int height)
+{
+    XSizeHints *hints = XAllocSizeHints();
+    if (hints) {
+        hints->flags = PSize;
+        hints->width = width;
+        hints->height = height;
+        XSetWMNormalHints(dpy, window, hints);
+        XFree(hints);
+    }
+    XClassHint *class_hint = XAllocClassHint();
+    if (class_hint) {
+        char name[] = X11_WINDOW_CLASS_NAME, class_name[] = X11_WINDOW_CLASS;
+        class_hint->res_name = name;
+        class_hint->res_class = class_name;
+        XSetClassHint(dpy, window, class_hint);
+        XFree(class_hint);
+    }
+    Atom state = XInternAtom(dpy, "_NET_WM_STATE", False);
+    Atom fullscreen = XInternAtom(dpy, "_NET_WM_STATE_FULLSCREEN", False);
+    XChangeProperty(dpy, window, state, XA_ATOM, 32, PropModeReplace, (unsigned char *)&fullscreen, 1);
+    /* an invisible pointer: a cursor of one transparent pixel */
+    static char blank_bits[1] = {0};
+    Pixmap blank = XCreateBitmapFromData(dpy, window, blank_bits, 1, 1);
+    if (blank) {
+        XColor black = {0};
+        Cursor none = XCreatePixmapCursor(dpy, blank, blank, &black, &black, 0, 0);
+        XDefineCursor(dpy, window, none);
+        XFreeCursor(dpy, none);
+        XFreePixmap(dpy, blank);
+    }
+}
+
 static int attach_window(struct screen *s, struct x11_window *w, int vsync, char *err, size_t errlen)
 {
     int width = s->width, height = s->height;
@@ -158,15 +199,7 @@ static int attach_window(struct screen *s, struct x11_window *w, int vsync, char
         return -1;
     }
     XStoreName(w->dpy, w->window, X11_WINDOW_TITLE);
-    /* A window manager that keeps to the size asked for keeps the frame's pixels one to one. */
-    XSizeHints *hints = XAllocSizeHints();
-    if (hints) {
-        hints->flags = PSize | PMinSize | PMaxSize;
-        hints->width = hints->min_width = hints->max_width = width;
-        hints->height = hints->min_height = hints->max_height = height;
-        XSetWMNormalHints(w->dpy, w->window, hints);
-        XFree(hints);
-    }
+    exhibit_window(w->dpy, w->window, width, height);
     XSetWMProtocols(w->dpy, w->window, &w->wm_delete_window, 1);
     XMapWindow(w->dpy, w->window);
     if (screen_egl_attach(s->gl, config, &w->window, err, errlen) != 0)

@@ -15,6 +15,7 @@
 #include <time.h>
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
+#include <X11/Xatom.h>
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
 #include <X11/keysym.h>
@@ -183,6 +184,27 @@ static void test_x11_events(void **state)
     assert_non_null(other);
     Window w = xvfb_find_window(other, DefaultRootWindow(other), "bentray kiosk");
     assert_true(w != 0);
+
+    /* an exhibit's window: fullscreen asked of the window manager, a class for its rules, no pointer
+     * (Xvfb has no window manager: the size stays the frame's, as checked above) */
+    XClassHint class_hint;
+    assert_true(XGetClassHint(other, w, &class_hint) != 0);
+    assert_string_equal(class_hint.res_name, "bentray-kiosk");
+    assert_string_equal(class_hint.res_class, "Bentray");
+    XFree(class_hint.res_name);
+    XFree(class_hint.res_class);
+    Atom type;
+    int format;
+    unsigned long n_items, after;
+    unsigned char *data = NULL;
+    assert_int_equal(XGetWindowProperty(other, w, XInternAtom(other, "_NET_WM_STATE", False), 0, 8, False, XA_ATOM,
+                                        &type, &format, &n_items, &after, &data), Success);
+    assert_int_equal(n_items, 1);
+    assert_true(((Atom *)data)[0] == XInternAtom(other, "_NET_WM_STATE_FULLSCREEN", False));
+    XFree(data);
+    XWindowAttributes attrs;
+    assert_true(XGetWindowAttributes(other, w, &attrs) != 0);
+    assert_int_equal(attrs.width, WIDTH);
 
     send_key(other, w, XK_Up);
     send_key(other, w, XK_n);
