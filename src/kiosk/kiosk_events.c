@@ -55,7 +55,8 @@ static int kiosk_state_equal(const struct kiosk_state *a, const struct kiosk_sta
 {
     return a->scene == b->scene && a->speed == b->speed && a->mass == b->mass &&
            same_value(a->speed_param, b->speed_param) && same_value(a->mass_param, b->mass_param) &&
-           a->effects == b->effects && a->pipeline_view == b->pipeline_view;
+           a->effects == b->effects && a->effects_from_scene == b->effects_from_scene &&
+           a->pipeline_view == b->pipeline_view;
 }
 
 static void action(const struct kiosk_config *c, struct kiosk_state *st, const struct scene *scene,

@@ -58,6 +58,12 @@ void kiosk_state_reset(struct kiosk_state *st, const struct kiosk_config *c)
     st->mass = c->mass.start;
     st->speed_param = st->mass_param = NAN;
     st->effects = EFFECTS_GEOMETRY;
+    st->effects_from_scene = 1;
+}
+
+enum relativity_effects kiosk_state_effects(const struct kiosk_state *st, const struct scene *base)
+{
+    return st->effects_from_scene ? base->observer.effects : st->effects;
 }
 
 void kiosk_state_action(struct kiosk_state *st, const struct kiosk_config *c, const struct scene *scene,
@@ -70,10 +76,14 @@ void kiosk_state_action(struct kiosk_state *st, const struct kiosk_config *c, co
         /* the knobs keep speed and mass from scene to scene; a mapped key starts at the new scene's own */
         st->scene = (st->scene + (action == KIOSK_ACTION_NEXT_SCENE ? 1 : n - 1)) % n;
         st->effects = EFFECTS_GEOMETRY;
+        st->effects_from_scene = 1;        /* the new scene's own, as its file sets them */
         st->speed_param = st->mass_param = NAN;
         break;
     case KIOSK_ACTION_CYCLE_EFFECTS:
-        st->effects = scene_has_black_body(scene) ? (enum relativity_effects)((st->effects + 1) % 3) : EFFECTS_GEOMETRY;
+        /* the next after those shown: geometry, Doppler colour, searchlight, and round again */
+        st->effects = scene_has_black_body(scene)
+                          ? (enum relativity_effects)((kiosk_state_effects(st, scene) + 1) % 3) : EFFECTS_GEOMETRY;
+        st->effects_from_scene = 0;
         break;
     case KIOSK_ACTION_RESET:
         kiosk_state_reset(st, c);
@@ -94,7 +104,7 @@ int kiosk_state_apply(const struct kiosk_state *st, const struct scene *base, st
     const struct knob_mapping *ms = &base->kiosk.speed, *mm = &base->kiosk.mass;
     if (!ms->key[0])
         out->observer.velocity = v3_scale(view, st->speed);
-    out->observer.effects = st->effects;
+    out->observer.effects = kiosk_state_effects(st, base);
     if (!mm->key[0] && out->model.type == MODEL_SCHWARZSCHILD)
         out->model.mass = st->mass;
     const struct knob_mapping *maps[2] = {ms, mm};

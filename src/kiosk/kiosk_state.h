@@ -14,8 +14,15 @@ struct kiosk_state {
      * scene's own; unused for a knob that keeps its own meaning */
     double speed_param, mass_param;
     enum relativity_effects effects;
+    /* 1: the scene's own observer.effects, as its file sets them (at start, after reset and a scene
+     * change: a scene whose description names Doppler colour shows it); 0: `effects`, as the
+     * effects button chose them */
+    int effects_from_scene;
     int pipeline_view;               /* 1: show the renderer's stages instead of the image */
 };
+
+/* The effects the state shows in its scene `base` (the scene's own, or those chosen). */
+enum relativity_effects kiosk_state_effects(const struct kiosk_state *st, const struct scene *base);
 
 /* The value a knob reaches after `counts` detents from `value`, along its curve (linear in the
  * value, in rapidity atanh(v) for speed, in ln(mass) for log), clamped to [min, max]. A log knob

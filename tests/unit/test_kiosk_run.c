@@ -153,8 +153,15 @@ static void test_refined_frames_are_the_scenes_images(void **state)
     st.scene = 1;
     st.mass_param = NAN;              /* a mapped key starts at the next scene's own value */
     check_frame(4, &st, "next scene");
-    st.effects = EFFECTS_DOPPLER;
-    check_frame(5, &st, "Doppler colour");
+    /* the effects button goes on from the scene's own (starflight: searchlight) to the next */
+    static struct scene shown;
+    struct scene_error e;
+    if (scene_load(&shown, config.kiosk.scenes[st.scene], &e) != 0)
+        fail_msg("%s: %s", e.where, e.message);
+    assert_int_equal(kiosk_state_effects(&st, &shown), shown.observer.effects);
+    kiosk_state_action(&st, &config, &shown, KIOSK_ACTION_CYCLE_EFFECTS);
+    assert_int_equal(kiosk_state_effects(&st, &shown), (shown.observer.effects + 1) % 3);
+    check_frame(5, &st, "the effects button");
 }
 
 /* Every control changes what is on screen, and reset brings back the first frame exactly. */

@@ -79,6 +79,15 @@ static void test_actions(void **state)
     assert_int_equal(st.effects, EFFECTS_SEARCHLIGHT);
     kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_CYCLE_EFFECTS);
     assert_int_equal(st.effects, EFFECTS_GEOMETRY);
+    /* a scene change and reset show the scene's own effects, as its file sets them
+     * (starflight: searchlight), and the button goes on from there */
+    kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_NEXT_SCENE);
+    assert_int_equal(with_black_body.observer.effects, EFFECTS_SEARCHLIGHT);
+    assert_int_equal(kiosk_state_effects(&st, &with_black_body), EFFECTS_SEARCHLIGHT);
+    kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_CYCLE_EFFECTS);
+    assert_int_equal(kiosk_state_effects(&st, &with_black_body), EFFECTS_GEOMETRY);
+    kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_RESET);
+    assert_int_equal(kiosk_state_effects(&st, &with_black_body), EFFECTS_SEARCHLIGHT);
     kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_PIPELINE_VIEW);
     assert_true(st.pipeline_view);
     st.speed = 0.7;
