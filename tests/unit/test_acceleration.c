@@ -32,6 +32,25 @@ static void assert_same_rays(const struct hc_gpu *a, const struct hc_gpu *b, con
     assert_memory_equal(a->res.rgba, b->res.rgba, (size_t)a->res.width * a->res.height * 4);
 }
 
+/* "scene set set set tail": a case of a table of scenes with up to three --set overrides. */
+static void case_label(char *out, size_t n, const char *scene, const char *const *sets, const char *tail)
+{
+    size_t used = (size_t)snprintf(out, n, "%s", scene);
+    for (int i = 0; i < 3 && sets[i] && used < n; i++)
+        used += (size_t)snprintf(out + used, n - used, " %s", sets[i]);
+    if (used < n)
+        snprintf(out + used, n - used, " %s", tail);
+}
+
+/* Adds g's outcomes to seen: object, sky, captured, unfinished, failed. */
+static void count_outcomes(const struct hc_gpu *g, long seen[5])
+{
+    for (int i = 0; i < g->res.width * g->res.height; i++) {
+        int o = g->dump.records[i].outcome;
+        seen[o >= 0 ? 0 : -o]++;
+    }
+}
+
 /* Renders the scene in the paper's multipass scheme (a scene on exact orbits would otherwise take
  * the single pass, which has neither early-z nor batches); returns its number of objects. */
 static int render_with(const char *scene, const char *const *sets, struct hc_gpu *g)
@@ -148,19 +167,14 @@ static void test_single_pass_is_exact(void **state)
         hc_gpu_render(&s, &multi);
         s.render.pipeline = PIPELINE_SINGLE;
         hc_gpu_render(&s, &single);
-        char what[160];
-        snprintf(what, sizeof what, "%s %s %s %s (single pass, %ld passes; multipass %ld)", cases[k].scene,
-                 cases[k].sets[0] ? cases[k].sets[0] : "", cases[k].sets[0] && cases[k].sets[1] ? cases[k].sets[1] : "",
-                 cases[k].sets[0] && cases[k].sets[1] && cases[k].sets[2] ? cases[k].sets[2] : "", single.res.passes,
-                 multi.res.passes);
+        char what[200], tail[64];
+        snprintf(tail, sizeof tail, "(single pass, %ld passes; multipass %ld)", single.res.passes, multi.res.passes);
+        case_label(what, sizeof what, cases[k].scene, cases[k].sets, tail);
         print_message("%s\n", what);
         assert_same_rays(&single, &multi, what);
         /* the loop and the sky, the loop twice and the sky without MRT; the state on read-back comes on top */
         assert_true(single.res.passes <= 5);
-        for (int i = 0; i < W * H; i++) {
-            int o = multi.dump.records[i].outcome;
-            seen[o >= 0 ? 0 : -o]++;
-        }
+        count_outcomes(&multi, seen);
         hc_gpu_free(&multi);
         hc_gpu_free(&single);
     }
@@ -255,15 +269,10 @@ static void test_unchecked_steps_are_exact(void **state)
         hc_gpu_render(&s, &checked);
         shader_set_directory(NULL);
         char what[200];
-        snprintf(what, sizeof what, "%s %s %s %s (unchecked steps against every step checked)", cases[k].scene,
-                 cases[k].sets[0] ? cases[k].sets[0] : "", cases[k].sets[0] && cases[k].sets[1] ? cases[k].sets[1] : "",
-                 cases[k].sets[0] && cases[k].sets[1] && cases[k].sets[2] ? cases[k].sets[2] : "");
+        case_label(what, sizeof what, cases[k].scene, cases[k].sets, "(unchecked steps against every step checked)");
         print_message("%s\n", what);
         assert_same_rays(&unchecked, &checked, what);
-        for (int i = 0; i < W * H; i++) {
-            int o = checked.dump.records[i].outcome;
-            seen[o >= 0 ? 0 : -o]++;
-        }
+        count_outcomes(&checked, seen);
         hc_gpu_free(&unchecked);
         hc_gpu_free(&checked);
     }
