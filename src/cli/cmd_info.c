@@ -28,17 +28,26 @@ static void print_caps(const struct gl_caps *c)
                c->formats[i].works ? "" : c->formats[i].why, "");
     printf("draw buffers:    GL_MAX_DRAW_BUFFERS %d; MRT %s%s\n", c->max_draw_buffers,
            c->mrt_works ? "works" : "no: ", c->mrt_works ? "" : c->mrt_why);
+    if (c->occlusion_query)
+        printf("occlusion query: works: the multipass scheme stops once every ray is retired\n");
+    else
+        printf("occlusion query: no: the multipass scheme runs every segment (%s)\n", c->query_why);
     struct render_path path;
     char err[512];
     if (render_path_choose(c, PRECISION_AUTO, MRT_AUTO, &path, err, sizeof err) == 0)
         printf("render path:     %s\n", path.description);
     else
         printf("render path:     none: %s\n", err);
+    /* the fused segment pass writes four targets (stage_segment.c) */
+    int fused = c->mrt_works && c->max_draw_buffers >= 4;
+    char else_path[128];
+    snprintf(else_path, sizeof else_path, "%s", fused ? "one fused pass a segment (4 draw buffers) where the scene's objects "
+                                                        "fit one pass, else multipass" : "multipass");
     if (c->long_loops)
-        printf("pipeline:        single pass where the scene's objects fit one pass, else multipass (%s)\n",
+        printf("pipeline:        single pass where the scene's objects fit one pass, else %s (%s)\n", else_path,
                c->long_loops_why);
     else
-        printf("pipeline:        multipass; the single pass only when forced (%s)\n", c->long_loops_why);
+        printf("pipeline:        %s; the single pass only when forced (%s)\n", else_path, c->long_loops_why);
 }
 
 int cmd_info(int argc, char **argv)

@@ -236,6 +236,73 @@ static void probe_mrt(struct gl_caps *c, const struct float_format *f)
     }
 }
 
+/* Samples that pass the depth test of one draw of the quad at depth 0.5 (NDC z 0) over a depth
+ * buffer cleared to `depth`, counted by an occlusion query of the context's kind. */
+static GLuint query_draw(const struct gl_caps *c, GLuint prog, GLuint query, float depth)
+{
+    GLuint passed = 0;
+    glDepthMask(GL_TRUE);           /* a clear writes depth only where the mask lets it */
+    glClearDepthf(depth);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glDepthMask(GL_FALSE);          /* the draw counts fragments; it writes no depth */
+    glBeginQuery(c->query_target, query);
+    quad_draw(prog, 0.0f);
+    glEndQuery(c->query_target);
+    glGetQueryObjectuiv(query, GL_QUERY_RESULT, &passed);
+    return passed;
+}
+
+/* An occlusion query around a draw that the depth test passes, and around one it rejects: the
+ * first must count, the second not (the multipass scheme stops on that zero). */
+static void probe_query(struct gl_caps *c, GLuint prog)
+{
+    int api = c->is_es ? c->major >= 3 || gl_has_extension("GL_EXT_occlusion_query_boolean") : c->major >= 2;
+    if (!api || !bt_gl.GenQueries || !bt_gl.BeginQuery || !bt_gl.EndQuery || !bt_gl.GetQueryObjectuiv ||
+        !bt_gl.DeleteQueries) {
+        snprintf(c->query_why, sizeof c->query_why, "%s", c->is_es ? "neither OpenGL ES 3 nor GL_EXT_occlusion_query_boolean"
+                                                                  : "OpenGL below 2.0");
+        return;
+    }
+    c->query_target = c->is_es ? GL_ANY_SAMPLES_PASSED_CONSERVATIVE : 0x8914 /* GL_SAMPLES_PASSED */;
+    GLuint tex, depth, fbo, query;
+    tex = texture_create_nearest(GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, PROBE_SIZE, PROBE_SIZE);
+    glGenRenderbuffers(1, &depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT16, PROBE_SIZE, PROBE_SIZE);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    glGenQueries(1, &query);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        snprintf(c->query_why, sizeof c->query_why, "a framebuffer with a depth buffer is incomplete");
+    } else {
+        const float v[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+        glViewport(0, 0, PROBE_SIZE, PROBE_SIZE);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        set_probe(prog, v, 0);
+        GLuint open = query_draw(c, prog, query, 1.0f), closed = query_draw(c, prog, query, 0.0f);
+        glDisable(GL_DEPTH_TEST);
+        glDepthMask(GL_TRUE);
+        glClearDepthf(1.0f);
+        if (glGetError() != GL_NO_ERROR)
+            snprintf(c->query_why, sizeof c->query_why, "an occlusion query raises a GL error");
+        else if (open == 0 || closed != 0)
+            snprintf(c->query_why, sizeof c->query_why, "an occlusion query counts %u where the depth test passes "
+                     "and %u where it fails", open, closed);
+        else
+            c->occlusion_query = 1;
+    }
+    glDeleteQueries(1, &query);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteRenderbuffers(1, &depth);
+    glDeleteTextures(1, &tex);
+    while (glGetError() != GL_NO_ERROR) {
+    }
+}
+
 int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, char *err, size_t errlen)
 {
     static const char *const vs[] = {"quad_vertex.glsl", NULL};
@@ -293,6 +360,7 @@ int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, char *err, si
     list_candidates(c);
     for (int i = 0; i < c->n_formats; i++)
         probe_format(&c->formats[i], prog);
+    probe_query(c, prog);
     glDeleteProgram(prog);
     const struct float_format *best = caps_format(c, 1);
     probe_mrt(c, best ? best : caps_format(c, 0));

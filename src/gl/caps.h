@@ -29,6 +29,12 @@ struct gl_caps {
     char mrt_why[160];
     int long_loops;                  /* fragment loops of any length: the single-pass frame */
     char long_loops_why[160];
+    /* occlusion queries that count what passes the depth test: the multipass scheme stops once
+     * every ray is retired. query_target: GL_ANY_SAMPLES_PASSED_CONSERVATIVE (ES) or
+     * GL_SAMPLES_PASSED (desktop GL). */
+    int occlusion_query;
+    GLenum query_target;
+    char query_why[160];
     int n_formats;
     struct float_format formats[CAPS_MAX_FORMATS];
     struct shader_target shader;     /* preamble settings for this context */

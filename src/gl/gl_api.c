@@ -14,11 +14,12 @@ const char *gl_api_load(void *(*get_proc)(const char *name))
     memcpy(&bt_gl.name, &p, sizeof p);
     BT_GL_FUNCTIONS(BT_GL_LOAD)
 #undef BT_GL_LOAD
-    p = get_proc("glDrawBuffers");
-    if (!p)
-        p = get_proc("glDrawBuffersEXT");
-    if (p)
-        memcpy(&bt_gl.DrawBuffers, &p, sizeof p);
+#define BT_GL_LOAD_OPTIONAL(ret, name, args) \
+    p = get_proc("gl" #name); \
+    if (!p) p = get_proc("gl" #name "EXT"); \
+    if (p) memcpy(&bt_gl.name, &p, sizeof p);
+    BT_GL_OPTIONAL_FUNCTIONS(BT_GL_LOAD_OPTIONAL)
+#undef BT_GL_LOAD_OPTIONAL
     return NULL;
 }
 

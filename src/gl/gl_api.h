@@ -76,12 +76,23 @@
     X(void, VertexAttribPointer, (GLuint index, GLint size, GLenum type, GLboolean normalized, GLsizei stride, const void *pointer)) \
     X(void, Viewport, (GLint x, GLint y, GLsizei width, GLsizei height))
 
+/* Entry points of OpenGL ES 3 and desktop GL that a GLES2 context may offer as an extension:
+ * glNAME, else glNAMEEXT (EXT_draw_buffers, EXT_occlusion_query_boolean); NULL if neither. A
+ * loader may hand out a pointer for a function the context lacks: gl/caps.c proves each by
+ * rendering before it is used. */
+#define BT_GL_OPTIONAL_FUNCTIONS(X) \
+    X(void, DrawBuffers, (GLsizei n, const GLenum *bufs)) \
+    X(void, GenQueries, (GLsizei n, GLuint *ids)) \
+    X(void, DeleteQueries, (GLsizei n, const GLuint *ids)) \
+    X(void, BeginQuery, (GLenum target, GLuint id)) \
+    X(void, EndQuery, (GLenum target)) \
+    X(void, GetQueryObjectuiv, (GLuint id, GLenum pname, GLuint *params))
+
 struct gl_api {
 #define BT_GL_MEMBER(ret, name, args) ret (GL_APIENTRY *name) args;
     BT_GL_FUNCTIONS(BT_GL_MEMBER)
+    BT_GL_OPTIONAL_FUNCTIONS(BT_GL_MEMBER)
 #undef BT_GL_MEMBER
-    /* glDrawBuffers (ES3, desktop) or glDrawBuffersEXT (ES2 + EXT_draw_buffers); NULL if neither */
-    void (GL_APIENTRY *DrawBuffers)(GLsizei n, const GLenum *bufs);
 };
 
 extern struct gl_api bt_gl;
@@ -116,6 +127,11 @@ const char *gl_api_load(void *(*get_proc)(const char *name));
 #define glDisable bt_gl.Disable
 #define glDrawArrays bt_gl.DrawArrays
 #define glDrawBuffers bt_gl.DrawBuffers
+#define glGenQueries bt_gl.GenQueries
+#define glDeleteQueries bt_gl.DeleteQueries
+#define glBeginQuery bt_gl.BeginQuery
+#define glEndQuery bt_gl.EndQuery
+#define glGetQueryObjectuiv bt_gl.GetQueryObjectuiv
 #define glEnable bt_gl.Enable
 #define glEnableVertexAttribArray bt_gl.EnableVertexAttribArray
 #define glFinish bt_gl.Finish
