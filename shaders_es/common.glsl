@@ -27,10 +27,13 @@ uniform vec2 u_inv_size;               // 1 / ray-state texture size
 // precision in GLSL ES 1.00 (Mesa then returns 16-bit floats from a 32-bit texture).
 #define fetch(state) texture2D(state, gl_FragCoord.xy * u_inv_size)
 
-// A stage writes up to two targets: in one pass with MRT, or one per pass (BT_TARGET).
+// A stage writes up to two targets: in one pass with MRT, or one per pass (BT_TARGET). The fused
+// segment pass (stage_segment.glsl) writes four, with MRT only.
 #ifdef BT_MRT
 #define WRITE_TARGET0(value) gl_FragData[0] = (value)
 #define WRITE_TARGET1(value) gl_FragData[1] = (value)
+#define WRITE_TARGET2(value) gl_FragData[2] = (value)
+#define WRITE_TARGET3(value) gl_FragData[3] = (value)
 #elif BT_TARGET == 0
 #define WRITE_TARGET0(value) gl_FragColor = (value)
 #define WRITE_TARGET1(value)

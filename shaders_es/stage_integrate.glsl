@@ -100,7 +100,33 @@ uniform float u_grow_below;           // step doubling: error estimate below whi
 uniform float u_step_min;
 uniform float u_step_max;
 const float ERROR_LIMIT = 1.0e30;     // an estimate beyond this (or NaN) rejects the step
+// An adaptive ray's budget is a path, not a number of steps: its state's w holds the affine
+// parameter it has travelled (in place of the step count of fixed steps), and no step goes beyond
+// u_path_max. A ray that has spent it takes steps of length 0 and ends the frame unfinished.
+uniform float u_path_max;
+#define PATH_BUDGET 1
 #endif
+
+// The step to try from a ray that has travelled `travelled` (its state's w): h, or what is left of
+// an adaptive ray's budget.
+float step_within_budget(float h, float travelled)
+{
+#ifdef PATH_BUDGET
+    return min(h, u_path_max - travelled);
+#else
+    return h;
+#endif
+}
+
+// The ray state's w after an accepted step of length h: the step count, or an adaptive ray's path.
+float travelled_after(float travelled, float h)
+{
+#ifdef PATH_BUDGET
+    return travelled + h;
+#else
+    return travelled + 1.0;
+#endif
+}
 
 // One adaptive (or fixed) step from (x, v) with step h: the new state, whether it is accepted,
 // and the step to take next (paper section 4.2).
@@ -150,10 +176,11 @@ void step_checked(inout vec3 x, inout vec3 v, inout float steps, inout float h, 
     vec3 x1, v1;
     bool accept;
     float h_next;
-    controlled_step(x, v, h, x1, v1, accept, h_next);
+    float h_try = step_within_budget(h, steps);
+    controlled_step(x, v, h_try, x1, v1, accept, h_next);
     bool ok = finite_state(x1, v1) || !accept;
     bool take = running && ok && accept;
-    float next_steps = steps + 1.0;
+    float next_steps = travelled_after(steps, h_try);
     float failed_steps = -1.0 - steps;
     x = take ? x1 : x;
     v = take ? v1 : v;
@@ -170,8 +197,9 @@ void step_unchecked(inout vec3 x, inout vec3 v, inout float steps, inout float h
     vec3 x1, v1;
     bool accept;
     float h_next;
-    controlled_step(x, v, h, x1, v1, accept, h_next);
-    float next_steps = steps + 1.0;
+    float h_try = step_within_budget(h, steps);
+    controlled_step(x, v, h_try, x1, v1, accept, h_next);
+    float next_steps = travelled_after(steps, h_try);
     x = accept ? x1 : x;
     v = accept ? v1 : v;
     steps = accept ? next_steps : steps;

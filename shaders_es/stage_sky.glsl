@@ -1,7 +1,10 @@
 // Stage 5, sky and final colour (paper section 4.3): rays without a hit look the sky up by
-// their direction, asymptotically flat at the bounding sphere. Captured rays are black.
+// their direction, asymptotically flat at the bounding sphere. Captured and failed rays are black;
+// a ray still travelling when its budget ran out shows render.unfinished_color, so that no one takes
+// it for the sky.
 uniform sampler2D u_image;
 uniform sampler2D u_ray_velocity;
+uniform vec3 u_unfinished_color;
 #ifdef SKY_CUBEMAP
 uniform samplerCube u_sky;
 #else
@@ -24,7 +27,7 @@ void main()
 {
     vec4 image = fetch(u_image);
     vec3 color = image.rgb;
-    if (image.a == CODE_SKY || image.a == CODE_UNFINISHED) {
+    if (image.a == CODE_SKY) {
         color = sky(normalize(fetch(u_ray_velocity).xyz));
 #ifdef DOPPLER_COLOUR
         // the sky rests at infinity (lapse 1)
@@ -38,6 +41,8 @@ void main()
         color = u_sky_temperature > 0.0 ? black_body : rgb;
 #endif
     }
+    else if (image.a == CODE_UNFINISHED)
+        color = u_unfinished_color;
     else if (image.a < -0.5)
         color = vec3(0.0);
     gl_FragColor = vec4(clamp(color, 0.0, 1.0), 1.0);

@@ -42,7 +42,7 @@ int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_ti
 
 /* Acceleration presets (the Table 1 columns): the paper's scheme without and with its techniques
  * and with all of the multipass scheme's; then all of them in the single pass. */
-enum bench_accel { ACCEL_NONE, ACCEL_PAPER, ACCEL_ALL, ACCEL_SINGLE, ACCEL_COUNT };
+enum bench_accel { ACCEL_NONE, ACCEL_PAPER, ACCEL_ALL, ACCEL_SINGLE, ACCEL_FUSED, ACCEL_COUNT };
 extern const char *const bench_accel_names[ACCEL_COUNT];
 void bench_apply_accel(struct scene *s, enum bench_accel a);
 
@@ -50,9 +50,9 @@ void bench_apply_accel(struct scene *s, enum bench_accel a);
 int bench_load_scene(struct scene *s, const char *name, int w, int h, char *err, size_t errlen);
 /* Replace the objects of s by n spheres in view, in a ring around the camera's look_at. */
 void bench_spheres(struct scene *s, int n);
-/* The paper's Table 1 / Figure 5 settings: n_segs segments, n_steps steps in all, the scene's
- * path length kept (the step is the scene's whole path over n_steps). */
-void bench_paper_steps(struct scene *s, int n_segs, int n_steps);
+/* The paper's Table 1 / Figure 5 settings: n_segs segments, n_steps steps in all over a path of
+ * `path` (the step is path / n_steps; render_path_budget keeps the scene's own). */
+void bench_paper_steps(struct scene *s, int n_segs, int n_steps, double path);
 
 /* Sections; each writes its part of BENCH.md and its CSV files. 0, or -1 with err. */
 int bench_table1(struct bench *b, char *err, size_t errlen);

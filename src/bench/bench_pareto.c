@@ -99,6 +99,7 @@ static void apply_config(struct scene *s, const struct pareto_config *c)
         r->step_size = segment / r->steps_per_segment;
     }
     if (c->segment_factor != 1.0) {
+        render_fix_segments(r);
         long path = (long)r->segments * r->steps_per_segment;
         long n = lround(r->steps_per_segment * c->segment_factor);
         r->steps_per_segment = n < 1 ? 1 : (int)n;

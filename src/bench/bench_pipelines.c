@@ -1,5 +1,5 @@
 /* The pipelines side by side: the paper's multipass scheme (with the scene's own acceleration
- * settings) against the single pass, every model at its scene's own size and default quality:
+ * settings) against the fused segment pass and the single pass, every model at its scene's own size and default quality:
  * seconds per frame, passes per frame, milliseconds per pass, and whether the two agree. */
 #include <string.h>
 #include "bench/bench.h"
@@ -25,61 +25,88 @@ static const struct pipeline_case cases[] = {
 #define N_CASES (int)(sizeof cases / sizeof cases[0])
 #define FLOW_TARGET_SPEEDUP 3.0
 
+/* The pipelines of a row, in the table's order. */
+static const enum pipeline_choice row_pipelines[3] = {PIPELINE_MULTIPASS, PIPELINE_FUSED, PIPELINE_SINGLE};
+static const char *const row_names[3] = {"multipass", "fused", "single"};
+
 int bench_pipelines(struct bench *b, char *err, size_t errlen)
 {
     FILE *csv = bench_data_file(b, "pipelines.csv", err, errlen);
     if (!csv)
         return -1;
     fprintf(csv, "scene,pipeline,width,height,median_s,passes,ms_per_pass,outcome_pct\n");
-    fprintf(b->md, "## Pipelines: the paper's scheme and the single pass\n\nEach scene at its own size and "
-                   "settings, drawn by the paper's multipass scheme (`render.pipeline = multipass`, with the "
-                   "scene's early-z, unrolling and batches) and by the single pass (`render.pipeline = single`: "
-                   "the whole ray in one fragment-shader loop, docs/PIPELINE.md). Seconds per frame, median of "
-                   "%d runs; passes per frame and the mean milliseconds per pass; the share of pixels whose "
-                   "outcome differs between the two (0: the same rays; tests/unit/test_acceleration.c proves "
-                   "them bit-identical).\n\n"
-                   "| scene | size | multipass (s) | passes | ms per pass | single (s) | passes | ms per pass | "
-                   "speed-up | differing pixels |\n|---|---|---|---|---|---|---|---|---|---|\n", b->runs);
+    fprintf(b->md, "## Pipelines: the paper's scheme, the fused segment pass and the single pass\n\nEach scene at "
+                   "its own size and settings, drawn by the paper's multipass scheme (`render.pipeline = multipass`, "
+                   "with the scene's early-z, unrolling and batches), by one fused pass a segment (`fused`: "
+                   "integration, intersection and termination in one pass with four draw buffers; not for exact "
+                   "orbits, which run their own stage: –) and by the single pass (`single`: the whole ray in one "
+                   "fragment-shader loop, docs/PIPELINE.md). Seconds per frame, median of %d runs; passes per "
+                   "frame and the mean milliseconds per pass; the share of pixels whose outcome differs from the "
+                   "multipass scheme's (0: the same rays; tests/unit/test_acceleration.c proves them "
+                   "bit-identical).\n\n"
+                   "| scene | size | multipass (s) | passes | ms per pass | fused (s) | passes | ms per pass | "
+                   "single (s) | passes | ms per pass | speed-up fused / single | differing pixels fused / single |\n"
+                   "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n", b->runs);
     int met = 1;
     double worst = 1e30;
     for (int k = 0; k < N_CASES; k++) {
-        struct bench_timing t[2];
-        struct dump d[2];
+        struct bench_timing t[3];
+        struct dump d[3];
+        int ran[3] = {0, 0, 0};
+        double differ[3] = {0.0, 0.0, 0.0};
         static struct scene s;
-        for (int p = 0; p < 2; p++) {
-            if (bench_load_scene(&s, cases[k].scene, b->quick ? 32 : 0, b->quick ? 24 : 0, err, errlen) != 0)
-                return -1;
+        int rc = 0;
+        for (int p = 0; p < 3 && rc == 0; p++) {
+            if (bench_load_scene(&s, cases[k].scene, b->quick ? 32 : 0, b->quick ? 24 : 0, err, errlen) != 0) {
+                rc = -1;
+                break;
+            }
             if (cases[k].integrated)
                 s.render.method = METHOD_RK4;
-            s.render.pipeline = p ? PIPELINE_SINGLE : PIPELINE_MULTIPASS;
-            bench_progress(b, "pipelines: %s, %s", cases[k].label, p ? "single pass" : "multipass");
-            if (bench_time(b, &s, b->runs, &t[p], &d[p], err, errlen) != 0) {
-                if (p)
-                    dump_free(&d[0]);
-                return -1;
-            }
+            /* exact orbits have no fused pass */
+            if (row_pipelines[p] == PIPELINE_FUSED && s.render.method == METHOD_ORBIT_TABLE)
+                continue;
+            s.render.pipeline = row_pipelines[p];
+            bench_progress(b, "pipelines: %s, %s", cases[k].label, row_names[p]);
+            rc = bench_time(b, &s, b->runs, &t[p], &d[p], err, errlen);
+            ran[p] = rc == 0;
             b->done++;
         }
-        struct compare_result c;
-        int rc = compare_dumps(&d[1], &d[0], &c, err, errlen);
-        dump_free(&d[0]);
-        dump_free(&d[1]);
+        for (int p = 1; p < 3 && rc == 0; p++) {
+            struct compare_result c;
+            if (ran[p] && (rc = compare_dumps(&d[p], &d[0], &c, err, errlen)) == 0)
+                differ[p] = 100.0 * c.outcome_fraction;
+        }
+        for (int p = 0; p < 3; p++)
+            if (ran[p])
+                dump_free(&d[p]);
         if (rc != 0)
             return -1;
-        double ms[2];
-        for (int p = 0; p < 2; p++) {
-            ms[p] = 1e3 * t[p].median / (double)(t[p].passes > 0 ? t[p].passes : 1);
-            fprintf(csv, "%s,%s,%d,%d,%.4f,%ld,%.3f,%.4f\n", cases[k].label, p ? "single" : "multipass",
-                    s.render.width, s.render.height, t[p].median, t[p].passes, ms[p], 100.0 * c.outcome_fraction);
+        char cell[3][64], speedup[64], differing[64];
+        for (int p = 0; p < 3; p++) {
+            if (!ran[p]) {
+                snprintf(cell[p], sizeof cell[p], "– | – | –");
+                continue;
+            }
+            double ms = 1e3 * t[p].median / (double)(t[p].passes > 0 ? t[p].passes : 1);
+            snprintf(cell[p], sizeof cell[p], "%.3f | %ld | %.2f", t[p].median, t[p].passes, ms);
+            fprintf(csv, "%s,%s,%d,%d,%.4f,%ld,%.3f,%.4f\n", cases[k].label, row_names[p], s.render.width,
+                    s.render.height, t[p].median, t[p].passes, ms, differ[p]);
         }
-        double speedup = t[0].median / t[1].median;
+        double single_speedup = t[0].median / t[2].median;
+        if (ran[1]) {
+            snprintf(speedup, sizeof speedup, "%.2f / %.2f", t[0].median / t[1].median, single_speedup);
+            snprintf(differing, sizeof differing, "%.2f%% / %.2f%%", differ[1], differ[2]);
+        } else {
+            snprintf(speedup, sizeof speedup, "– / %.2f", single_speedup);
+            snprintf(differing, sizeof differing, "– / %.2f%%", differ[2]);
+        }
         if (cases[k].flow) {
-            met &= speedup >= FLOW_TARGET_SPEEDUP;
-            worst = speedup < worst ? speedup : worst;
+            met &= single_speedup >= FLOW_TARGET_SPEEDUP;
+            worst = single_speedup < worst ? single_speedup : worst;
         }
-        fprintf(b->md, "| %s | %dx%d | %.3f | %ld | %.2f | %.3f | %ld | %.1f | %.2f | %.2f%% |\n", cases[k].label,
-                s.render.width, s.render.height, t[0].median, t[0].passes, ms[0], t[1].median, t[1].passes, ms[1],
-                speedup, 100.0 * c.outcome_fraction);
+        fprintf(b->md, "| %s | %dx%d | %s | %s | %s | %s | %s |\n", cases[k].label, s.render.width, s.render.height,
+                cell[0], cell[1], cell[2], speedup, differing);
     }
     fclose(csv);
     fprintf(b->md, "\nTarget: the single pass at least %.0fx faster than the multipass scheme for lorenz, rossler, "

@@ -5,7 +5,7 @@
 #include "bench/bench.h"
 #include "scene/scene_keys.h"
 
-const char *const bench_accel_names[ACCEL_COUNT] = {"none", "paper", "all", "single"};
+const char *const bench_accel_names[ACCEL_COUNT] = {"none", "paper", "all", "single", "fused"};
 
 void bench_apply_accel(struct scene *s, enum bench_accel a)
 {
@@ -15,6 +15,8 @@ void bench_apply_accel(struct scene *s, enum bench_accel a)
     r->batch = 1;
     r->early_z = 0;
     r->step_control = STEP_FIXED;
+    /* the fixed steps' path: the adaptive configurations get the same budget */
+    double path = render_path_budget(r);
     r->termination_interval = 1;
     r->pipeline = PIPELINE_MULTIPASS;
     if (a == ACCEL_NONE)
@@ -25,6 +27,7 @@ void bench_apply_accel(struct scene *s, enum bench_accel a)
     r->early_z = 1;
     r->step_control = STEP_DOUBLING;
     r->tolerance = 1e-2 * r->step_size;
+    r->max_path = path;
     if (a == ACCEL_PAPER)
         return;
     /* all: and the whole segment in one pass, every object in one pass */
@@ -32,8 +35,9 @@ void bench_apply_accel(struct scene *s, enum bench_accel a)
     r->batch = SCENE_MAX_BATCH;
     if (a == ACCEL_ALL)
         return;
-    /* single: the same settings, the whole ray in one pass (early-z and batches do not apply) */
-    r->pipeline = PIPELINE_SINGLE;
+    /* single: the same settings, the whole ray in one pass (early-z and batches do not apply);
+     * fused: one pass a segment (integrate, intersect, terminate), retired as the multipass scheme */
+    r->pipeline = a == ACCEL_FUSED ? PIPELINE_FUSED : PIPELINE_SINGLE;
 }
 
 int bench_load_scene(struct scene *s, const char *name, int w, int h, char *err, size_t errlen)
@@ -77,11 +81,11 @@ void bench_spheres(struct scene *s, int n)
     }
 }
 
-void bench_paper_steps(struct scene *s, int n_segs, int n_steps)
+void bench_paper_steps(struct scene *s, int n_segs, int n_steps, double path)
 {
     struct render_settings *r = &s->render;
-    double path = (double)r->segments * r->steps_per_segment * r->step_size;
     r->segments = n_segs;
+    r->max_path = 0.0;
     r->steps_per_segment = n_steps / n_segs;
     r->step_size = path / n_steps;
     r->method = METHOD_EULER;     /* the paper's integrator (section 3.2) */

@@ -11,7 +11,7 @@ static int technique_scene(struct bench *b, struct scene *s, int segments, char 
     if (bench_load_scene(s, "schwarzschild", b->width, b->height, err, errlen) != 0)
         return -1;
     bench_spheres(s, b->quick ? 2 : 10);
-    bench_paper_steps(s, segments, 300);
+    bench_paper_steps(s, segments, 300, render_path_budget(&s->render));
     bench_apply_accel(s, ACCEL_NONE);
     return 0;
 }

@@ -21,8 +21,8 @@ static int (*const sections[N_SECTIONS])(struct bench *, char *, size_t) = {
     bench_table1, bench_figure5, bench_unrolling, bench_batching, bench_early_z, bench_pareto, bench_pipelines,
     bench_limit, bench_relativity, bench_kiosk};
 /* configurations each section times (for the progress count) */
-static int section_steps[N_SECTIONS] = {16, 16, 5, 4, 6, 0 /* bench_pareto_count */, 16, 2, 9, 5};
-static const int section_steps_quick[N_SECTIONS] = {16, 8, 5, 4, 6, 3, 16, 2, 4, 1};
+static int section_steps[N_SECTIONS] = {20, 20, 5, 4, 6, 0 /* bench_pareto_count */, 22, 2, 9, 5};
+static const int section_steps_quick[N_SECTIONS] = {20, 10, 5, 4, 6, 3, 22, 2, 4, 1};
 
 static void usage(FILE *out)
 {

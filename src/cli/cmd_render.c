@@ -33,6 +33,14 @@ static void usage(FILE *out)
             "exit codes: 0 ok, 1 runtime failure, 2 bad usage or input\n");
 }
 
+/* Which key raises a ray's budget: segments where they set it, else the path. */
+static const char *budget_key(const struct render_settings *r)
+{
+    if (r->step_control == STEP_FIXED && r->segments > 0)
+        return "render.segments";
+    return r->step_control == STEP_FIXED || r->segments == 0 ? "render.max_path" : "render.max_path or render.segments";
+}
+
 static void summarise(const struct measured *m, const struct scene *s)
 {
     long objects = 0, sky = 0, captured = 0, unfinished = 0, failed = 0;
@@ -50,8 +58,9 @@ static void summarise(const struct measured *m, const struct scene *s)
     fprintf(stderr, "rays: %ld hit an object, %ld sky, %ld captured, %ld unfinished, %ld failed\n", objects, sky,
             captured, unfinished, failed);
     if (unfinished)
-        fprintf(stderr, "note: %ld rays were still travelling after %d segments; they show the sky in their "
-                        "last direction (raise render.segments or render.step)\n", unfinished, s->render.segments);
+        fprintf(stderr, "note: %ld rays were still travelling at the end of their budget (a path of %g in %d "
+                        "segments); they show render.unfinished_color (raise %s)\n", unfinished,
+                render_path_budget(&s->render), render_segments(&s->render), budget_key(&s->render));
     if (m->nonfinite)
         fprintf(stderr, "warning: %ld non-finite values in the ray state\n", m->nonfinite);
 }
@@ -70,8 +79,8 @@ static void warn_meaningless(const struct measured *m, const struct scene *s)
     /* a tenth of the image showing the sky where the rays are not leaving is no longer a detail */
     if (n > 0 && unfinished * 10 >= n)
         fprintf(stderr, "warning: %zu of %zu rays (%.0f%%) were still travelling after the last segment: they show "
-                        "the sky in their last direction, not where they would leave (raise render.segments)\n",
-                unfinished, n, 100.0 * (double)unfinished / (double)n);
+                        "render.unfinished_color, not the scene (raise %s)\n",
+                unfinished, n, 100.0 * (double)unfinished / (double)n, budget_key(&s->render));
     if (n > 0 && failed * 2 >= n)
         fprintf(stderr, "warning: %zu of %zu rays failed (their state stopped being finite): the model's settings "
                         "(%s, strength or step) give no meaningful image\n", failed, n, model_name(s->model.type));

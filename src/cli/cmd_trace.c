@@ -198,7 +198,7 @@ int cmd_trace(int argc, char **argv)
         return EXIT_USAGE;
     }
     /* one point per segment end, and the end of the ray */
-    struct polyline pl = {0, s.render.segments + 2, NULL};
+    struct polyline pl = {0, render_segments(&s.render) + 2, NULL};
     pl.points = calloc((size_t)pl.cap, sizeof *pl.points);
     if (!pl.points) {
         fprintf(stderr, "bentray trace: out of memory\n");

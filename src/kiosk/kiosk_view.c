@@ -59,11 +59,13 @@ void kiosk_preview_scene(const struct scene *full, const struct kiosk_main *k, s
     out->render.width = k->preview_width;
     out->render.height = k->preview_height;
     const int fewer = PREVIEW_STEP_FACTOR * PREVIEW_SEGMENT_FACTOR;
-    if (full->render.step_control == STEP_FIXED && full->render.segments >= fewer &&
+    int segments = render_segments(&full->render);
+    if (full->render.step_control == STEP_FIXED && segments >= fewer &&
         full->render.steps_per_segment * PREVIEW_SEGMENT_FACTOR <= SCENE_MAX_STEPS_PER_SEGMENT) {
         out->render.step_size = full->render.step_size * PREVIEW_STEP_FACTOR;
         out->render.steps_per_segment = full->render.steps_per_segment * PREVIEW_SEGMENT_FACTOR;
-        out->render.segments = (full->render.segments + fewer - 1) / fewer;
+        out->render.segments = (segments + fewer - 1) / fewer;
+        out->render.max_path = 0.0;      /* the segments are the budget now */
     }
     if (full->render.method == METHOD_ORBIT_TABLE) {
         /* exact orbits need no steps: the preview takes a coarse table, cheap to build again at
@@ -93,7 +95,7 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char 
         return -1;
     renderer_textures(v->renderer, &t);
     int rc = v->pipeline_view ? compositor_put_pipeline(&v->comp, &t, v->live.render.bound_radius,
-                                                        v->live.render.segments, v->live.render.step_size, err,
+                                                        render_segments(&v->live.render), v->live.render.step_size, err,
                                                         errlen)
                               : compositor_put_preview(&v->comp, t.image, err, errlen);
     /* the pipeline view shows the preview's own state: it is not refined */

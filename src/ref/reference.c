@@ -308,11 +308,10 @@ void ref_trace(const struct scene *s, const struct ref_options *o, vec3d x0, vec
     if (capture > 0.0)
         add_sphere(&t, ROLE_CAPTURE, s->model.center, capture);
 
-    /* the GPU's budget: segments * steps_per_segment steps; adaptive steps reach at most step_max.
-     * Exact orbits (method orbit_table) have none: every ray is followed to its end. */
-    double longest_step = rs->step_control == STEP_FIXED ? rs->step_size : render_step_max(rs);
-    double lambda_max = rs->method == METHOD_ORBIT_TABLE ? INFINITY
-                                                         : (double)rs->segments * rs->steps_per_segment * longest_step;
+    /* the GPU's budget (render_path_budget): segments * steps_per_segment steps of a fixed step, or
+     * an adaptive ray's path. Exact orbits (method orbit_table) have none: every ray is followed
+     * to its end. */
+    double lambda_max = rs->method == METHOD_ORBIT_TABLE ? INFINITY : render_path_budget(rs);
     dopri5_init(&t.d, &s->model, o->rtol, o->atol, o->rtol * v3_len(v0), x0, v0, rs->step_size);
     double floor_radius = CENTRE_FLOOR_FRACTION * rs->bound_radius;
     for (;;) {

@@ -213,8 +213,10 @@ void cpu_shade(const struct cpu_materials *mat, const struct ref_ray *ray, vec3d
     vec3d c = v3(0.0, 0.0, 0.0);
     if (ray->outcome >= 0)
         c = shade_surface(mat, ray, view);
-    else if (ray->outcome == DUMP_SKY || ray->outcome == DUMP_UNFINISHED)
+    else if (ray->outcome == DUMP_SKY)
         c = shade_sky(mat, ray, view);
+    else if (ray->outcome == DUMP_UNFINISHED)
+        c = mat->scene->render.unfinished_color;
     rgba[0] = to_unorm8(c.x);
     rgba[1] = to_unorm8(c.y);
     rgba[2] = to_unorm8(c.z);

@@ -9,7 +9,7 @@ struct frame_info {
     char path_name[16];
     char path_description[256];
     char renderer[160];
-    char pipeline[16];        /* "multipass" or "single pass" */
+    char pipeline[16];        /* "multipass", "fused segment" or "single pass" */
     char pipeline_why[200];   /* why that one (renderer_pipeline_why) */
 };
 

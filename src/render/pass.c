@@ -38,13 +38,21 @@ int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GL
              const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
              char *err, size_t errlen)
 {
+    const GLuint out[RAYSTATE_MAX_TARGETS] = {out0, out1, 0, 0};
+    return pass_run_targets(r, sp, out, inputs, n_inputs, set_uniforms, arg, err, errlen);
+}
+
+int pass_run_targets(struct renderer *r, const struct stage_program *sp, const GLuint out[RAYSTATE_MAX_TARGETS],
+                     const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
+                     char *err, size_t errlen)
+{
     struct raystate *rs = &r->rs;
     for (int k = 0; k < sp->n_programs; k++) {
         GLuint fbo;
         if (sp->n_programs == 1)
-            fbo = raystate_fbo(rs, out0, out1, err, errlen);
+            fbo = raystate_fbo_targets(rs, out, err, errlen);
         else
-            fbo = raystate_fbo(rs, k == 0 ? out0 : out1, 0, err, errlen);
+            fbo = raystate_fbo(rs, out[k], 0, err, errlen);
         if (!fbo)
             return -1;
         const struct program_uniforms *prog = &sp->program[k];

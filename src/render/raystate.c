@@ -5,33 +5,47 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* A framebuffer with target0 (and target1) and the shared depth buffer; *status tells whether it
- * is complete. */
-static GLuint make_fbo(struct raystate *rs, GLuint target0, GLuint target1, GLenum *status)
+/* Colour targets in use: the first nonzero ones. */
+static int target_count(const GLuint target[RAYSTATE_MAX_TARGETS])
 {
+    int n = 1;
+    while (n < RAYSTATE_MAX_TARGETS && target[n])
+        n++;
+    return n;
+}
+
+/* A framebuffer with the colour targets and the shared depth buffer; *status tells whether it is
+ * complete. */
+static GLuint make_fbo(struct raystate *rs, const GLuint target[RAYSTATE_MAX_TARGETS], GLenum *status)
+{
+    static const GLenum buffers[RAYSTATE_MAX_TARGETS] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
+                                                         GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+    int n = target_count(target);
     GLuint fbo;
     glGenFramebuffers(1, &fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target0, 0);
-    if (target1) {
-        static const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, target1, 0);
-        glDrawBuffers(2, both);    /* draw-buffer state belongs to the framebuffer: set once */
-    }
+    for (int i = 0; i < n; i++)
+        glFramebufferTexture2D(GL_FRAMEBUFFER, buffers[i], GL_TEXTURE_2D, target[i], 0);
+    if (n > 1)
+        glDrawBuffers(n, buffers);    /* draw-buffer state belongs to the framebuffer: set once */
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rs->depth);
     /* the presentation image is 8-bit: only the float targets are the render path's concern */
-    *status = render_path_framebuffer_status(target0 == rs->final_color ? NULL : rs->format, target1 ? 2 : 1);
+    *status = render_path_framebuffer_status(target[0] == rs->final_color ? NULL : rs->format, n);
     return fbo;
 }
 
 /* What was attached, in which render path, and what to try instead. */
-static void incomplete_message(const struct raystate *rs, GLuint target0, GLuint target1, GLenum status,
+static void incomplete_message(const struct raystate *rs, const GLuint target[RAYSTATE_MAX_TARGETS], GLenum status,
                                char *err, size_t errlen)
 {
-    int float_target = target0 != rs->final_color;
+    int float_target = target[0] != rs->final_color;
+    int n = target_count(target);
+    char count[16] = "";
+    if (n > 1)
+        snprintf(count, sizeof count, "%d x ", n);
     const char *format = float_target ? rs->format->name : "RGBA8";
     snprintf(err, errlen, "render path %s: a ray-state framebuffer (%s%s colour, 16-bit depth, %dx%d) is "
-             "incomplete: %s (0x%04x)%s%s%s", rs->path_name, target1 ? "2 x " : "", format, rs->width,
+             "incomplete: %s (0x%04x)%s%s%s", rs->path_name, count, format, rs->width,
              rs->height, gl_framebuffer_status_name(status), status,
              float_target && rs->format->is_fp32 ? "; try --precision fp16" : "",
              float_target && rs->mrt ? (rs->format->is_fp32 ? " or --no-mrt" : "; try --no-mrt") : "",
@@ -72,11 +86,12 @@ int raystate_init(struct raystate *rs, const struct render_path *path, int width
     }
     /* the setup stage's targets: checked now rather than when the first pass needs them */
     GLenum status;
-    GLuint fbo = make_fbo(rs, rs->position[0], path->mrt ? rs->velocity[0] : 0, &status);
+    const GLuint setup[RAYSTATE_MAX_TARGETS] = {rs->position[0], path->mrt ? rs->velocity[0] : 0, 0, 0};
+    GLuint fbo = make_fbo(rs, setup, &status);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDeleteFramebuffers(1, &fbo);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
-        incomplete_message(rs, rs->position[0], path->mrt ? rs->velocity[0] : 0, status, err, errlen);
+        incomplete_message(rs, setup, status, err, errlen);
         raystate_release(rs);
         return -1;
     }
@@ -100,23 +115,28 @@ void raystate_release(struct raystate *rs)
 
 GLuint raystate_fbo(struct raystate *rs, GLuint target0, GLuint target1, char *err, size_t errlen)
 {
+    const GLuint target[RAYSTATE_MAX_TARGETS] = {target0, target1, 0, 0};
+    return raystate_fbo_targets(rs, target, err, errlen);
+}
+
+GLuint raystate_fbo_targets(struct raystate *rs, const GLuint target[RAYSTATE_MAX_TARGETS], char *err, size_t errlen)
+{
     for (int i = 0; i < rs->n_fbos; i++)
-        if (rs->fbos[i].target0 == target0 && rs->fbos[i].target1 == target1)
+        if (memcmp(rs->fbos[i].target, target, sizeof rs->fbos[i].target) == 0)
             return rs->fbos[i].fbo;
     if (rs->n_fbos == RAYSTATE_MAX_FBOS) {
         snprintf(err, errlen, "internal: more than %d framebuffer combinations", RAYSTATE_MAX_FBOS);
         return 0;
     }
     GLenum status;
-    GLuint fbo = make_fbo(rs, target0, target1, &status);
+    GLuint fbo = make_fbo(rs, target, &status);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glDeleteFramebuffers(1, &fbo);
-        incomplete_message(rs, target0, target1, status, err, errlen);
+        incomplete_message(rs, target, status, err, errlen);
         return 0;
     }
-    rs->fbos[rs->n_fbos].target0 = target0;
-    rs->fbos[rs->n_fbos].target1 = target1;
+    memcpy(rs->fbos[rs->n_fbos].target, target, sizeof rs->fbos[rs->n_fbos].target);
     rs->fbos[rs->n_fbos].fbo = fbo;
     rs->n_fbos++;
     return fbo;

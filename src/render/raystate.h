@@ -18,7 +18,8 @@
 #define OUTCOME_FAILED (-4)
 #define DEPTH_NO_HIT 60000.0f      /* depth key of a ray still travelling (fits fp16) */
 
-#define RAYSTATE_MAX_FBOS 24
+#define RAYSTATE_MAX_FBOS 32
+#define RAYSTATE_MAX_TARGETS 4     /* colour targets of one pass: the fused segment pass writes four */
 
 struct raystate {
     int width, height;
@@ -27,7 +28,7 @@ struct raystate {
     GLuint depth;                  /* renderbuffer: 0 where a ray has been terminated, 1 elsewhere */
     GLuint final_color;            /* RGBA8 image for presentation and PNG */
     int cur_position, cur_velocity, cur_hit;  /* indices of the current copies */
-    struct { GLuint target0, target1, fbo; } fbos[RAYSTATE_MAX_FBOS];
+    struct { GLuint target[RAYSTATE_MAX_TARGETS], fbo; } fbos[RAYSTATE_MAX_FBOS];
     int n_fbos;
     const struct float_format *format;  /* of every texture but final_color; for messages */
     const char *path_name;         /* the render path these textures serve */
@@ -43,6 +44,8 @@ void raystate_release(struct raystate *rs);
 /* Framebuffer with target0 (and target1 when nonzero) and the shared depth buffer attached;
  * made once and cached. */
 GLuint raystate_fbo(struct raystate *rs, GLuint target0, GLuint target1, char *err, size_t errlen);
+/* The same for up to RAYSTATE_MAX_TARGETS colour targets (the first n nonzero). */
+GLuint raystate_fbo_targets(struct raystate *rs, const GLuint target[RAYSTATE_MAX_TARGETS], char *err, size_t errlen);
 /* Read one texture back as floats, top row first (image order): w*h*4 floats. */
 int raystate_read(struct raystate *rs, GLuint texture, float *rgba_top_down, char *err, size_t errlen);
 

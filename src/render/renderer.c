@@ -106,7 +106,9 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
         return NULL;
     }
     struct object_batch all;
-    if (scene->render.pipeline == PIPELINE_SINGLE && frame_batch(r, &all, err, errlen) != 0) {
+    char why[200];
+    if ((scene->render.pipeline == PIPELINE_SINGLE && frame_batch(r, &all, err, errlen) != 0) ||
+        (scene->render.pipeline == PIPELINE_FUSED && segment_fused_choose(r, why, sizeof why, err, errlen) < 0)) {
         *bad_input = 1;      /* asked for, and refused before any work */
         renderer_destroy(r);
         return NULL;
@@ -158,7 +160,16 @@ int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int 
         r->image_height = height;
         return 0;
     }
-    r->pipeline_name = "multipass";
+    char fused_why[200];
+    int fused = segment_fused_choose(r, fused_why, sizeof fused_why, err, errlen);
+    if (fused < 0)
+        return -1;
+    if (s->render.pipeline == PIPELINE_AUTO) {
+        /* why not the single pass, then why (not) fused */
+        size_t used = strlen(r->pipeline_why);
+        snprintf(r->pipeline_why + used, sizeof r->pipeline_why - used, "; %s%s", fused ? "" : "not fused: ", fused_why);
+    }
+    r->pipeline_name = fused ? "fused segment" : "multipass";
     r->state_pending = 0;
     if (stage_setup(r, err, errlen) != 0)
         return -1;
@@ -179,14 +190,38 @@ int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int 
     int orbit = r->exact_orbits;
     if (orbit && orbit_prepare(r, err, errlen) != 0)
         return -1;
-    int segments = r->straight ? 1 : orbit ? r->orbit.max_segments : s->render.segments;
+    int segments = r->straight ? 1 : orbit ? r->orbit.max_segments : render_segments(&s->render);
+    /* Early stop: the first moving pass after each retirement runs inside an occlusion query,
+     * which counts the rays the early-z test lets through: those still travelling. When it
+     * counted none, every ray was retired before that segment, and no later segment can change a
+     * ray: the loop ends there, one segment later, with the results of the full count. Not with
+     * a hook, which reads the ray state after every segment. */
+    int stop_early = early_z && !hook && r->caps.occlusion_query;
+    if (stop_early && !r->queries[0])
+        glGenQueries(2, r->queries);
+    int pending = -1;
     for (int seg = 0; seg < segments; seg++) {
         int start = r->rs.cur_position;
-        if ((orbit ? stage_orbit(r, seg, start, err, errlen) : stage_integrate(r, start, err, errlen)) != 0)
+        if (pending >= 0) {
+            GLuint travelling = 1;
+            glGetQueryObjectuiv(r->queries[pending & 1], GL_QUERY_RESULT, &travelling);
+            pending = -1;
+            if (travelling == 0)
+                break;
+        }
+        int probe = stop_early && seg > 0 && seg % s->render.termination_interval == 0;
+        if (probe)
+            glBeginQuery(r->caps.query_target, r->queries[seg & 1]);
+        int moved = fused   ? stage_segment(r, seg, err, errlen)
+                    : orbit ? stage_orbit(r, seg, start, err, errlen)
+                            : stage_integrate(r, start, err, errlen);
+        if (probe)
+            glEndQuery(r->caps.query_target);
+        if (moved != 0)
             return -1;
-        if (stage_intersect_all(r, seg, start, err, errlen) != 0)
-            return -1;
-        if (stage_terminate(r, seg, err, errlen) != 0)
+        pending = probe ? seg : pending;
+        /* the fused pass has intersected and ended the segment's rays too */
+        if (!fused && (stage_intersect_all(r, seg, start, err, errlen) != 0 || stage_terminate(r, seg, err, errlen) != 0))
             return -1;
         if (early_z && (seg + 1) % s->render.termination_interval == 0 && seg + 1 < segments &&
             stage_retire(r, 0, err, errlen) != 0)
@@ -312,6 +347,8 @@ void renderer_destroy(struct renderer *r)
     observer_lut_release(r);
     orbit_release(r);
     polygons_release(r);
+    if (r->queries[0])
+        glDeleteQueries(2, r->queries);
     program_cache_release(&r->programs);
     quad_release();
     free(r);

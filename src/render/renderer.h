@@ -53,7 +53,7 @@ struct renderer_textures {
 void renderer_textures(const struct renderer *r, struct renderer_textures *out);
 /* The single-pass frame's deferred hit and position (a no-op after a multipass frame). */
 int renderer_complete_state(struct renderer *r, char *err, size_t errlen);
-/* "multipass" or "single pass": how the last run was scheduled. */
+/* "multipass", "fused segment" or "single pass": how the last run was scheduled. */
 const char *renderer_pipeline(const struct renderer *r);
 /* Why the last run took that pipeline, in words ("render.pipeline = multipass", "OpenGL ES 3.2
  * runs fragment-shader loops of any length", ...). */

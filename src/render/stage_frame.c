@@ -13,8 +13,8 @@ int frame_choose(const struct renderer *r, int per_segment_hook, char *why, size
 {
     const struct scene *s = r->scene;
     struct object_batch b;
-    if (s->render.pipeline == PIPELINE_MULTIPASS) {
-        snprintf(why, whylen, "render.pipeline = multipass");
+    if (s->render.pipeline == PIPELINE_MULTIPASS || s->render.pipeline == PIPELINE_FUSED) {
+        snprintf(why, whylen, "render.pipeline = %s", s->render.pipeline == PIPELINE_FUSED ? "fused" : "multipass");
         return 0;
     }
     if (per_segment_hook) {
@@ -66,7 +66,22 @@ static void set_frame(const struct program_uniforms *p, const void *arg)
     integrate_set_uniforms(p, r->scene);
     observer_set_uniforms(p, r);
     uniform_float(p, "u_step_size", r->scene->render.step_size);
-    uniform_float(p, "u_segments", r->straight ? 1 : r->scene->render.segments);
+    uniform_float(p, "u_segments", r->straight ? 1 : render_segments(&r->scene->render));
+}
+
+int frame_batch_defines(const struct renderer *r, const struct object_batch *b, char *out, size_t len, char *err,
+                        size_t errlen)
+{
+    if (b->count > 0) {
+        if (object_batch_defines(b, out, len) == 0)
+            return 0;
+        snprintf(err, errlen, "internal: the defines of a pass with every object do not fit");
+        return -1;
+    }
+    /* nothing to meet: an empty batch of one slot keeps the shading code well-formed */
+    snprintf(out, len, "#define BATCH_SIZE 1\n#define LIGHT_COUNT %d\n#define BATCH_TESTS\n%s%s\n", r->scene->n_lights,
+             r->exact_orbits ? "#define ORBIT_HITS 1\n" : "", r->observer_defines);
+    return 0;
 }
 
 int stage_frame(struct renderer *r, int state, char *err, size_t errlen)
@@ -77,16 +92,8 @@ int stage_frame(struct renderer *r, int state, char *err, size_t errlen)
     if (frame_batch(r, &a.batch, err, errlen) != 0)
         return -1;
     char batch[4096];
-    if (a.batch.count > 0) {
-        if (object_batch_defines(&a.batch, batch, sizeof batch) != 0) {
-            snprintf(err, errlen, "internal: the defines of the single pass do not fit");
-            return -1;
-        }
-    } else {
-        /* nothing to meet: an empty batch of one slot keeps the shading code well-formed */
-        snprintf(batch, sizeof batch, "#define BATCH_SIZE 1\n#define LIGHT_COUNT %d\n#define BATCH_TESTS\n%s%s\n",
-                 s->n_lights, r->exact_orbits ? "#define ORBIT_HITS 1\n" : "", r->observer_defines);
-    }
+    if (frame_batch_defines(r, &a.batch, batch, sizeof batch, err, errlen) != 0)
+        return -1;
     const char *files[PRIM_COUNT + 10] = {"common.glsl", r->model_file};
     int n = object_batch_files(&a.batch, files, 2);
     files[n++] = "observer.glsl";
@@ -95,8 +102,10 @@ int stage_frame(struct renderer *r, int state, char *err, size_t errlen)
     files[n++] = "shade.glsl";
     files[n++] = "stage_intersect.glsl";
     files[n++] = r->exact_orbits ? "stage_orbit_frame.glsl" : "stage_integrate.glsl";
-    if (!r->exact_orbits)
+    if (!r->exact_orbits) {
+        files[n++] = "segment_end.glsl";
         files[n++] = "stage_frame.glsl";
+    }
     files[n] = NULL;
     char defines[sizeof batch + sizeof r->model_defines + 128];
     if (r->exact_orbits)

@@ -14,6 +14,7 @@ void integrate_set_uniforms(const struct program_uniforms *p, const void *scene)
         uniform_float(p, "u_grow_below", r->grow_fraction * r->tolerance);
         uniform_float(p, "u_step_min", render_step_min(r));
         uniform_float(p, "u_step_max", render_step_max(r));
+        uniform_float(p, "u_path_max", render_path_budget(r));
     }
 }
 

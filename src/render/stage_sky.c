@@ -16,6 +16,7 @@ static void set_sky(const struct program_uniforms *p, const void *arg)
     } else {
         uniform_vec3(p, "u_sky_color", r->scene->sky.color);
     }
+    uniform_vec3(p, "u_unfinished_color", r->scene->render.unfinished_color);
 }
 
 int stage_sky(struct renderer *r, char *err, size_t errlen)

@@ -34,7 +34,7 @@ struct renderer {
     enum integration_method method;  /* the scene's, or rk4 where orbit_table lacks fp32 textures */
     int exact_orbits;             /* rays follow tabulated exact orbits (not straight, orbit_table) */
     int image_width, image_height;
-    const char *pipeline_name;    /* of the last run: "multipass" or "single pass" */
+    const char *pipeline_name;    /* of the last run: "multipass", "fused segment", "single pass" */
     char pipeline_why[200];       /* why the last run took it */
     int state_pending;            /* single pass: hit and position not yet written */
     long passes;
@@ -43,6 +43,7 @@ struct renderer {
     GLuint orbit_texture;         /* the same as a float texture; 0 before the first */
     struct orbit_table orbit_spare;  /* the one before it (stage_orbit.c) */
     GLuint orbit_spare_texture;
+    GLuint queries[2];            /* occlusion queries of the multipass scheme's early stop; 0: none yet */
     float quad_z;                 /* NDC depth of the pass quads: 0 (heavy passes), -1 (retire) */
     int depth_write_last;         /* pass_run writes depth in the last draw of a stage only */
 };
@@ -58,6 +59,11 @@ typedef void (*set_uniforms_fn)(const struct program_uniforms *program, const vo
 int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GLuint out1,
              const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
              char *err, size_t errlen);
+
+/* The same for up to RAYSTATE_MAX_TARGETS targets (the fused segment pass: four, with MRT). */
+int pass_run_targets(struct renderer *r, const struct stage_program *sp, const GLuint out[RAYSTATE_MAX_TARGETS],
+                     const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
+                     char *err, size_t errlen);
 
 /* One pass that moves the rays (integrate, orbit): reads the current position, velocity and hit,
  * writes the next position (keeping the segment's start) and velocity. */
@@ -119,6 +125,15 @@ int object_batch_all(const struct renderer *r, struct object_batch *b);
  * why. The pass itself: image and velocity (state 0, what the sky stage needs), or hit and
  * position (state 1, for the read-back of the ray state). */
 int frame_choose(const struct renderer *r, int per_segment_hook, char *why, size_t whylen);
+/* render.pipeline = fused (stage_segment.c): whether this frame's segments each run as one pass
+ * (integrate, intersect and terminate fused; four draw buffers), with why in words; forced where
+ * it cannot run: -1 with err (render.pipeline = fused asked for what this GPU or scene lacks).
+ * The pass of segment k itself. */
+/* The defines of a pass that tests every object (b from frame_batch; none: an empty slot). */
+int frame_batch_defines(const struct renderer *r, const struct object_batch *b, char *out, size_t len, char *err,
+                        size_t errlen);
+int segment_fused_choose(const struct renderer *r, char *why, size_t whylen, char *err, size_t errlen);
+int stage_segment(struct renderer *r, int segment, char *err, size_t errlen);
 int stage_frame(struct renderer *r, int state, char *err, size_t errlen);
 /* Every object of the scene as the single pass's batch; -1 with err saying why they do not fit. */
 int frame_batch(const struct renderer *r, struct object_batch *b, char *err, size_t errlen);

@@ -44,8 +44,9 @@ enum sky_type { SKY_COLOR, SKY_CUBEMAP };
 enum moving_objects_method { MOVING_RAYS, MOVING_POLYGONS };
 /* How a frame is scheduled on the GPU: auto picks the fewest passes this scene and GPU allow;
  * multipass is the paper's scheme (one pass per stage and segment); single follows every ray
- * to its end in one fragment-shader loop (render.method = orbit_table). */
-enum pipeline_choice { PIPELINE_AUTO, PIPELINE_MULTIPASS, PIPELINE_SINGLE };
+ * to its end in one fragment-shader loop; fused runs each segment's integration, intersection
+ * and termination as one pass (four draw buffers). */
+enum pipeline_choice { PIPELINE_AUTO, PIPELINE_MULTIPASS, PIPELINE_SINGLE, PIPELINE_FUSED };
 
 struct camera {
     vec3d position;
@@ -123,7 +124,7 @@ struct render_settings {
     enum integration_method method;
     double step_size;        /* integration step h, scene length units (affine parameter) */
     int steps_per_segment;   /* paper's n_integration */
-    int segments;            /* paper's n_segs */
+    int segments;            /* paper's n_segs; 0: derived from the path budget (render_segments) */
     int steps_per_pass;      /* K: integration steps unrolled in one shader */
     double bound_radius;     /* radius of the bounding sphere around bound_center */
     vec3d bound_center;
@@ -150,11 +151,34 @@ struct render_settings {
     int max_chords;           /* method orbit_table: most chords a ray's orbit is split into */
     int orbit_rows, orbit_columns;
     enum pipeline_choice pipeline;  /* MOVING_POLYGONS: segments along each edge of a primitive's mesh */
+    /* the budget of a ray, in its affine parameter (the path length of light with |v| = 1): 0 takes
+     * SCENE_PATH_BOUND_DIAMETERS diameters of the bounding sphere (render_path_budget) */
+    double max_path;
+    vec3d unfinished_color;  /* what a ray still travelling at the end of its budget shows */
 };
 
 /* The bounds adaptive steps stay within (the defaults resolved). */
 double render_step_min(const struct render_settings *r);
 double render_step_max(const struct render_settings *r);
+
+/* The default budget of a ray: a path this many times the bounding sphere's diameter. A straight
+ * ray crosses the sphere within one diameter; the rest is for bent ones (orbits, flows). */
+#define SCENE_PATH_BOUND_DIAMETERS 3
+/* Adaptive steps shrink where light bends most: segments derived from the budget at the initial
+ * step are this many times the budget's share, so that a ray's budget, not its segments, ends it. */
+#define SCENE_ADAPTIVE_SEGMENT_MARGIN 2
+/* The budget of a ray, in the affine parameter. Fixed steps with segments given:
+ * segments x steps_per_segment x step, as the paper counts it. Otherwise max_path, or
+ * SCENE_PATH_BOUND_DIAMETERS bounding-sphere diameters where it is 0. */
+double render_path_budget(const struct render_settings *r);
+/* Segments a frame runs: `segments` where given; else enough for the budget at `step`
+ * (SCENE_ADAPTIVE_SEGMENT_MARGIN times that with adaptive steps). May exceed SCENE_MAX_SEGMENTS;
+ * validation refuses such a scene. */
+long render_segments_needed(const struct render_settings *r);
+int render_segments(const struct render_settings *r);
+/* Writes the segments a frame runs into `segments`, for code that changes steps or segments and
+ * keeps the path: fixed steps then take their budget from the segments (max_path cleared). */
+void render_fix_segments(struct render_settings *r);
 
 /* What the scene's own settings reach against the CPU reference at the scene's own size
  * ([quality], each an upper bound; negative where the file states none): the percentage of

@@ -1,5 +1,6 @@
 /* Values every scene starts from; a scene file only names what differs. The numbers are the ones
  * documented in docs/SCENES.md: change both together. */
+#include <math.h>
 #include <string.h>
 #include "scene/scene.h"
 #include "physics/relativity.h"
@@ -13,7 +14,9 @@ static void render_defaults(struct render_settings *r)
     r->method = METHOD_RK4;
     r->step_size = 0.05;
     r->steps_per_segment = 10;
-    r->segments = 30;
+    r->segments = 0;          /* derived from the path budget */
+    r->max_path = 0.0;
+    r->unfinished_color = v3(1.0, 0.0, 1.0);
     r->steps_per_pass = 10;
     r->bound_radius = 50.0;
     r->bound_center = v3(0.0, 0.0, 0.0);
@@ -42,6 +45,38 @@ double render_step_min(const struct render_settings *r)
 double render_step_max(const struct render_settings *r)
 {
     return r->step_max > 0.0 ? r->step_max : r->step_size * 64.0;
+}
+
+double render_path_budget(const struct render_settings *r)
+{
+    if (r->step_control == STEP_FIXED && r->segments > 0)
+        return (double)r->segments * r->steps_per_segment * r->step_size;
+    return r->max_path > 0.0 ? r->max_path : SCENE_PATH_BOUND_DIAMETERS * 2.0 * r->bound_radius;
+}
+
+long render_segments_needed(const struct render_settings *r)
+{
+    if (r->segments > 0)
+        return r->segments;
+    double per_segment = r->step_size * r->steps_per_segment;
+    double n = ceil(render_path_budget(r) / per_segment);
+    if (r->step_control != STEP_FIXED)
+        n *= SCENE_ADAPTIVE_SEGMENT_MARGIN;
+    /* the caller compares with SCENE_MAX_SEGMENTS: keep the count representable */
+    return !(n < 1e15) ? (long)1e15 : n < 1.0 ? 1 : (long)n;
+}
+
+int render_segments(const struct render_settings *r)
+{
+    long n = render_segments_needed(r);
+    return n > SCENE_MAX_SEGMENTS ? SCENE_MAX_SEGMENTS : (int)n;
+}
+
+void render_fix_segments(struct render_settings *r)
+{
+    r->segments = render_segments(r);
+    if (r->step_control == STEP_FIXED)
+        r->max_path = 0.0;
 }
 
 /* Parameters of every model are kept, not only the flat one's, so that switching model.type with

@@ -26,7 +26,7 @@ static const char *const profile_names[] = {"yukawa", "polynomial", NULL};
 static const char *const sky_names[] = {"color", "cubemap", NULL};
 static const char *const effects_names[] = {"geometry", "doppler", "searchlight", NULL};
 static const char *const moving_names[] = {"rays", "polygons", NULL};
-static const char *const pipeline_names[] = {"auto", "multipass", "single", NULL};
+static const char *const pipeline_names[] = {"auto", "multipass", "single", "fused", NULL};
 
 _Static_assert(sizeof model_names / sizeof model_names[0] == MODEL_COUNT + 1,
                "one name per model type");
@@ -413,8 +413,10 @@ const struct scene_key scene_keys[] = {
      .offset = AT_SCENE(render.step_size)},
     {SECTION_RENDER, "steps_per_segment", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_STEPS_PER_SEGMENT,
      .offset = AT_SCENE(render.steps_per_segment)},
-    {SECTION_RENDER, "segments", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SEGMENTS,
+    {SECTION_RENDER, "segments", KEY_INTEGER, .lo = 0, .hi = SCENE_MAX_SEGMENTS,
      .offset = AT_SCENE(render.segments)},
+    {SECTION_RENDER, "max_path", KEY_NUMBER, .lo = 0.0, .hi = 1e9, .offset = AT_SCENE(render.max_path)},
+    {SECTION_RENDER, "unfinished_color", KEY_COLOR, COLOR_RANGE, .offset = AT_SCENE(render.unfinished_color)},
     {SECTION_RENDER, "steps_per_pass", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_STEPS_PER_PASS,
      .offset = AT_SCENE(render.steps_per_pass)},
     {SECTION_RENDER, "bound_radius", KEY_NUMBER, POSITIVE, .offset = AT_SCENE(render.bound_radius)},

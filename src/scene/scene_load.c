@@ -391,5 +391,14 @@ int scene_set(struct scene *s, const char *assignment, struct scene_error *err)
     rc = scene_key_apply(s, (enum scene_section_kind)kind, instance, key, trim(value), err->message,
                          sizeof err->message);
     free(value);
+    /* An override of a fixed step's budget replaces the file's other way of giving it (a file
+     * that gives both is refused by scene_validate). */
+    struct render_settings *r = &s->render;
+    if (rc == 0 && kind == SECTION_RENDER && r->step_control == STEP_FIXED) {
+        if (strcmp(key, "segments") == 0 && r->segments > 0)
+            r->max_path = 0.0;
+        else if (strcmp(key, "max_path") == 0 && r->max_path > 0.0)
+            r->segments = 0;
+    }
     return rc;
 }

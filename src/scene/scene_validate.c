@@ -75,6 +75,17 @@ static int validate_render(const struct scene *s, struct scene_error *err)
     if (r->method == METHOD_ORBIT_TABLE && r->step_control != STEP_FIXED)
         return invalid(s, err, "render.method = orbit_table takes no steps, so render.step_control must be fixed; "
                        "its chords are set by render.chord_tolerance");
+    if (r->step_control == STEP_FIXED && r->segments > 0 && r->max_path > 0.0)
+        return invalid(s, err, "render.segments = %d and render.max_path = %g both set the budget of fixed steps: "
+                       "set one (render.segments = 0 derives the segments from max_path, render.max_path = 0 leaves the "
+                       "budget to segments)", r->segments, r->max_path);
+    long needed = render_segments_needed(r);
+    /* flat space and exact orbits take no steps */
+    if (r->method != METHOD_ORBIT_TABLE && s->model.type != MODEL_FLAT && needed > SCENE_MAX_SEGMENTS)
+        return invalid(s, err, "a path budget of %g (render.max_path%s) takes %ld segments of %d steps of %g, more "
+                       "than the %d a frame may run: raise render.step or render.steps_per_segment, or lower "
+                       "render.max_path", render_path_budget(r), r->max_path > 0.0 ? "" : " 0: the default",
+                       needed, r->steps_per_segment, r->step_size, SCENE_MAX_SEGMENTS);
     double lo = render_step_min(r), hi = render_step_max(r);
     if (r->step_control != STEP_FIXED && !(lo <= r->step_size && r->step_size <= hi))
         return invalid(s, err, "render.step (%g) must lie within render.step_min (%g) and render.step_max (%g)",

@@ -42,7 +42,8 @@ static int vary(struct scene *s, enum variation v)
         if (flat || orbit || r->steps_per_segment % 5 != 0)
             return 0;
         r->steps_per_segment /= 5;
-        r->segments *= 5;
+        if (r->segments > 0)      /* segments derived from the path follow the shorter ones */
+            r->segments *= 5;
         while (r->steps_per_segment % r->steps_per_pass != 0)
             r->steps_per_pass--;
         return 1;
@@ -94,7 +95,7 @@ static void write_row(FILE *f, const struct scene *s, const char *variation, con
         snprintf(k, sizeof k, "–");
     snprintf(step, sizeof step, cpu || flat ? "–" : orbit ? "chord %g" : "%g", orbit ? r->chord_tolerance : r->step_size);
     snprintf(per_segment, sizeof per_segment, cpu || flat || orbit ? "–" : "%d", r->steps_per_segment);
-    snprintf(segments, sizeof segments, cpu || flat ? "–" : orbit ? "<= %d chords" : "%d", orbit ? r->max_chords : r->segments);
+    snprintf(segments, sizeof segments, cpu || flat ? "–" : orbit ? "<= %d chords" : "%d", orbit ? r->max_chords : render_segments(r));
     static const char *const control[] = {"", " doubling", " embedded"};
     char method[48];
     snprintf(method, sizeof method, "%s%s", cpu ? "dopri5" : flat ? "straight" : method_name(r->method),

@@ -54,13 +54,13 @@ check "cube face over SCENE_MAX_TEXTURE_SIZE" 2 "vast_sky.scene:[0-9]+: error: .
 # ---- the image: each side and the pixel count, from the file, --set and --size. Each command also
 # carries a later mistake, so that a build without the limit stops there at once instead of
 # rendering gigabytes (and fails the test on the message).
-printf '[render]\nwidth = 8192\n\nheight = 4096\nsegments = 0\n' > "$TMP/big.scene"
+printf '[render]\nwidth = 8192\n\nheight = 4096\nsegments = -1\n' > "$TMP/big.scene"
 check "scene over SCENE_MAX_PIXELS" 2 "big.scene:4: error: key 'height' in \[render\]: the image would be 8192x4096 = 33554432 pixels; at most 8388608" -- \
     $BT render --scene "$TMP/big.scene" --out "$TMP/a.png"
 check "--set over SCENE_MAX_PIXELS" 2 "^--set render.height=8192: error: .*at most 8388608 pixels" -- \
-    $BT render --scene $S --set render.width=8192 --set render.height=8192 --set render.segments=0 --out "$TMP/a.png"
+    $BT render --scene $S --set render.width=8192 --set render.height=8192 --set render.segments=-1 --out "$TMP/a.png"
 check "--size over SCENE_MAX_PIXELS" 2 "--size: expected WxH with 1 <= W, H <= 8192 and W x H <= 8388608 pixels, got '8192x8192'" -- \
-    $BT render --scene $S --size 8192x8192 --set render.segments=0 --out "$TMP/a.png"
+    $BT render --scene $S --size 8192x8192 --set render.segments=-1 --out "$TMP/a.png"
 check "--size side over SCENE_MAX_SIZE" 2 "--size: .*got '100000x1'" -- $BT render --scene $S --size 100000x1 --out "$TMP/a.png"
 check "--size huge number" 2 "--size: .*got '99999999999999999999x99999999999999999999'" -- \
     $BT trace --scene $S --size 99999999999999999999x99999999999999999999 --pixel 0 0

@@ -46,7 +46,13 @@ check "orbit table, other model" 2 "orbit_table follows the exact orbits of Schw
 L=assets/scenes/lorenz.scene
 check "integrated single pass egl" 0 "2 passes \(single pass: OpenGL ES 3.2 runs" -- $BT render --scene $L --size 32x24 --backend egl --out "$TMP/o5.png"
 check "integrated single pass osmesa" 0 "on osmesa.* 2 passes \(single pass: " -- $BT render --scene $L --size 32x24 --backend osmesa --out "$TMP/o9.png"
-check "gles2 multipass" 0 "\(multipass: OpenGL ES 2.0 need not run long fragment-shader loops" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT render --scene $L --size 32x24 --backend egl --out "$TMP/o10.png"
+# GLES2: no long loops; with EXT_draw_buffers one fused pass a segment, without it the paper's scheme
+check "gles2 fused" 0 "\(fused segment: OpenGL ES 2.0 need not run long fragment-shader loops \(GLSL ES 1.00, appendix A\); [0-9]+ draw buffers: one pass a segment\)" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT render --scene $L --size 32x24 --backend egl --out "$TMP/o10.png"
+check "gles2 multipass without draw buffers" 0 "\(multipass: OpenGL ES 2.0 need not run long fragment-shader loops .*; not fused: (MRT does not work here|GL_MAX_DRAW_BUFFERS is 1)" -- env MESA_GLES_VERSION_OVERRIDE=2.0 MESA_EXTENSION_OVERRIDE=-GL_EXT_draw_buffers $BT render --scene $L --size 32x24 --backend egl --out "$TMP/o12.png"
+check "fused forced" 0 "[0-9]+ passes \(fused segment: render.pipeline = fused\)" -- $BT render --scene $L --size 32x24 --backend egl --set render.pipeline=fused --out "$TMP/o15.png"
+check "fused forced osmesa" 0 "[0-9]+ passes \(fused segment: render.pipeline = fused\)" -- $BT render --scene $L --size 32x24 --backend osmesa --set render.pipeline=fused --out "$TMP/o16.png"
+check "fused forced on exact orbits" 2 "render.pipeline = fused: render.method = orbit_table runs its own orbit stage; use render.pipeline = multipass or auto" -- $BT render --scene $B --size 32x24 --backend egl --set render.pipeline=fused --out "$TMP/o13.png"
+check "fused forced without draw buffers" 2 "render.pipeline = fused: (MRT does not work here|GL_MAX_DRAW_BUFFERS is 1)" -- env MESA_GLES_VERSION_OVERRIDE=2.0 MESA_EXTENSION_OVERRIDE=-GL_EXT_draw_buffers $BT render --scene $L --size 32x24 --backend egl --set render.pipeline=fused --out "$TMP/o14.png"
 check "gles2 single forced" 0 "2 passes \(single pass: render.pipeline = single\)" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT render --scene $L --size 32x24 --backend egl --set render.pipeline=single --out "$TMP/o11.png"
 check "trace runs multipass" 0 "trace runs the multipass scheme" -- $BT trace --scene $L --size 32x24 --pixel 16 12 --set render.pipeline=single
 check "orbit table, adaptive" 2 "step_control must be fixed" -- $BT render --scene $B --set render.step_control=doubling --out "$TMP/o6.png"
@@ -54,8 +60,16 @@ check "orbit table, fp16 forced" 2 "orbit_table needs 32-bit float textures" -- 
 check "orbit table on gles2" 0 "integrated with rk4 instead" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT render --scene $B --size 32x24 --backend egl --out "$TMP/o8.png"
 # a GLES 2.0 device: no sized float formats, only half floats; fp32 forced is a clear error
 check "gles2 info" 0 "render path: +fp16" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT info --backend egl
-check "gles2 info pipeline" 0 "pipeline: +multipass; the single pass only when forced \(OpenGL ES 2.0 need not" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT info --backend egl
+check "gles2 info pipeline" 0 "pipeline: +one fused pass a segment \(4 draw buffers\) where the scene's objects fit one pass, else multipass; the single pass only when forced \(OpenGL ES 2.0 need not" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT info --backend egl
+check "gles2 info pipeline without draw buffers" 0 "pipeline: +multipass; the single pass only when forced \(OpenGL ES 2.0 need not" -- env MESA_GLES_VERSION_OVERRIDE=2.0 MESA_EXTENSION_OVERRIDE=-GL_EXT_draw_buffers $BT info --backend egl
 check "info pipeline" 0 "pipeline: +single pass where .*OpenGL ES 3.2 runs" -- $BT info --backend egl
+# the multipass early stop: occlusion queries proved by the probe; without them every segment runs
+# (lorenz: 180 segments of 5 passes and 3 at the end; its rays all end before the budget)
+check "info occlusion query" 0 "occlusion query: works: the multipass scheme stops" -- $BT info --backend egl
+check "info occlusion query osmesa" 0 "occlusion query: works: the multipass scheme stops" -- $BT info --backend osmesa
+check "gles2 without occlusion query" 0 "occlusion query: no: the multipass scheme runs every segment \(neither OpenGL ES 3 nor GL_EXT_occlusion_query_boolean\)" -- env MESA_GLES_VERSION_OVERRIDE=2.0 MESA_EXTENSION_OVERRIDE=-GL_EXT_occlusion_query_boolean $BT info --backend egl
+check "gles2 every segment without query" 0 " 903 passes \(multipass" -- env MESA_GLES_VERSION_OVERRIDE=2.0 MESA_EXTENSION_OVERRIDE=-GL_EXT_occlusion_query_boolean $BT render --scene $L --size 16x12 --backend egl --set render.pipeline=multipass --out "$TMP/q1.png"
+check "gles2 stops early with query" 0 " [1-8][0-9]{2} passes \(multipass" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT render --scene $L --size 16x12 --backend egl --set render.pipeline=multipass --out "$TMP/q2.png"
 check "gles2 render" 0 "fp16.*reduced accuracy" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT render --scene $S --size 32x24 --backend egl --out "$TMP/c.png"
 check "gles2 fp32 forced" 2 "fp32.*RGBA/FLOAT" -- env MESA_GLES_VERSION_OVERRIDE=2.0 $BT render --scene $S --size 32x24 --backend egl --precision fp32 --out "$TMP/d.png"
 # EXT_color_buffer_float removed (Mesa 22.3 warns it "cannot be disabled", yet RGBA32F then
@@ -103,7 +117,12 @@ mkdir -p "$W/tx/scenes" "$W/tx/textures" "$W/tx/sky" && cp assets/sky/grid_* "$W
 head -c $(( $(stat -c %s assets/textures/checker_grey.png) / 2 )) assets/textures/checker_grey.png > "$W/tx/textures/checker_grey.png"
 check "truncated texture" 2 "tx/scenes/test.scene:59: texture: cannot read .*checker_grey.png: the file is truncated" -- $BT render --scene "$W/tx/scenes/test.scene" --size 8x6 --out "$W/tx/o.png"
 # settings that give no meaningful image say so, also under --quiet
-check "unfinished rays warned" 0 "warning: [0-9]+ of 192 rays \([0-9]+%\) were still travelling" -- $BT render --scene assets/scenes/lorenz.scene --size 16x12 --set render.segments=5 --out "$W/s0.png" --quiet
+check "unfinished rays warned" 0 "warning: [0-9]+ of 192 rays \([0-9]+%\) were still travelling" -- $BT render --scene assets/scenes/lorenz.scene --size 16x12 --set render.max_path=2 --out "$W/s0.png" --quiet
+# a fixed step's budget is given one way in a file; an override replaces the file's other way
+printf '[render]\nsegments = 60\nmax_path = 90\n' > "$W/budget.scene"
+check "budget given twice refused" 2 "budget.scene: error: render.segments = 60 and render.max_path = 90 both set the budget of fixed steps" -- $BT render --scene "$W/budget.scene" --size 16x12 --out "$W/s3.png"
+check "budget override replaces" 0 "note: [0-9]+ rays were still travelling at the end of their budget \\(a path of 2 in 4 segments\\); they show render.unfinished_color \\(raise render.segments\\)" -- $BT render --scene assets/scenes/lorenz.scene --size 16x12 --set render.segments=4 --out "$W/s5.png"
+check "unfinished rays noted" 0 "note: [0-9]+ rays were still travelling at the end of their budget \\(a path of 2 in 4 segments\\); they show render.unfinished_color \\(raise render.max_path\\)" -- $BT render --scene assets/scenes/lorenz.scene --size 16x12 --set render.max_path=2 --out "$W/s4.png"
 check "all rays failed warned" 0 "warning: 192 of 192 rays failed" -- $BT render --scene assets/scenes/lorenz.scene --size 16x12 --set model.strength=1e8 --out "$W/s1.png" --quiet
 check "segment too long warned" 0 "warning: one segment .* is longer than the bounding sphere" -- $BT render --scene assets/scenes/schwarzschild.scene --size 16x12 --set render.method=rk4 --set render.step=1e6 --out "$W/s2.png" --quiet
 # the CPU reference: same outputs as the GPU engine; on the flat test scene both give the same outcomes
@@ -148,7 +167,7 @@ check "starflight backends agree" 0 "outcome differs: 0 of" -- sh -c "$BT render
 # bench: the tiny configuration proves the command and its report work; it times nothing that matters
 mkdir -p "$TMP/bench"
 check "bench quick" 0 "wrote .*BENCH.md" -- $BT bench --out "$TMP/bench" --quick
-check "bench sections" 0 "^10 sections, table1 17 rows, pipelines 17 rows, figure5 3 rows, limit 3 rows, pareto 4 rows, relativity 5 rows, kiosk 2 rows$" -- sh -c "
+check "bench sections" 0 "^10 sections, table1 21 rows, pipelines 23 rows, figure5 3 rows, limit 3 rows, pareto 4 rows, relativity 5 rows, kiosk 2 rows$" -- sh -c "
     printf '%s sections, table1 %s rows, pipelines %s rows, figure5 %s rows, limit %s rows, pareto %s rows, relativity %s rows, kiosk %s rows\n' \
       \$(grep -c '^## ' $TMP/bench/BENCH.md) \$(wc -l < $TMP/bench/bench/table1.csv) \$(wc -l < $TMP/bench/bench/pipelines.csv) \
       \$(wc -l < $TMP/bench/bench/figure5.csv) \$(wc -l < $TMP/bench/bench/limit.csv) \

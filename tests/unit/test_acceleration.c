@@ -51,6 +51,14 @@ static void count_outcomes(const struct hc_gpu *g, long seen[5])
     }
 }
 
+static int count_segment(struct renderer *r, int segment, void *arg)
+{
+    (void)r;
+    (void)segment;
+    (*(int *)arg)++;
+    return 0;
+}
+
 /* Renders the scene in the paper's multipass scheme (a scene on exact orbits would otherwise take
  * the single pass, which has neither early-z nor batches); returns its number of objects. */
 static int render_with(const char *scene, const char *const *sets, struct hc_gpu *g)
@@ -60,6 +68,16 @@ static int render_with(const char *scene, const char *const *sets, struct hc_gpu
     s.render.pipeline = PIPELINE_MULTIPASS;
     hc_gpu_render(&s, g);
     return s.n_objects;
+}
+
+/* The same, every segment of the budget run (a per-segment hook turns the early stop off). */
+static void render_every_segment(const char *scene, const char *const *sets, struct hc_gpu *g)
+{
+    static struct scene s;
+    int segments = 0;
+    hc_load(&s, scene, W, H, sets);
+    s.render.pipeline = PIPELINE_MULTIPASS;
+    hc_gpu_render_hook(&s, g, count_segment, &segments);
 }
 
 /* Early-z on (retiring finished rays every segment, or every third), off: the same rays. The
@@ -75,16 +93,104 @@ static void test_early_z_is_exact(void **state)
     for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; k++) {
         struct hc_gpu a, b, c;
         render_with(scenes[k], off, &a);
-        render_with(scenes[k], every, &b);
-        render_with(scenes[k], third, &c);
+        render_every_segment(scenes[k], every, &b);
+        render_every_segment(scenes[k], third, &c);
         assert_same_rays(&a, &b, scenes[k]);
         assert_same_rays(&a, &c, scenes[k]);
-        /* early-z skips rays, not passes: the retire passes come on top (straight rays: one segment, none) */
+        /* early-z skips rays, not passes: the retire passes come on top (straight rays: one segment,
+         * none); the early stop, which saves passes, is off here */
         assert_true(b.res.passes >= c.res.passes && c.res.passes >= a.res.passes);
         hc_gpu_free(&a);
         hc_gpu_free(&b);
         hc_gpu_free(&c);
     }
+}
+
+/* The early stop (the occlusion query after each retirement; docs/PIPELINE.md): the same rays as
+ * running every segment of the budget (a per-segment hook turns the stop off), in fewer passes
+ * where every ray ends before its budget. Each render makes its own renderer on the one context
+ * of the test, as the kiosk does: the probe must not depend on what an earlier one left behind. lorenz's and rossler's rays all end well within their
+ * budgets; potential keeps rays in bound orbits, which run to the end; schwarzschild runs its
+ * exact orbits' chords, as many segments as the ray that needs most; test is flat space, one
+ * segment. */
+static void test_early_stop_is_exact(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *scene;
+        int stops;          /* every ray ends before the budget: the stop must save passes */
+    } cases[] = {{"lorenz", 1}, {"rossler", 1}, {"potential", 0}, {"schwarzschild", 0}, {"test", 0}};
+    static const char *const intervals[2][2] = {{"render.termination_interval=1", NULL},
+                                                {"render.termination_interval=3", NULL}};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
+        for (int i = 0; i < 2; i++) {
+            static struct scene s;
+            struct hc_gpu every, stopped;
+            int segments = 0;
+            hc_load(&s, cases[k].scene, W, H, intervals[i]);
+            s.render.pipeline = PIPELINE_MULTIPASS;
+            hc_gpu_render_hook(&s, &every, count_segment, &segments);
+            hc_gpu_render(&s, &stopped);
+            char what[160];
+            case_label(what, sizeof what, cases[k].scene, intervals[i], "(early stop)");
+            print_message("%s: %d segments, %ld passes; stopped early: %ld passes\n", what, segments,
+                          every.res.passes, stopped.res.passes);
+            assert_same_rays(&every, &stopped, what);
+            assert_true(stopped.res.passes <= every.res.passes);
+            if (cases[k].stops)
+                assert_true(stopped.res.passes < every.res.passes);
+            hc_gpu_free(&every);
+            hc_gpu_free(&stopped);
+        }
+}
+
+/* The fused segment pass (render.pipeline = fused): the multipass scheme's rays bit for bit, in
+ * fewer passes. Every integrated model, each integrator and step control, flat space, rays that
+ * end unfinished or failed, retirement every third segment (finished rays the fused pass must
+ * leave as they are) and early-z off. */
+static void test_fused_pass_is_exact(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *scene;
+        const char *sets[4];
+    } cases[] = {
+        {"test", {NULL}},
+        {"demo", {"render.method=rk4", NULL}},
+        {"lorenz", {NULL}},
+        {"lorenz", {"render.termination_interval=3", NULL}},
+        {"lorenz", {"render.early_z=off", "render.max_path=20", NULL}},
+        {"rossler", {NULL}},
+        {"potential", {"render.steps_per_pass=1", NULL}},
+        {"refraction", {NULL}},
+        {"schwarzschild", {"render.method=rk4", NULL}},
+        {"schwarzschild", {"render.method=euler", "render.step_control=doubling", "render.tolerance=1e-3", NULL}},
+        {"neutron_star", {"render.method=dopri5", "render.step_control=embedded", "render.tolerance=1e-6", NULL}},
+        {"three_ships", {NULL}},
+        {"lorenz", {"render.step=5", "render.bound_radius=1e18", "render.segments=60", NULL}},
+    };
+    long seen[5] = {0};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        static struct scene s;
+        struct hc_gpu multi, fused;
+        hc_load(&s, cases[k].scene, W, H, cases[k].sets);
+        s.render.pipeline = PIPELINE_MULTIPASS;
+        hc_gpu_render(&s, &multi);
+        s.render.pipeline = PIPELINE_FUSED;
+        hc_gpu_render(&s, &fused);
+        char what[160];
+        case_label(what, sizeof what, cases[k].scene, cases[k].sets, "(fused)");
+        print_message("%s: multipass %ld passes, fused %ld\n", what, multi.res.passes, fused.res.passes);
+        assert_same_rays(&multi, &fused, what);
+        assert_true(fused.res.passes < multi.res.passes || model_is_straight(&s.model));
+        count_outcomes(&fused, seen);
+        hc_gpu_free(&multi);
+        hc_gpu_free(&fused);
+    }
+    print_message("outcomes compared: %ld object, %ld sky, %ld captured, %ld unfinished, %ld failed\n", seen[0],
+                  seen[1], seen[2], seen[3], seen[4]);
+    for (int o = 0; o < 5; o++)
+        assert_true(seen[o] > 0);
 }
 
 /* Batch 1 (one pass per object, the paper's crossbar), 3 and 16: the same rays, with the passes
@@ -140,7 +246,7 @@ static void test_single_pass_is_exact(void **state)
     (void)state;
     static const struct {
         const char *scene;
-        const char *sets[4];
+        const char *sets[6];
     } cases[] = {
         {"test", {NULL}},
         {"demo", {"render.method=rk4", NULL}},
@@ -155,8 +261,11 @@ static void test_single_pass_is_exact(void **state)
         {"starflight", {NULL}},
         {"three_ships", {NULL}},
         {"cube_approach", {NULL}},
-        /* steps so large that the Lorenz flow overflows inside a vast bounding sphere: failed rays */
-        {"lorenz", {"render.step=5", "render.bound_radius=1e18", NULL}},
+        /* steps so large that the Lorenz flow overflows inside a vast bounding sphere (in the 60
+         * segments the scene once had): failed rays */
+        {"lorenz", {"render.step=5", "render.bound_radius=1e18", "render.max_path=0", "render.segments=60", NULL}},
+        /* adaptive steps within a path budget that most rays spend: the last step cut to it */
+        {"lorenz", {"render.step_control=doubling", "render.max_path=20", NULL}},
     };
     long seen[5] = {0};  /* outcomes over all cases: object, sky, captured, unfinished, failed */
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
@@ -239,7 +348,7 @@ static void test_unchecked_steps_are_exact(void **state)
     (void)state;
     static const struct {
         const char *scene;
-        const char *sets[5];
+        const char *sets[6];
     } cases[] = {
         {"test", {NULL}},
         {"lorenz", {NULL}},
@@ -253,9 +362,13 @@ static void test_unchecked_steps_are_exact(void **state)
         {"schwarzschild", {"render.method=euler", "render.step_control=doubling", "render.tolerance=1e-3", NULL}},
         {"neutron_star", {"render.method=dopri5", "render.step_control=embedded", "render.tolerance=1e-6", NULL}},
         {"three_ships", {NULL}},
-        /* steps so large that the Lorenz flow overflows inside a vast bounding sphere: failed rays */
-        {"lorenz", {"render.step=5", "render.bound_radius=1e18", NULL}},
-        {"lorenz", {"render.step=5", "render.bound_radius=1e18", "render.pipeline=multipass", NULL}},
+        /* steps so large that the Lorenz flow overflows inside a vast bounding sphere (in the 60
+         * segments the scene once had): failed rays */
+        {"lorenz", {"render.step=5", "render.bound_radius=1e18", "render.max_path=0", "render.segments=60", NULL}},
+        {"lorenz", {"render.step=5", "render.bound_radius=1e18", "render.max_path=0", "render.segments=60",
+                    "render.pipeline=multipass", NULL}},
+        /* adaptive steps within a path budget that most rays spend: the last step cut to it */
+        {"lorenz", {"render.step_control=doubling", "render.max_path=20", "render.pipeline=multipass", NULL}},
     };
     char dir[64];
     shaders_checking_every_step(dir, sizeof dir);
@@ -447,6 +560,8 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_early_z_is_exact),
+        cmocka_unit_test(test_early_stop_is_exact),
+        cmocka_unit_test(test_fused_pass_is_exact),
         cmocka_unit_test(test_batches_are_exact),
         cmocka_unit_test(test_unrolling_is_exact),
         cmocka_unit_test(test_single_pass_is_exact),

@@ -59,9 +59,10 @@ static void test_lorenz_divergence(void **state)
 {
     (void)state;
     static struct scene s;
-    /* The scene's field, camera, step, segments and bound; its objects removed so that every ray
-     * runs the whole lambda = 60 segments x 0.5 = 30 (they end unfinished, inside the bound). */
-    hc_load(&s, "lorenz", 8, 6, NULL);
+    /* The scene's field, camera, step and bound; its objects removed so that every ray runs the
+     * whole lambda = 30 = 60 segments x 0.5 (they end unfinished, inside the bound). */
+    static const char *const budget[] = {"render.max_path=30", NULL};
+    hc_load(&s, "lorenz", 8, 6, budget);
     s.n_objects = 0;
     static const int pixels[LZ_RAYS][2] = {{1, 1}, {6, 2}, {3, 4}, {5, 5}};
     const double seg = s.render.steps_per_segment * s.render.step_size;
@@ -74,7 +75,8 @@ static void test_lorenz_divergence(void **state)
     struct hc_gpu gpu;
     hc_gpu_render_hook(&s, &gpu, record_segment, &g);
     assert_int_equal(hc_gpu_nonfinite(&gpu), 0);
-    assert_int_equal(g.n, s.render.segments);
+    assert_int_equal(g.n, 60);
+    assert_int_equal(g.n, render_segments(&s.render));
 
     struct ref_options o;
     ref_options_default(&o, &s);
@@ -185,7 +187,7 @@ static void test_fp16_against_reference(void **state)
                 continue;
             if (a->outcome == DUMP_UNFINISHED && b->outcome == DUMP_SKY) {
                 short_of_sky++;
-                late_unfinished += b->depth >= 0.95 * s.render.segments;
+                late_unfinished += b->depth >= 0.95 * render_segments(&s.render);
             } else {
                 off_edge += !edge[i];
             }
@@ -240,6 +242,7 @@ static void test_extreme_steps(void **state)
             hc_load(&s, scenes[k], W, H, NULL);
             if (s.render.method == METHOD_ORBIT_TABLE)
                 s.render.method = METHOD_RK4;    /* the subject is the integrators' step */
+            render_fix_segments(&s.render);      /* the scene's segments, each of a scaled step */
             s.render.step_size *= factors[f];
             hc_validate(&s);
             struct cpu_image cpu;
@@ -350,7 +353,12 @@ static void test_far_from_origin(void **state)
                     const struct dump_record *a = &g.dump.records[p], *b = &cpu.dump.records[p];
                     vec3d x = hc_gpu_x(&g, p), v = hc_gpu_v(&g, p);
                     drift_gpu = fmax(drift_gpu, fabs(v3_len(v) / model_refraction_index(&s.model, x) - 1.0));
-                    steps_max = (long)a->steps > steps_max ? (long)a->steps : steps_max;
+                    /* fixed steps are counted in the ray state; an adaptive ray's state carries its
+                     * path instead, and it takes at most one step per attempt of its segments */
+                    long taken = s.render.step_control == STEP_FIXED
+                                     ? (long)a->steps
+                                     : (long)render_segments(&s.render) * s.render.steps_per_segment;
+                    steps_max = taken > steps_max ? taken : steps_max;
                     if (s.model.type != MODEL_FLAT) {
                         struct ref_ray ray;
                         hc_cpu_ray(&s, camera_ray(&s, i, j), &ray);

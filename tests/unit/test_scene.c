@@ -120,7 +120,12 @@ static void test_defaults(void **state)
     assert_int_equal(s.render.method, METHOD_RK4);
     assert_near(s.render.step_size, 0.05, 0);
     assert_int_equal(s.render.steps_per_segment, 10);
-    assert_int_equal(s.render.segments, 30);
+    /* no segments given: a path of 3 bounding-sphere diameters, at 10 steps of 0.05 a segment */
+    assert_int_equal(s.render.segments, 0);
+    assert_near(s.render.max_path, 0, 0);
+    assert_near(render_path_budget(&s.render), 300, 1e-12);
+    assert_int_equal(render_segments(&s.render), 600);
+    assert_vec(s.render.unfinished_color, 1, 0, 1);
     assert_int_equal(s.render.steps_per_pass, 10);
     assert_near(s.render.bound_radius, 50, 0);
     assert_int_equal(s.render.precision, PRECISION_AUTO);
@@ -424,7 +429,7 @@ static const struct {
     {"uv_count", 3, "2 numbers"},
     {"trailing_garbage", 2, "an integer"},
     {"not_integer", 2, "an integer"},
-    {"integer_plus_sign", 3, "expected an integer from 1 to 100000, got \"+32\""},
+    {"integer_plus_sign", 3, "expected an integer from 0 to 100000, got \"+32\""},
     {"integer_range", 2, "from 1 to 8192"},
     {"bad_choice", 2, "one of euler, rk4, dopri5"},
     {"empty_value", 2, "got \"\""},
@@ -916,6 +921,59 @@ static void test_validate(void **state)
     assert_int_equal(scene_validate(&s, &err), 0);
 }
 
+/* A ray's budget (docs/SCENES.md, [render]): fixed steps take it from segments or from max_path,
+ * never both; adaptive steps always from max_path, with segments as the most a frame runs; a
+ * budget beyond the segments a frame may run is refused. */
+static void test_budget(void **state)
+{
+    struct scene s;
+    struct scene_error err;
+    (void)state;
+    assert_int_equal(load_text(&s, "[render]\nstep = 0.5\nsteps_per_segment = 2\nsteps_per_pass = 2\n"
+                                   "bound_radius = 20\n[model]\ntype = lorenz\n", &err), 0);
+    assert_int_equal(scene_validate(&s, &err), 0);
+    /* no budget: 3 diameters = 120, at 1 a segment */
+    assert_near(render_path_budget(&s.render), 120.0, 1e-12);
+    assert_int_equal(render_segments(&s.render), 120);
+    assert_int_equal(scene_set(&s, "render.max_path=25.5", &err), 0);
+    assert_int_equal(scene_validate(&s, &err), 0);
+    assert_near(render_path_budget(&s.render), 25.5, 1e-12);
+    assert_int_equal(render_segments(&s.render), 26);
+    /* an override of one replaces the other: the segments given, the path cleared */
+    assert_int_equal(scene_set(&s, "render.segments=7", &err), 0);
+    assert_near(s.render.max_path, 0.0, 0.0);
+    assert_near(render_path_budget(&s.render), 7.0, 1e-12);
+    assert_int_equal(scene_set(&s, "render.max_path=25.5", &err), 0);
+    assert_int_equal(s.render.segments, 0);
+    /* adaptive: the path is the budget, the segments the most a frame runs (both kept) */
+    assert_int_equal(scene_set(&s, "render.step_control=doubling", &err), 0);
+    assert_int_equal(scene_set(&s, "render.segments=7", &err), 0);
+    assert_int_equal(scene_validate(&s, &err), 0);
+    assert_near(render_path_budget(&s.render), 25.5, 1e-12);
+    assert_int_equal(render_segments(&s.render), 7);
+    assert_int_equal(scene_set(&s, "render.segments=0", &err), 0);
+    assert_int_equal(render_segments(&s.render), 2 * 26);
+    /* fixed steps with segments: the paper's count */
+    assert_int_equal(scene_set(&s, "render.step_control=fixed", &err), 0);
+    assert_int_equal(scene_set(&s, "render.max_path=0", &err), 0);
+    assert_int_equal(scene_set(&s, "render.segments=7", &err), 0);
+    assert_near(render_path_budget(&s.render), 7.0, 1e-12);
+    /* a budget that would take more segments than a frame runs */
+    assert_int_equal(scene_set(&s, "render.segments=0", &err), 0);
+    assert_int_equal(scene_set(&s, "render.max_path=1e9", &err), 0);
+    assert_int_equal(scene_validate(&s, &err), -1);
+    assert_contains(err.message, "takes 1000000000 segments");
+    assert_int_equal(scene_set(&s, "render.max_path=-1", &err), -1);
+    assert_int_equal(scene_set(&s, "render.max_path=2e9", &err), -1);
+    /* flat space takes no steps: its budget is not refused */
+    assert_int_equal(scene_set(&s, "model.type=flat", &err), 0);
+    assert_int_equal(scene_validate(&s, &err), 0);
+    /* a file that gives a fixed step's budget both ways is refused, naming both keys */
+    assert_int_equal(load_text(&s, "[render]\nsegments = 7\nmax_path = 25.5\n", &err), 0);
+    assert_int_equal(scene_validate(&s, &err), -1);
+    assert_contains(err.message, "render.segments = 7 and render.max_path = 25.5 both set the budget");
+}
+
 /* ---- documentation ------------------------------------------------------------------------------ */
 
 static void test_every_key_is_documented(void **state)
@@ -971,6 +1029,7 @@ int main(void)
         cmocka_unit_test(test_set_model_type_resets_nothing),
         cmocka_unit_test(test_set_rejects),
         cmocka_unit_test(test_validate),
+        cmocka_unit_test(test_budget),
         cmocka_unit_test(test_every_key_is_documented),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
