@@ -5,6 +5,7 @@
 #include "io/output_file.h"
 #include "cli/measure.h"
 #include <ctype.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
@@ -65,17 +66,50 @@ static void summarise(const struct measured *m, const struct scene *s)
         fprintf(stderr, "warning: %ld non-finite values in the ray state\n", m->nonfinite);
 }
 
+/* A pixel whose brightest channel is at most this reads as black on a screen. */
+#define DARK_CHANNEL 16
+/* From this speed (units of c) on, the Doppler shift behind a moving observer dims what it sees there
+ * by more than a factor of 3 in D (D = sqrt((1 - b) / (1 + b)) straight behind). */
+#define DIMMING_SPEED 0.5
+
+/* The image is mostly black because the camera looks away from its own motion, where the Doppler
+ * effects shift the light to the red and dim it: say so, with the angle and the keys to change. */
+static void warn_dark_behind(const struct scene *s, size_t dark, size_t n)
+{
+    double beta = v3_len(s->observer.velocity);
+    if (n == 0 || dark * 10 < 9 * n || beta < DIMMING_SPEED || s->observer.effects == EFFECTS_GEOMETRY)
+        return;
+    vec3d look = v3_normalize(v3_sub(s->camera.look_at, s->camera.position));
+    double cosine = v3_dot(look, s->observer.velocity) / beta;
+    if (cosine >= 0.0)
+        return;
+    fprintf(stderr, "warning: %.0f%% of the image is black: the camera looks %.0f degrees away from its motion at "
+                    "%.2f c, where observer.effects = %s shifts the light to the red and dims it (look along "
+                    "observer.velocity, lower its speed, or take effects = geometry)\n",
+            100.0 * (double)dark / (double)n, acos(cosine) * 180.0 / PI_D, beta,
+            s->observer.effects == EFFECTS_SEARCHLIGHT ? "searchlight" : "doppler");
+}
+
 /* Warnings that --quiet does not hide: an image that says little about the scene. A tenth or more of
- * the rays still travelling at the end, half or more failed (the model's numbers overflow), or a
+ * the rays still travelling at the end, half or more failed (the model's numbers overflow), half or
+ * more captured (the shadow fills the view), nine tenths black behind a fast observer, or a
  * segment so long that its chord cuts straight across the bounding sphere. */
 static void warn_meaningless(const struct measured *m, const struct scene *s)
 {
     const struct dump *d = &m->dump;
-    size_t n = (size_t)d->width * d->height, failed = 0, unfinished = 0;
+    size_t n = (size_t)d->width * d->height, failed = 0, unfinished = 0, captured = 0, dark = 0;
     for (size_t i = 0; i < n; i++) {
-        failed += d->records[i].outcome == DUMP_FAILED;
-        unfinished += d->records[i].outcome == DUMP_UNFINISHED;
+        const struct dump_record *rec = &d->records[i];
+        failed += rec->outcome == DUMP_FAILED;
+        unfinished += rec->outcome == DUMP_UNFINISHED;
+        captured += rec->outcome == DUMP_CAPTURED;
+        dark += rec->rgba[0] <= DARK_CHANNEL && rec->rgba[1] <= DARK_CHANNEL && rec->rgba[2] <= DARK_CHANNEL;
     }
+    if (n > 0 && captured * 2 >= n)
+        fprintf(stderr, "warning: %zu of %zu rays (%.0f%%) fell into the horizon: the black hole's shadow fills most "
+                        "of the view (move camera.position away, widen camera.fov or lower model.mass)\n",
+                captured, n, 100.0 * (double)captured / (double)n);
+    warn_dark_behind(s, dark, n);
     /* a tenth of the image showing the sky where the rays are not leaving is no longer a detail */
     if (n > 0 && unfinished * 10 >= n)
         fprintf(stderr, "warning: %zu of %zu rays (%.0f%%) were still travelling after the last segment: they show "
