@@ -4,6 +4,7 @@
 #include "cli/options.h"
 #include "render/frame.h"
 #include "render/renderer.h"
+#include "ref/shade_cpu.h"
 #include "ref/straight.h"
 #include <math.h>
 #include <stdio.h>
@@ -80,6 +81,8 @@ static void print_json(const struct scene *s, long px, long py, const char *engi
         print_vec("hit", rec->hit, ",");
     }
     printf("  \"depth\": %.9g,\n  \"steps\": %u,\n", rec->depth, rec->steps);
+    printf("  \"color\": [%u, %u, %u],\n", rec->rgba[0], rec->rgba[1], rec->rgba[2]);
+    printf("  \"doppler\": %.9g,\n", cpu_camera_doppler(s, camera_view_direction(s, (int)px, (int)py)));
     print_vec("final_position", rec->position, ",");
     print_vec("final_direction", rec->direction, ",");
     printf("  \"polyline\": [\n    [%.9g, %.9g, %.9g]", s->camera.position.x, s->camera.position.y,

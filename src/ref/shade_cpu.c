@@ -121,6 +121,8 @@ static double doppler_at_camera(const struct scene *s, vec3d view)
     return doppler_observer(s->observer.velocity, view) / static_lapse(s, s->camera.position);
 }
 
+double cpu_camera_doppler(const struct scene *s, vec3d view) { return doppler_at_camera(s, view); }
+
 static double rgb_luminance(vec3d c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
 static double pow4(double x) { return x * x * x * x; }

@@ -23,6 +23,10 @@ struct cpu_materials {
 int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *err, size_t errlen);
 void cpu_materials_free(struct cpu_materials *mat);
 /* Final RGBA8 colour of a ray's result; view is the direction the observer looked in (its own frame). */
+/* The frequency factor D at the camera of light that arrives along `view` (the observer's frame)
+ * from a source at rest at infinity: the observer's Doppler factor over the static lapse at the
+ * camera (observer.glsl). 1 for an observer at rest in flat space. */
+double cpu_camera_doppler(const struct scene *s, vec3d view);
 void cpu_shade(const struct cpu_materials *mat, const struct ref_ray *ray, vec3d view, unsigned char rgba[4]);
 
 #endif

@@ -30,6 +30,9 @@ check "no overwrite" 2 "--out: refusing to replace" -- $BT render --scene $S --s
 check "render osmesa" 0 "on osmesa" -- $BT render --scene $S --size 32x24 --backend osmesa --out "$TMP/b.png"
 # a ray that hit an object in segment 14 of 60: its polyline ends there, the end not repeated
 check "trace polyline ends where the ray ends" 0 "^15 points, 0 repeated$" -- sh -c "$BT trace --scene assets/scenes/lorenz.scene --size 32x24 --pixel 16 16 > $TMP/t.json && echo \"\$(grep -c '^    \[' $TMP/t.json) points, \$(grep '^    \[' $TMP/t.json | uniq -d | wc -l) repeated\""
+check "trace doppler ahead" 0 "\"doppler\": 1\.99" -- $BT trace --scene assets/scenes/starflight.scene --size 32x24 --pixel 16 12
+check "trace doppler behind" 0 "\"doppler\": 0\.50" -- $BT trace --scene assets/scenes/starflight.scene --size 32x24 --pixel 16 12 --set "camera.look_at=0 0 1"
+check "trace colour" 0 "\"color\": \[[0-9]+, [0-9]+, [0-9]+\]," -- $BT trace --scene $S --size 32x24 --pixel 16 12 --engine cpu
 check "trace json" 0 "\"outcome\": \"(object|sky)\"" -- $BT trace --scene $S --size 32x24 --pixel 16 12
 check "info" 0 "RGBA32F +works" -- $BT info
 # each context has its own pass quad: OSMesa probed after EGL works as well as alone
