@@ -167,9 +167,10 @@ double render_step_max(const struct render_settings *r);
 /* Adaptive steps shrink where light bends most: segments derived from the budget at the initial
  * step are this many times the budget's share, so that a ray's budget, not its segments, ends it. */
 #define SCENE_ADAPTIVE_SEGMENT_MARGIN 2
-/* The budget of a ray, in the affine parameter. Fixed steps with segments given:
- * segments x steps_per_segment x step, as the paper counts it. Otherwise max_path, or
- * SCENE_PATH_BOUND_DIAMETERS bounding-sphere diameters where it is 0. */
+/* The budget of a ray, in the affine parameter. Fixed steps: the segments a frame runs x
+ * steps_per_segment x step, as the paper counts it (the segments given, or max_path rounded up to
+ * whole segments). Adaptive steps: max_path, or SCENE_PATH_BOUND_DIAMETERS bounding-sphere
+ * diameters where it is 0. */
 double render_path_budget(const struct render_settings *r);
 /* Segments a frame runs: `segments` where given; else enough for the budget at `step`
  * (SCENE_ADAPTIVE_SEGMENT_MARGIN times that with adaptive steps). May exceed SCENE_MAX_SEGMENTS;
