@@ -3,16 +3,21 @@
  * rasterising them each time would cost more than everything else it does. */
 #include "kiosk/hud_text.h"
 #include <errno.h>
+#include <fcntl.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <ft2build.h>
 #include FT_FREETYPE_H
 
 /* The HUD draws a title, body text and the indicator; a fourth size spares a rebuild while the
  * screen's height changes. */
 #define SIZE_SLOTS 4
+/* Largest font file read (docs/LIMITS.md): the CJK outline fonts Debian ships stay below it. */
+#define HUD_FONT_MAX_BYTES (64 * 1024 * 1024)
 /* Beyond this a request is a mistake, not HUD text (a 4K screen's title is about 110 px). */
 #define MAX_PIXEL_HEIGHT 1024
 #define FIRST_TABLE_SLOTS 128
@@ -37,6 +42,7 @@ struct size_cache {
 struct hud_font {
     FT_Library library;
     FT_Face face;
+    unsigned char *file;         /* the font file, read whole at open: FreeType reads glyphs from it */
     int face_pixel_height;       /* the size the face is scaled to now; 0: none yet */
     unsigned long uses;
     struct size_cache sizes[SIZE_SLOTS];
@@ -50,27 +56,67 @@ static void size_cache_clear(struct size_cache *c)
     memset(c, 0, sizeof *c);
 }
 
-struct hud_font *hud_font_open(const char *path, char *err, size_t errlen)
+/* The whole font file, read once: a font replaced or cut short on disk while the kiosk runs does
+ * not reach the glyphs it draws later (FreeType would read them from the file as needed). A FIFO
+ * or a device is refused, and so is a file beyond HUD_FONT_MAX_BYTES. */
+static unsigned char *read_font_file(const char *path, long *size, char *err, size_t errlen)
 {
-    /* FreeType says "cannot open resource" for every failure to read; the C library says why */
-    FILE *probe = fopen(path, "rb");
-    if (!probe) {
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
         snprintf(err, errlen, "%s: %s", path, strerror(errno));
         return NULL;
     }
-    fclose(probe);
+    struct stat st;
+    unsigned char *data = NULL;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        snprintf(err, errlen, "%s: not a regular file", path);
+    } else if (st.st_size <= 0 || st.st_size > HUD_FONT_MAX_BYTES) {
+        snprintf(err, errlen, "%s: %lld bytes; a font file has 1 to %d", path, (long long)st.st_size,
+                 HUD_FONT_MAX_BYTES);
+    } else if (!(data = malloc((size_t)st.st_size))) {
+        snprintf(err, errlen, "%s: out of memory", path);
+    } else {
+        long got = 0;
+        while (got < st.st_size) {
+            ssize_t n = read(fd, data + got, (size_t)(st.st_size - got));
+            if (n < 0 && errno == EINTR)
+                continue;
+            if (n <= 0)
+                break;
+            got += n;
+        }
+        if (got != st.st_size) {
+            snprintf(err, errlen, "%s: read %ld of %lld bytes", path, got, (long long)st.st_size);
+            free(data);
+            data = NULL;
+        }
+        *size = got;
+    }
+    close(fd);
+    return data;
+}
+
+struct hud_font *hud_font_open(const char *path, char *err, size_t errlen)
+{
+    long size = 0;
+    unsigned char *file = read_font_file(path, &size, err, errlen);
+    if (!file)
+        return NULL;
     struct hud_font *f = calloc(1, sizeof *f);
     if (!f) {
         snprintf(err, errlen, "%s: out of memory", path);
+        free(file);
         return NULL;
     }
+    f->file = file;
     FT_Error e = FT_Init_FreeType(&f->library);
     if (e) {
         snprintf(err, errlen, "%s: FreeType cannot start (error %d)", path, e);
+        free(f->file);
         free(f);
         return NULL;
     }
-    e = FT_New_Face(f->library, path, 0, &f->face);
+    e = FT_New_Memory_Face(f->library, f->file, (FT_Long)size, 0, &f->face);
     if (e) {
         if (e == FT_Err_Unknown_File_Format)
             snprintf(err, errlen, "%s: not a font (FreeType knows no such format)", path);
@@ -102,6 +148,7 @@ void hud_font_close(struct hud_font *f)
     if (f->face)
         FT_Done_Face(f->face);
     FT_Done_FreeType(f->library);
+    free(f->file);
     free(f);
 }
 

@@ -2,6 +2,7 @@
 #include "kiosk/kiosk_loop.h"
 #include "io/output_file.h"
 #include <dirent.h>
+#include "io/image_cache.h"
 #include "io/png_io.h"
 #include "kiosk/hud.h"
 #include "kiosk/kiosk_events.h"
@@ -410,6 +411,32 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
     return 1;
 }
 
+/* Every image a scene shows (its textures, the six faces of its sky), decoded now and kept for the
+ * whole run (io/image_cache.h): a file changed or cut short on disk later does not reach the
+ * kiosk, and a scene change reads no file. A file that does not decode is named with the scene
+ * file's line of the key that named it. */
+static int keep_scene_images(const struct scene *s, char *err, size_t errlen)
+{
+    int w, h, owned;
+    const unsigned char *rgba;
+    char msg[400];
+    for (int i = 0; i < s->n_textures; i++)
+        if (image_read(s->textures[i], SCENE_MAX_TEXTURE_SIZE, &w, &h, &rgba, &owned, msg, sizeof msg) != 0) {
+            snprintf(err, errlen, "%s:%d: texture: %s", s->path, s->texture_line[i], msg);
+            return -1;
+        }
+    static const char *const faces[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+    for (int f = 0; s->sky.type == SKY_CUBEMAP && f < 6; f++) {
+        char path[SCENE_PATH_LEN + 16];
+        snprintf(path, sizeof path, "%s_%s.png", s->sky.cubemap, faces[f]);
+        if (image_read(path, SCENE_MAX_TEXTURE_SIZE, &w, &h, &rgba, &owned, msg, sizeof msg) != 0) {
+            snprintf(err, errlen, "%s:%d: cubemap: %s", s->path, s->cubemap_line, msg);
+            return -1;
+        }
+    }
+    return 0;
+}
+
 /* Everything a run needs that a person could have got wrong, checked before anything is shown:
  * the scene files, the scripts, the font, where headless frames go. 0, or -1 with err. */
 static int preflight(struct kiosk *k, char *err, size_t errlen)
@@ -459,6 +486,10 @@ static int preflight(struct kiosk *k, char *err, size_t errlen)
             }
         }
     }
+    image_cache_keep(1);
+    for (int i = 0; i < c->kiosk.n_scenes; i++)
+        if (keep_scene_images(&k->scenes[i], err, errlen) != 0)
+            return -1;
     static struct script sc;
     for (int i = 0; i < c->n_inputs; i++)
         if (c->inputs[i].type == KIOSK_INPUT_SCRIPT && script_load(&sc, c->inputs[i].path, err, errlen) != 0)
@@ -547,6 +578,7 @@ static void kiosk_close(struct kiosk *k)
     hud_font_close(k->font);
     free(k->hud_rgba);
     free(k->scenes);
+    image_cache_release();
     if (k->screen)
         screen_close(k->screen);
 }

@@ -1,5 +1,5 @@
 /* Scene textures and the sky cube map, uploaded once per renderer. */
-#include "io/png_io.h"
+#include "io/image_cache.h"
 #include "render/stages.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,10 +9,10 @@
 static int upload(GLenum target, const struct scene *s, const char *key, int line, const char *path, int max_size,
                   char *err, size_t errlen, int *bad_input)
 {
-    int w, h;
-    unsigned char *rgba = NULL;
+    int w, h, owned = 0;
+    const unsigned char *rgba = NULL;
     char msg[400];
-    if (png_read_rgba8(path, max_size, &w, &h, &rgba, msg, sizeof msg) != 0) {
+    if (image_read(path, max_size, &w, &h, &rgba, &owned, msg, sizeof msg) != 0) {
         if (line > 0)
             snprintf(err, errlen, "%s:%d: %s: %s", s->path, line, key, msg);
         else
@@ -22,7 +22,8 @@ static int upload(GLenum target, const struct scene *s, const char *key, int lin
     }
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(target, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-    free(rgba);
+    if (owned)
+        free((void *)rgba);
     return 0;
 }
 

@@ -57,6 +57,14 @@ sed "s|path = visitor.events|path = $TMP/switch/switch.events|; s|\.\./\.\./asse
      s|^scenes = .*|scenes = $PWD/assets/scenes/starflight.scene, $TMP/bh.scene|;
      s|^start_scene = .*|start_scene = starflight|; s|^max = 1\$|max = 0.2|; s|^assets_root = .*|assets_root = /|" $K > "$TMP/switch/k.conf"
 check "kiosk scene change past a limit" 0 "^exit 0, 2 frames$" -- sh -c "$BT kiosk --config $TMP/switch/k.conf --out $TMP/switch --frames 2 2>/dev/null; echo \"exit \$?, \$(ls $TMP/switch/frame_*.png | wc -l) frames\""
+# every scene's images are decoded at start and kept: a texture cut short stops the start with the
+# scene's FILE:LINE (before, only its header was read then, and the kiosk failed at the scene change)
+mkdir -p "$TMP/tx/scenes" "$TMP/tx/textures" "$TMP/tx/sky" && cp assets/sky/grid_* "$TMP/tx/sky/" && cp assets/scenes/lorenz.scene "$TMP/tx/scenes/"
+head -c $(( $(stat -c %s assets/textures/checker_grey.png) / 2 )) assets/textures/checker_grey.png > "$TMP/tx/textures/checker_grey.png"
+sed "s|path = visitor.events|path = $PWD/tests/kiosk/visitor.events|; s|\.\./\.\./assets|$PWD/assets|g;
+     s|^scenes = .*|scenes = $PWD/assets/scenes/starflight.scene, $TMP/tx/scenes/lorenz.scene|;
+     s|^start_scene = .*|start_scene = starflight|; s|^assets_root = .*|assets_root = /|" $K > "$TMP/tx/k.conf"
+check "kiosk texture cut short refused at start" 2 "tx/scenes/lorenz.scene:[0-9]+: texture: cannot read .*checker_grey.png: the file is truncated" -- $BT kiosk --config "$TMP/tx/k.conf" --out "$TMP/tx" --frames 2
 # every scene must take the knobs' start values (reset and scene changes fall back to them)
 sed "s|path = visitor.events|path = $PWD/tests/kiosk/visitor.events|; s|\.\./\.\./assets|$PWD/assets|g;
      s|^scenes = .*|scenes = $TMP/bh.scene, $PWD/assets/scenes/starflight.scene|;

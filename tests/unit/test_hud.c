@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <ft2build.h>
 #include FT_FREETYPE_H
@@ -435,6 +436,51 @@ static void test_font_errors(void **state)
     hud_font_close(NULL);
 }
 
+/* The font file is read whole at open: cut short and overwritten on disk afterwards, the font still
+ * draws glyphs it has not drawn yet, at sizes it has not used yet. A FIFO is refused at once. */
+static void test_font_read_once(void **state)
+{
+    (void)state;
+    char path[] = "/tmp/bt_hud_font_XXXXXX", err[256] = "";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    FILE *src = fopen(FONT_PATH, "rb");
+    assert_non_null(src);
+    char buf[65536];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, src)) > 0)
+        assert_int_equal(write(fd, buf, n), (ssize_t)n);
+    fclose(src);
+    close(fd);
+    struct hud_font *f = hud_font_open(path, err, sizeof err);
+    assert_non_null(f);
+    int before = hud_text_width(f, 40, "Mass");
+    assert_true(before > 0);
+    /* the file now holds 100 bytes of something else */
+    FILE *over = fopen(path, "wb");
+    assert_non_null(over);
+    for (int i = 0; i < 100; i++)
+        fputc('x', over);
+    fclose(over);
+    int later = hud_text_width(f, 57, "Zq&");
+    print_message("widths after the file changed: %d (40 px, seen before), %d (57 px, new glyphs)\n",
+                  hud_text_width(f, 40, "Mass"), later);
+    assert_int_equal(hud_text_width(f, 40, "Mass"), before);
+    assert_true(later > 0);
+    hud_font_close(f);
+    unlink(path);
+
+    char fifo[] = "/tmp/bt_hud_fifo_XXXXXX";
+    fd = mkstemp(fifo);
+    assert_true(fd >= 0);
+    close(fd);
+    unlink(fifo);
+    assert_int_equal(mkfifo(fifo, 0600), 0);
+    assert_null(hud_font_open(fifo, err, sizeof err));
+    assert_non_null(strstr(err, "not a regular file"));
+    unlink(fifo);
+}
+
 static void test_draw_without_font_clears(void **state)
 {
     (void)state;
@@ -479,6 +525,7 @@ int main(void)
         cmocka_unit_test(test_hud_scales_with_height),
         cmocka_unit_test(test_indicator_bar),
         cmocka_unit_test(test_font_errors),
+        cmocka_unit_test(test_font_read_once),
         cmocka_unit_test(test_draw_without_font_clears),
     };
     return cmocka_run_group_tests(tests, open_font, close_font);

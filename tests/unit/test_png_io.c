@@ -12,6 +12,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "io/image_cache.h"
 #include "io/png_io.h"
 
 static char tmpdir[64];
@@ -289,6 +290,46 @@ static void write_format(const char *path, int w, int h, png_uint_32 format, con
     assert_int_not_equal(png_image_write_to_file(&img, path, 0, buf, 0, colormap), 0);
 }
 
+/* The kiosk's kept images (io/image_cache.h): once read, a file cut short, rewritten or removed on
+ * disk does not change what is read again; each reader's size limit still applies; without
+ * keeping, every read decodes the file as it is now. */
+static void test_image_cache(void **state)
+{
+    (void)state;
+    char path[256], err[256] = "";
+    path_in_tmp(path, sizeof path, "kept.png");
+    unsigned char *px = make_pattern(20, 10, 2), *other = make_pattern(20, 10, 3);
+    assert_int_equal(png_write_rgba8(path, 20, 10, px, 0, err, sizeof err), 0);
+    int w, h, owned;
+    const unsigned char *got;
+    image_cache_keep(1);
+    assert_int_equal(image_read(path, 4096, &w, &h, &got, &owned, err, sizeof err), 0);
+    assert_int_equal(owned, 0);
+    assert_memory_equal(got, px, 20 * 10 * 4);
+    /* cut short on disk: still the kept pixels */
+    assert_int_equal(truncate(path, 40), 0);
+    assert_int_equal(image_read(path, 4096, &w, &h, &got, &owned, err, sizeof err), 0);
+    assert_int_equal(w, 20);
+    assert_int_equal(h, 10);
+    assert_memory_equal(got, px, 20 * 10 * 4);
+    assert_int_equal(image_read(path, 19, &w, &h, &got, &owned, err, sizeof err), -1);
+    assert_non_null(strstr(err, "20 x 10"));
+    /* removed, then another image under the same name: still the first */
+    unlink(path);
+    assert_int_equal(png_write_rgba8(path, 20, 10, other, 0, err, sizeof err), 0);
+    assert_int_equal(image_read(path, 4096, &w, &h, &got, &owned, err, sizeof err), 0);
+    assert_memory_equal(got, px, 20 * 10 * 4);
+    /* not kept: the file as it is now, owned by the caller */
+    image_cache_release();
+    assert_int_equal(image_read(path, 4096, &w, &h, &got, &owned, err, sizeof err), 0);
+    assert_int_equal(owned, 1);
+    assert_memory_equal(got, other, 20 * 10 * 4);
+    free((void *)got);
+    free(px);
+    free(other);
+    unlink(path);
+}
+
 static void test_reads_other_formats(void **state)
 {
     (void)state;
@@ -352,6 +393,7 @@ int main(void)
         cmocka_unit_test(test_max_size),
         cmocka_unit_test(test_missing_directory),
         cmocka_unit_test(test_reads_other_formats),
+        cmocka_unit_test(test_image_cache),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
