@@ -38,8 +38,7 @@ static void print_caps(const struct gl_caps *c)
         printf("render path:     %s\n", path.description);
     else
         printf("render path:     none: %s\n", err);
-    /* the fused segment pass writes four targets (stage_segment.c) */
-    int fused = c->mrt_works && c->max_draw_buffers >= 4;
+    int fused = render_path_can_fuse(c, c->mrt_works);
     char else_path[128];
     snprintf(else_path, sizeof else_path, "%s", fused ? "one fused pass a segment (4 draw buffers) where the scene's objects "
                                                         "fit one pass, else multipass" : "multipass");

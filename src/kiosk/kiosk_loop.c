@@ -425,10 +425,9 @@ static int keep_scene_images(const struct scene *s, char *err, size_t errlen)
             snprintf(err, errlen, "%s:%d: texture: %s", s->path, s->texture_line[i], msg);
             return -1;
         }
-    static const char *const faces[6] = {"px", "nx", "py", "ny", "pz", "nz"};
-    for (int f = 0; s->sky.type == SKY_CUBEMAP && f < 6; f++) {
+    for (int f = 0; s->sky.type == SKY_CUBEMAP && f < SCENE_CUBEMAP_FACES; f++) {
         char path[SCENE_PATH_LEN + 16];
-        snprintf(path, sizeof path, "%s_%s.png", s->sky.cubemap, faces[f]);
+        scene_cubemap_face_path(s->sky.cubemap, f, path, sizeof path);
         if (image_read(path, SCENE_MAX_TEXTURE_SIZE, &w, &h, &rgba, &owned, msg, sizeof msg) != 0) {
             snprintf(err, errlen, "%s:%d: cubemap: %s", s->path, s->cubemap_line, msg);
             return -1;

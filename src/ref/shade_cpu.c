@@ -8,7 +8,6 @@
 
 int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *err, size_t errlen)
 {
-    static const char *const faces[6] = {"px", "nx", "py", "ny", "pz", "nz"};
     *mat = (struct cpu_materials){.scene = s};
     for (int i = 0; i < s->n_textures; i++) {
         struct cpu_texture *t = &mat->textures[i];
@@ -17,9 +16,9 @@ int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *e
     }
     if (s->sky.type == SKY_CUBEMAP) {
         mat->has_sky_cubemap = 1;
-        for (int f = 0; f < 6; f++) {
+        for (int f = 0; f < SCENE_CUBEMAP_FACES; f++) {
             char path[SCENE_PATH_LEN + 16];
-            snprintf(path, sizeof path, "%s_%s.png", s->sky.cubemap, faces[f]);
+            scene_cubemap_face_path(s->sky.cubemap, f, path, sizeof path);
             struct cpu_texture *t = &mat->sky[f];
             if (png_read_rgba8(path, SCENE_MAX_TEXTURE_SIZE, &t->width, &t->height, &t->rgba, err, errlen) != 0)
                 return -1;

@@ -60,6 +60,8 @@ static GLenum ray_state_framebuffer_status(const struct float_format *f, int mrt
     return status;
 }
 
+int render_path_can_fuse(const struct gl_caps *c, int mrt) { return mrt && c->max_draw_buffers >= SEGMENT_FUSED_TARGETS; }
+
 static const char *path_name(int fp32, int mrt)
 {
     return fp32 ? (mrt ? "fp32+mrt" : "fp32") : (mrt ? "fp16+mrt" : "fp16");

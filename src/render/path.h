@@ -13,6 +13,11 @@ struct render_path {
     char description[256];
 };
 
+/* The fused segment pass writes position, velocity, hit and image at once: whether this GPU can,
+ * given MRT (the path's, or the probe's for `bentray info`) and its draw buffers. */
+#define SEGMENT_FUSED_TARGETS 4
+int render_path_can_fuse(const struct gl_caps *caps, int mrt);
+
 /* Pick the best path the context supports, or the one forced; -1 with err naming what is missing.
  * The chosen path's ray-state framebuffer (its colour targets and the depth buffer, as
  * raystate_init makes them) is built once: where it is incomplete, the next path the scene allows

@@ -9,6 +9,12 @@
 #include <stdio.h>
 #include <string.h>
 
+void frame_objects_why(const struct renderer *r, char *why, size_t whylen)
+{
+    snprintf(why, whylen, "the scene's objects do not fit one pass (at most %d here%s)", frame_object_limit(r),
+             r->scene->render.moving_objects == MOVING_POLYGONS ? ", or are drawn as polygons" : "");
+}
+
 int frame_choose(const struct renderer *r, int per_segment_hook, char *why, size_t whylen)
 {
     const struct scene *s = r->scene;
@@ -30,9 +36,7 @@ int frame_choose(const struct renderer *r, int per_segment_hook, char *why, size
         return 0;
     }
     if (object_batch_all(r, &b) != 0) {
-        snprintf(why, whylen, "the scene's objects do not fit one pass (at most %d here%s)",
-                 frame_object_limit(r), s->render.moving_objects == MOVING_POLYGONS ? ", or are drawn as polygons"
-                                                                                         : "");
+        frame_objects_why(r, why, whylen);
         return 0;
     }
     snprintf(why, whylen, "%s", r->caps.long_loops_why);

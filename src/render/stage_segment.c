@@ -7,9 +7,6 @@
 #include "render/stages.h"
 #include <stdio.h>
 
-/* Draw buffers the fused pass writes: position, velocity, hit, image. */
-#define FUSED_TARGETS 4
-
 /* Why this frame cannot run fused (NULL: it can). */
 static const char *fused_missing(const struct renderer *r, char *buf, size_t n)
 {
@@ -18,14 +15,13 @@ static const char *fused_missing(const struct renderer *r, char *buf, size_t n)
         return "render.method = orbit_table runs its own orbit stage";
     if (!r->path.mrt)
         return r->caps.mrt_works ? "the render path writes one target a pass (mrt = off)" : "MRT does not work here";
-    if (r->caps.max_draw_buffers < FUSED_TARGETS) {
+    if (!render_path_can_fuse(&r->caps, r->path.mrt)) {
         snprintf(buf, n, "GL_MAX_DRAW_BUFFERS is %d, the fused pass writes %d", r->caps.max_draw_buffers,
-                 FUSED_TARGETS);
+                 SEGMENT_FUSED_TARGETS);
         return buf;
     }
     if (object_batch_all(r, &b) != 0) {
-        snprintf(buf, n, "the scene's objects do not fit one pass (at most %d here%s)", frame_object_limit(r),
-                 r->scene->render.moving_objects == MOVING_POLYGONS ? ", or are drawn as polygons" : "");
+        frame_objects_why(r, buf, n);
         return buf;
     }
     return NULL;
@@ -99,7 +95,7 @@ int stage_segment(struct renderer *r, int segment, char *err, size_t errlen)
         {"u_hit", rs->hit[rs->cur_hit]},
         {"u_image", rs->image[rs->cur_hit]},
     };
-    const GLuint out[FUSED_TARGETS] = {rs->position[out_pos], rs->velocity[out_vel], rs->hit[out_hit],
+    const GLuint out[SEGMENT_FUSED_TARGETS] = {rs->position[out_pos], rs->velocity[out_vel], rs->hit[out_hit],
                                        rs->image[out_hit]};
     if (pass_run_targets(r, sp, out, in, 4, set_segment, &a, err, errlen) != 0)
         return -1;

@@ -129,6 +129,8 @@ int frame_choose(const struct renderer *r, int per_segment_hook, char *why, size
  * (integrate, intersect and terminate fused; four draw buffers), with why in words; forced where
  * it cannot run: -1 with err (render.pipeline = fused asked for what this GPU or scene lacks).
  * The pass of segment k itself. */
+/* Why every object of the scene does not fit one pass (for the pipeline's why). */
+void frame_objects_why(const struct renderer *r, char *why, size_t whylen);
 /* The defines of a pass that tests every object (b from frame_batch; none: an empty slot). */
 int frame_batch_defines(const struct renderer *r, const struct object_batch *b, char *out, size_t len, char *err,
                         size_t errlen);

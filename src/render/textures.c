@@ -44,16 +44,15 @@ int textures_load(struct renderer *r, char *err, size_t errlen, int *bad_input)
             return -1;
     }
     if (s->sky.type == SKY_CUBEMAP) {
-        static const char *const faces[6] = {"px", "nx", "py", "ny", "pz", "nz"};
         glGenTextures(1, &r->sky_cubemap);
         glBindTexture(GL_TEXTURE_CUBE_MAP, r->sky_cubemap);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        for (int f = 0; f < 6; f++) {
+        for (int f = 0; f < SCENE_CUBEMAP_FACES; f++) {
             char path[SCENE_PATH_LEN + 16];
-            snprintf(path, sizeof path, "%s_%s.png", s->sky.cubemap, faces[f]);
+            scene_cubemap_face_path(s->sky.cubemap, f, path, sizeof path);
             if (upload(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, s, "cubemap", s->cubemap_line, path, max_size, err,
                        errlen, bad_input) != 0)
                 return -1;

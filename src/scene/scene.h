@@ -2,6 +2,7 @@
  * Filled by scene_load() from a scene file (assets/scenes/NAME.scene) and --set overrides. */
 #ifndef BT_SCENE_H
 #define BT_SCENE_H
+#include <stddef.h>
 #include "physics/vec3.h"
 #include "physics/model.h"
 
@@ -157,6 +158,12 @@ struct render_settings {
     vec3d unfinished_color;  /* what a ray still travelling at the end of its budget shows */
 };
 
+/* The six faces of a cube map sky, in GL's order (+x, -x, +y, -y, +z, -z), and the file of face f
+ * for the prefix of [sky] cubemap: PREFIX_px.png and so on (scene_keys.c). */
+#define SCENE_CUBEMAP_FACES 6
+extern const char *const scene_cubemap_faces[SCENE_CUBEMAP_FACES];
+void scene_cubemap_face_path(const char *prefix, int face, char *out, size_t len);
+
 /* The bounds adaptive steps stay within (the defaults resolved). */
 double render_step_min(const struct render_settings *r);
 double render_step_max(const struct render_settings *r);
@@ -172,6 +179,8 @@ double render_step_max(const struct render_settings *r);
  * whole segments). Adaptive steps: max_path, or SCENE_PATH_BOUND_DIAMETERS bounding-sphere
  * diameters where it is 0. */
 double render_path_budget(const struct render_settings *r);
+/* The path asked for: max_path, or SCENE_PATH_BOUND_DIAMETERS bounding-sphere diameters. */
+double render_requested_path(const struct render_settings *r);
 /* Segments a frame runs: `segments` where given; else enough for the budget at `step`
  * (SCENE_ADAPTIVE_SEGMENT_MARGIN times that with adaptive steps). May exceed SCENE_MAX_SEGMENTS;
  * validation refuses such a scene. */

@@ -47,8 +47,7 @@ double render_step_max(const struct render_settings *r)
     return r->step_max > 0.0 ? r->step_max : r->step_size * 64.0;
 }
 
-/* The path asked for: max_path, or the default of a few bounding-sphere diameters. */
-static double requested_path(const struct render_settings *r)
+double render_requested_path(const struct render_settings *r)
 {
     return r->max_path > 0.0 ? r->max_path : SCENE_PATH_BOUND_DIAMETERS * 2.0 * r->bound_radius;
 }
@@ -58,7 +57,7 @@ double render_path_budget(const struct render_settings *r)
     /* fixed steps run whole segments: the path asked for, rounded up to them */
     if (r->step_control == STEP_FIXED)
         return (double)render_segments(r) * r->steps_per_segment * r->step_size;
-    return requested_path(r);
+    return render_requested_path(r);
 }
 
 long render_segments_needed(const struct render_settings *r)
@@ -66,7 +65,7 @@ long render_segments_needed(const struct render_settings *r)
     if (r->segments > 0)
         return r->segments;
     double per_segment = r->step_size * r->steps_per_segment;
-    double n = ceil(requested_path(r) / per_segment);
+    double n = ceil(render_requested_path(r) / per_segment);
     if (r->step_control != STEP_FIXED)
         n *= SCENE_ADAPTIVE_SEGMENT_MARGIN;
     /* the caller compares with SCENE_MAX_SEGMENTS: keep the count representable */

@@ -328,9 +328,16 @@ static int set_texture(struct scene *s, void *t, const union scene_key_value *v,
     return 0;
 }
 
+const char *const scene_cubemap_faces[SCENE_CUBEMAP_FACES] = {"px", "nx", "py", "ny", "pz", "nz"};
+
+void scene_cubemap_face_path(const char *prefix, int face, char *out, size_t len)
+{
+    snprintf(out, len, "%s_%s.png", prefix, scene_cubemap_faces[face]);
+}
+
 static int set_cubemap(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
 {
-    static const char *const faces[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+    const char *const *faces = scene_cubemap_faces;
     char prefix[SCENE_PATH_LEN];
     (void)t;
     /* room for the longest face suffix, so every face path fits where the prefix fits */
@@ -343,11 +350,11 @@ static int set_cubemap(struct scene *s, void *t, const union scene_key_value *v,
      * cube map whose faces differ is incomplete (it samples black) */
     unsigned long side = 0;
     const char *side_face = NULL;
-    for (int i = 0; i < 6; i++) {
+    for (int i = 0; i < SCENE_CUBEMAP_FACES; i++) {
         char face[SCENE_PATH_LEN + sizeof "_px.png"], what[32];
         unsigned long w, h;
         int declared;
-        snprintf(face, sizeof face, "%s_%s.png", prefix, faces[i]);
+        scene_cubemap_face_path(prefix, i, face, sizeof face);
         snprintf(what, sizeof what, "cubemap face %s", faces[i]);
         if (check_readable(what, face, r, n) != 0 || check_image_size(what, face, &w, &h, &declared, r, n) != 0)
             return -1;

@@ -84,7 +84,7 @@ static int validate_render(const struct scene *s, struct scene_error *err)
     if (r->method != METHOD_ORBIT_TABLE && s->model.type != MODEL_FLAT && needed > SCENE_MAX_SEGMENTS)
         return invalid(s, err, "a path budget of %g (render.max_path%s) takes %ld segments of %d steps of %g, more "
                        "than the %d a frame may run: raise render.step or render.steps_per_segment, or lower "
-                       "render.max_path", r->max_path > 0.0 ? r->max_path : SCENE_PATH_BOUND_DIAMETERS * 2.0 * r->bound_radius,
+                       "render.max_path", render_requested_path(r),
                        r->max_path > 0.0 ? "" : " 0: the default",
                        needed, r->steps_per_segment, r->step_size, SCENE_MAX_SEGMENTS);
     double lo = render_step_min(r), hi = render_step_max(r);
