@@ -14,6 +14,7 @@ uniform vec3 u_body_origin;
 uniform vec3 u_observer_rest;       // the observation event in the rest frame (Eq. 5), relative to the origin
 uniform float u_observer_rest_time;
 uniform float u_far;                // distances map to depth 0..1 up to here
+uniform vec2 u_subpixel_ndc;        // where in its pixel the ray of this sample starts (render.samples)
 #ifdef OBSERVER_MOVING
 uniform vec3 u_observer_beta;
 uniform float u_observer_gamma;
@@ -45,6 +46,8 @@ void main()
     d = distance * normalize(d / distance + (og * og / (og + 1.0) * along - og) * beta);
 #endif
     float w = dot(d, u_camera_forward);
-    gl_Position = vec4(dot(d, u_camera_right) / dot(u_camera_right, u_camera_right),
-                       dot(d, u_camera_up) / dot(u_camera_up, u_camera_up), (2.0 * distance / u_far - 1.0) * w, w);
+    // a sample off the pixel's centre sees what lies that far off: the image moves the other way
+    vec2 ndc_w = vec2(dot(d, u_camera_right) / dot(u_camera_right, u_camera_right),
+                      dot(d, u_camera_up) / dot(u_camera_up, u_camera_up)) - u_subpixel_ndc * w;
+    gl_Position = vec4(ndc_w, (2.0 * distance / u_far - 1.0) * w, w);
 }

@@ -70,6 +70,8 @@ int bench_limit(struct bench *b, char *err, size_t errlen);
 int bench_relativity(struct bench *b, char *err, size_t errlen);
 /* the kiosk's previews and refined frames (bench_kiosk.c) */
 int bench_kiosk(struct bench *b, char *err, size_t errlen);
+/* the cost of render.samples against the error it leaves (bench_antialias.c) */
+int bench_antialias(struct bench *b, char *err, size_t errlen);
 
 /* Open out_dir/bench/NAME for writing (CSV, gnuplot script). NULL with err. */
 FILE *bench_data_file(struct bench *b, const char *name, char *err, size_t errlen);

@@ -14,7 +14,7 @@ static void usage(FILE *out)
             "usage: bentray error --scene FILE [options]\n"
             "Render the scene with the GPU engine and with the CPU reference, and compare them\n"
             "(metrics in docs/ERRORS.md). GPU options: --backend, --precision, --no-mrt, --shader-dir;\n"
-            "CPU options: --rtol, --threads; both: --size, --set SECTION.KEY=V.\n"
+            "CPU options: --rtol, --threads; both: --size, --samples N, --set SECTION.KEY=V.\n"
             "  --json               print JSON instead of the table\n"
             "  --check              hold the error against the scene's [quality] bounds (stated for its\n"
             "                       own settings and size); exit 3 when one is missed\n"

@@ -21,6 +21,8 @@ static void usage(FILE *out)
             "  --dump FILE          also write per-pixel results (format in docs/DUMP.md)\n"
             "  --force              replace existing output files\n"
             "  --size WxH           image size (overrides render.width/height)\n"
+            "  --samples N          rays per pixel, averaged in linear light (overrides render.samples;\n"
+            "                       1 to 256; the dump follows each pixel's centre)\n"
             "GPU engine:\n"
             "  --backend B          egl, osmesa or auto (default auto: EGL, then OSMesa)\n"
             "  --precision P        fp32, fp16 or auto: the float format of the ray state\n"

@@ -191,6 +191,11 @@ int cmd_trace(int argc, char **argv)
         fprintf(stderr, "bentray trace: --pixel I J is required\n");
         return EXIT_USAGE;
     }
+    if (o.samples) {
+        fprintf(stderr, "bentray trace: --samples: trace follows one ray, the one through the pixel's centre; "
+                        "render.samples applies to images (bentray render)\n");
+        return EXIT_USAGE;
+    }
     static struct scene s;
     int rc = options_load_scene(&o, "trace", &s);
     if (rc)

@@ -36,8 +36,11 @@ int measure_gpu(const struct scene *s, const char *backend, struct measured *m, 
     m->seconds = res.seconds;
     m->work = res.passes;
     m->nonfinite = count_nonfinite(&res);
-    snprintf(m->how, sizeof m->how, "%s on %s (%s), %.3f s, %ld passes (%s: %s)", info.path_description,
-             info.backend, info.renderer, res.seconds, res.passes, info.pipeline, info.pipeline_why);
+    char samples[48] = "";
+    if (s->render.samples > 1)
+        snprintf(samples, sizeof samples, ", %d samples a pixel", s->render.samples);
+    snprintf(m->how, sizeof m->how, "%s on %s (%s), %.3f s%s, %ld passes (%s: %s)", info.path_description,
+             info.backend, info.renderer, res.seconds, samples, res.passes, info.pipeline, info.pipeline_why);
     render_result_free(&res);
     return 0;
 }
@@ -55,8 +58,11 @@ int measure_cpu(const struct scene *s, const struct cpu_render_options *o, struc
     m->work = img.steps;
     snprintf(m->engine, sizeof m->engine, "%s", img.dump.engine);
     snprintf(m->device, sizeof m->device, "%d CPU threads", img.threads);
-    snprintf(m->how, sizeof m->how, "CPU reference (Dormand-Prince 5(4), rtol %.0e), %.3f s, %ld steps, %ld rejected",
-             o->ref.rtol, img.seconds, img.steps, img.rejected);
+    char samples[48] = "";
+    if (s->render.samples > 1)
+        snprintf(samples, sizeof samples, ", %d samples a pixel", s->render.samples);
+    snprintf(m->how, sizeof m->how, "CPU reference (Dormand-Prince 5(4), rtol %.0e), %.3f s%s, %ld steps, %ld rejected",
+             o->ref.rtol, img.seconds, samples, img.steps, img.rejected);
     return 0;
 }
 

@@ -94,6 +94,16 @@ enum option_status options_common(struct common_options *o, const char *cmd, int
                     cmd, SCENE_MAX_SIZE, SCENE_MAX_PIXELS, v);
             return OPTION_ERROR;
         }
+    } else if (strcmp(opt, "--samples") == 0) {
+        long n;
+        if (!(v = value_of(cmd, argc, argv, i)))
+            return OPTION_ERROR;
+        if (option_parse_int(v, 1, SCENE_MAX_SAMPLES, &n) != 0) {
+            fprintf(stderr, "bentray %s: --samples: expected rays per pixel from 1 to %d, got '%s'\n", cmd,
+                    SCENE_MAX_SAMPLES, v);
+            return OPTION_ERROR;
+        }
+        o->samples = (int)n;
     } else if (strcmp(opt, "--precision") == 0) {
         if (!(v = value_of(cmd, argc, argv, i)))
             return OPTION_ERROR;
@@ -217,6 +227,8 @@ int options_load_scene(const struct common_options *o, const char *cmd, struct s
         s->render.width = o->width;
         s->render.height = o->height;
     }
+    if (o->samples)
+        s->render.samples = o->samples;
     if (o->precision)
         s->render.precision = strcmp(o->precision, "fp32") == 0   ? PRECISION_FP32
                               : strcmp(o->precision, "fp16") == 0 ? PRECISION_FP16

@@ -18,6 +18,7 @@ struct common_options {
     const char *backend;          /* egl|osmesa|auto */
     const char *shader_dir;
     int width, height;            /* 0: from the scene */
+    int samples;                  /* rays per pixel; 0: from the scene (render.samples) */
     const char *precision;        /* NULL: from the scene */
     int no_mrt;
     const char *engine;           /* gpu|cpu; NULL: gpu */

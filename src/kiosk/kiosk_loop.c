@@ -452,6 +452,10 @@ static int preflight(struct kiosk *k, char *err, size_t errlen)
             snprintf(err, errlen, "%s: %s", serr.where, serr.message);
             return -1;
         }
+        if (k->scenes[i].render.samples > 1 && k->log)
+            fprintf(k->log, "%s: render.samples = %d is for bentray render's images; the kiosk traces one ray a "
+                            "pixel, its refined frame at the screen's own resolution\n", c->kiosk.scenes[i],
+                    k->scenes[i].render.samples);
         /* every scene must take the knobs' start values: reset and a scene change fall back to them */
         static struct scene trial;
         struct kiosk_state start;

@@ -2,6 +2,9 @@
 #include "ref/dump_scene.h"
 #include "ref/shade_cpu.h"
 #include "ref/straight.h"
+#include "io/sample_average.h"
+#include "scene/pixel_samples.h"
+#include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdio.h>
@@ -18,6 +21,7 @@ struct job {
     const struct scene *scene;
     const struct cpu_render_options *opt;
     const struct cpu_materials *materials;
+    const struct pixel_samples *pattern;
     struct cpu_image *out;
     atomic_int next_row;
     atomic_int rows_done;
@@ -46,21 +50,49 @@ void ref_ray_to_record(const struct ref_ray *ray, const unsigned char rgba[4], s
     memcpy(rec->rgba, rgba, 4);
 }
 
+/* The colour of the ray started (dx, dy) pixels off the centre of pixel (i, j); the traced ray in *ray. */
+static void trace_at(struct job *job, int i, int j, double dx, double dy, struct ref_ray *ray, unsigned char rgba[4])
+{
+    const struct scene *s = job->scene;
+    vec3d x0 = s->camera.position;
+    vec3d v0 = model_initial_velocity(&s->model, x0, camera_ray_at(s, i, j, dx, dy));
+    ref_trace(s, &job->opt->ref, x0, v0, ray, 0.0, NULL, NULL);
+    cpu_shade(job->materials, ray, camera_view_direction_at(s, i, j, dx, dy), rgba);
+}
+
 static void render_row(struct job *job, int j)
 {
     const struct scene *s = job->scene;
+    const struct pixel_samples *pattern = job->pattern;
     struct cpu_image *img = job->out;
     long steps = 0, rejected = 0;
     for (int i = 0; i < s->render.width; i++) {
         size_t k = (size_t)j * s->render.width + i;
-        vec3d x0 = s->camera.position;
-        vec3d v0 = model_initial_velocity(&s->model, x0, camera_ray(s, i, j));
+        unsigned char *rgba = img->rgba + 4 * k;
         struct ref_ray ray;
-        ref_trace(s, &job->opt->ref, x0, v0, &ray, 0.0, NULL, NULL);
-        cpu_shade(job->materials, &ray, camera_view_direction(s, i, j), img->rgba + 4 * k);
-        ref_ray_to_record(&ray, img->rgba + 4 * k, &img->dump.records[k]);
+        /* the pixel's centre: the ray of the dump record, and sample 0 where the pattern holds it */
+        trace_at(job, i, j, 0.0, 0.0, &ray, rgba);
+        ref_ray_to_record(&ray, rgba, &img->dump.records[k]);
         steps += ray.steps;
         rejected += ray.rejected;
+        if (pattern->n > 1) {
+            /* every sample, averaged in linear light as the GPU's frames are (io/sample_average.h) */
+            double sum[3] = {0.0, 0.0, 0.0};
+            int first = pattern->centre_included;
+            for (int c = 0; c < 3 && first; c++)
+                sum[c] = srgb_to_linear(rgba[c] / 255.0);
+            for (int n = first; n < pattern->n; n++) {
+                unsigned char other[4];
+                trace_at(job, i, j, pattern->dx[n], pattern->dy[n], &ray, other);
+                for (int c = 0; c < 3; c++)
+                    sum[c] += srgb_to_linear(other[c] / 255.0);
+                steps += ray.steps;
+                rejected += ray.rejected;
+            }
+            for (int c = 0; c < 3; c++)
+                rgba[c] = (unsigned char)lrint(255.0 * linear_to_srgb(sum[c] / pattern->n));
+            memcpy(img->dump.records[k].rgba, rgba, 4);
+        }
     }
     atomic_fetch_add(&job->steps, steps);
     atomic_fetch_add(&job->rejected, rejected);
@@ -132,7 +164,9 @@ int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct
     dump_describe_scene(&out->dump, s);
     snprintf(out->dump.engine, sizeof out->dump.engine, "cpu dopri5 rtol %.0e", o->ref.rtol);
 
-    struct job job = {.scene = s, .opt = o, .materials = &materials, .out = out};
+    struct pixel_samples pattern;
+    pixel_samples_make(s->render.samples, &pattern);
+    struct job job = {.scene = s, .opt = o, .materials = &materials, .pattern = &pattern, .out = out};
     atomic_init(&job.next_row, 0);
     atomic_init(&job.rows_done, 0);
     atomic_init(&job.steps, 0);

@@ -1,9 +1,63 @@
 #include "render/frame.h"
+#include "io/sample_average.h"
 #include "ref/dump_scene.h"
+#include "scene/pixel_samples.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* One run of the whole image with its rays started (dx, dy) pixels off their pixels' centres. */
+static int run_once(struct renderer *r, const struct scene *s, double dx, double dy, struct render_result *out,
+                    int with_state, char *err, size_t errlen)
+{
+    memset(out, 0, sizeof *out);
+    renderer_set_subpixel(r, dx, dy);
+    int rc = renderer_run(r, 0, 0, s->render.width, s->render.height, NULL, NULL, err, errlen) == 0 &&
+                     renderer_read(r, out, with_state, err, errlen) == 0
+                 ? 0 : -1;
+    renderer_set_subpixel(r, 0.0, 0.0);
+    return rc;
+}
+
+int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, int with_state,
+                      char *err, size_t errlen)
+{
+    struct pixel_samples pattern;
+    pixel_samples_make(s->render.samples, &pattern);
+    if (pattern.n == 1)
+        return run_once(r, s, 0.0, 0.0, out, with_state, err, errlen);
+    struct sample_average sum;
+    if (sample_average_init(&sum, (size_t)s->render.width * s->render.height) != 0) {
+        snprintf(err, errlen, "out of memory for the samples of a %dx%d image", s->render.width, s->render.height);
+        return -1;
+    }
+    int first = 0, rc = 0;
+    if (with_state && !pattern.centre_included)
+        rc = run_once(r, s, 0.0, 0.0, out, 1, err, errlen);
+    else {
+        rc = run_once(r, s, pattern.dx[0], pattern.dy[0], out, with_state, err, errlen);
+        if (rc == 0)
+            sample_average_add(&sum, out->rgba);
+        first = 1;
+    }
+    for (int k = first; k < pattern.n && rc == 0; k++) {
+        struct render_result sample;
+        rc = run_once(r, s, pattern.dx[k], pattern.dy[k], &sample, 0, err, errlen);
+        if (rc == 0) {
+            sample_average_add(&sum, sample.rgba);
+            out->seconds += sample.seconds;
+            out->passes += sample.passes;
+        }
+        render_result_free(&sample);
+    }
+    if (rc == 0)
+        sample_average_write(&sum, out->rgba);
+    else
+        render_result_free(out);
+    sample_average_free(&sum);
+    return rc;
+}
 
 int render_frame(const struct scene *s, const char *backend, struct render_result *out, int with_state,
                  struct frame_info *info, char *err, size_t errlen, int *bad_input)
@@ -21,9 +75,7 @@ int render_frame(const struct scene *s, const char *backend, struct render_resul
             snprintf(info->path_description, sizeof info->path_description, "%s", renderer_path(r)->description);
             snprintf(info->renderer, sizeof info->renderer, "%s", renderer_caps(r)->renderer);
         }
-        if (renderer_run(r, 0, 0, s->render.width, s->render.height, NULL, NULL, err, errlen) == 0 &&
-            renderer_read(r, out, with_state, err, errlen) == 0)
-            rc = 0;
+        rc = frame_run_samples(r, s, out, with_state, err, errlen);
         if (info) {
             snprintf(info->pipeline, sizeof info->pipeline, "%s", renderer_pipeline(r));
             snprintf(info->pipeline_why, sizeof info->pipeline_why, "%s", renderer_pipeline_why(r));

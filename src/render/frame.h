@@ -16,6 +16,12 @@ struct frame_info {
 /* Returns 0, or -1 with err; *bad_input tells a user error (exit 2) from a runtime failure (1). */
 int render_frame(const struct scene *s, const char *backend, struct render_result *out, int with_state,
                  struct frame_info *info, char *err, size_t errlen, int *bad_input);
+/* The whole image of s on renderer r with every sample of every pixel (render.samples,
+ * scene/pixel_samples.h), each a whole frame, averaged in linear light into out->rgba; seconds and
+ * passes summed over them. The ray state, when asked for, is the pixels' centres': sample 0 where
+ * the pattern holds the centre, else one more run that only the state comes from. 0, or -1 with err. */
+int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, int with_state,
+                      char *err, size_t errlen);
 /* Per-pixel records (and colours) from a result read with its state. */
 int result_to_dump(const struct render_result *res, const struct scene *s, const char *engine, struct dump *d);
 

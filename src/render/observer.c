@@ -32,7 +32,11 @@ void observer_set_uniforms(const struct program_uniforms *p, const struct render
     uniform_vec3(p, "u_camera_forward", forward);
     uniform_vec3(p, "u_camera_right", v3_scale(right, tan_half * aspect));
     uniform_vec3(p, "u_camera_up", v3_scale(up, tan_half));
-    glUniform2f(program_uniform(p, "u_pixel_origin"), (float)r->origin_x, (float)r->origin_y);
+    /* the sample's offset is a multiple of 1/1024 (scene/pixel_samples.h): exact in the sum */
+    glUniform2f(program_uniform(p, "u_pixel_origin"), (float)(r->origin_x + r->subpixel_x),
+                (float)(r->origin_y + r->subpixel_y));
+    glUniform2f(program_uniform(p, "u_subpixel_ndc"), (float)(2.0 * r->subpixel_x / s->render.width),
+                (float)(2.0 * r->subpixel_y / s->render.height));
     glUniform2f(program_uniform(p, "u_image_size"), (float)s->render.width, (float)s->render.height);
     uniform_float(p, "u_observer_time", s->observer.time);
     if (observer_moving(s)) {

@@ -125,6 +125,12 @@ const struct gl_caps *renderer_caps(const struct renderer *r) { return &r->caps;
 const char *renderer_pipeline(const struct renderer *r) { return r->pipeline_name ? r->pipeline_name : "multipass"; }
 const char *renderer_pipeline_why(const struct renderer *r) { return r->pipeline_why; }
 
+void renderer_set_subpixel(struct renderer *r, double dx, double dy)
+{
+    r->subpixel_x = dx;
+    r->subpixel_y = dy;
+}
+
 int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int height, segment_hook hook,
                  void *hook_arg, char *err, size_t errlen)
 {

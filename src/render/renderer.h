@@ -36,6 +36,9 @@ const struct gl_caps *renderer_caps(const struct renderer *r);
  * rows bottom-up) is (origin_x, origin_y); a full frame is (0, 0, scene width, scene height). */
 int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int height, segment_hook hook,
                  void *hook_arg, char *err, size_t errlen);
+/* Where in its pixel every ray of the following runs starts: (dx, dy) pixels from the centre, GL
+ * order (dy up), each in [-0.5, 0.5) (scene/pixel_samples.h); (0, 0) until set. */
+void renderer_set_subpixel(struct renderer *r, double dx, double dy);
 /* Read the final image, and the ray state when with_state. */
 int renderer_read(struct renderer *r, struct render_result *out, int with_state, char *err, size_t errlen);
 /* Position of the ray of texel (x, y) (GL order) right now: for per-segment hooks. */

@@ -28,6 +28,7 @@ struct renderer {
     GLuint mesh_buffers[SCENE_MAX_OBJECTS][2];   /* render.moving_objects = polygons: vertices, indices */
     int mesh_indices[SCENE_MAX_OBJECTS];
     int origin_x, origin_y;       /* image pixel of ray-state texel (0, 0) */
+    double subpixel_x, subpixel_y;   /* where in its pixel each ray starts, from the centre (pixels) */
     char model_defines[256];      /* model, method, steps per pass */
     char model_file[64];          /* model_NAME.glsl; model_flat.glsl for straight rays */
     int straight;                 /* rays are straight: one segment, not integrated */

@@ -23,6 +23,7 @@
 #define SCENE_MAX_STEPS_PER_PASS 64 /* integration steps unrolled in one shader */
 #define SCENE_MAX_BATCH 16          /* objects intersected in one pass */
 #define SCENE_MAX_SUBDIVISION 128
+#define SCENE_MAX_SAMPLES 256       /* render.samples: rays per pixel, each a whole frame on the GPU */
 #define SCENE_MAX_CHORDS 10000     /* render.max_chords: loop iterations of the single pass */
 #define SCENE_MAX_ORBIT_ROWS 4096   /* orbit table rows per side: 2 x 4096 rows of a float texture */
 #define SCENE_MAX_ORBIT_COLUMNS 4095 /* samples along each tabulated orbit (one more texel: its end) */   /* a sphere's mesh then has 129 x 257 vertices: 16-bit indices */
@@ -156,6 +157,9 @@ struct render_settings {
      * SCENE_PATH_BOUND_DIAMETERS diameters of the bounding sphere (render_path_budget) */
     double max_path;
     vec3d unfinished_color;  /* what a ray still travelling at the end of its budget shows */
+    /* rays per pixel, averaged in linear light (scene/pixel_samples.h: where they start); the
+     * dump and trace follow the first, the pixel's centre */
+    int samples;
 };
 
 /* The six faces of a cube map sky, in GL's order (+x, -x, +y, -y, +z, -z), and the file of face f

@@ -35,6 +35,7 @@ static void render_defaults(struct render_settings *r)
     r->orbit_rows = 512;
     r->orbit_columns = 128;
     r->pipeline = PIPELINE_AUTO;
+    r->samples = 1;
 }
 
 double render_step_min(const struct render_settings *r)

@@ -28,6 +28,13 @@ done
 check "render egl" 0 "hit an object" -- $BT render --scene $S --size 32x24 --backend egl --out "$TMP/a.png"
 check "no overwrite" 2 "--out: refusing to replace" -- $BT render --scene $S --size 32x24 --out "$TMP/a.png"
 check "render osmesa" 0 "on osmesa" -- $BT render --scene $S --size 32x24 --backend osmesa --out "$TMP/b.png"
+check "samples egl" 0 "4 samples a pixel" -- $BT render --scene $S --size 32x24 --backend egl --samples 4 --out "$TMP/aa_egl.png"
+check "samples osmesa" 0 "5 samples a pixel" -- $BT render --scene $S --size 32x24 --backend osmesa --samples=5 --out "$TMP/aa_osmesa.png"
+check "samples cpu" 0 "CPU reference .* 2 samples a pixel" -- $BT render --scene $S --size 32x24 --engine cpu --samples 2 --out "$TMP/aa_cpu.png"
+check "samples zero" 2 "^bentray render: --samples: expected rays per pixel from 1 to 256, got '0'" -- $BT render --scene $S --samples 0
+check "samples not a number" 2 "^bentray error: --samples: expected rays per pixel" -- $BT error --scene $S --samples four
+check "samples key range" 2 "key 'samples' in \\[render\\]: expected an integer from 1 to 256" -- $BT render --scene $S --set render.samples=257
+check "trace refuses samples" 2 "trace: --samples: trace follows one ray" -- $BT trace --scene $S --pixel 1 1 --samples 4
 # a ray that hit an object in segment 14 of 60: its polyline ends there, the end not repeated
 check "trace polyline ends where the ray ends" 0 "^15 points, 0 repeated$" -- sh -c "$BT trace --scene assets/scenes/lorenz.scene --size 32x24 --pixel 16 16 > $TMP/t.json && echo \"\$(grep -c '^    \[' $TMP/t.json) points, \$(grep '^    \[' $TMP/t.json | uniq -d | wc -l) repeated\""
 check "trace doppler ahead" 0 "\"doppler\": 1\.99" -- $BT trace --scene assets/scenes/starflight.scene --size 32x24 --pixel 16 12

@@ -1,0 +1,118 @@
+/* Anti-aliasing (render.samples): the cost of N rays a pixel against the error left, for a scene
+ * with edges, lensed textures and a shadow (demo.scene), against 64 rays a pixel. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "bench/bench.h"
+#include "io/sample_average.h"
+#include "render/frame.h"
+#include "render/renderer.h"
+
+#define AA_REFERENCE_SAMPLES 64
+
+static const int aa_counts[] = {1, 2, 4, 9, 16};
+#define AA_COUNTS (int)(sizeof aa_counts / sizeof aa_counts[0])
+
+/* Root mean square difference in linear light over the colour channels. */
+static double rms_linear(const unsigned char *a, const unsigned char *b, size_t pixels)
+{
+    double sum = 0.0;
+    for (size_t i = 0; i < pixels; i++)
+        for (int c = 0; c < 3; c++) {
+            double d = srgb_to_linear(a[4 * i + c] / 255.0) - srgb_to_linear(b[4 * i + c] / 255.0);
+            sum += d * d;
+        }
+    return sqrt(sum / (3.0 * (double)pixels));
+}
+
+static int by_value(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The image of s with its samples, runs times after a warm-up: the median seconds and the last image. */
+static int time_samples(struct bench *b, const struct scene *s, int runs, double *median, unsigned char **rgba,
+                        char *err, size_t errlen)
+{
+    int bad;
+    struct renderer *r = renderer_create(b->ctx, s, err, errlen, &bad);
+    if (!r)
+        return -1;
+    double times[64];
+    runs = runs < 1 ? 1 : runs < 64 ? runs : 64;
+    int rc = 0;
+    *rgba = NULL;
+    for (int k = 0; k <= runs && rc == 0; k++) {
+        struct render_result res;
+        rc = frame_run_samples(r, s, &res, 0, err, errlen);
+        if (rc != 0)
+            break;
+        if (k > 0)
+            times[k - 1] = res.seconds;
+        free(*rgba);
+        *rgba = res.rgba;
+        res.rgba = NULL;
+        render_result_free(&res);
+    }
+    renderer_destroy(r);
+    if (rc != 0) {
+        free(*rgba);
+        *rgba = NULL;
+        return -1;
+    }
+    qsort(times, (size_t)runs, sizeof times[0], by_value);
+    *median = times[runs / 2];
+    return 0;
+}
+
+int bench_antialias(struct bench *b, char *err, size_t errlen)
+{
+    static struct scene s;
+    if (bench_load_scene(&s, "demo", b->quick ? 32 : 0, b->quick ? 24 : 0, err, errlen) != 0)
+        return -1;
+    FILE *csv = bench_data_file(b, "antialias.csv", err, errlen);
+    if (!csv)
+        return -1;
+    size_t pixels = (size_t)s.render.width * s.render.height;
+    fprintf(csv, "samples,seconds,rms_linear\n");
+    s.render.samples = b->quick ? 4 : AA_REFERENCE_SAMPLES;
+    bench_progress(b, "antialias: demo at %d samples a pixel (the reference)", s.render.samples);
+    double t_ref;
+    unsigned char *reference;
+    if (time_samples(b, &s, 1, &t_ref, &reference, err, errlen) != 0) {
+        fclose(csv);
+        return -1;
+    }
+    b->done++;
+    fprintf(b->md, "## Anti-aliasing\n\n`render.samples = N` (docs/SCENES.md): demo.scene at %dx%d, N rays a pixel on "
+                   "the shared pattern, each a whole frame, averaged in linear light. Error: the root mean square "
+                   "difference from the image at %d samples a pixel, in linear light (0 to 1) over the colour "
+                   "channels; median seconds per image of %d runs.\n\n| samples | seconds | ratio to 1 | rms error "
+                   "| error ratio to 1 |\n|---|---|---|---|---|\n", s.render.width, s.render.height,
+            s.render.samples, b->runs);
+    double t1 = 0.0, e1 = 0.0;
+    int rc = 0;
+    for (int k = 0; k < (b->quick ? 2 : AA_COUNTS) && rc == 0; k++) {
+        s.render.samples = aa_counts[k];
+        bench_progress(b, "antialias: demo at %d samples a pixel", aa_counts[k]);
+        double t;
+        unsigned char *image;
+        rc = time_samples(b, &s, b->runs, &t, &image, err, errlen);
+        if (rc != 0)
+            break;
+        b->done++;
+        double e = rms_linear(image, reference, pixels);
+        free(image);
+        if (k == 0) {
+            t1 = t;
+            e1 = e;
+        }
+        fprintf(b->md, "| %d | %.3f | %.2f | %.5f | %.2f |\n", aa_counts[k], t, t / t1, e, e1 > 0.0 ? e / e1 : 0.0);
+        fprintf(csv, "%d,%.5f,%.6f\n", aa_counts[k], t, e);
+    }
+    fprintf(b->md, "\n");
+    free(reference);
+    fclose(csv);
+    return rc;
+}
