@@ -15,6 +15,7 @@ uniform vec3 u_observer_rest;       // the observation event in the rest frame (
 uniform float u_observer_rest_time;
 uniform float u_far;                // distances map to depth 0..1 up to here
 uniform vec2 u_subpixel_ndc;        // where in its pixel the ray of this sample starts (render.samples)
+uniform vec4 u_band_ndc;            // the part of the image drawn (a band of rows): scale xy, centre zw
 #ifdef OBSERVER_MOVING
 uniform vec3 u_observer_beta;
 uniform float u_observer_gamma;
@@ -49,5 +50,7 @@ void main()
     // a sample off the pixel's centre sees what lies that far off: the image moves the other way
     vec2 ndc_w = vec2(dot(d, u_camera_right) / dot(u_camera_right, u_camera_right),
                       dot(d, u_camera_up) / dot(u_camera_up, u_camera_up)) - u_subpixel_ndc * w;
-    gl_Position = vec4(ndc_w, (2.0 * distance / u_far - 1.0) * w, w);
+    // a band of the image fills the viewport: its centre to the origin, its size to 2
+    vec2 band_w = (ndc_w - u_band_ndc.zw * w) * u_band_ndc.xy;
+    gl_Position = vec4(band_w, (2.0 * distance / u_far - 1.0) * w, w);
 }

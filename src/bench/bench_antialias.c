@@ -45,7 +45,7 @@ static int time_samples(struct bench *b, const struct scene *s, int runs, double
     *rgba = NULL;
     for (int k = 0; k <= runs && rc == 0; k++) {
         struct render_result res;
-        rc = frame_run_samples(r, s, &res, 0, err, errlen);
+        rc = frame_run_samples(r, s, &res, 0, PROGRESS_NONE, err, errlen);
         if (rc != 0)
             break;
         if (k > 0)

@@ -29,7 +29,8 @@ static void usage(FILE *out)
             "  --no-mrt             write x and v in separate passes even where MRT works\n"
             "  --set SECTION.KEY=V  override any scene key, e.g. --set model.mass=1.5\n"
             "  --shader-dir DIR     load shaders from DIR instead of the built-in copies\n"
-            "  --quiet              print only the output path\n"
+            "  --quiet              print only the output path (no summary, no progress; warnings stay)\n"
+            "  --progress           report progress from the start (default: once a render has run 1 s)\n"
             "  --engine E           gpu (default) or cpu: the double-precision reference (docs/ERRORS.md)\n"
             "  --rtol R             cpu engine: relative tolerance per step (default 1e-10)\n"
             "  --threads N          cpu engine: worker threads (default 0: one per core)\n"
@@ -128,17 +129,20 @@ static void warn_meaningless(const struct measured *m, const struct scene *s)
                 r->step_size, r->steps_per_segment, 2.0 * r->bound_radius);
 }
 
-/* Either engine; returns an exit code, m filled on EXIT_OK. */
-static int render_with(const struct common_options *o, const struct scene *s, struct measured *m)
+/* Either engine, with progress on stderr for a long render unless quiet; returns an exit code, m
+ * filled on EXIT_OK. */
+static int render_with(const struct common_options *o, const struct scene *s, int need_state,
+                       enum progress_mode progress, struct measured *m)
 {
     char err[2048];
     int bad_input = 0;
     if (options_engine_cpu(o)) {
         struct cpu_render_options opt;
         options_cpu(o, s, &opt);
+        opt.progress = progress;
         if (measure_cpu(s, &opt, m, err, sizeof err) == 0)
             return EXIT_OK;
-    } else if (measure_gpu(s, o->backend, m, err, sizeof err, &bad_input) == 0) {
+    } else if (measure_gpu(s, o->backend, need_state, progress, m, err, sizeof err, &bad_input) == 0) {
         return EXIT_OK;
     }
     fprintf(stderr, "bentray render: %s\n", err);
@@ -173,7 +177,7 @@ int cmd_render(int argc, char **argv)
 {
     struct common_options o = {.backend = "auto"};
     const char *out_path = NULL, *dump_path = NULL;
-    int force = 0, quiet = 0;
+    int force = 0, quiet = 0, progress = 0;
     for (int i = 1; i < argc; i++) {
         enum option_status c = options_common(&o, "render", argc, argv, &i, usage);
         if (c == OPTION_CONSUMED)
@@ -188,11 +192,17 @@ int cmd_render(int argc, char **argv)
             force = 1;
         } else if (strcmp(argv[i], "--quiet") == 0) {
             quiet = 1;
+        } else if (strcmp(argv[i], "--progress") == 0) {
+            progress = 1;
         } else {
             fprintf(stderr, "bentray render: unknown option or missing value: '%s'\n", argv[i]);
             usage(stderr);
             return EXIT_USAGE;
         }
+    }
+    if (quiet && progress) {
+        fprintf(stderr, "bentray render: --progress and --quiet contradict each other: give one\n");
+        return EXIT_USAGE;
     }
     /* bentray writes PNG files: a name that promises anything else would be a lie on the disk */
     if (out_path && strcmp(out_path, "-") == 0) {
@@ -230,7 +240,7 @@ int cmd_render(int argc, char **argv)
     }
     struct measured r = {0};
     char err[2048];
-    rc = render_with(&o, &s, &r);
+    rc = render_with(&o, &s, dump_path != NULL, quiet ? PROGRESS_NONE : progress ? PROGRESS_ALWAYS : PROGRESS_AUTO, &r);
     if (rc == EXIT_OK &&
         png_write_rgba8(out_path, r.dump.width, r.dump.height, r.rgba, force, err, sizeof err) != 0) {
         fprintf(stderr, "bentray render: --out: %s\n", err);

@@ -11,18 +11,18 @@ static long count_nonfinite(const struct render_result *res)
     size_t n = (size_t)res->width * res->height;
     const float *arrays[4] = {res->position, res->velocity, res->hit, res->image};
     for (int a = 0; a < 4; a++)
-        for (size_t k = 0; k < 4 * n; k++)
+        for (size_t k = 0; arrays[a] && k < 4 * n; k++)
             nonfinite += !isfinite(arrays[a][k]);
     return nonfinite;
 }
 
-int measure_gpu(const struct scene *s, const char *backend, struct measured *m, char *err, size_t errlen,
-                int *bad_input)
+int measure_gpu(const struct scene *s, const char *backend, int need_state, enum progress_mode progress, struct measured *m, char *err,
+                size_t errlen, int *bad_input)
 {
     memset(m, 0, sizeof *m);
     struct render_result res;
     struct frame_info info;
-    if (render_frame(s, backend, &res, 1, &info, err, errlen, bad_input) != 0)
+    if (render_frame(s, backend, &res, need_state ? RENDER_READ_STATE : RENDER_READ_OUTCOMES, progress, &info, err, errlen, bad_input) != 0)
         return -1;
     snprintf(m->engine, sizeof m->engine, "gpu %s", info.path_name);
     snprintf(m->device, sizeof m->device, "%.120s on %s", info.renderer, info.backend);

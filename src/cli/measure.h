@@ -2,6 +2,7 @@
  * the accuracy report compare. */
 #ifndef BT_MEASURE_H
 #define BT_MEASURE_H
+#include "io/progress.h"
 #include "ref/engine_cpu.h"
 #include "scene/scene.h"
 
@@ -17,8 +18,11 @@ struct measured {
 };
 
 /* 0, or -1 with err; *bad_input tells a user error (exit 2) from a runtime failure (1). */
-int measure_gpu(const struct scene *s, const char *backend, struct measured *m, char *err, size_t errlen,
-                int *bad_input);
+/* need_state: the dump's every field; else its outcomes and colours only (what a summary counts:
+ * a single-pass frame then runs once, not twice). progress: whether a long render reports its
+ * rows and samples on stderr (io/progress.h). */
+int measure_gpu(const struct scene *s, const char *backend, int need_state, enum progress_mode progress, struct measured *m, char *err,
+                size_t errlen, int *bad_input);
 int measure_cpu(const struct scene *s, const struct cpu_render_options *o, struct measured *m, char *err,
                 size_t errlen);
 void measured_free(struct measured *m);

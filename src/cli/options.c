@@ -172,7 +172,7 @@ void options_cpu(const struct common_options *o, const struct scene *s, struct c
         out->ref.rtol = o->rtol;
     }
     out->threads = o->threads;
-    out->progress = 1;
+    out->progress = PROGRESS_AUTO;
 }
 
 /* Options that belong to one engine are refused with the other, never silently ignored. */

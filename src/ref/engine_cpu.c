@@ -13,9 +13,6 @@
 #include <time.h>
 #include <unistd.h>
 
-/* Progress is shown only for renders that last longer than this, then at this interval. */
-#define PROGRESS_AFTER_S 1.0
-#define PROGRESS_EVERY_S 1.0
 
 struct job {
     const struct scene *scene;
@@ -117,26 +114,21 @@ static int thread_count(const struct cpu_render_options *o, int rows)
     return n > rows ? rows : (int)n;
 }
 
-/* Wait for the workers, printing progress on stderr while a long render runs. */
-static void wait_with_progress(struct job *job, double start)
+/* Wait for the workers, showing their progress while a long render runs. */
+static void wait_with_progress(struct job *job)
 {
-    int rows = job->scene->render.height, shown = 0;
-    double next_report = start + PROGRESS_AFTER_S;
-    while (atomic_load(&job->rows_done) < rows) {
+    int rows = job->scene->render.height;
+    struct progress p;
+    progress_begin(&p, job->opt->progress);
+    for (int done = 0; done < rows;) {
         struct timespec pause = {0, 50 * 1000 * 1000};
         nanosleep(&pause, NULL);
-        double t = now_s();
-        if (job->opt->progress && t >= next_report) {
-            int done = atomic_load(&job->rows_done);
-            double eta = done > 0 ? (t - start) * (rows - done) / done : 0.0;
-            fprintf(stderr, "\rcpu reference: %d/%d rows (%.0f%%), %.1f s, about %.0f s left   ", done, rows,
-                    100.0 * done / rows, t - start, eta);
-            shown = 1;
-            next_report = t + PROGRESS_EVERY_S;
-        }
+        done = atomic_load(&job->rows_done);
+        char label[64];
+        snprintf(label, sizeof label, "cpu reference: %d/%d rows", done, rows);
+        progress_report(&p, label, (double)done / rows, done == rows);
     }
-    if (shown)
-        fprintf(stderr, "\n");
+    progress_end(&p);
 }
 
 int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct cpu_image *out, char *err,
@@ -179,7 +171,7 @@ int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct
     if (started == 0)
         worker(&job);               /* no thread could start: do the work here */
     else
-        wait_with_progress(&job, start);
+        wait_with_progress(&job);
     for (int i = 0; i < started; i++)
         pthread_join(threads[i], NULL);
     out->seconds = now_s() - start;

@@ -2,6 +2,7 @@
  * GPU shades it, on all cores (pthreads), with progress on stderr for long renders. */
 #ifndef BT_ENGINE_CPU_H
 #define BT_ENGINE_CPU_H
+#include "io/progress.h"
 #include "ref/dump.h"
 #include "ref/reference.h"
 
@@ -11,7 +12,7 @@
 struct cpu_render_options {
     struct ref_options ref;
     int threads;          /* 0: one per online core */
-    int progress;         /* print progress on stderr when the render takes more than a moment */
+    enum progress_mode progress;   /* rows done on stderr (io/progress.h) */
 };
 
 struct cpu_image {

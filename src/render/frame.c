@@ -1,4 +1,5 @@
 #include "render/frame.h"
+#include "render/frame_bands.h"
 #include "io/sample_average.h"
 #include "ref/dump_scene.h"
 #include "scene/pixel_samples.h"
@@ -7,43 +8,44 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* One run of the whole image with its rays started (dx, dy) pixels off their pixels' centres. */
-static int run_once(struct renderer *r, const struct scene *s, double dx, double dy, struct render_result *out,
-                    int with_state, char *err, size_t errlen)
-{
-    memset(out, 0, sizeof *out);
-    renderer_set_subpixel(r, dx, dy);
-    int rc = renderer_run(r, 0, 0, s->render.width, s->render.height, NULL, NULL, err, errlen) == 0 &&
-                     renderer_read(r, out, with_state, err, errlen) == 0
-                 ? 0 : -1;
-    renderer_set_subpixel(r, 0.0, 0.0);
-    return rc;
-}
-
 int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, int with_state,
-                      char *err, size_t errlen)
+                      enum progress_mode progress, char *err, size_t errlen)
 {
     struct pixel_samples pattern;
     pixel_samples_make(s->render.samples, &pattern);
-    if (pattern.n == 1)
-        return run_once(r, s, 0.0, 0.0, out, with_state, err, errlen);
+    /* the dump's rays are the pixels' centres; a summary's outcomes (RENDER_READ_OUTCOMES) may come
+     * from the first sample */
+    int extra_centre = pattern.n > 1 && with_state == RENDER_READ_STATE && !pattern.centre_included;
+    struct frame_progress p = {.runs = pattern.n + extra_centre, .samples = pattern.n};
+    progress_begin(&p.line, progress);
+    if (pattern.n == 1) {
+        int rc = frame_run_image(r, s, 0.0, 0.0, out, with_state, &p, err, errlen);
+        progress_end(&p.line);
+        return rc;
+    }
     struct sample_average sum;
     if (sample_average_init(&sum, (size_t)s->render.width * s->render.height) != 0) {
         snprintf(err, errlen, "out of memory for the samples of a %dx%d image", s->render.width, s->render.height);
         return -1;
     }
     int first = 0, rc = 0;
-    if (with_state && !pattern.centre_included)
-        rc = run_once(r, s, 0.0, 0.0, out, 1, err, errlen);
-    else {
-        rc = run_once(r, s, pattern.dx[0], pattern.dy[0], out, with_state, err, errlen);
+    if (extra_centre) {
+        /* the centres' state only, not a sample of the image */
+        p.sample = -1;
+        rc = frame_run_image(r, s, 0.0, 0.0, out, RENDER_READ_STATE, &p, err, errlen);
+        p.run++;
+    } else {
+        rc = frame_run_image(r, s, pattern.dx[0], pattern.dy[0], out, with_state, &p, err, errlen);
         if (rc == 0)
             sample_average_add(&sum, out->rgba);
         first = 1;
+        p.run++;
     }
     for (int k = first; k < pattern.n && rc == 0; k++) {
         struct render_result sample;
-        rc = run_once(r, s, pattern.dx[k], pattern.dy[k], &sample, 0, err, errlen);
+        p.sample = k;
+        rc = frame_run_image(r, s, pattern.dx[k], pattern.dy[k], &sample, 0, &p, err, errlen);
+        p.run++;
         if (rc == 0) {
             sample_average_add(&sum, sample.rgba);
             out->seconds += sample.seconds;
@@ -56,11 +58,12 @@ int frame_run_samples(struct renderer *r, const struct scene *s, struct render_r
     else
         render_result_free(out);
     sample_average_free(&sum);
+    progress_end(&p.line);
     return rc;
 }
 
 int render_frame(const struct scene *s, const char *backend, struct render_result *out, int with_state,
-                 struct frame_info *info, char *err, size_t errlen, int *bad_input)
+                 enum progress_mode progress, struct frame_info *info, char *err, size_t errlen, int *bad_input)
 {
     *bad_input = 0;
     struct gl_context *ctx = gl_context_create(backend, err, errlen);
@@ -75,7 +78,7 @@ int render_frame(const struct scene *s, const char *backend, struct render_resul
             snprintf(info->path_description, sizeof info->path_description, "%s", renderer_path(r)->description);
             snprintf(info->renderer, sizeof info->renderer, "%s", renderer_caps(r)->renderer);
         }
-        rc = frame_run_samples(r, s, out, with_state, err, errlen);
+        rc = frame_run_samples(r, s, out, with_state, progress, err, errlen);
         if (info) {
             snprintf(info->pipeline, sizeof info->pipeline, "%s", renderer_pipeline(r));
             snprintf(info->pipeline_why, sizeof info->pipeline_why, "%s", renderer_pipeline_why(r));
@@ -97,9 +100,13 @@ int result_to_dump(const struct render_result *res, const struct scene *s, const
     d->records = calloc(n, sizeof *d->records);
     if (!d->records)
         return -1;
+    /* read with RENDER_READ_OUTCOMES: outcome and colour, every other field 0 */
+    static const float none[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    int state = res->position && res->velocity && res->hit;
     for (size_t i = 0; i < n; i++) {
         struct dump_record *rec = &d->records[i];
-        const float *pos = res->position + 4 * i, *vel = res->velocity + 4 * i, *hit = res->hit + 4 * i;
+        const float *pos = state ? res->position + 4 * i : none, *vel = state ? res->velocity + 4 * i : none;
+        const float *hit = state ? res->hit + 4 * i : none;
         float code = res->image[4 * i + 3];
         rec->outcome = (int32_t)lrintf(code);
         if (pos[3] < 0.0f)

@@ -1,6 +1,7 @@
 /* One frame of a scene, start to finish: context, renderer, passes, read-back. */
 #ifndef BT_FRAME_H
 #define BT_FRAME_H
+#include "io/progress.h"
 #include "ref/dump.h"
 #include "render/renderer.h"
 
@@ -13,16 +14,19 @@ struct frame_info {
     char pipeline_why[200];   /* why that one (renderer_pipeline_why) */
 };
 
-/* Returns 0, or -1 with err; *bad_input tells a user error (exit 2) from a runtime failure (1). */
+/* Returns 0, or -1 with err; *bad_input tells a user error (exit 2) from a runtime failure (1).
+ * progress: whether a long render reports its rows and samples on stderr (io/progress.h; it then
+ * runs in bands of rows, render/frame_bands.h). */
 int render_frame(const struct scene *s, const char *backend, struct render_result *out, int with_state,
-                 struct frame_info *info, char *err, size_t errlen, int *bad_input);
+                 enum progress_mode progress, struct frame_info *info, char *err, size_t errlen, int *bad_input);
 /* The whole image of s on renderer r with every sample of every pixel (render.samples,
  * scene/pixel_samples.h), each a whole frame, averaged in linear light into out->rgba; seconds and
  * passes summed over them. The ray state, when asked for, is the pixels' centres': sample 0 where
  * the pattern holds the centre, else one more run that only the state comes from. 0, or -1 with err. */
 int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, int with_state,
-                      char *err, size_t errlen);
-/* Per-pixel records (and colours) from a result read with its state. */
+                      enum progress_mode progress, char *err, size_t errlen);
+/* Per-pixel records (and colours) from a result read with its state, or with its outcomes only
+ * (RENDER_READ_OUTCOMES: hit, position, direction, depth and steps are then 0). */
 int result_to_dump(const struct render_result *res, const struct scene *s, const char *engine, struct dump *d);
 
 #endif

@@ -37,6 +37,12 @@ void observer_set_uniforms(const struct program_uniforms *p, const struct render
                 (float)(r->origin_y + r->subpixel_y));
     glUniform2f(program_uniform(p, "u_subpixel_ndc"), (float)(2.0 * r->subpixel_x / s->render.width),
                 (float)(2.0 * r->subpixel_y / s->render.height));
+    /* a band of the image (rows or a tile) as the whole viewport: its centre and scale in the
+     * image's normalised device coordinates */
+    double band_w = r->have_state ? r->rs.width : s->render.width, band_h = r->have_state ? r->rs.height : s->render.height;
+    glUniform4f(program_uniform(p, "u_band_ndc"), (float)(s->render.width / band_w), (float)(s->render.height / band_h),
+                (float)((2.0 * r->origin_x + band_w) / s->render.width - 1.0),
+                (float)((2.0 * r->origin_y + band_h) / s->render.height - 1.0));
     glUniform2f(program_uniform(p, "u_image_size"), (float)s->render.width, (float)s->render.height);
     uniform_float(p, "u_observer_time", s->observer.time);
     if (observer_moving(s)) {

@@ -292,13 +292,14 @@ int renderer_read(struct renderer *r, struct render_result *out, int with_state,
     free(rows);
     if (gl_check("reading the image back", err, errlen) != 0)
         return -1;
-    if (!with_state)
+    if (with_state == RENDER_READ_IMAGE)
         return 0;
-    if (renderer_complete_state(r, err, errlen) != 0)
+    int first = with_state == RENDER_READ_OUTCOMES ? 3 : 0;   /* the image texture is written by every pipeline */
+    if (first == 0 && renderer_complete_state(r, err, errlen) != 0)
         return -1;
     float **dst[4] = {&out->position, &out->velocity, &out->hit, &out->image};
     GLuint src[4] = {rs->result_position, rs->result_velocity, rs->result_hit, rs->result_image};
-    for (int k = 0; k < 4; k++) {
+    for (int k = first; k < 4; k++) {
         *dst[k] = malloc(n * 4 * sizeof(float));
         if (!*dst[k]) {
             snprintf(err, errlen, "out of memory reading the ray state back");

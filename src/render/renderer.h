@@ -39,7 +39,11 @@ int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int 
 /* Where in its pixel every ray of the following runs starts: (dx, dy) pixels from the centre, GL
  * order (dy up), each in [-0.5, 0.5) (scene/pixel_samples.h); (0, 0) until set. */
 void renderer_set_subpixel(struct renderer *r, double dx, double dy);
-/* Read the final image, and the ray state when with_state. */
+/* What renderer_read reads besides the image: nothing, the whole ray state, or only the image
+ * texture with each ray's outcome code (what a summary needs; a single-pass frame then skips the
+ * pass that writes hit and position). */
+enum render_read { RENDER_READ_IMAGE = 0, RENDER_READ_STATE = 1, RENDER_READ_OUTCOMES = 2 };
+/* Read the final image, and what `with_state` (enum render_read) asks for. */
 int renderer_read(struct renderer *r, struct render_result *out, int with_state, char *err, size_t errlen);
 /* Position of the ray of texel (x, y) (GL order) right now: for per-segment hooks. */
 int renderer_read_position(struct renderer *r, int x, int y, float xyzw[4], char *err, size_t errlen);

@@ -35,6 +35,13 @@ check "samples zero" 2 "^bentray render: --samples: expected rays per pixel from
 check "samples not a number" 2 "^bentray error: --samples: expected rays per pixel" -- $BT error --scene $S --samples four
 check "samples key range" 2 "key 'samples' in \\[render\\]: expected an integer from 1 to 256" -- $BT render --scene $S --set render.samples=257
 check "trace refuses samples" 2 "trace: --samples: trace follows one ray" -- $BT trace --scene $S --pixel 1 1 --samples 4
+check "progress gpu" 0 "^gpu: 240/240 rows \\(100%\\), [0-9.]+ s, about 0 s left$" -- $BT render --scene $S --progress --out "$TMP/p1.png"
+check "progress samples" 0 "^gpu: sample 2/2, 24/24 rows \\(100%\\)" -- $BT render --scene $S --size 32x24 --samples 2 --progress --out "$TMP/p2.png"
+check "progress dump centres" 0 "^gpu: pixel centres, 24/24 rows \\(33%\\)" -- $BT render --scene $S --size 32x24 --samples 2 --progress --dump "$TMP/p3.dump" --out "$TMP/p3.png"
+check "progress cpu" 0 "^cpu reference: 24/24 rows \\(100%\\)" -- $BT render --scene $S --size 32x24 --engine cpu --progress --out "$TMP/p4.png"
+check "progress in a log has no carriage return" 0 "^0$" -- sh -c "$BT render --scene $S --progress --out $TMP/p5.png 2>&1 >/dev/null | tr -cd '\\r' | wc -c"
+check "progress and quiet" 2 "--progress and --quiet contradict" -- $BT render --scene $S --progress --quiet --out "$TMP/p6.png"
+check "quiet has no progress" 0 "^1$" -- sh -c "$BT render --scene $S --samples 3 --out $TMP/p7.png --quiet 2>&1 | wc -l"
 # a ray that hit an object in segment 14 of 60: its polyline ends there, the end not repeated
 check "trace polyline ends where the ray ends" 0 "^15 points, 0 repeated$" -- sh -c "$BT trace --scene assets/scenes/lorenz.scene --size 32x24 --pixel 16 16 > $TMP/t.json && echo \"\$(grep -c '^    \[' $TMP/t.json) points, \$(grep '^    \[' $TMP/t.json | uniq -d | wc -l) repeated\""
 check "trace doppler ahead" 0 "\"doppler\": 1\.99" -- $BT trace --scene assets/scenes/starflight.scene --size 32x24 --pixel 16 12

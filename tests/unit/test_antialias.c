@@ -87,7 +87,7 @@ static unsigned char *gpu_image(const struct scene *s)
     struct render_result res;
     char err[2048];
     int bad;
-    if (render_frame(s, "egl", &res, 0, NULL, err, sizeof err, &bad) != 0)
+    if (render_frame(s, "egl", &res, 0, PROGRESS_NONE, NULL, err, sizeof err, &bad) != 0)
         fail_msg("render: %s", err);
     unsigned char *rgba = res.rgba;
     res.rgba = NULL;
@@ -168,9 +168,9 @@ static void test_dump_follows_centre(void **state)
     struct render_result one, four;
     char err[2048];
     int bad;
-    assert_int_equal(render_frame(&s, "egl", &one, 1, NULL, err, sizeof err, &bad), 0);
+    assert_int_equal(render_frame(&s, "egl", &one, 1, PROGRESS_NONE, NULL, err, sizeof err, &bad), 0);
     s.render.samples = 4;
-    assert_int_equal(render_frame(&s, "egl", &four, 1, NULL, err, sizeof err, &bad), 0);
+    assert_int_equal(render_frame(&s, "egl", &four, 1, PROGRESS_NONE, NULL, err, sizeof err, &bad), 0);
     size_t n = (size_t)48 * 36 * 4;
     assert_memory_equal(one.position, four.position, n * sizeof(float));
     assert_memory_equal(one.velocity, four.velocity, n * sizeof(float));

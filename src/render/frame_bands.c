@@ -1,0 +1,103 @@
+#include "render/frame_bands.h"
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The whole frame's arrays, empty: the image, and the ray state when with_state. */
+static int frame_alloc(struct render_result *out, int w, int h, int with_state, char *err, size_t errlen)
+{
+    size_t n = (size_t)w * h;
+    memset(out, 0, sizeof *out);
+    out->width = w;
+    out->height = h;
+    out->rgba = malloc(4 * n);
+    int ok = out->rgba != NULL;
+    float **state[4] = {&out->position, &out->velocity, &out->hit, &out->image};
+    for (int k = with_state == RENDER_READ_OUTCOMES ? 3 : 0; k < 4 && with_state != RENDER_READ_IMAGE && ok; k++)
+        ok = (*state[k] = malloc(4 * n * sizeof(float))) != NULL;
+    if (!ok) {
+        render_result_free(out);
+        snprintf(err, errlen, "out of memory for a %dx%d frame", w, h);
+        return -1;
+    }
+    return 0;
+}
+
+/* Image rows [top, top + rows), top row first, in one run, copied into the whole frame. */
+static int run_rows(struct renderer *r, const struct scene *s, int top, int rows, struct render_result *full,
+                    int with_state, char *err, size_t errlen)
+{
+    int w = s->render.width, h = s->render.height;
+    struct render_result band;
+    memset(&band, 0, sizeof band);
+    if (renderer_run(r, 0, h - top - rows, w, rows, NULL, NULL, err, errlen) != 0 ||
+        renderer_read(r, &band, with_state, err, errlen) != 0) {
+        render_result_free(&band);
+        return -1;
+    }
+    size_t at = (size_t)top * w * 4, count = (size_t)rows * w * 4;
+    memcpy(full->rgba + at, band.rgba, count);
+    float *from[4] = {band.position, band.velocity, band.hit, band.image};
+    float *to[4] = {full->position, full->velocity, full->hit, full->image};
+    for (int k = 0; k < 4; k++)
+        if (to[k] && from[k])
+            memcpy(to[k] + at, from[k], count * sizeof(float));
+    full->seconds += band.seconds;
+    full->passes += band.passes;
+    render_result_free(&band);
+    return 0;
+}
+
+static void report(struct frame_progress *p, int rows_done, int rows)
+{
+    char label[96], sample[48] = "";
+    if (p->sample < 0)
+        snprintf(sample, sizeof sample, "pixel centres, ");
+    else if (p->samples > 1)
+        snprintf(sample, sizeof sample, "sample %d/%d, ", p->sample + 1, p->samples);
+    snprintf(label, sizeof label, "gpu: %s%d/%d rows", sample, rows_done, rows);
+    double done = (p->run + (double)rows_done / rows) / (p->runs > 0 ? p->runs : 1);
+    progress_report(&p->line, label, done, p->run + 1 == p->runs && rows_done == rows);
+}
+
+int frame_run_image(struct renderer *r, const struct scene *s, double dx, double dy, struct render_result *out,
+                    int with_state, struct frame_progress *p, char *err, size_t errlen)
+{
+    int w = s->render.width, h = s->render.height, rc = 0;
+    renderer_set_subpixel(r, dx, dy);
+    if (!p || p->line.mode == PROGRESS_NONE) {
+        memset(out, 0, sizeof *out);
+        rc = renderer_run(r, 0, 0, w, h, NULL, NULL, err, errlen) == 0 &&
+                     renderer_read(r, out, with_state, err, errlen) == 0
+                 ? 0 : -1;
+    } else if ((rc = frame_alloc(out, w, h, with_state, err, errlen)) == 0) {
+        /* a first band of a thirty-second of the image tells how long a row takes */
+        int rows = h / 32 > 0 ? h / 32 : 1;
+        for (int top = 0; top < h && rc == 0;) {
+            rows = rows < h - top ? rows : h - top;
+            double t0 = progress_now();
+            rc = run_rows(r, s, top, rows, out, with_state, err, errlen);
+            double per_row = (progress_now() - t0) / rows;
+            top += rows;
+            report(p, top, h);
+            double next = per_row > 0.0 ? FRAME_BAND_SECONDS / per_row : h;
+            rows = next < 1.0 ? 1 : next > h ? h : (int)next;
+        }
+        if (rc != 0)
+            render_result_free(out);
+    }
+    renderer_set_subpixel(r, 0.0, 0.0);
+    return rc;
+}
+
+int frame_run_bands(struct renderer *r, const struct scene *s, int band_rows, struct render_result *out,
+                    int with_state, char *err, size_t errlen)
+{
+    int h = s->render.height, rc = frame_alloc(out, s->render.width, h, with_state, err, errlen);
+    band_rows = band_rows < 1 ? 1 : band_rows;
+    for (int top = 0; top < h && rc == 0; top += band_rows)
+        rc = run_rows(r, s, top, band_rows < h - top ? band_rows : h - top, out, with_state, err, errlen);
+    if (rc != 0)
+        render_result_free(out);
+    return rc;
+}

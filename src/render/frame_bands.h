@@ -1,0 +1,28 @@
+/* A frame in bands of rows, for progress on long renders: each band is its own run of the renderer
+ * (renderer_run with an origin), its image and ray state copied into the whole frame's. Rays are
+ * independent, so the result is the whole frame's bit for bit (tests/unit/test_progress.c). */
+#ifndef BT_FRAME_BANDS_H
+#define BT_FRAME_BANDS_H
+#include "io/progress.h"
+#include "render/renderer.h"
+
+/* With progress, a band is sized to take about this long (from the rows before it). */
+#define FRAME_BAND_SECONDS 0.25
+
+struct frame_progress {
+    struct progress line;    /* mode PROGRESS_NONE: no bands, one run */
+    int run, runs;           /* the whole-image run going on (a sample, or the centre's state), 0-based */
+    int samples;             /* render.samples, for the label */
+    int sample;              /* the sample of this run, 0-based; -1: the centre's state */
+};
+
+/* The image of s (its render.width x height, rays started (dx, dy) pixels off their centres) into
+ * out, with the ray state when with_state: in one run without progress (p NULL or its mode
+ * PROGRESS_NONE), else in bands sized to FRAME_BAND_SECONDS, reporting each. 0, or -1 with err. */
+int frame_run_image(struct renderer *r, const struct scene *s, double dx, double dy, struct render_result *out,
+                    int with_state, struct frame_progress *p, char *err, size_t errlen);
+/* The same in bands of band_rows rows, top first (the last may be shorter), no progress. */
+int frame_run_bands(struct renderer *r, const struct scene *s, int band_rows, struct render_result *out,
+                    int with_state, char *err, size_t errlen);
+
+#endif
