@@ -36,7 +36,7 @@ SHADERS   := $(sort $(wildcard shaders_es/*.glsl))
 TEST_SRCS := $(sort $(wildcard tests/unit/test_*.c))
 TEST_BINS := $(TEST_SRCS:tests/unit/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps deps-bench demo test test-unit test-render test-sanitize test-valgrind golden assets accuracy bench clean
+.PHONY: all deps deps-bench deps-gallery gallery demo test test-unit test-render test-sanitize test-valgrind golden assets accuracy bench clean
 all: $(BIN)
 
 # The version: the commit this tree was built from (git describe), or "unknown" outside a checkout;
@@ -111,6 +111,17 @@ deps:
 	  $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $$missing || \
 	  { $$SUDO apt-get update -qq && $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $$missing; }; \
 	fi
+
+GALLERY_PACKAGES := ffmpeg
+
+deps-gallery:
+	@$(MAKE) --no-print-directory deps DEB_PACKAGES="$(GALLERY_PACKAGES)"
+
+# docs/GALLERY.md and docs/gallery/: every scene's image and one animation, by the project's own
+# commands (docs/gallery/make.sh).
+gallery: deps deps-gallery
+	@$(MAKE) --no-print-directory bentray
+	docs/gallery/make.sh
 
 demo: deps
 	@$(MAKE) --no-print-directory bentray

@@ -12,6 +12,7 @@ static void usage(FILE *out)
             "\n"
             "commands:\n"
             "  render   render a scene headless to a PNG (and optionally a per-pixel dump)\n"
+            "  animate  render a sequence of frames (keys moving, the camera orbiting) and a video\n"
             "  trace    print one ray's polyline and result as JSON\n"
             "  info     probe the GL back-ends: versions, float formats, MRT, render path\n"
             "  compare  error metrics of one per-pixel dump against a reference dump\n"
@@ -77,6 +78,8 @@ int main(int argc, char **argv)
         return cmd_info(argc - 1, argv + 1);
     if (strcmp(cmd, "render") == 0)
         return cmd_render(argc - 1, argv + 1);
+    if (strcmp(cmd, "animate") == 0)
+        return cmd_animate(argc - 1, argv + 1);
     if (strcmp(cmd, "trace") == 0)
         return cmd_trace(argc - 1, argv + 1);
     if (strcmp(cmd, "compare") == 0)

@@ -8,6 +8,7 @@ enum exit_code { EXIT_OK = 0, EXIT_RUNTIME = 1, EXIT_USAGE = 2, EXIT_QUALITY = 3
 int cmd_info(int argc, char **argv);
 int cmd_render(int argc, char **argv);
 int cmd_trace(int argc, char **argv);
+int cmd_animate(int argc, char **argv);
 int cmd_compare(int argc, char **argv);
 int cmd_error(int argc, char **argv);
 int cmd_bench(int argc, char **argv);

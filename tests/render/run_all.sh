@@ -42,6 +42,26 @@ check "progress cpu" 0 "^cpu reference: 24/24 rows \\(100%\\)" -- $BT render --s
 check "progress in a log has no carriage return" 0 "^0$" -- sh -c "$BT render --scene $S --progress --out $TMP/p5.png 2>&1 >/dev/null | tr -cd '\\r' | wc -c"
 check "progress and quiet" 2 "--progress and --quiet contradict" -- $BT render --scene $S --progress --quiet --out "$TMP/p6.png"
 check "quiet has no progress" 0 "^1$" -- sh -c "$BT render --scene $S --samples 3 --out $TMP/p7.png --quiet 2>&1 | wc -l"
+# animate: every frame is `bentray render` of the settings it prints, byte for byte
+check "animate frames equal their render commands" 0 "^3 of 3 identical$" -- sh -c "$BT animate --scene assets/scenes/schwarzschild.scene --frames 3 --size 40x30 --samples 2 --set-range model.mass=0:0.2 --set-range 'camera.fov=50:35' --orbit 90 --out $TMP/anim > $TMP/anim.txt && n=0 && while read -r line; do cmd=\${line#*: }; out=\${cmd##* --out }; eval \"$BT render \${cmd#bentray render } --force --quiet --out $TMP/again.png\" > /dev/null && cmp -s $TMP/again.png \"\$out\" && n=\$((n + 1)); done < $TMP/anim.txt && echo \"\$n of 3 identical\""
+check "animate cpu" 0 "^frame 2/2 .*--engine cpu" -- $BT animate --scene $S --engine cpu --frames 2 --size 16x12 --set-range camera.fov=40:60 --out "$TMP/anim_cpu"
+check "animate refuses old frames" 2 "refusing to replace" -- $BT animate --scene assets/scenes/schwarzschild.scene --frames 3 --size 40x30 --out "$TMP/anim"
+check "animate frames" 2 "^bentray animate: --frames: expected 1 to 10000, got '0'" -- $BT animate --scene $S --frames 0 --out "$TMP/a0"
+check "animate frames required" 2 "--frames N is required" -- $BT animate --scene $S --out "$TMP/a0"
+check "animate range syntax" 2 "--set-range: expected KEY=FROM:TO" -- $BT animate --scene $S --frames 2 --set-range camera.fov=40 --out "$TMP/a0"
+check "animate range key" 2 "--set-range camera.zoom=1:2: no such key" -- $BT animate --scene $S --frames 2 --set-range camera.zoom=1:2 --out "$TMP/a0"
+check "animate range choice" 2 "only a number, vector or colour key" -- $BT animate --scene $S --frames 2 --set-range render.method=rk4:euler --out "$TMP/a0"
+check "animate range components" 2 "FROM and TO must be the same number" -- $BT animate --scene $S --frames 2 --set-range "camera.position=0 0 5:1 1" --out "$TMP/a0"
+check "animate frame out of range" 2 "^bentray animate: frame 3: --set camera.fov=180: error: key 'fov'" -- $BT animate --scene $S --frames 3 --set-range camera.fov=60:180 --out "$TMP/a0"
+check "animate orbit" 2 "--orbit: expected degrees" -- $BT animate --scene $S --frames 2 --orbit left --out "$TMP/a0"
+check "animate out is a file" 2 "--out $TMP/p1.png: not a directory" -- $BT animate --scene $S --frames 2 --out "$TMP/p1.png"
+check "animate video extension" 2 "--video $TMP/v.avi: give the file the extension .webm, .mp4 or .gif" -- $BT animate --scene $S --frames 2 --out "$TMP/a0" --video "$TMP/v.avi"
+check "animate video without ffmpeg" 1 "ffmpeg is not installed \(Debian: apt-get install ffmpeg\)" -- env PATH=/nonexistent $BT animate --scene $S --frames 2 --out "$TMP/a0" --video "$TMP/v.gif"
+if command -v ffmpeg > /dev/null; then
+    check "animate video" 0 "^video: $TMP/v.gif \(4 frames at 12 per second\)" -- $BT animate --scene $S --frames 4 --size 32x24 --orbit 360 --fps 12 --out "$TMP/a4" --video "$TMP/v.gif"
+else
+    echo "skip animate video: ffmpeg is not installed"
+fi
 # a ray that hit an object in segment 14 of 60: its polyline ends there, the end not repeated
 check "trace polyline ends where the ray ends" 0 "^15 points, 0 repeated$" -- sh -c "$BT trace --scene assets/scenes/lorenz.scene --size 32x24 --pixel 16 16 > $TMP/t.json && echo \"\$(grep -c '^    \[' $TMP/t.json) points, \$(grep '^    \[' $TMP/t.json | uniq -d | wc -l) repeated\""
 check "trace doppler ahead" 0 "\"doppler\": 1\.99" -- $BT trace --scene assets/scenes/starflight.scene --size 32x24 --pixel 16 12
