@@ -18,6 +18,8 @@ int frame_run_samples(struct renderer *r, const struct scene *s, struct render_r
     int extra_centre = pattern.n > 1 && with_state == RENDER_READ_STATE && !pattern.centre_included;
     struct frame_progress p = {.runs = pattern.n + extra_centre, .samples = pattern.n};
     progress_begin(&p.line, progress);
+    long pixel_samples = (long)s->render.width * s->render.height * p.runs;
+    p.banded = progress == PROGRESS_ALWAYS || (progress == PROGRESS_AUTO && pixel_samples >= FRAME_BAND_MIN_PIXELS);
     if (pattern.n == 1) {
         int rc = frame_run_image(r, s, 0.0, 0.0, out, with_state, &p, err, errlen);
         progress_end(&p.line);

@@ -65,7 +65,7 @@ int frame_run_image(struct renderer *r, const struct scene *s, double dx, double
 {
     int w = s->render.width, h = s->render.height, rc = 0;
     renderer_set_subpixel(r, dx, dy);
-    if (!p || p->line.mode == PROGRESS_NONE) {
+    if (!p || !p->banded) {
         memset(out, 0, sizeof *out);
         rc = renderer_run(r, 0, 0, w, h, NULL, NULL, err, errlen) == 0 &&
                      renderer_read(r, out, with_state, err, errlen) == 0

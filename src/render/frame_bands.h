@@ -8,17 +8,21 @@
 
 /* With progress, a band is sized to take about this long (from the rows before it). */
 #define FRAME_BAND_SECONDS 0.25
+/* Without --progress, only a render of at least this many pixels times samples is drawn in bands
+ * (and can show progress): smaller ones are one run per sample, their passes as the scheme has them. */
+#define FRAME_BAND_MIN_PIXELS 250000L
 
 struct frame_progress {
-    struct progress line;    /* mode PROGRESS_NONE: no bands, one run */
+    struct progress line;
+    int banded;              /* draw in bands (else one run, and no progress) */
     int run, runs;           /* the whole-image run going on (a sample, or the centre's state), 0-based */
     int samples;             /* render.samples, for the label */
     int sample;              /* the sample of this run, 0-based; -1: the centre's state */
 };
 
 /* The image of s (its render.width x height, rays started (dx, dy) pixels off their centres) into
- * out, with the ray state when with_state: in one run without progress (p NULL or its mode
- * PROGRESS_NONE), else in bands sized to FRAME_BAND_SECONDS, reporting each. 0, or -1 with err. */
+ * out, with the ray state when with_state: in one run (p NULL or not banded), else in bands sized
+ * to FRAME_BAND_SECONDS, reporting each. 0, or -1 with err. */
 int frame_run_image(struct renderer *r, const struct scene *s, double dx, double dy, struct render_result *out,
                     int with_state, struct frame_progress *p, char *err, size_t errlen);
 /* The same in bands of band_rows rows, top first (the last may be shorter), no progress. */
