@@ -1,6 +1,7 @@
 # bentray: one C binary, built with pkg-config, warnings as errors.
 #   make deps   install the Debian packages the project needs (idempotent)
 #   make demo   build and render the default scene headless to a PNG
+#   make install  the program, its man page (docs/bentray.1) and bash completion under PREFIX
 #   make test   build and run every test
 #   make golden re-render the committed golden images (on purpose only; look at them)
 #   make bench  measure speed and speed against error: docs/BENCH.md, docs/bench/ (CSV, PNG plots)
@@ -28,7 +29,7 @@ TEST_LIBS := -lcmocka $(shell pkg-config --libs gsl 2>/dev/null)
 DEB_PACKAGES := make gcc pkg-config libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri \
                 libosmesa6-dev libinih-dev libpng-dev libcmocka-dev libgsl-dev \
                 libhidapi-dev libgpiod-dev libsystemd-dev libfreetype-dev fonts-dejavu-core \
-                libgbm-dev libdrm-dev libx11-dev xvfb xauth valgrind
+                libgbm-dev libdrm-dev libx11-dev xvfb xauth valgrind groff-base
 
 LIB_SRCS  := $(shell find src -name '*.c' ! -path 'src/tools/*' ! -name main.c | sort)
 LIB_OBJS  := $(LIB_SRCS:%.c=$(BUILD)/%.o) $(BUILD)/gen/shaders_embedded.o
@@ -36,7 +37,7 @@ SHADERS   := $(sort $(wildcard shaders_es/*.glsl))
 TEST_SRCS := $(sort $(wildcard tests/unit/test_*.c))
 TEST_BINS := $(TEST_SRCS:tests/unit/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps deps-bench deps-gallery gallery demo test test-unit test-render test-sanitize test-valgrind golden assets accuracy bench clean
+.PHONY: all deps deps-bench deps-gallery gallery install demo test test-unit test-render test-sanitize test-valgrind golden assets accuracy bench clean
 all: $(BIN)
 
 # The version: the commit this tree was built from (git describe), or "unknown" outside a checkout;
@@ -111,6 +112,16 @@ deps:
 	  $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $$missing || \
 	  { $$SUDO apt-get update -qq && $$SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $$missing; }; \
 	fi
+
+# make install [PREFIX=/usr/local] [DESTDIR=]: the program, its man page and its bash completion.
+# (The kiosk's service, scenes and rules: kiosk/install.sh, docs/KIOSK.md.)
+PREFIX ?= /usr/local
+install: $(BIN)
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1 \
+	    $(DESTDIR)$(PREFIX)/share/bash-completion/completions
+	install -m 0755 $(BIN) $(DESTDIR)$(PREFIX)/bin/bentray
+	install -m 0644 docs/bentray.1 $(DESTDIR)$(PREFIX)/share/man/man1/bentray.1
+	install -m 0644 shell/bentray.bash $(DESTDIR)$(PREFIX)/share/bash-completion/completions/bentray
 
 GALLERY_PACKAGES := ffmpeg
 
