@@ -483,7 +483,7 @@ int cmd_animate(int argc, char **argv)
             opt.progress = PROGRESS_NONE;
             failed = measure_cpu(&s, &opt, &m, err, sizeof err);
         } else {
-            failed = measure_gpu(&s, o.backend, 0, PROGRESS_NONE, &m, err, sizeof err, &bad);
+            failed = measure_gpu(&s, o.backend, 0, PROGRESS_NONE, 0, &m, err, sizeof err, &bad);
         }
         if (failed) {
             fprintf(stderr, "bentray animate: frame %d: %s\n", k + 1, err);

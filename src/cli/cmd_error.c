@@ -64,7 +64,7 @@ int cmd_error(int argc, char **argv)
     struct measured gpu, cpu;
     char err[2048];
     int bad_input = 0;
-    if (measure_gpu(&s, o.backend, 1, PROGRESS_AUTO, &gpu, err, sizeof err, &bad_input) != 0) {
+    if (measure_gpu(&s, o.backend, 1, PROGRESS_AUTO, 0, &gpu, err, sizeof err, &bad_input) != 0) {
         fprintf(stderr, "bentray error: GPU engine: %s\n", err);
         return bad_input ? EXIT_USAGE : EXIT_RUNTIME;
     }

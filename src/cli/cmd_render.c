@@ -1,10 +1,10 @@
 /* bentray render: one scene, headless, to a PNG and optionally a per-pixel dump. */
 #include "cli/commands.h"
 #include "cli/options.h"
-#include "io/png_io.h"
+#include "io/image_out.h"
 #include "io/output_file.h"
 #include "cli/measure.h"
-#include <ctype.h>
+#include <stdlib.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -16,8 +16,10 @@ static void usage(FILE *out)
             "usage: bentray render --scene FILE [options]\n"
             "Render a scene headless to a PNG.\n"
             "  --scene FILE         scene file (assets/scenes/*.scene; format in docs/SCENES.md)\n"
-            "  --out FILE.png       output image (default: NAME.png in the working directory, NAME the\n"
-            "                       scene's name with characters other than letters, digits, - _ . as _)\n"
+            "  --out FILE           output image: FILE.png (8-bit sRGB RGBA), FILE.pfm (linear floats) or -\n"
+            "                       (a PNG on standard output); default NAME.png in the working directory,\n"
+            "                       NAME the scene's name with characters other than letters, digits, - _ . as _\n"
+            "  --depth 8|16         bits a channel of a PNG (default 8)\n"
             "  --dump FILE          also write per-pixel results (format in docs/DUMP.md)\n"
             "  --force              replace existing output files\n"
             "  --size WxH           image size (overrides render.width/height)\n"
@@ -132,7 +134,7 @@ static void warn_meaningless(const struct measured *m, const struct scene *s)
 /* Either engine, with progress on stderr for a long render unless quiet; returns an exit code, m
  * filled on EXIT_OK. */
 static int render_with(const struct common_options *o, const struct scene *s, int need_state,
-                       enum progress_mode progress, struct measured *m)
+                       enum progress_mode progress, int hdr, struct measured *m)
 {
     char err[2048];
     int bad_input = 0;
@@ -140,9 +142,10 @@ static int render_with(const struct common_options *o, const struct scene *s, in
         struct cpu_render_options opt;
         options_cpu(o, s, &opt);
         opt.progress = progress;
+        opt.hdr = hdr;
         if (measure_cpu(s, &opt, m, err, sizeof err) == 0)
             return EXIT_OK;
-    } else if (measure_gpu(s, o->backend, need_state, progress, m, err, sizeof err, &bad_input) == 0) {
+    } else if (measure_gpu(s, o->backend, need_state, progress, hdr, m, err, sizeof err, &bad_input) == 0) {
         return EXIT_OK;
     }
     fprintf(stderr, "bentray render: %s\n", err);
@@ -165,19 +168,12 @@ static void default_output_name(const char *scene_name, char *out, size_t len)
     snprintf(out, len, "%s.png", n > 0 ? name : "bentray");
 }
 
-/* Whether path ends in ".png", in any case. */
-static int has_png_extension(const char *path)
-{
-    size_t n = strlen(path);
-    return n > 4 && path[n - 4] == '.' && tolower((unsigned char)path[n - 3]) == 'p' &&
-           tolower((unsigned char)path[n - 2]) == 'n' && tolower((unsigned char)path[n - 1]) == 'g';
-}
 
 int cmd_render(int argc, char **argv)
 {
     struct common_options o = {.backend = "auto"};
     const char *out_path = NULL, *dump_path = NULL;
-    int force = 0, quiet = 0, progress = 0;
+    int force = 0, quiet = 0, progress = 0, depth = 8;
     for (int i = 1; i < argc; i++) {
         enum option_status c = options_common(&o, "render", argc, argv, &i, usage);
         if (c == OPTION_CONSUMED)
@@ -192,6 +188,13 @@ int cmd_render(int argc, char **argv)
             force = 1;
         } else if (strcmp(argv[i], "--quiet") == 0) {
             quiet = 1;
+        } else if (strcmp(argv[i], "--depth") == 0 && i + 1 < argc) {
+            const char *v = argv[++i];
+            if (strcmp(v, "8") && strcmp(v, "16")) {
+                fprintf(stderr, "bentray render: --depth: expected 8 or 16 bits a channel, got '%s'\n", v);
+                return EXIT_USAGE;
+            }
+            depth = atoi(v);
         } else if (strcmp(argv[i], "--progress") == 0) {
             progress = 1;
         } else {
@@ -204,15 +207,17 @@ int cmd_render(int argc, char **argv)
         fprintf(stderr, "bentray render: --progress and --quiet contradict each other: give one\n");
         return EXIT_USAGE;
     }
-    /* bentray writes PNG files: a name that promises anything else would be a lie on the disk */
-    if (out_path && strcmp(out_path, "-") == 0) {
-        fprintf(stderr, "bentray render: --out -: the image goes to a file, not to standard output: name a .png "
-                        "file\n");
+    /* a name that promises another format than the one written would be a lie on the disk */
+    enum image_format format = IMAGE_PNG8;
+    char why[1024];
+    if (image_format_of(out_path ? out_path : "x.png", depth, &format, why, sizeof why) != 0) {
+        fprintf(stderr, "bentray render: --out %s: %s\n", out_path, why);
         return EXIT_USAGE;
     }
-    if (out_path && !has_png_extension(out_path)) {
-        fprintf(stderr, "bentray render: --out %s: bentray writes PNG images: give the file the extension .png\n",
-                out_path);
+    int to_stdout = out_path && strcmp(out_path, "-") == 0;
+    if (to_stdout && isatty(STDOUT_FILENO)) {
+        fprintf(stderr, "bentray render: --out -: standard output is a terminal; send the PNG to a file or a pipe "
+                        "(bentray render ... --out - > image.png)\n");
         return EXIT_USAGE;
     }
     static struct scene s;
@@ -225,24 +230,24 @@ int cmd_render(int argc, char **argv)
         out_path = default_out;
     }
     /* refuse before the work, not after: a long render must not end in "file exists" */
-    const char *outputs[2] = {out_path, dump_path};
+    const char *outputs[2] = {to_stdout ? NULL : out_path, dump_path};
     for (int k = 0; k < 2; k++) {
-        char why[1024];
         if (outputs[k] && output_check(outputs[k], force, why, sizeof why) != 0) {
             fprintf(stderr, "bentray render: %s: %s\n", k ? "--dump" : "--out", why);
             return EXIT_USAGE;
         }
     }
-    if (dump_path && output_same(out_path, dump_path)) {
+    if (dump_path && !to_stdout && output_same(out_path, dump_path)) {
         fprintf(stderr, "bentray render: --out and --dump name the same file %s: give them different names\n",
                 dump_path);
         return EXIT_USAGE;
     }
     struct measured r = {0};
     char err[2048];
-    rc = render_with(&o, &s, dump_path != NULL, quiet ? PROGRESS_NONE : progress ? PROGRESS_ALWAYS : PROGRESS_AUTO, &r);
+    rc = render_with(&o, &s, dump_path != NULL, quiet ? PROGRESS_NONE : progress ? PROGRESS_ALWAYS : PROGRESS_AUTO,
+                     image_format_float(format), &r);
     if (rc == EXIT_OK &&
-        png_write_rgba8(out_path, r.dump.width, r.dump.height, r.rgba, force, err, sizeof err) != 0) {
+        image_write(out_path, format, r.dump.width, r.dump.height, r.rgba, r.color, force, err, sizeof err) != 0) {
         fprintf(stderr, "bentray render: --out: %s\n", err);
         rc = EXIT_RUNTIME;
     } else if (rc == EXIT_OK && dump_path && dump_write(dump_path, &r.dump, force, err, sizeof err) != 0) {
@@ -253,7 +258,8 @@ int cmd_render(int argc, char **argv)
         if (!quiet)
             summarise(&r, &s);
         warn_meaningless(&r, &s);
-        printf("%s\n", out_path);
+        if (!to_stdout)
+            printf("%s\n", out_path);
     }
     measured_free(&r);
     return rc;

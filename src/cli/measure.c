@@ -16,13 +16,13 @@ static long count_nonfinite(const struct render_result *res)
     return nonfinite;
 }
 
-int measure_gpu(const struct scene *s, const char *backend, int need_state, enum progress_mode progress, struct measured *m, char *err,
+int measure_gpu(const struct scene *s, const char *backend, int need_state, enum progress_mode progress, int hdr, struct measured *m, char *err,
                 size_t errlen, int *bad_input)
 {
     memset(m, 0, sizeof *m);
     struct render_result res;
     struct frame_info info;
-    if (render_frame(s, backend, &res, need_state ? RENDER_READ_STATE : RENDER_READ_OUTCOMES, progress, &info, err, errlen, bad_input) != 0)
+    if (render_frame(s, &(struct frame_request){backend, need_state ? RENDER_READ_STATE : RENDER_READ_OUTCOMES, progress, hdr}, &res, &info, err, errlen, bad_input) != 0)
         return -1;
     snprintf(m->engine, sizeof m->engine, "gpu %s", info.path_name);
     snprintf(m->device, sizeof m->device, "%.120s on %s", info.renderer, info.backend);
@@ -32,7 +32,9 @@ int measure_gpu(const struct scene *s, const char *backend, int need_state, enum
         return -1;
     }
     m->rgba = res.rgba;
+    m->color = res.color;
     res.rgba = NULL;                /* kept; the ray state is not */
+    res.color = NULL;
     m->seconds = res.seconds;
     m->work = res.passes;
     m->nonfinite = count_nonfinite(&res);
@@ -54,6 +56,7 @@ int measure_cpu(const struct scene *s, const struct cpu_render_options *o, struc
         return -1;
     m->dump = img.dump;
     m->rgba = img.rgba;
+    m->color = img.color;
     m->seconds = img.seconds;
     m->work = img.steps;
     snprintf(m->engine, sizeof m->engine, "%s", img.dump.engine);
@@ -70,5 +73,7 @@ void measured_free(struct measured *m)
 {
     dump_free(&m->dump);
     free(m->rgba);
+    free(m->color);
     m->rgba = NULL;
+    m->color = NULL;
 }

@@ -9,6 +9,7 @@
 struct measured {
     struct dump dump;       /* per-pixel records with colours */
     unsigned char *rgba;    /* the image (owned) */
+    float *color;           /* the same unclamped, RGBA floats, when asked for (hdr); else NULL */
     double seconds;         /* GPU: the passes, glFinish included; CPU: wall time of the render */
     long work;              /* GPU: quads drawn; CPU: accepted integration steps */
     char engine[40];        /* "gpu fp32+mrt", "cpu dopri5 rtol 1e-10" */
@@ -21,7 +22,7 @@ struct measured {
 /* need_state: the dump's every field; else its outcomes and colours only (what a summary counts:
  * a single-pass frame then runs once, not twice). progress: whether a long render reports its
  * rows and samples on stderr (io/progress.h). */
-int measure_gpu(const struct scene *s, const char *backend, int need_state, enum progress_mode progress, struct measured *m, char *err,
+int measure_gpu(const struct scene *s, const char *backend, int need_state, enum progress_mode progress, int hdr, struct measured *m, char *err,
                 size_t errlen, int *bad_input);
 int measure_cpu(const struct scene *s, const struct cpu_render_options *o, struct measured *m, char *err,
                 size_t errlen);

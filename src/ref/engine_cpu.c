@@ -47,14 +47,25 @@ void ref_ray_to_record(const struct ref_ray *ray, const unsigned char rgba[4], s
     memcpy(rec->rgba, rgba, 4);
 }
 
-/* The colour of the ray started (dx, dy) pixels off the centre of pixel (i, j); the traced ray in *ray. */
-static void trace_at(struct job *job, int i, int j, double dx, double dy, struct ref_ray *ray, unsigned char rgba[4])
+/* The colour of the ray started (dx, dy) pixels off the centre of pixel (i, j) (cpu_shade_color:
+ * unclamped, with alpha); the traced ray in *ray. */
+static void trace_at(struct job *job, int i, int j, double dx, double dy, struct ref_ray *ray, double color[4])
 {
     const struct scene *s = job->scene;
     vec3d x0 = s->camera.position;
     vec3d v0 = model_initial_velocity(&s->model, x0, camera_ray_at(s, i, j, dx, dy));
     ref_trace(s, &job->opt->ref, x0, v0, ray, 0.0, NULL, NULL);
-    cpu_shade(job->materials, ray, camera_view_direction_at(s, i, j, dx, dy), rgba);
+    cpu_shade_color(job->materials, ray, camera_view_direction_at(s, i, j, dx, dy), color);
+}
+
+/* A sample into the pixel's average as the GPU's images are summed (io/sample_average.c): its 8-bit
+ * codes, or with a float image its colour itself. */
+static void add_sample(struct pixel_average *p, const double color[4], int hdr)
+{
+    double encoded[3];
+    for (int c = 0; c < 3; c++)
+        encoded[c] = hdr ? color[c] : unorm8(color[c]) / 255.0;
+    pixel_average_add(p, encoded, hdr ? color[3] : unorm8(color[3]) / 255.0);
 }
 
 static void render_row(struct job *job, int j)
@@ -62,34 +73,39 @@ static void render_row(struct job *job, int j)
     const struct scene *s = job->scene;
     const struct pixel_samples *pattern = job->pattern;
     struct cpu_image *img = job->out;
+    int hdr = img->color != NULL;
     long steps = 0, rejected = 0;
     for (int i = 0; i < s->render.width; i++) {
         size_t k = (size_t)j * s->render.width + i;
         unsigned char *rgba = img->rgba + 4 * k;
         struct ref_ray ray;
+        double color[4];
         /* the pixel's centre: the ray of the dump record, and sample 0 where the pattern holds it */
-        trace_at(job, i, j, 0.0, 0.0, &ray, rgba);
-        ref_ray_to_record(&ray, rgba, &img->dump.records[k]);
+        trace_at(job, i, j, 0.0, 0.0, &ray, color);
         steps += ray.steps;
         rejected += ray.rejected;
+        struct ref_ray centre = ray;
         if (pattern->n > 1) {
             /* every sample, averaged in linear light as the GPU's frames are (io/sample_average.h) */
-            double sum[3] = {0.0, 0.0, 0.0};
+            struct pixel_average sum = {{0.0, 0.0, 0.0}, 0.0, {0.0, 0.0, 0.0}};
             int first = pattern->centre_included;
-            for (int c = 0; c < 3 && first; c++)
-                sum[c] = srgb_to_linear(rgba[c] / 255.0);
+            if (first)
+                add_sample(&sum, color, hdr);
             for (int n = first; n < pattern->n; n++) {
-                unsigned char other[4];
+                double other[4];
                 trace_at(job, i, j, pattern->dx[n], pattern->dy[n], &ray, other);
-                for (int c = 0; c < 3; c++)
-                    sum[c] += srgb_to_linear(other[c] / 255.0);
+                add_sample(&sum, other, hdr);
                 steps += ray.steps;
                 rejected += ray.rejected;
             }
-            for (int c = 0; c < 3; c++)
-                rgba[c] = (unsigned char)lrint(255.0 * linear_to_srgb(sum[c] / pattern->n));
-            memcpy(img->dump.records[k].rgba, rgba, 4);
+            pixel_average_mean(&sum, pattern->n, color, &color[3]);
         }
+        for (int c = 0; c < 4; c++) {
+            rgba[c] = unorm8(color[c]);
+            if (hdr)
+                img->color[4 * k + c] = (float)color[c];
+        }
+        ref_ray_to_record(&centre, rgba, &img->dump.records[k]);
     }
     atomic_fetch_add(&job->steps, steps);
     atomic_fetch_add(&job->rejected, rejected);
@@ -145,7 +161,9 @@ int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct
     out->height = h;
     out->rgba = malloc((size_t)w * h * 4);
     out->dump.records = calloc((size_t)w * h, sizeof *out->dump.records);
-    if (!out->rgba || !out->dump.records) {
+    if (o->hdr)
+        out->color = malloc((size_t)w * h * 4 * sizeof(float));
+    if (!out->rgba || !out->dump.records || (o->hdr && !out->color)) {
         cpu_materials_free(&materials);
         cpu_image_free(out);
         snprintf(err, errlen, "out of memory for a %dx%d image", w, h);
@@ -185,6 +203,8 @@ int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct
 void cpu_image_free(struct cpu_image *img)
 {
     free(img->rgba);
+    free(img->color);
+    img->color = NULL;
     img->rgba = NULL;
     dump_free(&img->dump);
 }

@@ -13,11 +13,13 @@ struct cpu_render_options {
     struct ref_options ref;
     int threads;          /* 0: one per online core */
     enum progress_mode progress;   /* rows done on stderr (io/progress.h) */
+    int hdr;              /* also the unclamped colour (cpu_image.color) */
 };
 
 struct cpu_image {
     int width, height;
     unsigned char *rgba;  /* RGBA8, top row first, as written to the PNG */
+    float *color;         /* the same unclamped, RGBA floats (cpu_render_options.hdr); else NULL */
     struct dump dump;     /* per-pixel records (rgba included), engine "cpu dopri5 rtol R" */
     double seconds;       /* wall time */
     long steps, rejected; /* summed over all rays */

@@ -209,7 +209,7 @@ static vec3d shade_sky(const struct cpu_materials *mat, const struct ref_ray *ra
     return s->observer.effects == EFFECTS_SEARCHLIGHT ? v3_scale(c, pow4(d)) : c;
 }
 
-void cpu_shade(const struct cpu_materials *mat, const struct ref_ray *ray, vec3d view, unsigned char rgba[4])
+void cpu_shade_color(const struct cpu_materials *mat, const struct ref_ray *ray, vec3d view, double rgba[4])
 {
     vec3d c = v3(0.0, 0.0, 0.0);
     if (ray->outcome >= 0)
@@ -218,8 +218,17 @@ void cpu_shade(const struct cpu_materials *mat, const struct ref_ray *ray, vec3d
         c = shade_sky(mat, ray, view);
     else if (ray->outcome == DUMP_UNFINISHED)
         c = mat->scene->render.unfinished_color;
-    rgba[0] = to_unorm8(c.x);
-    rgba[1] = to_unorm8(c.y);
-    rgba[2] = to_unorm8(c.z);
-    rgba[3] = 255;
+    /* as the sky stage writes its float target: negative parts cut, brighter than white kept */
+    rgba[0] = fmax(c.x, 0.0);
+    rgba[1] = fmax(c.y, 0.0);
+    rgba[2] = fmax(c.z, 0.0);
+    rgba[3] = ray->outcome == DUMP_SKY ? mat->scene->render.sky_alpha : 1.0;
+}
+
+void cpu_shade(const struct cpu_materials *mat, const struct ref_ray *ray, vec3d view, unsigned char rgba[4])
+{
+    double c[4];
+    cpu_shade_color(mat, ray, view, c);
+    for (int k = 0; k < 4; k++)
+        rgba[k] = to_unorm8(c[k]);
 }

@@ -39,7 +39,7 @@ int frame_run_samples(struct renderer *r, const struct scene *s, struct render_r
     } else {
         rc = frame_run_image(r, s, pattern.dx[0], pattern.dy[0], out, with_state, &p, err, errlen);
         if (rc == 0)
-            sample_average_add(&sum, out->rgba);
+            sample_average_add(&sum, out->rgba, out->color);
         first = 1;
         p.run++;
     }
@@ -49,14 +49,14 @@ int frame_run_samples(struct renderer *r, const struct scene *s, struct render_r
         rc = frame_run_image(r, s, pattern.dx[k], pattern.dy[k], &sample, 0, &p, err, errlen);
         p.run++;
         if (rc == 0) {
-            sample_average_add(&sum, sample.rgba);
+            sample_average_add(&sum, sample.rgba, sample.color);
             out->seconds += sample.seconds;
             out->passes += sample.passes;
         }
         render_result_free(&sample);
     }
     if (rc == 0)
-        sample_average_write(&sum, out->rgba);
+        sample_average_write(&sum, out->rgba, out->color);
     else
         render_result_free(out);
     sample_average_free(&sum);
@@ -64,11 +64,11 @@ int frame_run_samples(struct renderer *r, const struct scene *s, struct render_r
     return rc;
 }
 
-int render_frame(const struct scene *s, const char *backend, struct render_result *out, int with_state,
-                 enum progress_mode progress, struct frame_info *info, char *err, size_t errlen, int *bad_input)
+int render_frame(const struct scene *s, const struct frame_request *req, struct render_result *out,
+                 struct frame_info *info, char *err, size_t errlen, int *bad_input)
 {
     *bad_input = 0;
-    struct gl_context *ctx = gl_context_create(backend, err, errlen);
+    struct gl_context *ctx = gl_context_create(req->backend, err, errlen);
     if (!ctx)
         return -1;
     int rc = -1;
@@ -80,7 +80,8 @@ int render_frame(const struct scene *s, const char *backend, struct render_resul
             snprintf(info->path_description, sizeof info->path_description, "%s", renderer_path(r)->description);
             snprintf(info->renderer, sizeof info->renderer, "%s", renderer_caps(r)->renderer);
         }
-        rc = frame_run_samples(r, s, out, with_state, progress, err, errlen);
+        renderer_set_hdr(r, req->hdr);
+        rc = frame_run_samples(r, s, out, req->with_state, req->progress, err, errlen);
         if (info) {
             snprintf(info->pipeline, sizeof info->pipeline, "%s", renderer_pipeline(r));
             snprintf(info->pipeline_why, sizeof info->pipeline_why, "%s", renderer_pipeline_why(r));

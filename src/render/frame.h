@@ -14,11 +14,18 @@ struct frame_info {
     char pipeline_why[200];   /* why that one (renderer_pipeline_why) */
 };
 
-/* Returns 0, or -1 with err; *bad_input tells a user error (exit 2) from a runtime failure (1).
- * progress: whether a long render reports its rows and samples on stderr (io/progress.h; it then
- * runs in bands of rows, render/frame_bands.h). */
-int render_frame(const struct scene *s, const char *backend, struct render_result *out, int with_state,
-                 enum progress_mode progress, struct frame_info *info, char *err, size_t errlen, int *bad_input);
+/* What a frame should bring back. */
+struct frame_request {
+    const char *backend;          /* egl, osmesa or auto */
+    int with_state;               /* enum render_read */
+    enum progress_mode progress;  /* a long render reports its rows and samples on stderr (io/progress.h;
+                                     it then runs in bands of rows, render/frame_bands.h) */
+    int hdr;                      /* also the unclamped colour (render_result.color) */
+};
+
+/* Returns 0, or -1 with err; *bad_input tells a user error (exit 2) from a runtime failure (1). */
+int render_frame(const struct scene *s, const struct frame_request *req, struct render_result *out,
+                 struct frame_info *info, char *err, size_t errlen, int *bad_input);
 /* The whole image of s on renderer r with every sample of every pixel (render.samples,
  * scene/pixel_samples.h), each a whole frame, averaged in linear light into out->rgba; seconds and
  * passes summed over them. The ray state, when asked for, is the pixels' centres': sample 0 where

@@ -4,7 +4,7 @@
 #include <string.h>
 
 /* The whole frame's arrays, empty: the image, and the ray state when with_state. */
-static int frame_alloc(struct render_result *out, int w, int h, int with_state, char *err, size_t errlen)
+static int frame_alloc(struct render_result *out, int w, int h, int with_state, int hdr, char *err, size_t errlen)
 {
     size_t n = (size_t)w * h;
     memset(out, 0, sizeof *out);
@@ -12,6 +12,8 @@ static int frame_alloc(struct render_result *out, int w, int h, int with_state, 
     out->height = h;
     out->rgba = malloc(4 * n);
     int ok = out->rgba != NULL;
+    if (ok && hdr)
+        ok = (out->color = malloc(4 * n * sizeof(float))) != NULL;
     float **state[4] = {&out->position, &out->velocity, &out->hit, &out->image};
     for (int k = with_state == RENDER_READ_OUTCOMES ? 3 : 0; k < 4 && with_state != RENDER_READ_IMAGE && ok; k++)
         ok = (*state[k] = malloc(4 * n * sizeof(float))) != NULL;
@@ -37,6 +39,8 @@ static int run_rows(struct renderer *r, const struct scene *s, int top, int rows
     }
     size_t at = (size_t)top * w * 4, count = (size_t)rows * w * 4;
     memcpy(full->rgba + at, band.rgba, count);
+    if (full->color && band.color)
+        memcpy(full->color + at, band.color, count * sizeof(float));
     float *from[4] = {band.position, band.velocity, band.hit, band.image};
     float *to[4] = {full->position, full->velocity, full->hit, full->image};
     for (int k = 0; k < 4; k++)
@@ -70,7 +74,7 @@ int frame_run_image(struct renderer *r, const struct scene *s, double dx, double
         rc = renderer_run(r, 0, 0, w, h, NULL, NULL, err, errlen) == 0 &&
                      renderer_read(r, out, with_state, err, errlen) == 0
                  ? 0 : -1;
-    } else if ((rc = frame_alloc(out, w, h, with_state, err, errlen)) == 0) {
+    } else if ((rc = frame_alloc(out, w, h, with_state, renderer_hdr(r), err, errlen)) == 0) {
         /* a first band of a thirty-second of the image tells how long a row takes */
         int rows = h / 32 > 0 ? h / 32 : 1;
         for (int top = 0; top < h && rc == 0;) {
@@ -93,7 +97,7 @@ int frame_run_image(struct renderer *r, const struct scene *s, double dx, double
 int frame_run_bands(struct renderer *r, const struct scene *s, int band_rows, struct render_result *out,
                     int with_state, char *err, size_t errlen)
 {
-    int h = s->render.height, rc = frame_alloc(out, s->render.width, h, with_state, err, errlen);
+    int h = s->render.height, rc = frame_alloc(out, s->render.width, h, with_state, renderer_hdr(r), err, errlen);
     band_rows = band_rows < 1 ? 1 : band_rows;
     for (int top = 0; top < h && rc == 0; top += band_rows)
         rc = run_rows(r, s, top, band_rows < h - top ? band_rows : h - top, out, with_state, err, errlen);

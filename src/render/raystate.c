@@ -98,6 +98,14 @@ int raystate_init(struct raystate *rs, const struct render_path *path, int width
     return 0;
 }
 
+GLuint raystate_hdr_color(struct raystate *rs)
+{
+    if (!rs->hdr_color)
+        rs->hdr_color = texture_create_nearest(rs->format->internal_format, rs->format->format, rs->format->type,
+                                               rs->width, rs->height);
+    return rs->hdr_color;
+}
+
 void raystate_release(struct raystate *rs)
 {
     for (int i = 0; i < rs->n_fbos; i++)
@@ -109,6 +117,8 @@ void raystate_release(struct raystate *rs)
     GLuint results[4] = {rs->result_position, rs->result_velocity, rs->result_hit, rs->result_image};
     glDeleteTextures(4, results);
     glDeleteTextures(1, &rs->final_color);
+    if (rs->hdr_color)
+        glDeleteTextures(1, &rs->hdr_color);
     glDeleteRenderbuffers(1, &rs->depth);
     memset(rs, 0, sizeof *rs);
 }

@@ -27,6 +27,7 @@ struct raystate {
     GLuint result_position, result_velocity, result_hit, result_image; /* final state of each ray */
     GLuint depth;                  /* renderbuffer: 0 where a ray has been terminated, 1 elsewhere */
     GLuint final_color;            /* RGBA8 image for presentation and PNG */
+    GLuint hdr_color;              /* the colour unclamped (raystate_hdr_color); 0 until asked for */
     int cur_position, cur_velocity, cur_hit;  /* indices of the current copies */
     struct { GLuint target[RAYSTATE_MAX_TARGETS], fbo; } fbos[RAYSTATE_MAX_FBOS];
     int n_fbos;
@@ -48,5 +49,8 @@ GLuint raystate_fbo(struct raystate *rs, GLuint target0, GLuint target1, char *e
 GLuint raystate_fbo_targets(struct raystate *rs, const GLuint target[RAYSTATE_MAX_TARGETS], char *err, size_t errlen);
 /* Read one texture back as floats, top row first (image order): w*h*4 floats. */
 int raystate_read(struct raystate *rs, GLuint texture, float *rgba_top_down, char *err, size_t errlen);
+/* The float texture (the path's format) the sky stage writes the unclamped colour into
+ * (renderer_set_hdr), made on first use. */
+GLuint raystate_hdr_color(struct raystate *rs);
 
 #endif

@@ -125,6 +125,9 @@ const struct gl_caps *renderer_caps(const struct renderer *r) { return &r->caps;
 const char *renderer_pipeline(const struct renderer *r) { return r->pipeline_name ? r->pipeline_name : "multipass"; }
 const char *renderer_pipeline_why(const struct renderer *r) { return r->pipeline_why; }
 
+void renderer_set_hdr(struct renderer *r, int on) { r->hdr = on; }
+int renderer_hdr(const struct renderer *r) { return r->hdr; }
+
 void renderer_set_subpixel(struct renderer *r, double dx, double dy)
 {
     r->subpixel_x = dx;
@@ -292,6 +295,15 @@ int renderer_read(struct renderer *r, struct render_result *out, int with_state,
     free(rows);
     if (gl_check("reading the image back", err, errlen) != 0)
         return -1;
+    if (r->hdr) {
+        out->color = malloc(n * 4 * sizeof(float));
+        if (!out->color) {
+            snprintf(err, errlen, "out of memory reading the image back");
+            return -1;
+        }
+        if (raystate_read(rs, raystate_hdr_color(rs), out->color, err, errlen) != 0)
+            return -1;
+    }
     if (with_state == RENDER_READ_IMAGE)
         return 0;
     int first = with_state == RENDER_READ_OUTCOMES ? 3 : 0;   /* the image texture is written by every pipeline */
@@ -337,6 +349,7 @@ void renderer_textures(const struct renderer *r, struct renderer_textures *out)
 void render_result_free(struct render_result *res)
 {
     free(res->rgba);
+    free(res->color);
     free(res->position);
     free(res->velocity);
     free(res->hit);

@@ -20,6 +20,7 @@ typedef int (*segment_hook)(struct renderer *r, int segment, void *arg);
 struct render_result {
     int width, height;
     unsigned char *rgba;                    /* final image, RGBA8, top row first */
+    float *color;                           /* the same unclamped, RGBA floats (renderer_set_hdr); else NULL */
     float *position, *velocity, *hit, *image; /* ray state, RGBA floats, top row first; NULL if not read */
     double seconds;                         /* wall time of the GPU passes (glFinish included) */
     long passes;                            /* quads drawn */
@@ -43,6 +44,10 @@ void renderer_set_subpixel(struct renderer *r, double dx, double dy);
  * texture with each ray's outcome code (what a summary needs; a single-pass frame then skips the
  * pass that writes hit and position). */
 enum render_read { RENDER_READ_IMAGE = 0, RENDER_READ_STATE = 1, RENDER_READ_OUTCOMES = 2 };
+/* With on, each run also keeps the final colour unclamped, as floats, and renderer_read returns it
+ * in render_result.color (16-bit PNG and PFM output). Off until set. */
+void renderer_set_hdr(struct renderer *r, int on);
+int renderer_hdr(const struct renderer *r);
 /* Read the final image, and what `with_state` (enum render_read) asks for. */
 int renderer_read(struct renderer *r, struct render_result *out, int with_state, char *err, size_t errlen);
 /* Position of the ray of texel (x, y) (GL order) right now: for per-segment hooks. */

@@ -17,6 +17,7 @@ static void set_sky(const struct program_uniforms *p, const void *arg)
         uniform_vec3(p, "u_sky_color", r->scene->sky.color);
     }
     uniform_vec3(p, "u_unfinished_color", r->scene->render.unfinished_color);
+    uniform_float(p, "u_sky_alpha", r->scene->render.sky_alpha);
 }
 
 int stage_sky(struct renderer *r, char *err, size_t errlen)
@@ -34,5 +35,13 @@ int stage_sky(struct renderer *r, char *err, size_t errlen)
     };
     if (pass_run(r, sp, rs->final_color, 0, in, 2, set_sky, r, err, errlen) != 0)
         return -1;
+    if (r->hdr) {
+        /* the float colour into a ping-pong texture of the ray state, free once the rays are done */
+        char hdr_defines[sizeof defines + 32];
+        snprintf(hdr_defines, sizeof hdr_defines, "#define HDR_OUTPUT 1\n%s", defines);
+        const struct stage_program *hp = program_cache_get(&r->programs, files, hdr_defines, 0, err, errlen);
+        if (!hp || pass_run(r, hp, raystate_hdr_color(rs), 0, in, 2, set_sky, r, err, errlen) != 0)
+            return -1;
+    }
     return gl_check("sky and final colour", err, errlen);
 }

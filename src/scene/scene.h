@@ -160,6 +160,7 @@ struct render_settings {
     /* rays per pixel, averaged in linear light (scene/pixel_samples.h: where they start); the
      * dump and trace follow the first, the pixel's centre */
     int samples;
+    double sky_alpha;         /* the image's alpha where rays reached the sky (1: opaque) */
 };
 
 /* The six faces of a cube map sky, in GL's order (+x, -x, +y, -y, +z, -z), and the file of face f

@@ -36,6 +36,7 @@ static void render_defaults(struct render_settings *r)
     r->orbit_columns = 128;
     r->pipeline = PIPELINE_AUTO;
     r->samples = 1;
+    r->sky_alpha = 1.0;
 }
 
 double render_step_min(const struct render_settings *r)

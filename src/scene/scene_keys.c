@@ -446,6 +446,7 @@ const struct scene_key scene_keys[] = {
      .offset = AT_SCENE(render.polygon_subdivision)},
     {SECTION_RENDER, "chord_tolerance", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .flags = KEY_ABOVE_LO,
      .offset = AT_SCENE(render.chord_tolerance)},
+    {SECTION_RENDER, "sky_alpha", KEY_NUMBER, .lo = 0.0, .hi = 1.0, .offset = AT_SCENE(render.sky_alpha)},
     {SECTION_RENDER, "samples", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SAMPLES, .offset = AT_SCENE(render.samples)},
     {SECTION_RENDER, "max_chords", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_CHORDS,
      .offset = AT_SCENE(render.max_chords)},

@@ -140,7 +140,7 @@ static int report_variation(FILE *f, struct scene *s, enum variation v, const st
         loose.ref.atol = 1e-6 * s->render.bound_radius;
         rc = measure_cpu(s, &loose, &m, err, sizeof err);
     } else {
-        rc = measure_gpu(s, "auto", 1, PROGRESS_NONE, &m, err, sizeof err, &bad);
+        rc = measure_gpu(s, "auto", 1, PROGRESS_NONE, 0, &m, err, sizeof err, &bad);
     }
     if (rc != 0) {
         fprintf(stderr, "%s (%s): %s\n", s->path, variation_names[v], err);

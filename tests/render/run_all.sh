@@ -132,9 +132,17 @@ check "out onto a directory" 2 "--out: .*dir.png is a directory: bentray replace
 echo keep > "$W/target" && ln -s "$W/target" "$W/link" && ln -s "$W/none" "$W/dangling.png"
 check "dump link replaced, target kept" 0 "^keep$" -- sh -c "$BT render --scene $S --size 8x6 --out $W/l.png --dump $W/link --force >/dev/null && test ! -L $W/link && cat $W/target"
 check "dangling link refused before work" 2 "--out: refusing to replace existing file .*dangling" -- $BT render --scene $S --size 8x6 --out "$W/dangling.png"
-# the image is a PNG file: standard output and other extensions are refused before any work
-check "out to standard output refused" 2 "--out -: the image goes to a file, not to standard output" -- $BT render --scene $S --size 8x6 --out -
-check "out with another extension refused" 2 "--out .*x.jpg: bentray writes PNG images: give the file the extension .png" -- $BT render --scene $S --size 8x6 --out "$W/x.jpg"
+# the image: PNG (8 or 16 bits), PFM, or a PNG on standard output (a pipe, not a terminal); other
+# extensions are refused before any work
+check "out to standard output" 0 "^same$" -- sh -c "$BT render --scene $S --size 16x12 --out - --quiet > $W/pipe.png && $BT render --scene $S --size 16x12 --out $W/file.png --quiet > /dev/null && cmp $W/pipe.png $W/file.png && echo same"
+check "out to a terminal refused" 2 "--out -: standard output is a terminal" -- script -qec "$BT render --scene $S --size 8x6 --out -" /dev/null
+check "out with another extension refused" 2 "--out .*x.jpg: bentray writes PNG \\(.png, 8 or 16 bits a channel: --depth\\) and PFM" -- $BT render --scene $S --size 8x6 --out "$W/x.jpg"
+check "out 16-bit png" 0 "^ *16 +6$" -- sh -c "$BT render --scene $S --size 16x12 --depth 16 --out $W/d16.png --quiet > /dev/null && od -An -tu1 -j24 -N2 $W/d16.png"
+check "out pfm" 0 "^PF 16 12 -1.0 2318 bytes$" -- sh -c "$BT render --scene $S --size 16x12 --out $W/f.pfm --quiet > /dev/null && echo \$(head -3 $W/f.pfm) \$(wc -c < $W/f.pfm) bytes"
+check "out pfm from the cpu" 0 "^2318$" -- sh -c "$BT render --scene $S --size 16x12 --engine cpu --out $W/fc.pfm --quiet > /dev/null && wc -c < $W/fc.pfm"
+check "depth value" 2 "^bentray render: --depth: expected 8 or 16 bits a channel, got '12'" -- $BT render --scene $S --depth 12 --out "$W/d.png"
+check "depth of a pfm" 2 "--depth 16 is for PNG" -- $BT render --scene $S --depth 16 --out "$W/d.pfm"
+check "transparent sky" 2 "key 'sky_alpha' in \\[render\\]: expected a number from 0 to 1" -- $BT render --scene $S --set render.sky_alpha=1.5 --out "$W/t.png"
 check "out with upper-case extension" 0 "X.PNG" -- $BT render --scene $S --size 8x6 --out "$W/X.PNG"
 # an option's value may be joined to it with '=', and --version names the build
 check "option=value" 0 "eq.png" -- $BT render --scene=$S --size=8x6 --set=render.segments=2 --out="$W/eq.png"

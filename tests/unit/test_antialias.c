@@ -65,17 +65,17 @@ static void test_linear_average(void **state)
             image[4 * v + c] = (unsigned char)v;
     struct sample_average a;
     assert_int_equal(sample_average_init(&a, 256), 0);
-    sample_average_add(&a, image);
-    sample_average_write(&a, out);
+    sample_average_add(&a, image, NULL);
+    sample_average_write(&a, out, NULL);
     for (int v = 0; v < 256; v++)
         for (int c = 0; c < 3; c++)
             assert_int_equal(out[4 * v + c], v);
     sample_average_free(&a);
     unsigned char black[4] = {0, 0, 0, 255}, white[4] = {255, 255, 255, 255}, mean[4];
     assert_int_equal(sample_average_init(&a, 1), 0);
-    sample_average_add(&a, black);
-    sample_average_add(&a, white);
-    sample_average_write(&a, mean);
+    sample_average_add(&a, black, NULL);
+    sample_average_add(&a, white, NULL);
+    sample_average_write(&a, mean, NULL);
     assert_int_equal(mean[0], 188);
     assert_int_equal(mean[3], 255);
     sample_average_free(&a);
@@ -87,7 +87,7 @@ static unsigned char *gpu_image(const struct scene *s)
     struct render_result res;
     char err[2048];
     int bad;
-    if (render_frame(s, "egl", &res, 0, PROGRESS_NONE, NULL, err, sizeof err, &bad) != 0)
+    if (render_frame(s, &(struct frame_request){.backend = "egl"}, &res, NULL, err, sizeof err, &bad) != 0)
         fail_msg("render: %s", err);
     unsigned char *rgba = res.rgba;
     res.rgba = NULL;
@@ -168,9 +168,9 @@ static void test_dump_follows_centre(void **state)
     struct render_result one, four;
     char err[2048];
     int bad;
-    assert_int_equal(render_frame(&s, "egl", &one, 1, PROGRESS_NONE, NULL, err, sizeof err, &bad), 0);
+    assert_int_equal(render_frame(&s, &(struct frame_request){.backend = "egl", .with_state = RENDER_READ_STATE}, &one, NULL, err, sizeof err, &bad), 0);
     s.render.samples = 4;
-    assert_int_equal(render_frame(&s, "egl", &four, 1, PROGRESS_NONE, NULL, err, sizeof err, &bad), 0);
+    assert_int_equal(render_frame(&s, &(struct frame_request){.backend = "egl", .with_state = RENDER_READ_STATE}, &four, NULL, err, sizeof err, &bad), 0);
     size_t n = (size_t)48 * 36 * 4;
     assert_memory_equal(one.position, four.position, n * sizeof(float));
     assert_memory_equal(one.velocity, four.velocity, n * sizeof(float));

@@ -95,7 +95,7 @@ static unsigned char *expected_image(const struct kiosk_state *st, int preview)
     struct frame_info info;
     char err[512];
     int bad;
-    if (render_frame(&s, "egl", &res, 0, PROGRESS_NONE, &info, err, sizeof err, &bad) != 0)
+    if (render_frame(&s, &(struct frame_request){.backend = "egl"}, &res, &info, err, sizeof err, &bad) != 0)
         fail_msg("%s", err);
     unsigned char *rgba = res.rgba;
     res.rgba = NULL;

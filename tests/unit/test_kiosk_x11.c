@@ -461,7 +461,7 @@ static void test_window_shows_the_hud(void **state)
     struct frame_info info;
     char err[512];
     int bad;
-    if (render_frame(&drawn, "egl", &res, 0, PROGRESS_NONE, &info, err, sizeof err, &bad) != 0)
+    if (render_frame(&drawn, &(struct frame_request){.backend = "egl"}, &res, &info, err, sizeof err, &bad) != 0)
         fail_msg("%s", err);
     /* the settled window; where it did not settle, the headless frame, so that what is wrong with
      * the HUD itself is still said */

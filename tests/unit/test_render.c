@@ -34,7 +34,7 @@ static void render(const struct scene *s, const char *backend, struct render_res
     char err[2048];
     int bad;
     struct frame_info info;
-    if (render_frame(s, backend, res, 1, PROGRESS_NONE, &info, err, sizeof err, &bad) != 0)
+    if (render_frame(s, &(struct frame_request){.backend = backend, .with_state = RENDER_READ_STATE}, res, &info, err, sizeof err, &bad) != 0)
         fail_msg("%s on %s: %s", s->name, backend, err);
     assert_int_equal(result_to_dump(res, s, info.path_name, d), 0);
     if (path_name)
