@@ -163,15 +163,13 @@ float orbit_chord_end(orbit_ray ray, float k)
     float g = x - m;
     float column = u_orbit_columns + 1.0 + m;
     float row = ray.row0 + 1.0;
-    float next_row = row + 1.0;
     // the first and the last end are the orbit's own ends: no fetch (the selects below keep the
     // arithmetic outside the branch, see the precision note in common.glsl)
     float end = k <= 0.0 ? 0.0 : 1.0;
     if (k > 0.0 && k < ray.segments) {
-        // samples m and m + 1 of both rows, one texel each
-        vec2 near = ORBIT_TEXEL(column, row).xy;
-        vec2 far = ORBIT_TEXEL(column, next_row).xy;
-        end = mix(mix(near.x, near.y, g), mix(far.x, far.y, g), ray.row_fraction);
+        // samples m and m + 1 of this row (xy) and of the next (zw), in one texel
+        vec4 rows = ORBIT_TEXEL(column, row);
+        end = mix(mix(rows.x, rows.y, g), mix(rows.z, rows.w, g), ray.row_fraction);
     }
     return end;
 }

@@ -538,6 +538,17 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
     for (int row = 0; row < rows; row++)
         if (t->segments[row] > t->max_segments)
             t->max_segments = t->segments[row];
+    /* each chord-schedule texel also holds the next row's pair (the last row of a side its own):
+     * the shader interpolates between two rows from one texel, not two */
+    for (int row = 0; row < rows; row++) {
+        int next = (row + 1) % p->rows_per_side == 0 ? row : row + 1;
+        for (int m = 0; m < ORBIT_WARP_SAMPLES; m++) {
+            float *texel = t->texels + ((size_t)row * t->width + p->columns + 1 + m) * 4;
+            const float *below = t->texels + ((size_t)next * t->width + p->columns + 1 + m) * 4;
+            texel[2] = below[0];
+            texel[3] = below[1];
+        }
+    }
     t->build_seconds = seconds_now() - t0;
     return 0;
 }

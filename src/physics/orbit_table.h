@@ -68,8 +68,10 @@ struct orbit_table {
      * rows first, from psi_c outwards); texel (j, row) = (u(s_j), du/ds(s_j), u(s_j+1), du/ds(s_j+1))
      * with s_j = j / (columns - 1) (the last column's next pair is 0); texel (columns, row) =
      * (phi_end / sin psi, segments, phi_end, psi); texel (columns + 1 + m, row) = (s where chord
-     * schedule sample m lies, the same for sample m + 1 (or m, the last), 0, 0): chord k of n ends
-     * at the warp interpolated linearly at k / n. Each interpolation reads one texel per row. */
+     * schedule sample m lies, the same for sample m + 1 (or m, the last), and these two of the next
+     * row of the same side (the last row: its own)): chord k of n ends at the warp interpolated
+     * linearly at k / n. The orbit's interpolation reads one texel per row, the chord schedule one
+     * texel for both of its rows. */
     int width, height;
     float *texels;             /* RGBA, width x height, row-major */
     double *u, *du_ds;         /* the same in double: height x columns */
