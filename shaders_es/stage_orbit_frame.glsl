@@ -24,14 +24,32 @@ void main()
     float steps = 0.0;
     float code = CODE_UNFINISHED;
     float end_key = NO_HIT;
+    // The chord that leaves the bounding sphere ends where the orbit crosses it, found by Newton's
+    // steps on the orbit (orbit_chord_from): once per ray, after the loop, rather than in a branch
+    // of it that a group of pixels would take as often as any one of them leaves.
+    bool leaving = false;
+    vec3 leave_a = a;
+    float leave_s = 0.0;
+    float leave_k = 0.0;
     candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
     for (int i = 0; i < MAX_SEGMENTS; i++) {
         float k = float(i);
-        if (k >= ray.segments)
+        if (k >= ray.segments || leaving)
             break;
         float s_a = s;
-        orbit_chord_from(ray, s_a, k, q, s, leaves);
-        b = orbit_chord_point(ray, q, s, leaves);
+        float s1 = orbit_chord_end(ray, k + 1.0);
+        vec2 q1 = orbit_at(ray, s1);
+        vec3 p1 = orbit_point(ray, q1, s1);
+        vec3 from_bound = p1 - u_bound_center;
+        leaving = dot(from_bound, from_bound) >= u_bound_radius2;
+        leave_a = a;
+        leave_s = s_a;
+        leave_k = k;
+        if (leaving)
+            continue;
+        q = q1;
+        s = s1;
+        b = p1;
         steps = k + 1.0;
         intersect_chord(a, b, k, best);
         hit_a = a;
@@ -39,18 +57,30 @@ void main()
         hit_s_a = s_a;
         hit_s_b = s;
         hit_segment = k;
-        vec3 from_bound = b - u_bound_center;
         vec3 from_mass = b - u_capture_center;
         bool captured = u_capture_radius2 > 0.0 && dot(from_mass, from_mass) <= u_capture_radius2;
-        bool outside = dot(from_bound, from_bound) >= u_bound_radius2;
-        float end_code = captured ? CODE_CAPTURED : CODE_SKY;
         bool found = best.slot >= 0.0;
-        bool ends = !found && (captured || outside);
-        code = ends ? end_code : code;
+        bool ends = !found && captured;
+        code = ends ? CODE_CAPTURED : code;
         end_key = ends ? steps : end_key;
         if (found || ends)
             break;
         a = b;
+    }
+    if (leaving) {
+        // the leaving chord as the orbit stage makes it: the same function on the same values
+        orbit_chord_from(ray, leave_s, leave_k, q, s, leaves);
+        b = orbit_chord_point(ray, q, s, leaves);
+        steps = leave_k + 1.0;
+        intersect_chord(leave_a, b, leave_k, best);
+        hit_a = leave_a;
+        hit_b = b;
+        hit_s_a = leave_s;
+        hit_s_b = s;
+        hit_segment = leave_k;
+        bool found = best.slot >= 0.0;
+        code = found ? code : CODE_SKY;
+        end_key = found ? end_key : steps;
     }
     // the final state again from (q, s), outside the loop: see the precision note in common.glsl
     vec3 end = orbit_chord_point(ray, q, s, leaves);
