@@ -102,6 +102,18 @@ double srgb_encode(double linear)
 
 void blackbody_srgb(double temperature_k, enum blackbody_tone tone, double srgb[3])
 {
+    blackbody_srgb_exposed(temperature_k, tone, FIXED_EXPOSURE_T_K, srgb);
+}
+
+/* The linear value whose sRGB encoding the log curve maps to `display`: TONE_SCENE's gain. */
+static double scene_gain(void)
+{
+    double encoded = pow(10.0, BLACKBODY_SCENE_GREY / LOG_CURVE_GAIN) - 1.0;
+    return pow((encoded + SRGB_OFFSET) / (1.0 + SRGB_OFFSET), SRGB_GAMMA);
+}
+
+void blackbody_srgb_exposed(double temperature_k, enum blackbody_tone tone, double reference_k, double srgb[3])
+{
     double xyz[3], rgb[3], luminance = 0.0;
     blackbody_xyz(temperature_k, xyz);
     /* Cold enough (a few tens of K) that no visible photon is left in double: black, not 0/0. */
@@ -113,8 +125,8 @@ void blackbody_srgb(double temperature_k, enum blackbody_tone tone, double srgb[
         luminance = xyz[1];
     } else {
         double fixed[3];
-        blackbody_xyz(FIXED_EXPOSURE_T_K, fixed);
-        luminance = fixed[1];
+        blackbody_xyz(tone == TONE_SCENE && reference_k > 0.0 ? reference_k : FIXED_EXPOSURE_T_K, fixed);
+        luminance = fixed[1] / (tone == TONE_SCENE ? scene_gain() : 1.0);
     }
     for (int j = 0; j < 3; j++)
         xyz[j] /= luminance;
@@ -162,9 +174,14 @@ double blackbody_lut_coordinate(double temperature_k)
 
 void blackbody_lut_fill(enum blackbody_tone tone, unsigned char rgba[4 * BLACKBODY_LUT_SIZE])
 {
+    blackbody_lut_fill_exposed(tone, FIXED_EXPOSURE_T_K, rgba);
+}
+
+void blackbody_lut_fill_exposed(enum blackbody_tone tone, double reference_k, unsigned char rgba[4 * BLACKBODY_LUT_SIZE])
+{
     for (int i = 0; i < BLACKBODY_LUT_SIZE; i++) {
         double srgb[3];
-        blackbody_srgb(blackbody_lut_temperature(i), tone, srgb);
+        blackbody_srgb_exposed(blackbody_lut_temperature(i), tone, reference_k, srgb);
         for (int j = 0; j < 3; j++)
             rgba[4 * i + j] = (unsigned char)lround(255.0 * srgb[j]);
         rgba[4 * i + 3] = 255;

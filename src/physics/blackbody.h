@@ -15,9 +15,16 @@ enum blackbody_tone {
     /* XYZ / Y(T): hue only, every temperature equally bright (no searchlight effect). */
     TONE_LUMINANCE,
     /* XYZ / Y(1500 K), then a log curve on the sRGB values: brightness grows with T (the
-     * searchlight effect is kept). */
+     * searchlight effect is kept). The paper's exposure: a 6000 K body is already white. */
     TONE_FIXED_1500K,
+    /* XYZ / Y(T_ref) times BLACKBODY_SCENE_GAIN, then the same log curve: a body at the scene's own
+     * reference temperature T_ref (its sky's, or its lights') shows mid-grey at rest, so that both
+     * the searchlight's brightening ahead and its dimming behind stay visible before the clip. */
+    TONE_SCENE,
 };
+
+/* TONE_SCENE: the display value (after the log curve) of a body at the reference temperature. */
+#define BLACKBODY_SCENE_GREY 0.45
 
 /* Spectral radiance of a black body, W sr^-1 m^-3 (per metre of wavelength), Eq. 10. */
 double planck_radiance(double wavelength_m, double temperature_k);
@@ -39,6 +46,8 @@ double srgb_encode(double linear);
 
 /* Display colour (sRGB-encoded, each in [0,1]) of a black body under a tone mapping. */
 void blackbody_srgb(double temperature_k, enum blackbody_tone tone, double srgb[3]);
+/* The same with TONE_SCENE's reference temperature (ignored by the other tones). */
+void blackbody_srgb_exposed(double temperature_k, enum blackbody_tone tone, double reference_k, double srgb[3]);
 
 /* Apparent temperature T D of a black body seen with Doppler factor D (frequency ratio, above 1
  * when approaching): a Planck spectrum shifted by D and scaled by the searchlight factor D^5 of
@@ -54,5 +63,6 @@ double blackbody_lut_coordinate(double temperature_k);
 
 /* The table: 8-bit sRGB of blackbody_srgb at each texel temperature, rounded, alpha 255. */
 void blackbody_lut_fill(enum blackbody_tone tone, unsigned char rgba[4 * BLACKBODY_LUT_SIZE]);
+void blackbody_lut_fill_exposed(enum blackbody_tone tone, double reference_k, unsigned char rgba[4 * BLACKBODY_LUT_SIZE]);
 
 #endif

@@ -33,7 +33,7 @@ int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *e
             snprintf(err, errlen, "out of memory");
             return -1;
         }
-        blackbody_lut_fill(s->observer.effects == EFFECTS_SEARCHLIGHT ? TONE_FIXED_1500K : TONE_LUMINANCE, t->rgba);
+        blackbody_lut_fill_exposed((enum blackbody_tone)scene_blackbody_tone(s), scene_reference_temperature(s), t->rgba);
     }
     return 0;
 }

@@ -68,13 +68,15 @@ int observer_lut_load(struct renderer *r, char *err, size_t errlen)
 {
     if (!doppler_colour(r->scene))
         return 0;
-    int tone = r->scene->observer.effects == EFFECTS_SEARCHLIGHT ? TONE_FIXED_1500K : TONE_LUMINANCE;
-    if (r->blackbody_lut && r->blackbody_tone == tone)
+    int tone = scene_blackbody_tone(r->scene);
+    double reference = scene_reference_temperature(r->scene);
+    if (r->blackbody_lut && r->blackbody_tone == tone && r->blackbody_reference == reference)
         return 0;
     observer_lut_release(r);
     r->blackbody_tone = tone;
+    r->blackbody_reference = reference;
     unsigned char rgba[4 * BLACKBODY_LUT_SIZE];
-    blackbody_lut_fill((enum blackbody_tone)tone, rgba);
+    blackbody_lut_fill_exposed((enum blackbody_tone)tone, reference, rgba);
     glGenTextures(1, &r->blackbody_lut);
     glBindTexture(GL_TEXTURE_2D, r->blackbody_lut);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

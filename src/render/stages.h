@@ -24,6 +24,7 @@ struct renderer {
     GLuint sky_cubemap;
     GLuint blackbody_lut;         /* Doppler colour effects only */
     int blackbody_tone;           /* the table's enum blackbody_tone */
+    double blackbody_reference;   /* and its reference temperature (TONE_SCENE) */
     char observer_defines[128];   /* OBSERVER_MOVING, DOPPLER_COLOUR, SEARCHLIGHT */
     GLuint mesh_buffers[SCENE_MAX_OBJECTS][2];   /* render.moving_objects = polygons: vertices, indices */
     int mesh_indices[SCENE_MAX_OBJECTS];

@@ -115,9 +115,14 @@ enum relativity_effects { EFFECTS_GEOMETRY, EFFECTS_DOPPLER, EFFECTS_SEARCHLIGHT
 
 /* The camera's motion: velocity in units of c relative to the scene's rest frame (flat space) or to
  * the static observer at the camera (Schwarzschild). */
+/* The searchlight's exposure: the scene's own reference temperature at mid-grey (its brightening
+ * ahead and dimming behind both visible), or the paper's fixed 1500 K (a 6000 K sky is white). */
+enum searchlight_exposure { EXPOSURE_SCENE, EXPOSURE_PAPER };
+
 struct observer {
     vec3d velocity;
     enum relativity_effects effects;
+    enum searchlight_exposure exposure;
     double time;             /* scene time of the observation, length units (c = 1) */
 };
 
@@ -251,6 +256,11 @@ struct scene {
 /* 1 when the observer moves (the setup stage aberrates); 1 when colours follow the Doppler factor. */
 int observer_moving(const struct scene *s);
 int doppler_colour(const struct scene *s);
+/* The black-body tone mapping of the scene's effects (enum blackbody_tone, physics/blackbody.h) and
+ * the reference temperature its exposure takes: the sky's temperature, else the hottest light's,
+ * else the hottest emitting object's (0: none). */
+int scene_blackbody_tone(const struct scene *s);
+double scene_reference_temperature(const struct scene *s);
 /* 1 when the object has a velocity; then m holds its motion (physics/relativity.h). */
 struct object_motion;
 int object_motion(const struct object *o, struct object_motion *m);

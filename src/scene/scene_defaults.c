@@ -3,6 +3,7 @@
 #include <math.h>
 #include <string.h>
 #include "scene/scene.h"
+#include "physics/blackbody.h"
 #include "physics/relativity.h"
 #include "scene/scene_keys.h"
 
@@ -122,6 +123,25 @@ int observer_moving(const struct scene *s)
 int doppler_colour(const struct scene *s)
 {
     return s->observer.effects != EFFECTS_GEOMETRY;
+}
+
+int scene_blackbody_tone(const struct scene *s)
+{
+    if (s->observer.effects != EFFECTS_SEARCHLIGHT)
+        return TONE_LUMINANCE;
+    return s->observer.exposure == EXPOSURE_PAPER ? TONE_FIXED_1500K : TONE_SCENE;
+}
+
+double scene_reference_temperature(const struct scene *s)
+{
+    if (s->sky.temperature > 0.0)
+        return s->sky.temperature;
+    double hottest = 0.0;
+    for (int i = 0; i < s->n_lights; i++)
+        hottest = fmax(hottest, s->lights[i].temperature);
+    for (int i = 0; i < s->n_objects && hottest == 0.0; i++)
+        hottest = fmax(hottest, s->objects[i].material.temperature);
+    return hottest;
 }
 
 /* The point an object's rest frame is placed by when no frame_origin is given. */

@@ -25,6 +25,7 @@ static const char *const mrt_names[] = {"auto", "on", "off", NULL};
 static const char *const profile_names[] = {"yukawa", "polynomial", NULL};
 static const char *const sky_names[] = {"color", "cubemap", NULL};
 static const char *const effects_names[] = {"geometry", "doppler", "searchlight", NULL};
+static const char *const exposure_names[] = {"scene", "paper", NULL};
 static const char *const moving_names[] = {"rays", "polygons", NULL};
 static const char *const pipeline_names[] = {"auto", "multipass", "single", "fused", NULL};
 
@@ -262,6 +263,13 @@ static int set_effects(struct scene *s, void *t, const union scene_key_value *v,
     return 0;
 }
 
+static int set_exposure(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
+{
+    (void)t, (void)r, (void)n;
+    s->observer.exposure = (enum searchlight_exposure)v->choice;
+    return 0;
+}
+
 static int set_pipeline(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
 {
     (void)t, (void)r, (void)n;
@@ -411,6 +419,7 @@ const struct scene_key scene_keys[] = {
 
     {SECTION_OBSERVER, "velocity", KEY_VECTOR, ANY, .offset = AT_SCENE(observer.velocity)},
     {SECTION_OBSERVER, "effects", CHOICE(effects_names, set_effects)},
+    {SECTION_OBSERVER, "exposure", CHOICE(exposure_names, set_exposure)},
     {SECTION_OBSERVER, "time", KEY_NUMBER, .lo = -1e9, .hi = 1e9, .offset = AT_SCENE(observer.time)},
 
     {SECTION_RENDER, "width", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .set = set_width},

@@ -341,9 +341,29 @@ static void test_lut_fixed_1500k(void **state)
     check_lut(TONE_FIXED_1500K, MAX_STEP_FIXED_1500K, "TONE_FIXED_1500K");
 }
 
+/* TONE_SCENE: the reference temperature lies below the clip in every channel, twice it is brighter
+ * and half of it darker (the searchlight's two sides), at any reference. */
+static void test_scene_exposure(void **state)
+{
+    (void)state;
+    const double references[] = {3000.0, 6000.0, 12000.0};
+    for (int i = 0; i < 3; i++) {
+        double t = references[i], at[3], hot[3], cold[3];
+        blackbody_srgb_exposed(t, TONE_SCENE, t, at);
+        blackbody_srgb_exposed(2.0 * t, TONE_SCENE, t, hot);
+        blackbody_srgb_exposed(0.5 * t, TONE_SCENE, t, cold);
+        double sum_at = at[0] + at[1] + at[2], sum_hot = hot[0] + hot[1] + hot[2], sum_cold = cold[0] + cold[1] + cold[2];
+        for (int c = 0; c < 3; c++)
+            assert_true(at[c] < 0.9);
+        assert_true(sum_hot > 1.2 * sum_at);
+        assert_true(sum_cold < 0.6 * sum_at);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_scene_exposure),
         cmocka_unit_test(test_paper_doppler_temperatures),
         cmocka_unit_test(test_shifted_spectrum_is_planck),
         cmocka_unit_test(test_wien_displacement),
