@@ -58,6 +58,10 @@ int compositor_init(struct compositor *c, const struct gl_context *gl, int width
 
 void compositor_release(struct compositor *c)
 {
+    if (c->preview_fbo)
+        glDeleteFramebuffers(1, &c->preview_fbo);
+    if (c->preview)
+        glDeleteTextures(1, &c->preview);
     if (c->canvas_fbo)
         glDeleteFramebuffers(1, &c->canvas_fbo);
     if (c->canvas)
@@ -121,6 +125,44 @@ int compositor_put_band(struct compositor *c, GLuint image, int band_height, int
     to_canvas(c, 0, y0, c->width, rows);
     blit(c, image, GL_NEAREST, 0, 0, 1, (float)rows / (float)band_height);
     return gl_check("drawing a refined band into the canvas", err, errlen);
+}
+
+int compositor_put_tile(struct compositor *c, GLuint image, int tex_w, int tex_h, int x0, int y0, int w, int h,
+                        char *err, size_t errlen)
+{
+    to_canvas(c, x0, y0, w, h);
+    blit(c, image, GL_NEAREST, 0, 0, (float)w / (float)tex_w, (float)h / (float)tex_h);
+    return gl_check("drawing a refined tile into the canvas", err, errlen);
+}
+
+int compositor_put_preview_tile(struct compositor *c, GLuint image, int tex_w, int tex_h, int x0, int y0, int w,
+                                int h, int pw, int ph, char *err, size_t errlen)
+{
+    if (!c->preview || c->preview_width != pw || c->preview_height != ph) {
+        if (c->preview_fbo)
+            glDeleteFramebuffers(1, &c->preview_fbo);
+        if (c->preview)
+            glDeleteTextures(1, &c->preview);
+        c->preview = linear_texture(pw, ph);
+        glGenFramebuffers(1, &c->preview_fbo);
+        glBindFramebuffer(GL_FRAMEBUFFER, c->preview_fbo);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, c->preview, 0);
+        c->preview_width = pw;
+        c->preview_height = ph;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, c->preview_fbo);
+    glViewport(x0, y0, w, h);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    blit(c, image, GL_NEAREST, 0, 0, (float)w / (float)tex_w, (float)h / (float)tex_h);
+    return gl_check("drawing a preview tile", err, errlen);
+}
+
+int compositor_show_preview(struct compositor *c, char *err, size_t errlen)
+{
+    if (!c->preview)
+        return 0;
+    return compositor_put_preview(c, c->preview, err, errlen);
 }
 
 int compositor_put_pipeline(struct compositor *c, const struct renderer_textures *t, double bound_radius,

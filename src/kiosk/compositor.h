@@ -15,6 +15,8 @@ struct compositor {
     int hud_width, hud_height, hud_valid;
     GLuint blit, pipeline;           /* programs */
     int has_quad;                    /* holds a share of the pass quadrilateral */
+    GLuint preview, preview_fbo;     /* a preview drawn tile by tile, shown once whole; 0 until then */
+    int preview_width, preview_height;
 };
 
 int compositor_init(struct compositor *c, const struct gl_context *gl, int width, int height, char *err,
@@ -27,6 +29,15 @@ int compositor_put_preview(struct compositor *c, GLuint image, char *err, size_t
  * bottom-up); band_height: the height of the band's texture. */
 int compositor_put_band(struct compositor *c, GLuint image, int band_height, int y0, int rows, char *err,
                         size_t errlen);
+/* Rows [0, h) and columns [0, w) of a tile whose texture is tex_w x tex_h, into canvas pixels
+ * [x0, x0 + w) x [y0, y0 + h) (GL order). */
+int compositor_put_tile(struct compositor *c, GLuint image, int tex_w, int tex_h, int x0, int y0, int w, int h,
+                        char *err, size_t errlen);
+/* The same into an offscreen preview of pw x ph (made or resized here), and that preview, once
+ * whole, upscaled over the canvas as compositor_put_preview draws a preview of one run. */
+int compositor_put_preview_tile(struct compositor *c, GLuint image, int tex_w, int tex_h, int x0, int y0, int w,
+                                int h, int pw, int ph, char *err, size_t errlen);
+int compositor_show_preview(struct compositor *c, char *err, size_t errlen);
 /* The pipeline view of a run's ray state: five panels (positions, directions, segment index of
  * the hit, step size, outcome) and the image, in a 3 x 2 grid over the canvas. */
 int compositor_put_pipeline(struct compositor *c, const struct renderer_textures *t, double bound_radius,

@@ -77,6 +77,63 @@ void kiosk_preview_scene(const struct scene *full, const struct kiosk_main *k, s
     }
 }
 
+void kiosk_tiles_plan(struct kiosk_tiles *t, int width, int height, int max_rows, long steps_per_ray)
+{
+    memset(t, 0, sizeof *t);
+    t->width = width;
+    t->height = height;
+    long rays = steps_per_ray > 0 ? KIOSK_TURN_RAY_STEPS / steps_per_ray : (long)width * max_rows;
+    rays = rays < 1 ? 1 : rays;
+    if (rays >= (long)width * max_rows) {
+        t->tile_width = width;
+        t->tile_height = max_rows;
+    } else if (rays >= width) {
+        t->tile_width = width;
+        t->tile_height = (int)(rays / width);
+    } else {
+        t->tile_width = (int)rays;
+        t->tile_height = 1;
+    }
+    t->columns = (width + t->tile_width - 1) / t->tile_width;
+    t->count = t->columns * ((height + t->tile_height - 1) / t->tile_height);
+    t->next = 0;
+}
+
+/* The most integration steps a ray of s takes: 0 for straight rays and exact orbits (not tiled). */
+static long steps_per_ray(const struct scene *s)
+{
+    if (model_is_straight(&s->model) || s->render.method == METHOD_ORBIT_TABLE)
+        return 0;
+    return (long)render_segments(&s->render) * s->render.steps_per_segment;
+}
+
+/* Tile k of t: its lower-left pixel and the part of it inside the frame. */
+static void tile_at(const struct kiosk_tiles *t, int k, int *x0, int *y0, int *w, int *h)
+{
+    *x0 = (k % t->columns) * t->tile_width;
+    *y0 = (k / t->columns) * t->tile_height;
+    *w = t->width - *x0 < t->tile_width ? t->width - *x0 : t->tile_width;
+    *h = t->height - *y0 < t->tile_height ? t->height - *y0 : t->tile_height;
+}
+
+/* The next tile of the preview, offscreen; the preview shown once whole. */
+static int preview_tile(struct kiosk_view *v, char *err, size_t errlen)
+{
+    struct kiosk_tiles *t = &v->preview;
+    int x0, y0, w, h;
+    tile_at(t, t->next, &x0, &y0, &w, &h);
+    if (renderer_run(v->renderer, x0, y0, t->tile_width, t->tile_height, NULL, NULL, err, errlen) != 0)
+        return -1;
+    struct renderer_textures tex;
+    renderer_textures(v->renderer, &tex);
+    if (compositor_put_preview_tile(&v->comp, tex.image, t->tile_width, t->tile_height, x0, y0, w, h, t->width,
+                                    t->height, err, errlen) != 0)
+        return -1;
+    if (++t->next == t->count && compositor_show_preview(&v->comp, err, errlen) != 0)
+        return -1;
+    return 0;
+}
+
 int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char *err, size_t errlen)
 {
     struct scene_error serr;
@@ -87,6 +144,14 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char 
     kiosk_preview_scene(&v->full, &v->cfg->kiosk, &v->live);
     v->pipeline_view = st->pipeline_view;
     const struct kiosk_main *k = &v->cfg->kiosk;
+    /* refinement starts over whatever the preview is */
+    v->refined_rows = 0;
+    kiosk_tiles_plan(&v->refine, k->width, k->height, v->band_rows, steps_per_ray(&v->full));
+    kiosk_tiles_plan(&v->preview, k->preview_width, k->preview_height, k->preview_height,
+                     v->pipeline_view ? 0 : steps_per_ray(&v->live));
+    if (v->preview.count > 1)
+        return preview_tile(v, err, errlen);
+    v->preview.next = v->preview.count;
     if (renderer_run(v->renderer, 0, 0, k->preview_width, k->preview_height, NULL, NULL, err, errlen) != 0)
         return -1;
     struct renderer_textures t;
@@ -103,27 +168,52 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char 
     return rc;
 }
 
+int kiosk_view_preview_pending(const struct kiosk_view *v)
+{
+    return v->preview.next < v->preview.count;
+}
+
 int kiosk_view_refine(struct kiosk_view *v, char *err, size_t errlen)
 {
     const struct kiosk_main *k = &v->cfg->kiosk;
-    if (v->refined_rows >= k->height || !v->renderer)
+    if (!v->renderer)
+        return 0;
+    if (kiosk_view_preview_pending(v))
+        return preview_tile(v, err, errlen);
+    if (v->refined_rows >= k->height)
         return 0;
     v->live = v->full;
-    /* every band has the same size, so the ray state is made once per refinement; the last one
-     * may trace rows above the frame, which are not shown */
-    int y0 = v->refined_rows;
-    if (renderer_run(v->renderer, 0, y0, k->width, v->band_rows, NULL, NULL, err, errlen) != 0)
+    struct kiosk_tiles *t = &v->refine;
+    if (t->tile_width == k->width) {
+        /* whole bands: every band has the same size, so the ray state is made once per refinement;
+         * the last one may trace rows above the frame, which are not shown */
+        int y0 = v->refined_rows;
+        if (renderer_run(v->renderer, 0, y0, k->width, t->tile_height, NULL, NULL, err, errlen) != 0)
+            return -1;
+        struct renderer_textures tex;
+        renderer_textures(v->renderer, &tex);
+        int rows = k->height - y0 < t->tile_height ? k->height - y0 : t->tile_height;
+        if (compositor_put_band(&v->comp, tex.image, t->tile_height, y0, rows, err, errlen) != 0)
+            return -1;
+        v->refined_rows += rows;
+        return 0;
+    }
+    /* tiles narrower than the frame: a row of tiles at a time, the rows counted once it is done */
+    int x0, y0, w, h;
+    tile_at(t, t->next, &x0, &y0, &w, &h);
+    if (renderer_run(v->renderer, x0, y0, t->tile_width, t->tile_height, NULL, NULL, err, errlen) != 0)
         return -1;
-    struct renderer_textures t;
-    renderer_textures(v->renderer, &t);
-    int rows = k->height - y0 < v->band_rows ? k->height - y0 : v->band_rows;
-    if (compositor_put_band(&v->comp, t.image, v->band_rows, y0, rows, err, errlen) != 0)
+    struct renderer_textures tex;
+    renderer_textures(v->renderer, &tex);
+    if (compositor_put_tile(&v->comp, tex.image, t->tile_width, t->tile_height, x0, y0, w, h, err, errlen) != 0)
         return -1;
-    v->refined_rows += rows;
+    t->next++;
+    if (t->next % t->columns == 0 || t->next == t->count)
+        v->refined_rows = y0 + h;
     return 0;
 }
 
 int kiosk_view_refined(const struct kiosk_view *v)
 {
-    return v->refined_rows >= v->cfg->kiosk.height;
+    return !kiosk_view_preview_pending(v) && v->refined_rows >= v->cfg->kiosk.height;
 }

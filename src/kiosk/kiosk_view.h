@@ -8,7 +8,13 @@
  * canvas is whole. A band integrates as many steps as a preview (at most preview pixels x
  * PREVIEW_STEP_FACTOR rays), so input waits about one preview frame; and there are at least
  * refine_frames bands. The bands follow from sizes alone, never from timing, so a run is the
- * same on any machine. Scenes with adaptive steps keep their own step control in the preview.
+ * same on any machine.
+ * Work per turn of the loop is bounded the same way: a frame whose rays may take more than
+ * KIOSK_TURN_RAY_STEPS integration steps in all (rays x segments x steps per segment, the
+ * most they can take) is drawn in tiles of at most that many ray-steps, one tile a turn, down
+ * to one pixel, so that signals, input and the watchdog are served between them whatever the
+ * scene. A preview in tiles is drawn offscreen and shown once whole. Straight rays and exact
+ * orbits (at most max_chords chords each) are not tiled, and neither is the pipeline view. Scenes with adaptive steps keep their own step control in the preview.
  * A scene on exact orbits (render.method = orbit_table) previews with a coarse table of at most
  * PREVIEW_ORBIT_ROWS x PREVIEW_ORBIT_COLUMNS and chords PREVIEW_CHORD_FACTOR times as far from the
  * orbit; the renderer keeps that table and the refined one side by side. */
@@ -23,6 +29,22 @@
 #define PREVIEW_ORBIT_ROWS 128
 #define PREVIEW_ORBIT_COLUMNS 32
 #define PREVIEW_CHORD_FACTOR 4.0
+/* Integration steps of all the rays of one tile: about 50 ms of llvmpipe on two cores (a
+ * lorenz preview, 57600 rays x 270 steps, fits in one). */
+#define KIOSK_TURN_RAY_STEPS (1L << 24)
+
+/* A frame cut into tiles of one size (the ray state's), drawn one a turn from the bottom row of
+ * tiles up, left to right; the last of a row or a column may reach beyond the frame, and what lies
+ * beyond is not shown. */
+struct kiosk_tiles {
+    int width, height;               /* the frame */
+    int tile_width, tile_height;
+    int columns, count, next;        /* tiles across; in all; the next to draw */
+};
+
+/* Tiles of at most max_rows full-width rows, narrower where a tile of rays taking steps_per_ray
+ * steps each would exceed KIOSK_TURN_RAY_STEPS (steps_per_ray 0: no bound). */
+void kiosk_tiles_plan(struct kiosk_tiles *t, int width, int height, int max_rows, long steps_per_ray);
 
 struct kiosk_view {
     const struct kiosk_config *cfg;
@@ -36,6 +58,8 @@ struct kiosk_view {
     int pipeline_view;
     int band_rows;                   /* rows of one band */
     int refined_rows;                /* rows of the canvas at full quality, from the bottom */
+    struct kiosk_tiles preview;      /* the preview being drawn; next == count: shown */
+    struct kiosk_tiles refine;       /* the refinement's tiles */
 };
 
 int kiosk_view_init(struct kiosk_view *v, const struct kiosk_config *cfg, const struct gl_context *gl, char *err,
@@ -47,8 +71,11 @@ int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *b
 /* Draw the preview of a state into the canvas (the scene must be loaded); refinement starts
  * over. 0, or -1 with err. */
 int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char *err, size_t errlen);
-/* Refine the next band; 0, or -1 with err. Nothing to do once refined. */
+/* The next tile of a preview drawn in tiles, else the next band (or tile) of refinement; 0, or -1
+ * with err. Nothing to do once refined. */
 int kiosk_view_refine(struct kiosk_view *v, char *err, size_t errlen);
+/* A preview is still being drawn, tile by tile (not yet shown). */
+int kiosk_view_preview_pending(const struct kiosk_view *v);
 int kiosk_view_refined(const struct kiosk_view *v);
 /* The preview of a full scene: the preview size, and longer steps over the same path length. */
 void kiosk_preview_scene(const struct scene *full, const struct kiosk_main *k, struct scene *out);
