@@ -37,7 +37,7 @@ SHADERS   := $(sort $(wildcard shaders_es/*.glsl))
 TEST_SRCS := $(sort $(wildcard tests/unit/test_*.c))
 TEST_BINS := $(TEST_SRCS:tests/unit/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps deps-bench deps-gallery gallery install demo test test-unit test-render test-sanitize test-valgrind golden assets accuracy bench clean
+.PHONY: all deps deps-bench deps-gallery gallery install demo check-layers test test-unit test-render test-sanitize test-valgrind golden assets accuracy bench clean
 all: $(BIN)
 
 # The version: the commit this tree was built from (git describe), or "unknown" outside a checkout;
@@ -145,7 +145,11 @@ $(BUILD)/tests/%: tests/unit/%.c $(BUILD)/libbentray.a
 	$(CC) $(CFLAGS) $(PKG_CFLAGS) -Itests -MMD -MP -MF $@.d -o $@ $< $(BUILD)/libbentray.a $(LDLIBS) $(TEST_LIBS)
 
 test: deps
-	@$(MAKE) --no-print-directory test-unit test-render test-valgrind test-sanitize
+	@$(MAKE) --no-print-directory check-layers test-unit test-render test-valgrind test-sanitize
+
+# No module includes one above it (docs/ARCHITECTURE.md).
+check-layers:
+	@sh tests/check_layers.sh
 
 test-unit: $(TEST_BINS)
 	@set -e; for t in $(TEST_BINS); do echo "== $$t"; $$t; done
@@ -208,7 +212,7 @@ FUZZ_SRCS_kiosk_config := $(FUZZ_SRCS_text) src/kiosk/kiosk_config.c src/kiosk/k
                           src/kiosk/kiosk_config_keys.c src/kiosk/kiosk_config_paths.c \
                           src/kiosk/kiosk_config_values.c src/kiosk/hid_report.c src/kiosk/quadrature.c \
                           src/kiosk/debounce.c src/kiosk/input_hid_decode.c src/kiosk/input_event.c
-FUZZ_SRCS_dump         := $(FUZZ_SRCS_text) src/io/output_file.c src/ref/dump.c
+FUZZ_SRCS_dump         := $(FUZZ_SRCS_text) src/io/output_file.c src/results/dump.c
 FUZZ_SRCS_hid          := src/kiosk/hid_report.c
 FUZZ_SRCS_gpio         := src/kiosk/quadrature.c src/kiosk/debounce.c src/kiosk/event_merge.c
 FUZZ_SRCS_script       := $(FUZZ_SRCS_text) src/kiosk/script.c src/kiosk/script_player.c

@@ -1,12 +1,12 @@
 /* `bentray bench`: the paper's Table 1 and Figure 5, the benefit of unrolling, batching and
  * early-z, speed against error, and the machine's limit. Every figure in docs/BENCH.md is written
  * by this code: times are medians of several runs on one GL context, errors come from the
- * comparison with the CPU reference (src/ref/compare.c). Never a timed test. */
+ * comparison with the CPU reference (src/results/compare.c). Never a timed test. */
 #ifndef BT_BENCH_H
 #define BT_BENCH_H
 #include <stdio.h>
 #include "gl/context.h"
-#include "ref/dump.h"
+#include "results/dump.h"
 #include "scene/scene.h"
 
 #define BENCH_PATH_LEN 512

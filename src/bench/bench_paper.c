@@ -4,7 +4,7 @@
 #include <math.h>
 #include <string.h>
 #include "bench/bench.h"
-#include "ref/compare.h"
+#include "results/compare.h"
 #include "ref/engine_cpu.h"
 
 #define T1_MODELS 4

@@ -5,9 +5,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include "bench/bench.h"
-#include "ref/compare.h"
+#include "results/compare.h"
 #include "ref/engine_cpu.h"
-#include "ref/quality.h"
+#include "results/quality.h"
 
 struct pareto_config {
     const char *name;

@@ -3,7 +3,7 @@
  * seconds per frame, passes per frame, milliseconds per pass, and whether the two agree. */
 #include <string.h>
 #include "bench/bench.h"
-#include "ref/compare.h"
+#include "results/compare.h"
 
 struct pipeline_case {
     const char *scene;

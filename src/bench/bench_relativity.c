@@ -3,7 +3,7 @@
  * reference (which always traces rays). */
 #include <math.h>
 #include "bench/bench.h"
-#include "ref/compare.h"
+#include "results/compare.h"
 #include "ref/engine_cpu.h"
 
 static const int subdivisions[] = {1, 4, 16, 64};

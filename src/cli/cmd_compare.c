@@ -1,6 +1,6 @@
 /* bentray compare: error metrics of one dump against a reference dump (docs/ERRORS.md). */
 #include "cli/commands.h"
-#include "ref/compare.h"
+#include "results/compare.h"
 #include <stdio.h>
 #include <string.h>
 

@@ -3,8 +3,8 @@
 #include "cli/commands.h"
 #include "cli/measure.h"
 #include "cli/options.h"
-#include "ref/compare.h"
-#include "ref/quality.h"
+#include "results/compare.h"
+#include "results/quality.h"
 #include <stdio.h>
 #include <string.h>
 

@@ -122,8 +122,8 @@ int cmd_kiosk(int argc, char **argv)
     }
     setvbuf(log, NULL, _IOLBF, 0);
     struct kiosk_run_options o = {.gl_backend = backend, .force = force, .log = log};
-    int rc = kiosk_run(&c, &o);
+    enum kiosk_status status = kiosk_run(&c, &o);
     if (log != stderr)
         fclose(log);
-    return rc;
+    return status == KIOSK_STOPPED ? EXIT_OK : status == KIOSK_BAD_CONFIG ? EXIT_USAGE : EXIT_RUNTIME;
 }

@@ -602,7 +602,7 @@ static int open_hud(struct kiosk *k)
     return k->hud_rgba ? 0 : -1;
 }
 
-int kiosk_run(const struct kiosk_config *c, const struct kiosk_run_options *o)
+enum kiosk_status kiosk_run(const struct kiosk_config *c, const struct kiosk_run_options *o)
 {
     static struct kiosk k;
     memset(&k, 0, sizeof k);
@@ -613,41 +613,41 @@ int kiosk_run(const struct kiosk_config *c, const struct kiosk_run_options *o)
     if (preflight(&k, err, sizeof err) != 0) {
         fprintf(k.log, "bentray kiosk: %s\n", err);
         free(k.scenes);
-        return 2;
+        return KIOSK_BAD_CONFIG;
     }
     int headless = c->display.backend == KIOSK_BACKEND_HEADLESS;
     if (headless && headless_preflight(&k, err, sizeof err) != 0) {
         fprintf(k.log, "bentray kiosk: %s\n", err);
         free(k.scenes);
-        return 2;
+        return KIOSK_BAD_CONFIG;
     }
     catch_stop_signals();
     k.screen = open_screen(&k, err, sizeof err);
     if (!k.screen) {
         fprintf(k.log, "bentray kiosk: no screen: %s\n", err);
         free(k.scenes);
-        return stop_requested ? 0 : 1;
+        return stop_requested ? KIOSK_STOPPED : KIOSK_FAILED;
     }
     k.virtual_clock = strcmp(k.screen->name, "headless") == 0;
     if (k.virtual_clock && !headless && headless_preflight(&k, err, sizeof err) != 0) {
         fprintf(k.log, "bentray kiosk: %s\n", err);
         kiosk_close(&k);
-        return 2;
+        return KIOSK_BAD_CONFIG;
     }
     fprintf(k.log, "bentray kiosk: %s screen %dx%d (%s), frames %dx%d, previews %dx%d\n", k.screen->name,
             k.screen->width, k.screen->height, k.screen->gl->platform_version, c->kiosk.width, c->kiosk.height,
             c->kiosk.preview_width, c->kiosk.preview_height);
-    int rc = 0;
+    enum kiosk_status rc = KIOSK_STOPPED;
     if (kiosk_view_init(&k.view, c, k.screen->gl, err, sizeof err) != 0) {
         fprintf(k.log, "bentray kiosk: %s\n", err);
         kiosk_close(&k);
-        return 1;
+        return KIOSK_FAILED;
     }
     k.have_view = 1;
     if (open_hud(&k) != 0) {
         fprintf(k.log, "bentray kiosk: out of memory for the HUD\n");
         kiosk_close(&k);
-        return 1;
+        return KIOSK_FAILED;
     }
     k.now = kiosk_now(&k);
     k.last_input = k.now;
@@ -663,7 +663,7 @@ int kiosk_run(const struct kiosk_config *c, const struct kiosk_run_options *o)
         int r = kiosk_turn(&k, err, sizeof err);
         if (r < 0) {
             fprintf(k.log, "bentray kiosk: %s\n", err);
-            rc = 1;
+            rc = KIOSK_FAILED;
             break;
         }
         if (r == 0)

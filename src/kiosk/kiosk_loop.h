@@ -25,10 +25,15 @@ struct kiosk_run_options {
     FILE *log;
 };
 
-/* Runs the kiosk until stopped (or, headless, until headless_frames frames are written).
- * Returns the exit code: 0, 1 for a failure while running, 2 for a configuration that cannot be
- * shown (a scene or script that does not load). */
-int kiosk_run(const struct kiosk_config *c, const struct kiosk_run_options *o);
+/* How a kiosk run ended; the values are the command's exit codes (cli/commands.h). */
+enum kiosk_status {
+    KIOSK_STOPPED = 0,        /* stopped by a signal, a key or the scripts' end */
+    KIOSK_FAILED = 1,         /* a failure while running (GL, a device, a file) */
+    KIOSK_BAD_CONFIG = 2      /* a configuration that cannot be shown (a scene or script that does not load) */
+};
+
+/* Runs the kiosk until stopped (or, headless, until headless_frames frames are written). */
+enum kiosk_status kiosk_run(const struct kiosk_config *c, const struct kiosk_run_options *o);
 /* --check-inputs: every configured input's events, one line each on out, until stopped or until
  * no input can deliver more. Returns the exit code. */
 int kiosk_check_inputs(const struct kiosk_config *c, FILE *out, FILE *log);

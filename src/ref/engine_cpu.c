@@ -1,5 +1,5 @@
 #include "ref/engine_cpu.h"
-#include "ref/dump_scene.h"
+#include "results/dump_scene.h"
 #include "ref/shade_cpu.h"
 #include "ref/straight.h"
 #include "io/sample_average.h"

@@ -3,7 +3,7 @@
 #ifndef BT_ENGINE_CPU_H
 #define BT_ENGINE_CPU_H
 #include "io/progress.h"
-#include "ref/dump.h"
+#include "results/dump.h"
 #include "ref/reference.h"
 
 /* Worker threads of one CPU render (--threads): their handles live in a fixed array. */

@@ -1,6 +1,6 @@
 #include "ref/reference.h"
 #include "ref/dopri5.h"
-#include "ref/dump.h"
+#include "results/dump.h"
 #include "ref/straight.h"
 #include "ref/surface.h"
 #include <math.h>

@@ -2,7 +2,7 @@
 #include "io/png_io.h"
 #include "physics/blackbody.h"
 #include "physics/relativity.h"
-#include "ref/dump.h"
+#include "results/dump.h"
 #include <stdio.h>
 #include <stdlib.h>
 

@@ -1,7 +1,7 @@
 #include "render/frame.h"
 #include "render/frame_bands.h"
 #include "io/sample_average.h"
-#include "ref/dump_scene.h"
+#include "results/dump_scene.h"
 #include "scene/pixel_samples.h"
 #include <math.h>
 #include <stdio.h>

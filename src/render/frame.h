@@ -2,7 +2,7 @@
 #ifndef BT_FRAME_H
 #define BT_FRAME_H
 #include "io/progress.h"
-#include "ref/dump.h"
+#include "results/dump.h"
 #include "render/renderer.h"
 
 struct frame_info {

@@ -2,8 +2,8 @@
  * the CPU reference, compared pixel by pixel; writes a Markdown report (docs/ACCURACY.md via
  * `make accuracy`). Every number in the report is computed here. */
 #include "cli/measure.h"
-#include "ref/compare.h"
-#include "ref/quality.h"
+#include "results/compare.h"
+#include "results/quality.h"
 #include "render/frame.h"
 #include <glob.h>
 #include <stdio.h>

@@ -17,7 +17,7 @@
 #include <sys/types.h>
 #include <unistd.h>
 #include "fuzz_input_file.h"
-#include "ref/dump.h"
+#include "results/dump.h"
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);

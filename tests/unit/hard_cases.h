@@ -10,8 +10,8 @@
 #include <string.h>
 
 #include "gl/context.h"
-#include "ref/compare.h"
-#include "ref/dump.h"
+#include "results/compare.h"
+#include "results/dump.h"
 #include "ref/engine_cpu.h"
 #include "ref/reference.h"
 #include "ref/straight.h"

@@ -12,7 +12,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "ref/compare.h"
+#include "results/compare.h"
 
 static const double PI = 3.14159265358979323846;
 

@@ -13,7 +13,7 @@
 #include <unistd.h>
 #include "cli/options.h"
 #include "gl/caps.h"
-#include "ref/dump.h"
+#include "results/dump.h"
 #include "scene/scene.h"
 #include "scene/scene_keys.h"
 

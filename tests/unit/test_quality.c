@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <cmocka.h>
-#include "ref/quality.h"
+#include "results/quality.h"
 
 static struct compare_result result(double differing_fraction, double exit_p99, double hit_p99)
 {

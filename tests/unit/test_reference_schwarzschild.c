@@ -10,7 +10,7 @@
 
 #include <math.h>
 
-#include "ref/dump.h"
+#include "results/dump.h"
 #include "ref/reference.h"
 #include "scene/scene.h"
 

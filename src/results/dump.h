@@ -11,7 +11,7 @@
 #define DUMP_RECORD_SIZE 52
 /* What a reader accepts from a header, checked before any record is allocated (and the records
  * the header promises must be in the file): at least what a render can write (SCENE_MAX_SIZE,
- * SCENE_MAX_PIXELS, SCENE_MAX_OBJECTS; src/ref/dump_scene.c checks it at compile time). */
+ * SCENE_MAX_PIXELS, SCENE_MAX_OBJECTS; src/results/dump_scene.c checks it at compile time). */
 #define DUMP_MAX_SIDE 8192          /* pixels along either side */
 #define DUMP_MAX_PIXELS (1L << 23)  /* records, width x height: 436 MB of records in memory */
 #define DUMP_MAX_OBJECTS 64         /* entries of the object-size table */

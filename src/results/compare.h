@@ -2,7 +2,7 @@
  * against a reference (b). Definitions and JSON keys in docs/ERRORS.md. */
 #ifndef BT_COMPARE_H
 #define BT_COMPARE_H
-#include "ref/dump.h"
+#include "results/dump.h"
 #include <stdio.h>
 
 /* One error over the pixels it applies to. Mean, 99th percentile (nearest rank: the value at

@@ -1,5 +1,5 @@
 /* compare_result as JSON (stable keys, docs/ERRORS.md) and as a short table for people. */
-#include "ref/compare.h"
+#include "results/compare.h"
 #include <math.h>
 
 /* JSON string: names come from files, so quotes, backslashes and control bytes are escaped. */

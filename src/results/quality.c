@@ -1,5 +1,5 @@
 /* A scene's stated quality against one comparison with the CPU reference. */
-#include "ref/quality.h"
+#include "results/quality.h"
 #include <math.h>
 #include <stdio.h>
 

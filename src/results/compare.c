@@ -1,5 +1,5 @@
 /* Error metrics between a dump under test and a reference dump (docs/ERRORS.md). */
-#include "ref/compare.h"
+#include "results/compare.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

@@ -3,7 +3,7 @@
 #ifndef BT_QUALITY_H
 #define BT_QUALITY_H
 #include <stddef.h>
-#include "ref/compare.h"
+#include "results/compare.h"
 #include "scene/scene.h"
 
 /* 1 when the scene states at least one bound. */

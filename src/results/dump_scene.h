@@ -1,7 +1,7 @@
 /* What a dump records about its scene: the name and each object's length scale. */
 #ifndef BT_DUMP_SCENE_H
 #define BT_DUMP_SCENE_H
-#include "ref/dump.h"
+#include "results/dump.h"
 #include "scene/scene.h"
 
 /* Length scale of an object: sphere radius, disk outer radius, longest triangle edge, rectangle

@@ -1,4 +1,4 @@
-#include "ref/dump.h"
+#include "results/dump.h"
 #include "io/output_file.h"
 #include "io/text_file.h"
 #include <errno.h>

@@ -1,4 +1,4 @@
-#include "ref/dump_scene.h"
+#include "results/dump_scene.h"
 #include <stdio.h>
 
 _Static_assert(SCENE_MAX_OBJECTS <= DUMP_MAX_OBJECTS, "a dump must hold every object of a scene");
