@@ -203,6 +203,40 @@ uniform float u_bound_outside;        // bounding radius (1 + a margin): where a
 
 const int ORBIT_CROSSING_ITERATIONS = 2;
 
+// Where the orbit crosses the bounding sphere between s0 (inside) and s1 (outside, where it has
+// u, du/ds = q): s and q there.
+void orbit_crossing(orbit_ray ray, float s0, float s1, inout vec2 q, out float s)
+{
+    vec3 from_bound = orbit_point(ray, q, s1) - u_bound_center;
+    s = s1;
+    // first guess: where the tangent line at s1 meets the sphere (far out the orbit is nearly
+    // straight), then Newton's steps on the orbit itself, kept inside the bracket [s0, s1]
+    vec3 velocity = orbit_velocity(ray, q, s1);
+    float a2 = dot(velocity, velocity);
+    float half_b = dot(from_bound, velocity);
+    float c = dot(from_bound, from_bound) - u_bound_radius2;
+    float root = sqrt(max(half_b * half_b - a2 * c, 0.0));
+    float back = (-half_b - root) / a2;
+    float back_other = (-half_b + root) / a2;
+    float step_back = back_other <= 0.0 ? back_other : back;
+    float inside = s0;
+    float outside = s1;
+    s = clamp(s1 + step_back, s0, s1);
+    float half_sum = 0.5;
+    for (int i = 0; i < ORBIT_CROSSING_ITERATIONS; i++) {
+        vec2 qi = orbit_at(ray, s);
+        vec3 pi = orbit_point(ray, qi, s) - u_bound_center;
+        float g = dot(pi, pi) - u_bound_radius2;
+        float slope = 2.0 * dot(pi, orbit_velocity(ray, qi, s));
+        inside = g < 0.0 ? s : inside;
+        outside = g < 0.0 ? outside : s;
+        float newton = s - g / slope;
+        float middle = half_sum * (inside + outside);
+        s = newton >= inside && newton <= outside ? newton : middle;
+    }
+    q = orbit_at(ray, s);
+}
+
 void orbit_chord_from(orbit_ray ray, float s0, float k, out vec2 q, out float s, out bool leaves)
 {
     float s1 = orbit_chord_end(ray, k + 1.0);
@@ -211,34 +245,8 @@ void orbit_chord_from(orbit_ray ray, float s0, float k, out vec2 q, out float s,
     s = s1;
     vec3 from_bound = p - u_bound_center;
     leaves = dot(from_bound, from_bound) >= u_bound_radius2;
-    if (leaves) {
-        // first guess: where the tangent line at s1 meets the sphere (far out the orbit is nearly
-        // straight), then Newton's steps on the orbit itself, kept inside the bracket [s0, s1]
-        vec3 velocity = orbit_velocity(ray, q, s1);
-        float a2 = dot(velocity, velocity);
-        float half_b = dot(from_bound, velocity);
-        float c = dot(from_bound, from_bound) - u_bound_radius2;
-        float root = sqrt(max(half_b * half_b - a2 * c, 0.0));
-        float back = (-half_b - root) / a2;
-        float back_other = (-half_b + root) / a2;
-        float step_back = back_other <= 0.0 ? back_other : back;
-        float inside = s0;
-        float outside = s1;
-        s = clamp(s1 + step_back, s0, s1);
-        float half_sum = 0.5;
-        for (int i = 0; i < ORBIT_CROSSING_ITERATIONS; i++) {
-            vec2 qi = orbit_at(ray, s);
-            vec3 pi = orbit_point(ray, qi, s) - u_bound_center;
-            float g = dot(pi, pi) - u_bound_radius2;
-            float slope = 2.0 * dot(pi, orbit_velocity(ray, qi, s));
-            inside = g < 0.0 ? s : inside;
-            outside = g < 0.0 ? outside : s;
-            float newton = s - g / slope;
-            float middle = half_sum * (inside + outside);
-            s = newton >= inside && newton <= outside ? newton : middle;
-        }
-        q = orbit_at(ray, s);
-    }
+    if (leaves)
+        orbit_crossing(ray, s0, s1, q, s);
 }
 
 // The same from the chord's start: the previous chord's end, or orbit_chord_end(ray, k).

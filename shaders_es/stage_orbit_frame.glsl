@@ -31,6 +31,8 @@ void main()
     vec3 leave_a = a;
     float leave_s = 0.0;
     float leave_k = 0.0;
+    float leave_s1 = 0.0;
+    vec2 leave_q1 = q;
     candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
     for (int i = 0; i < MAX_SEGMENTS; i++) {
         float k = float(i);
@@ -45,6 +47,8 @@ void main()
         leave_a = a;
         leave_s = s_a;
         leave_k = k;
+        leave_s1 = s1;
+        leave_q1 = q1;
         if (leaving)
             continue;
         q = q1;
@@ -68,8 +72,11 @@ void main()
         a = b;
     }
     if (leaving) {
-        // the leaving chord as the orbit stage makes it: the same function on the same values
-        orbit_chord_from(ray, leave_s, leave_k, q, s, leaves);
+        // the leaving chord as the orbit stage makes it (orbit_chord_from): from its end outside
+        // the sphere back to where the orbit crosses it, on the same values
+        q = leave_q1;
+        orbit_crossing(ray, leave_s, leave_s1, q, s);
+        leaves = true;
         b = orbit_chord_point(ray, q, s, leaves);
         steps = leave_k + 1.0;
         intersect_chord(leave_a, b, leave_k, best);
