@@ -423,6 +423,13 @@ int cmd_animate(int argc, char **argv)
         fprintf(stderr, "bentray animate: %s is required\n", !a.frames ? "--frames N" : "--out DIR");
         return EXIT_USAGE;
     }
+    /* the orbit turns the scene's own camera: a range that moves it too would fight it */
+    for (int i = 0; i < a.n_ranges && a.orbit; i++)
+        if (strncmp(a.ranges[i].key, "camera.", 7) == 0 && strcmp(a.ranges[i].key, "camera.fov") != 0) {
+            fprintf(stderr, "bentray animate: --orbit and --set-range %s: the orbit moves the camera itself; give "
+                            "one or the other (camera.fov may move with the orbit)\n", a.ranges[i].key);
+            return EXIT_USAGE;
+        }
     if (video && video_kind(video) < 0) {
         fprintf(stderr, "bentray animate: --video %s: give the file the extension .webm, .mp4 or .gif\n", video);
         return EXIT_USAGE;

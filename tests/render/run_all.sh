@@ -58,6 +58,7 @@ check "animate range key" 2 "--set-range camera.zoom=1:2: no such key" -- $BT an
 check "animate range choice" 2 "only a number, vector or colour key" -- $BT animate --scene $S --frames 2 --set-range render.method=rk4:euler --out "$TMP/a0"
 check "animate range components" 2 "FROM and TO must be the same number" -- $BT animate --scene $S --frames 2 --set-range "camera.position=0 0 5:1 1" --out "$TMP/a0"
 check "animate frame out of range" 2 "^bentray animate: frame 3: --set camera.fov=180: error: key 'fov'" -- $BT animate --scene $S --frames 3 --set-range camera.fov=60:180 --out "$TMP/a0"
+check "animate orbit and camera range" 2 "--orbit and --set-range camera.position: the orbit moves the camera" -- $BT animate --scene $S --frames 2 --orbit 90 --set-range "camera.position=0 0 5:0 0 6" --out "$TMP/a0"
 check "animate orbit" 2 "--orbit: expected degrees" -- $BT animate --scene $S --frames 2 --orbit left --out "$TMP/a0"
 check "animate out is a file" 2 "--out $TMP/p1.png: not a directory" -- $BT animate --scene $S --frames 2 --out "$TMP/p1.png"
 check "animate video extension" 2 "--video $TMP/v.avi: give the file the extension .webm, .mp4 or .gif" -- $BT animate --scene $S --frames 2 --out "$TMP/a0" --video "$TMP/v.avi"
