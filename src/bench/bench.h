@@ -40,6 +40,9 @@ void bench_progress(struct bench *b, const char *fmt, ...) __attribute__((format
 int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_timing *t, struct dump *d, char *err,
                size_t errlen);
 
+/* The median of n times (sorted in place). */
+double bench_median(double *times, int n);
+
 /* Acceleration presets (the Table 1 columns): the paper's scheme without and with its techniques
  * and with all of the multipass scheme's; then all of them in the single pass. */
 enum bench_accel { ACCEL_NONE, ACCEL_PAPER, ACCEL_ALL, ACCEL_SINGLE, ACCEL_FUSED, ACCEL_COUNT };

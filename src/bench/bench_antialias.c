@@ -13,23 +13,7 @@
 static const int aa_counts[] = {1, 2, 4, 9, 16};
 #define AA_COUNTS (int)(sizeof aa_counts / sizeof aa_counts[0])
 
-/* Root mean square difference in linear light over the colour channels. */
-static double rms_linear(const unsigned char *a, const unsigned char *b, size_t pixels)
-{
-    double sum = 0.0;
-    for (size_t i = 0; i < pixels; i++)
-        for (int c = 0; c < 3; c++) {
-            double d = srgb_to_linear(a[4 * i + c] / 255.0) - srgb_to_linear(b[4 * i + c] / 255.0);
-            sum += d * d;
-        }
-    return sqrt(sum / (3.0 * (double)pixels));
-}
 
-static int by_value(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 /* The image of s with its samples, runs times after a warm-up: the median seconds and the last image. */
 static int time_samples(struct bench *b, const struct scene *s, int runs, double *median, unsigned char **rgba,
@@ -61,8 +45,7 @@ static int time_samples(struct bench *b, const struct scene *s, int runs, double
         *rgba = NULL;
         return -1;
     }
-    qsort(times, (size_t)runs, sizeof times[0], by_value);
-    *median = times[runs / 2];
+    *median = bench_median(times, runs);
     return 0;
 }
 
@@ -102,7 +85,7 @@ int bench_antialias(struct bench *b, char *err, size_t errlen)
         if (rc != 0)
             break;
         b->done++;
-        double e = rms_linear(image, reference, pixels);
+        double e = image_rms_linear(image, reference, pixels);
         free(image);
         if (k == 0) {
             t1 = t;

@@ -59,11 +59,16 @@ int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_ti
     renderer_destroy(r);
     if (rc != 0)
         return -1;
-    qsort(times, (size_t)runs, sizeof times[0], by_value);
+    t->median = bench_median(times, runs);
     t->min = times[0];
     t->max = times[runs - 1];
-    t->median = runs % 2 ? times[runs / 2] : 0.5 * (times[runs / 2 - 1] + times[runs / 2]);
     return 0;
+}
+
+double bench_median(double *times, int n)
+{
+    qsort(times, (size_t)n, sizeof times[0], by_value);
+    return n % 2 ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
 }
 
 FILE *bench_data_file(struct bench *b, const char *name, char *err, size_t errlen)

@@ -101,3 +101,16 @@ void sample_average_free(struct sample_average *a)
     free(a->sum);
     a->sum = NULL;
 }
+
+double image_rms_linear(const unsigned char *a, const unsigned char *b, size_t pixels)
+{
+    double linear[256], sum = 0.0;
+    for (int v = 0; v < 256; v++)
+        linear[v] = srgb_to_linear(v / 255.0);
+    for (size_t i = 0; i < pixels; i++)
+        for (int c = 0; c < 3; c++) {
+            double d = linear[a[4 * i + c]] - linear[b[4 * i + c]];
+            sum += d * d;
+        }
+    return pixels ? sqrt(sum / (3.0 * (double)pixels)) : 0.0;
+}

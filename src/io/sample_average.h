@@ -43,6 +43,10 @@ void sample_average_add(struct sample_average *a, const unsigned char *rgba, con
 void sample_average_write(const struct sample_average *a, unsigned char *rgba, float *color);
 void sample_average_free(struct sample_average *a);
 
+/* Root mean square difference of two RGBA8 images in linear light (0 to 1), over the colour
+ * channels: the error measure of anti-aliasing (bench, tests). */
+double image_rms_linear(const unsigned char *a, const unsigned char *b, size_t pixels);
+
 /* The 8-bit code of an sRGB-encoded value, clamped, rounded to nearest (as GL stores a float in RGBA8). */
 unsigned char unorm8(double encoded);
 

@@ -116,17 +116,27 @@ static void tile_at(const struct kiosk_tiles *t, int k, int *x0, int *y0, int *w
     *h = t->height - *y0 < t->tile_height ? t->height - *y0 : t->tile_height;
 }
 
+/* Tile t->next drawn by the renderer: where it goes and its image. 0, or -1 with err. */
+static int run_tile(struct kiosk_view *v, const struct kiosk_tiles *t, int *x0, int *y0, int *w, int *h,
+                    GLuint *image, char *err, size_t errlen)
+{
+    tile_at(t, t->next, x0, y0, w, h);
+    if (renderer_run(v->renderer, *x0, *y0, t->tile_width, t->tile_height, NULL, NULL, err, errlen) != 0)
+        return -1;
+    struct renderer_textures tex;
+    renderer_textures(v->renderer, &tex);
+    *image = tex.image;
+    return 0;
+}
+
 /* The next tile of the preview, offscreen; the preview shown once whole. */
 static int preview_tile(struct kiosk_view *v, char *err, size_t errlen)
 {
     struct kiosk_tiles *t = &v->preview;
     int x0, y0, w, h;
-    tile_at(t, t->next, &x0, &y0, &w, &h);
-    if (renderer_run(v->renderer, x0, y0, t->tile_width, t->tile_height, NULL, NULL, err, errlen) != 0)
-        return -1;
-    struct renderer_textures tex;
-    renderer_textures(v->renderer, &tex);
-    if (compositor_put_preview_tile(&v->comp, tex.image, t->tile_width, t->tile_height, x0, y0, w, h, t->width,
+    GLuint image;
+    if (run_tile(v, t, &x0, &y0, &w, &h, &image, err, errlen) != 0 ||
+        compositor_put_preview_tile(&v->comp, image, t->tile_width, t->tile_height, x0, y0, w, h, t->width,
                                     t->height, err, errlen) != 0)
         return -1;
     if (++t->next == t->count && compositor_show_preview(&v->comp, err, errlen) != 0)
@@ -200,12 +210,9 @@ int kiosk_view_refine(struct kiosk_view *v, char *err, size_t errlen)
     }
     /* tiles narrower than the frame: a row of tiles at a time, the rows counted once it is done */
     int x0, y0, w, h;
-    tile_at(t, t->next, &x0, &y0, &w, &h);
-    if (renderer_run(v->renderer, x0, y0, t->tile_width, t->tile_height, NULL, NULL, err, errlen) != 0)
-        return -1;
-    struct renderer_textures tex;
-    renderer_textures(v->renderer, &tex);
-    if (compositor_put_tile(&v->comp, tex.image, t->tile_width, t->tile_height, x0, y0, w, h, err, errlen) != 0)
+    GLuint image;
+    if (run_tile(v, t, &x0, &y0, &w, &h, &image, err, errlen) != 0 ||
+        compositor_put_tile(&v->comp, image, t->tile_width, t->tile_height, x0, y0, w, h, err, errlen) != 0)
         return -1;
     t->next++;
     if (t->next % t->columns == 0 || t->next == t->count)

@@ -95,17 +95,6 @@ static unsigned char *gpu_image(const struct scene *s)
     return rgba;
 }
 
-/* Root mean square difference of two images in linear light, over the colour channels. */
-static double rms_linear(const unsigned char *a, const unsigned char *b, size_t pixels)
-{
-    double sum = 0.0;
-    for (size_t i = 0; i < pixels; i++)
-        for (int c = 0; c < 3; c++) {
-            double d = srgb_to_linear(a[4 * i + c] / 255.0) - srgb_to_linear(b[4 * i + c] / 255.0);
-            sum += d * d;
-        }
-    return sqrt(sum / (3.0 * (double)pixels));
-}
 
 /* The test scene's edges and checkerboards at 80 x 60: against 64 samples a pixel, the error falls
  * with N. Stratified sampling of an edge gives about N^-3/4 (jittered) to N^-1 (a rotated grid):
@@ -125,7 +114,7 @@ static void test_gpu_converges(void **state)
     for (int c = 0; c < 3; c++) {
         s.render.samples = counts[c];
         unsigned char *image = gpu_image(&s);
-        error[c] = rms_linear(image, reference, pixels);
+        error[c] = image_rms_linear(image, reference, pixels);
         printf("samples %2d: rms error against 64 samples %.5f (linear light)\n", counts[c], error[c]);
         free(image);
     }
@@ -149,7 +138,7 @@ static void test_engines_agree(void **state)
         struct cpu_image cpu;
         hc_cpu_render(&s, &cpu);
         unsigned char *gpu = gpu_image(&s);
-        rms[c] = rms_linear(cpu.rgba, gpu, pixels);
+        rms[c] = image_rms_linear(cpu.rgba, gpu, pixels);
         free(gpu);
         cpu_image_free(&cpu);
     }
@@ -214,7 +203,7 @@ static void test_polygons_follow_samples(void **state)
     unsigned char *p = shifted_image(&polygons, 0.33, 0.33);
     unsigned char *same = shifted_image(&rays, 0.33, 0.33);
     unsigned char *opposite = shifted_image(&rays, -0.33, -0.33);
-    double near = rms_linear(p, same, pixels), far = rms_linear(p, opposite, pixels);
+    double near = image_rms_linear(p, same, pixels), far = image_rms_linear(p, opposite, pixels);
     printf("polygons against rays: rms %.5f at the same offset, %.5f at the opposite one\n", near, far);
     assert_true(near < far);
     free(p);
