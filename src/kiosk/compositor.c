@@ -216,6 +216,17 @@ int compositor_set_hud(struct compositor *c, const unsigned char *rgba, int widt
     return gl_check("uploading the HUD", err, errlen);
 }
 
+void compositor_letterbox(const struct compositor *c, int sw, int sh, int *x, int *y, int *w, int *h)
+{
+    double scale_x = (double)sw / c->width, scale_y = (double)sh / c->height;
+    double scale = scale_x < scale_y ? scale_x : scale_y;
+    *w = (int)(c->width * scale + 0.5);
+    *h = (int)(c->height * scale + 0.5);
+    *x = (sw - *w) / 2;
+    /* GL's viewport leaves (sh - h) / 2 rows below the canvas: the rest lie above it */
+    *y = sh - *h - (sh - *h) / 2;
+}
+
 int compositor_draw(struct compositor *c, const struct screen *s, char *err, size_t errlen)
 {
     glBindFramebuffer(GL_FRAMEBUFFER, s->framebuffer);
@@ -225,10 +236,9 @@ int compositor_draw(struct compositor *c, const struct screen *s, char *err, siz
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
     /* letterbox: the canvas keeps its aspect ratio, centred */
-    double scale_x = (double)s->width / c->width, scale_y = (double)s->height / c->height;
-    double scale = scale_x < scale_y ? scale_x : scale_y;
-    int w = (int)(c->width * scale + 0.5), h = (int)(c->height * scale + 0.5);
-    glViewport((s->width - w) / 2, (s->height - h) / 2, w, h);
+    int x, y, w, h;
+    compositor_letterbox(c, s->width, s->height, &x, &y, &w, &h);
+    glViewport(x, (s->height - h) / 2, w, h);
     blit(c, c->canvas, w == c->width && h == c->height ? GL_NEAREST : GL_LINEAR, 0, 0, 1, 1);
     if (c->hud_valid) {
         glViewport(0, 0, s->width, s->height);

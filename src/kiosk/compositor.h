@@ -45,6 +45,9 @@ int compositor_put_pipeline(struct compositor *c, const struct renderer_textures
 /* The HUD image (screen-sized, top row first, straight alpha), or NULL for none. */
 int compositor_set_hud(struct compositor *c, const unsigned char *rgba, int width, int height, char *err,
                        size_t errlen);
+/* Where compositor_draw puts the canvas on a screen of sw x sh: keeping its aspect ratio, centred;
+ * x, y from the top-left corner. */
+void compositor_letterbox(const struct compositor *c, int sw, int sh, int *x, int *y, int *w, int *h);
 /* Canvas, letterboxed into the screen, then the HUD; the screen's present() is left to the caller. */
 int compositor_draw(struct compositor *c, const struct screen *s, char *err, size_t errlen);
 /* The screen's framebuffer as RGBA8, top row first (w x h x 4 bytes), for PNG files. */

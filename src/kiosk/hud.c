@@ -333,6 +333,31 @@ static void draw_indicator(struct hud_font *font, unsigned char *rgba, int w, in
     hud_text_draw(font, rgba, w, h, bar_x + bar_w + gap, range_base, px, hi, body_color);
 }
 
+const char *const hud_pipeline_labels[HUD_PIPELINE_PANELS] = {
+    "image", "ray positions", "ray directions", "segment of the hit", "step size",
+    "outcome: green object, blue sky, black captured, red unfinished",
+};
+
+/* Each panel's label on a band of its own in the panel's top-left corner, cut to the panel's width. */
+static void draw_panel_labels(struct hud_font *font, unsigned char *rgba, int w, int h, const struct hud_view *v)
+{
+    int px = scaled(h, BODY_TEXT_DIVISOR), pad = px / 3;
+    int pw = v->canvas_w / 3, ph = v->canvas_h / 2;
+    for (int p = 0; p < HUD_PIPELINE_PANELS; p++) {
+        int x0 = v->canvas_x + (p % 3) * pw, y0 = v->canvas_y + (p / 3) * ph;
+        char text[HUD_LINE_LEN];
+        if (p == 0 && v->title)
+            snprintf(text, sizeof text, "image: %s", v->title);
+        else
+            snprintf(text, sizeof text, "%s", hud_pipeline_labels[p]);
+        size_t take = fitting_head(font, px, text, pw - 2 * pad);
+        text[take] = '\0';
+        int tw = hud_text_width(font, px, text);
+        fill_rect(rgba, w, h, x0, y0, x0 + tw + 2 * pad, y0 + px * ROW_PITCH_NUM / ROW_PITCH_DEN + pad, band_color);
+        hud_text_draw(font, rgba, w, h, x0 + pad, y0 + px, px, text, body_color);
+    }
+}
+
 void hud_draw(struct hud_font *font, unsigned char *rgba, int w, int h, const struct hud_view *v)
 {
     if (!rgba || w <= 0 || h <= 0)
@@ -340,7 +365,10 @@ void hud_draw(struct hud_font *font, unsigned char *rgba, int w, int h, const st
     memset(rgba, 0, (size_t)w * (size_t)h * 4);
     if (!font || !v)
         return;
-    draw_lines(font, rgba, w, h, v);
+    if (v->pipeline_view && v->canvas_w >= 3 && v->canvas_h >= 2)
+        draw_panel_labels(font, rgba, w, h, v);
+    else
+        draw_lines(font, rgba, w, h, v);
     if (v->indicator == HUD_KNOB_SPEED || v->indicator == HUD_KNOB_MASS)
         draw_indicator(font, rgba, w, h, v);
 }

@@ -30,7 +30,16 @@ struct hud_view {
     enum hud_knob indicator;
     double indicator_value, indicator_min, indicator_max;
     const char *notice;              /* one line of warning (a limit reached), or NULL */
+    /* The pipeline view (compositor_put_pipeline's 3 x 2 panels over the canvas): each panel gets
+     * its label in its top-left corner, and the block of lines gives way to the scene's name in
+     * the image panel's label. canvas_*: where the canvas lies on the screen (top-down pixels). */
+    int pipeline_view;
+    int canvas_x, canvas_y, canvas_w, canvas_h;
 };
+
+/* The pipeline view's panels, left to right, top row first. */
+#define HUD_PIPELINE_PANELS 6
+extern const char *const hud_pipeline_labels[HUD_PIPELINE_PANELS];
 
 /* The HUD's text, one line per entry (title, explanation, knobs with units, effects, fps,
  * notice), for the log and for tests; returns the number of lines. */

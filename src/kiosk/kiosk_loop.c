@@ -129,9 +129,11 @@ static void hud_view_of(struct kiosk *k, struct hud_view *v)
     }
     v->notice = k->now < k->notice_until ? k->notice
               : k->attract              ? "touch a knob or a button to take over"
-              : k->state.pipeline_view  ? "pipeline: image, ray positions, directions | segment of the hit, "
-                                          "step size, outcome (green object, blue sky, black captured)"
                                         : NULL;
+    /* the pipeline view labels its panels instead (hud.c) */
+    v->pipeline_view = k->state.pipeline_view;
+    compositor_letterbox(&k->view.comp, k->screen->width, k->screen->height, &v->canvas_x, &v->canvas_y,
+                         &v->canvas_w, &v->canvas_h);
 }
 
 /* Redraws the HUD image when its text changed; returns 1 when it did. */

@@ -511,9 +511,47 @@ static void test_lines_mapped_knobs(void **state)
     assert_true(find_line(lines, n, "M = ") < 0);
 }
 
+/* The pipeline view: each of the six panels has its label in its top-left corner, the scene's name
+ * in the image panel's, and nothing of the HUD covers a panel below its label (the block of lines
+ * used to cover most of the top row); the canvas may be letterboxed anywhere on the screen. */
+static void test_pipeline_labels(void **state)
+{
+    (void)state;
+    enum { W = 1280, H = 720 };
+    unsigned char *rgba = malloc((size_t)W * H * 4);
+    struct hud_view v = schwarzschild_view();
+    v.pipeline_view = 1;
+    v.canvas_x = 40;
+    v.canvas_y = 20;
+    v.canvas_w = 1200;
+    v.canvas_h = 680;
+    hud_draw(font, rgba, W, H, &v);
+    /* a label's band: a row of body text (h / 30) with its pitch (4 / 3) and a third of a row of pad */
+    int pw = v.canvas_w / 3, ph = v.canvas_h / 2, label_rows = H / 15;
+    for (int p = 0; p < HUD_PIPELINE_PANELS; p++) {
+        int x0 = v.canvas_x + (p % 3) * pw, y0 = v.canvas_y + (p / 3) * ph;
+        int label = 0, covered = 0;
+        for (int y = y0; y < y0 + label_rows; y++)
+            for (int x = x0; x < x0 + pw / 4; x++)
+                label += alpha_at(rgba, W, x, y) != 0;
+        for (int y = y0 + label_rows; y < y0 + ph; y++)
+            for (int x = x0; x < x0 + pw; x++)
+                covered += alpha_at(rgba, W, x, y) != 0;
+        printf("  panel %d (%s): %d label pixels, %d below it\n", p, hud_pipeline_labels[p], label, covered);
+        assert_true(label > 100);
+        assert_int_equal(covered, 0);
+    }
+    /* outside the canvas nothing */
+    for (int y = 0; y < v.canvas_y; y++)
+        for (int x = 0; x < W; x++)
+            assert_int_equal(alpha_at(rgba, W, x, y), 0);
+    free(rgba);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_pipeline_labels),
         cmocka_unit_test(test_lines_schwarzschild),
         cmocka_unit_test(test_lines_flat_space),
         cmocka_unit_test(test_lines_optional),

@@ -246,9 +246,10 @@ static void test_pipeline_view(void **state)
         {51, 204, 77}, {77, 128, 255}, {0, 0, 0}, {230, 26, 26}, {230, 26, 230}};
     int seen[5] = {0}, other = 0;
     int pw = width / 3, ph = height / 2;
-    /* the outcome panel, bottom right (rows top-down), less a pixel at each edge: a size that does
-     * not divide by 3 leaves a border column that may belong to the neighbour */
-    for (int y = height - ph + 1; y < height - 1; y++)
+    /* the outcome panel, bottom right (rows top-down), less a pixel at each edge (a size that does
+     * not divide by 3 leaves a border column that may belong to the neighbour) and its upper half,
+     * where the HUD writes the panel's label */
+    for (int y = height - ph / 2; y < height - 1; y++)
         for (int x = 2 * pw + 1; x < 3 * pw - 1; x++) {
             const unsigned char *p = &frames[PIPELINE_FRAME][((size_t)y * width + x) * 4];
             int k = 0;
