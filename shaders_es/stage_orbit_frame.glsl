@@ -92,7 +92,10 @@ void main()
     // the final state again from (q, s), outside the loop: see the precision note in common.glsl
     vec3 end = orbit_chord_point(ray, q, s, leaves);
     vec3 tangent = orbit_tangent(ray, q, s);
-    orbit_refine_hit(ray, hit_s_a, hit_s_b, hit_segment, hit_a, hit_b, best);
+    // a hit is found again on the orbit itself; a ray without one skips that (no pixel group of
+    // the sky-only frame runs it)
+    if (best.slot >= 0.0)
+        orbit_refine_hit(ray, hit_s_a, hit_s_b, hit_segment, hit_a, hit_b, best);
     vec4 new_hit, new_image;
     intersect_shade(best, hit_a, hit_b, new_hit, new_image);
     bool found = best.slot >= 0.0;
