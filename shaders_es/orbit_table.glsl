@@ -204,10 +204,9 @@ uniform float u_bound_outside;        // bounding radius (1 + a margin): where a
 const int ORBIT_CROSSING_ITERATIONS = 2;
 
 // Where the orbit crosses the bounding sphere between s0 (inside) and s1 (outside, where it has
-// u, du/ds = q): s and q there.
-void orbit_crossing(orbit_ray ray, float s0, float s1, inout vec2 q, out float s)
+// u, du/ds = q and lies at from_bound from the sphere's centre): s and q there.
+void orbit_crossing(orbit_ray ray, float s0, float s1, vec3 from_bound, inout vec2 q, out float s)
 {
-    vec3 from_bound = orbit_point(ray, q, s1) - u_bound_center;
     s = s1;
     // first guess: where the tangent line at s1 meets the sphere (far out the orbit is nearly
     // straight), then Newton's steps on the orbit itself, kept inside the bracket [s0, s1]
@@ -246,7 +245,7 @@ void orbit_chord_from(orbit_ray ray, float s0, float k, out vec2 q, out float s,
     vec3 from_bound = p - u_bound_center;
     leaves = dot(from_bound, from_bound) >= u_bound_radius2;
     if (leaves)
-        orbit_crossing(ray, s0, s1, q, s);
+        orbit_crossing(ray, s0, s1, from_bound, q, s);
 }
 
 // The same from the chord's start: the previous chord's end, or orbit_chord_end(ray, k).

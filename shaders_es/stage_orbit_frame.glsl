@@ -33,6 +33,7 @@ void main()
     float leave_k = 0.0;
     float leave_s1 = 0.0;
     vec2 leave_q1 = q;
+    vec3 leave_from_bound = vec3(0.0);
     candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
     for (int i = 0; i < MAX_SEGMENTS; i++) {
         float k = float(i);
@@ -49,6 +50,7 @@ void main()
         leave_k = k;
         leave_s1 = s1;
         leave_q1 = q1;
+        leave_from_bound = from_bound;
         if (leaving)
             continue;
         q = q1;
@@ -75,7 +77,7 @@ void main()
         // the leaving chord as the orbit stage makes it (orbit_chord_from): from its end outside
         // the sphere back to where the orbit crosses it, on the same values
         q = leave_q1;
-        orbit_crossing(ray, leave_s, leave_s1, q, s);
+        orbit_crossing(ray, leave_s, leave_s1, leave_from_bound, q, s);
         leaves = true;
         b = orbit_chord_point(ray, q, s, leaves);
         steps = leave_k + 1.0;

@@ -5,6 +5,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* ", N samples a pixel" for the render line, or nothing for one. */
+static void samples_text(const struct scene *s, char *out, size_t len)
+{
+    out[0] = '\0';
+    if (s->render.samples > 1)
+        snprintf(out, len, ", %d samples a pixel", s->render.samples);
+}
+
 static long count_nonfinite(const struct render_result *res)
 {
     long nonfinite = 0;
@@ -38,9 +46,8 @@ int measure_gpu(const struct scene *s, const char *backend, int need_state, enum
     m->seconds = res.seconds;
     m->work = res.passes;
     m->nonfinite = count_nonfinite(&res);
-    char samples[48] = "";
-    if (s->render.samples > 1)
-        snprintf(samples, sizeof samples, ", %d samples a pixel", s->render.samples);
+    char samples[48];
+    samples_text(s, samples, sizeof samples);
     snprintf(m->how, sizeof m->how, "%s on %s (%s), %.3f s%s, %ld passes (%s: %s)", info.path_description,
              info.backend, info.renderer, res.seconds, samples, res.passes, info.pipeline, info.pipeline_why);
     render_result_free(&res);
@@ -61,9 +68,8 @@ int measure_cpu(const struct scene *s, const struct cpu_render_options *o, struc
     m->work = img.steps;
     snprintf(m->engine, sizeof m->engine, "%s", img.dump.engine);
     snprintf(m->device, sizeof m->device, "%d CPU threads", img.threads);
-    char samples[48] = "";
-    if (s->render.samples > 1)
-        snprintf(samples, sizeof samples, ", %d samples a pixel", s->render.samples);
+    char samples[48];
+    samples_text(s, samples, sizeof samples);
     snprintf(m->how, sizeof m->how, "CPU reference (Dormand-Prince 5(4), rtol %.0e), %.3f s%s, %ld steps, %ld rejected",
              o->ref.rtol, img.seconds, samples, img.steps, img.rejected);
     return 0;

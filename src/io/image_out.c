@@ -6,8 +6,6 @@
 
 #include <errno.h>
 #include <math.h>
-#include <png.h>
-#include <setjmp.h>
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -50,69 +48,6 @@ int image_format_of(const char *path, int depth, enum image_format *format, char
     return -1;
 }
 
-/* 16-bit code of an sRGB-encoded value, clamped, rounded to nearest, stored big-endian as PNG wants. */
-static void put16(png_bytep at, double encoded)
-{
-    encoded = encoded < 0.0 ? 0.0 : encoded > 1.0 ? 1.0 : encoded;
-    long v = lrint(encoded * 65535.0);
-    at[0] = (png_byte)(v >> 8);
-    at[1] = (png_byte)(v & 0xff);
-}
-
-struct png16_ctx {
-    char message[200];
-};
-
-static void on_error(png_structp png, png_const_charp msg)
-{
-    struct png16_ctx *ctx = png_get_error_ptr(png);
-    snprintf(ctx->message, sizeof ctx->message, "%s", msg);
-    png_longjmp(png, 1);
-}
-
-static void on_warning(png_structp png, png_const_charp msg)
-{
-    (void)png;
-    (void)msg;
-}
-
-/* A 16-bit RGBA PNG with an sRGB chunk, from RGBA floats (sRGB-encoded colour, alpha). */
-static int write_png16(FILE *fp, int width, int height, const float *color, char *err, size_t errlen)
-{
-    struct png16_ctx ctx = {""};
-    png_bytep row = malloc((size_t)width * 8);
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &ctx, on_error, on_warning);
-    png_infop info = png ? png_create_info_struct(png) : NULL;
-    if (!row || !png || !info) {
-        png_destroy_write_struct(&png, info ? &info : NULL);
-        free(row);
-        set_err(err, errlen, "out of memory writing a 16-bit PNG");
-        return -1;
-    }
-    if (setjmp(png_jmpbuf(png))) {
-        png_destroy_write_struct(&png, &info);
-        free(row);
-        set_err(err, errlen, "%s%s%s", ctx.message, errno ? ": " : "", errno ? strerror(errno) : "");
-        return -1;
-    }
-    png_init_io(png, fp);
-    png_set_IHDR(png, info, (png_uint_32)width, (png_uint_32)height, 16, PNG_COLOR_TYPE_RGB_ALPHA,
-                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
-    png_write_info(png, info);
-    for (int y = 0; y < height; y++) {
-        const float *src = color + (size_t)y * width * 4;
-        for (int x = 0; x < width; x++)
-            for (int c = 0; c < 4; c++)
-                put16(row + 8 * x + 2 * c, src[4 * x + c]);
-        png_write_row(png, row);
-    }
-    png_write_end(png, NULL);
-    png_destroy_write_struct(&png, &info);
-    free(row);
-    return 0;
-}
-
 /* PFM (Portable Float Map): "PF", width and height, -1 for little-endian, then RGB float32 rows
  * from the bottom up, in linear light (the sRGB-encoded colour decoded, brighter than white kept). */
 static int write_pfm(FILE *fp, int width, int height, const float *color, char *err, size_t errlen)
@@ -148,20 +83,10 @@ static int write_to(FILE *fp, enum image_format format, int width, int height, c
                     const float *color, char *err, size_t errlen)
 {
     if (format == IMAGE_PNG16)
-        return write_png16(fp, width, height, color, err, errlen);
+        return png_write_rgba16_stream(fp, width, height, color, err, errlen);
     if (format == IMAGE_PFM)
         return write_pfm(fp, width, height, color, err, errlen);
-    png_image image;
-    memset(&image, 0, sizeof image);
-    image.version = PNG_IMAGE_VERSION;
-    image.width = (png_uint_32)width;
-    image.height = (png_uint_32)height;
-    image.format = PNG_FORMAT_RGBA;
-    int ok = png_image_write_to_stdio(&image, fp, 0, rgba8, 0, NULL) != 0;
-    if (!ok)
-        set_err(err, errlen, "%s", image.message);
-    png_image_free(&image);
-    return ok ? 0 : -1;
+    return png_write_rgba8_stream(fp, width, height, rgba8, err, errlen);
 }
 
 int image_write(const char *path, enum image_format format, int width, int height, const unsigned char *rgba8,

@@ -10,6 +10,7 @@
 #include "io/text_file.h"
 
 #include <errno.h>
+#include <math.h>
 #include <fcntl.h>
 #include <png.h>
 #include <stdarg.h>
@@ -42,6 +43,18 @@ int png_write_rgba8(const char *path, int width, int height, const unsigned char
     struct output_file o;
     if (output_open(&o, path, overwrite, err, errlen) != 0)
         return -1;
+    char why[512];
+    if (png_write_rgba8_stream(o.fp, width, height, rgba_top_down, why, sizeof why) != 0) {
+        set_err(err, errlen, "cannot write %s: %s", path, why);
+        output_abort(&o);
+        return -1;
+    }
+    return output_commit(&o, err, errlen);
+}
+
+int png_write_rgba8_stream(FILE *fp, int width, int height, const unsigned char *rgba_top_down, char *err,
+                           size_t errlen)
+{
     png_image image;
     memset(&image, 0, sizeof image);
     image.version = PNG_IMAGE_VERSION;
@@ -49,19 +62,15 @@ int png_write_rgba8(const char *path, int width, int height, const unsigned char
     image.height = (png_uint_32)height;
     image.format = PNG_FORMAT_RGBA;
     errno = 0;
-    int ok = png_image_write_to_stdio(&image, o.fp, 0, rgba_top_down, 0, NULL) != 0;
+    int ok = png_image_write_to_stdio(&image, fp, 0, rgba_top_down, 0, NULL) != 0;
     if (!ok)
-        set_err(err, errlen, "cannot write %s: %s%s%s", path, image.message, errno ? ": " : "",
-                errno ? strerror(errno) : "");
+        set_err(err, errlen, "%s%s%s", image.message, errno ? ": " : "", errno ? strerror(errno) : "");
     png_image_free(&image);
-    if (!ok) {
-        output_abort(&o);
-        return -1;
-    }
-    return output_commit(&o, err, errlen);
+    return ok ? 0 : -1;
 }
 
-struct read_ctx {
+/* libpng's state and what its callbacks report, for reading and for the 16-bit writer. */
+struct png_ctx {
     FILE *fp;
     int max_size;
     png_structp png;
@@ -74,7 +83,7 @@ struct read_ctx {
 
 static void on_png_error(png_structp png, png_const_charp msg)
 {
-    struct read_ctx *ctx = png_get_error_ptr(png);
+    struct png_ctx *ctx = png_get_error_ptr(png);
     snprintf(ctx->msg, sizeof ctx->msg, "%s", msg);
     png_longjmp(png, 1);
 }
@@ -90,14 +99,14 @@ static void on_png_warning(png_structp png, png_const_charp msg)
  * common case (an interrupted copy or download), so it gets a message of its own. */
 static void read_data(png_structp png, png_bytep data, size_t length)
 {
-    struct read_ctx *ctx = png_get_io_ptr(png);
+    struct png_ctx *ctx = png_get_io_ptr(png);
     if (fread(data, 1, length, ctx->fp) != length)
         png_error(png, feof(ctx->fp) ? "the file is truncated" : strerror(errno));
 }
 
 /* Kept apart from png_read_rgba8 so that everything changed after setjmp lives in *ctx, outside
  * this stack frame, and keeps its value when libpng jumps back. */
-static int read_image(struct read_ctx *ctx)
+static int read_image(struct png_ctx *ctx)
 {
     if (setjmp(png_jmpbuf(ctx->png)))
         return -1;
@@ -158,7 +167,7 @@ int png_read_rgba8(const char *path, int max_size, int *width, int *height,
         set_err(err, errlen, "cannot read %s: invalid arguments", path ? path : "(null)");
         return -1;
     }
-    struct read_ctx ctx;
+    struct png_ctx ctx;
     memset(&ctx, 0, sizeof ctx);
     ctx.max_size = max_size;
 
@@ -199,4 +208,52 @@ int png_read_rgba8(const char *path, int max_size, int *width, int *height,
     *height = (int)ctx.height;
     *rgba_top_down = ctx.pixels;
     return 0;
+}
+
+/* 16-bit code of an sRGB-encoded value, clamped, rounded to nearest, big-endian as PNG stores it. */
+static void put16(png_bytep at, double encoded)
+{
+    encoded = encoded < 0.0 ? 0.0 : encoded > 1.0 ? 1.0 : encoded;
+    long v = lrint(encoded * 65535.0);
+    at[0] = (png_byte)(v >> 8);
+    at[1] = (png_byte)(v & 0xff);
+}
+
+/* Kept apart, as read_image is, so that what changes after setjmp lives in *ctx. */
+static int write_rows16(struct png_ctx *ctx, int width, int height, const float *color, png_bytep row)
+{
+    if (setjmp(png_jmpbuf(ctx->png)))
+        return -1;
+    png_init_io(ctx->png, ctx->fp);
+    png_set_IHDR(ctx->png, ctx->info, (png_uint_32)width, (png_uint_32)height, 16, PNG_COLOR_TYPE_RGB_ALPHA,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_sRGB_gAMA_and_cHRM(ctx->png, ctx->info, PNG_sRGB_INTENT_PERCEPTUAL);
+    png_write_info(ctx->png, ctx->info);
+    for (int y = 0; y < height; y++) {
+        const float *src = color + (size_t)y * width * 4;
+        for (int x = 0; x < width; x++)
+            for (int c = 0; c < 4; c++)
+                put16(row + 8 * x + 2 * c, src[4 * x + c]);
+        png_write_row(ctx->png, row);
+    }
+    png_write_end(ctx->png, NULL);
+    return 0;
+}
+
+int png_write_rgba16_stream(FILE *fp, int width, int height, const float *color, char *err, size_t errlen)
+{
+    struct png_ctx ctx;
+    memset(&ctx, 0, sizeof ctx);
+    ctx.fp = fp;
+    png_bytep row = malloc((size_t)width * 8);
+    ctx.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &ctx, on_png_error, on_png_warning);
+    ctx.info = ctx.png ? png_create_info_struct(ctx.png) : NULL;
+    int rc = -1;
+    if (!row || !ctx.png || !ctx.info)
+        set_err(err, errlen, "out of memory writing a 16-bit PNG");
+    else if ((rc = write_rows16(&ctx, width, height, color, row)) != 0)
+        set_err(err, errlen, "%s%s%s", ctx.msg, errno ? ": " : "", errno ? strerror(errno) : "");
+    png_destroy_write_struct(&ctx.png, ctx.info ? &ctx.info : NULL);
+    free(row);
+    return rc;
 }
