@@ -82,7 +82,7 @@ static void print_json(const struct scene *s, long px, long py, const char *engi
     }
     printf("  \"depth\": %.9g,\n  \"steps\": %u,\n", rec->depth, rec->steps);
     printf("  \"color\": [%u, %u, %u],\n", rec->rgba[0], rec->rgba[1], rec->rgba[2]);
-    printf("  \"doppler\": %.9g,\n", cpu_camera_doppler(s, camera_view_direction(s, (int)px, (int)py)));
+    printf("  \"doppler\": %.9g,\n", camera_doppler(s, camera_view_direction(s, (int)px, (int)py)));
     print_vec("final_position", rec->position, ",");
     print_vec("final_direction", rec->direction, ",");
     printf("  \"polyline\": [\n    [%.9g, %.9g, %.9g]", s->camera.position.x, s->camera.position.y,

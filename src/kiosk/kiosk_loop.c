@@ -458,6 +458,9 @@ static int preflight(struct kiosk *k, char *err, size_t errlen)
             fprintf(k->log, "%s: render.samples = %d is for bentray render's images; the kiosk traces one ray a "
                             "pixel, its refined frame at the screen's own resolution\n", c->kiosk.scenes[i],
                     k->scenes[i].render.samples);
+        if ((k->scenes[i].sky.stars > 0 || k->scenes[i].sky.milky_way > 0.0) && k->log)
+            fprintf(k->log, "%s: [sky] stars and milky_way are drawn into bentray render's images; the kiosk shows "
+                            "the sky without them\n", c->kiosk.scenes[i]);
         /* every scene must take the knobs' start values: reset and a scene change fall back to them */
         static struct scene trial;
         struct kiosk_state start;

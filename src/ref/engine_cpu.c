@@ -4,6 +4,7 @@
 #include "ref/straight.h"
 #include "io/sample_average.h"
 #include "scene/pixel_samples.h"
+#include "results/star_light.h"
 #include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
@@ -14,15 +15,29 @@
 #include <unistd.h>
 
 
+/* One whole image of rays started (dx, dy) off the pixels' centres, before the stars of the sky are
+ * added to it (results/star_light.h needs every pixel's neighbours): colours, exit directions,
+ * which rays reached the sky, and the dump records when these are the centres' rays. */
+struct sample_image {
+    double dx, dy;
+    double *color;             /* 4 a pixel, cpu_shade_color's */
+    float *direction;          /* 3 a pixel */
+    unsigned char *sky;
+    struct dump_record *records;   /* the centres' run only; else NULL */
+};
+
 struct job {
     const struct scene *scene;
     const struct cpu_render_options *opt;
     const struct cpu_materials *materials;
     const struct pixel_samples *pattern;
     struct cpu_image *out;
+    /* with stars in the sky: one image of rays at a time, all pixels at (dx, dy) */
+    struct sample_image *image;
     atomic_int next_row;
     atomic_int rows_done;
     atomic_long steps, rejected;
+    int threads_started;
 };
 
 static double now_s(void)
@@ -111,6 +126,32 @@ static void render_row(struct job *job, int j)
     atomic_fetch_add(&job->rejected, rejected);
 }
 
+/* Row j of a sample image: every pixel's ray at the image's offset, shaded, without stars. */
+static void sample_row(struct job *job, int j)
+{
+    const struct scene *s = job->scene;
+    struct sample_image *img = job->image;
+    long steps = 0, rejected = 0;
+    for (int i = 0; i < s->render.width; i++) {
+        size_t k = (size_t)j * s->render.width + i;
+        struct ref_ray ray;
+        trace_at(job, i, j, img->dx, img->dy, &ray, img->color + 4 * k);
+        steps += ray.steps;
+        rejected += ray.rejected;
+        vec3d d = v3_normalize(ray.velocity);
+        img->direction[3 * k] = (float)d.x;
+        img->direction[3 * k + 1] = (float)d.y;
+        img->direction[3 * k + 2] = (float)d.z;
+        img->sky[k] = ray.outcome == DUMP_SKY;
+        if (img->records) {
+            static const unsigned char none[4] = {0, 0, 0, 0};
+            ref_ray_to_record(&ray, none, &img->records[k]);
+        }
+    }
+    atomic_fetch_add(&job->steps, steps);
+    atomic_fetch_add(&job->rejected, rejected);
+}
+
 static void *worker(void *arg)
 {
     struct job *job = arg;
@@ -118,7 +159,10 @@ static void *worker(void *arg)
         int j = atomic_fetch_add(&job->next_row, 1);
         if (j >= job->scene->render.height)
             return NULL;
-        render_row(job, j);
+        if (job->image)
+            sample_row(job, j);
+        else
+            render_row(job, j);
         atomic_fetch_add(&job->rows_done, 1);
     }
 }
@@ -130,21 +174,105 @@ static int thread_count(const struct cpu_render_options *o, int rows)
     return n > rows ? rows : (int)n;
 }
 
-/* Wait for the workers, showing their progress while a long render runs. */
-static void wait_with_progress(struct job *job)
+/* Wait for the workers, showing their progress while a long render runs: run `run` of `runs`. */
+static void wait_with_progress(struct job *job, struct progress *p, int run, int runs)
 {
     int rows = job->scene->render.height;
-    struct progress p;
-    progress_begin(&p, job->opt->progress);
     for (int done = 0; done < rows;) {
         struct timespec pause = {0, 50 * 1000 * 1000};
         nanosleep(&pause, NULL);
         done = atomic_load(&job->rows_done);
-        char label[64];
-        snprintf(label, sizeof label, "cpu reference: %d/%d rows", done, rows);
-        progress_report(&p, label, (double)done / rows, done == rows);
+        char label[80];
+        if (runs > 1)
+            snprintf(label, sizeof label, "cpu reference: image %d/%d, %d/%d rows", run + 1, runs, done, rows);
+        else
+            snprintf(label, sizeof label, "cpu reference: %d/%d rows", done, rows);
+        progress_report(p, label, (run + (double)done / rows) / runs, run + 1 == runs && done == rows);
     }
-    progress_end(&p);
+}
+
+/* Every row of the job on the workers (or here, when none could start). */
+static void run_rows(struct job *job, int threads, struct progress *p, int run, int runs)
+{
+    atomic_store(&job->next_row, 0);
+    atomic_store(&job->rows_done, 0);
+    pthread_t handles[CPU_MAX_THREADS];
+    int started = 0;
+    for (int i = 0; i < threads; i++)
+        started += pthread_create(&handles[started], NULL, worker, job) == 0;
+    if (started == 0)
+        worker(job);               /* no thread could start: do the work here */
+    else
+        wait_with_progress(job, p, run, runs);
+    for (int i = 0; i < started; i++)
+        pthread_join(handles[i], NULL);
+    job->threads_started = started > 0 ? started : 1;
+}
+
+/* With stars in the sky: each sample a whole image, its stars added from its neighbouring rays,
+ * then averaged in linear light as the GPU's images are (the same order of samples as render_row). */
+static int render_with_stars(struct job *job, int threads, struct progress *p, char *err, size_t errlen)
+{
+    const struct scene *s = job->scene;
+    const struct pixel_samples *pattern = job->pattern;
+    struct cpu_image *out = job->out;
+    int hdr = out->color != NULL;
+    size_t n = (size_t)s->render.width * s->render.height;
+    struct sample_image img = {0};
+    img.color = malloc(n * 4 * sizeof *img.color);
+    img.direction = malloc(n * 3 * sizeof *img.direction);
+    img.sky = malloc(n);
+    struct pixel_average *sum = pattern->n > 1 ? calloc(n, sizeof *sum) : NULL;
+    struct star_sky *stars = malloc(sizeof *stars);
+    int rc = -1;
+    if (!img.color || !img.direction || !img.sky || (pattern->n > 1 && !sum) || !stars) {
+        snprintf(err, errlen, "out of memory for the samples of a %dx%d image", s->render.width, s->render.height);
+        free(stars);
+        stars = NULL;
+        goto done;
+    }
+    if (star_sky_init(stars, s, err, errlen) != 0)
+        goto done;
+    job->image = &img;
+    int centre_run = pattern->n > 1 && !pattern->centre_included;   /* the records' rays only */
+    int runs = pattern->n + centre_run;
+    for (int run = 0; run < runs; run++) {
+        int k = run - centre_run;                  /* the sample, -1: the centres' run */
+        img.dx = k < 0 ? 0.0 : pattern->dx[k];
+        img.dy = k < 0 ? 0.0 : pattern->dy[k];
+        img.records = k < 0 || (k == 0 && pattern->centre_included) || pattern->n == 1 ? out->dump.records : NULL;
+        run_rows(job, threads, p, run, runs);
+        if (k < 0)
+            continue;
+        struct star_view v = {s->render.width, s->render.height, img.dx, img.dy, img.direction, 3, img.sky};
+        star_sky_add(stars, &v, NULL, NULL, img.color);
+        for (size_t i = 0; i < n && sum; i++)
+            add_sample(&sum[i], img.color + 4 * i, hdr);
+    }
+    for (size_t i = 0; i < n; i++) {
+        double color[4];
+        if (sum)
+            pixel_average_mean(&sum[i], pattern->n, color, &color[3]);
+        else
+            memcpy(color, img.color + 4 * i, sizeof color);
+        for (int c = 0; c < 4; c++) {
+            out->rgba[4 * i + c] = unorm8(color[c]);
+            if (hdr)
+                out->color[4 * i + c] = (float)color[c];
+        }
+        memcpy(out->dump.records[i].rgba, out->rgba + 4 * i, 4);
+    }
+    rc = 0;
+done:
+    job->image = NULL;
+    if (stars)
+        star_sky_free(stars);
+    free(stars);
+    free(sum);
+    free(img.color);
+    free(img.direction);
+    free(img.sky);
+    return rc;
 }
 
 int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct cpu_image *out, char *err,
@@ -181,19 +309,22 @@ int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct
     atomic_init(&job.rows_done, 0);
     atomic_init(&job.steps, 0);
     atomic_init(&job.rejected, 0);
-    int n = thread_count(o, h), started = 0;
-    pthread_t threads[CPU_MAX_THREADS];
+    int n = thread_count(o, h), rc = 0;
     double start = now_s();
-    for (int i = 0; i < n; i++)
-        started += pthread_create(&threads[started], NULL, worker, &job) == 0;
-    if (started == 0)
-        worker(&job);               /* no thread could start: do the work here */
+    struct progress p;
+    progress_begin(&p, o->progress);
+    if (star_sky_wanted(s))
+        rc = render_with_stars(&job, n, &p, err, errlen);
     else
-        wait_with_progress(&job);
-    for (int i = 0; i < started; i++)
-        pthread_join(threads[i], NULL);
+        run_rows(&job, n, &p, 0, 1);
+    progress_end(&p);
+    if (rc != 0) {
+        cpu_materials_free(&materials);
+        cpu_image_free(out);
+        return -1;
+    }
     out->seconds = now_s() - start;
-    out->threads = started > 0 ? started : 1;
+    out->threads = job.threads_started;
     out->steps = atomic_load(&job.steps);
     out->rejected = atomic_load(&job.rejected);
     cpu_materials_free(&materials);

@@ -1,4 +1,5 @@
 #include "ref/shade_cpu.h"
+#include "scene/camera.h"
 #include "io/png_io.h"
 #include "physics/blackbody.h"
 #include "physics/relativity.h"
@@ -115,12 +116,8 @@ static double static_lapse(const struct scene *s, vec3d p)
     return sqrt(fmax(1.0 - 2.0 * s->model.mass / r, 0.0));
 }
 
-static double doppler_at_camera(const struct scene *s, vec3d view)
-{
-    return doppler_observer(s->observer.velocity, view) / static_lapse(s, s->camera.position);
-}
+static double doppler_at_camera(const struct scene *s, vec3d view) { return camera_doppler(s, view); }
 
-double cpu_camera_doppler(const struct scene *s, vec3d view) { return doppler_at_camera(s, view); }
 
 static double rgb_luminance(vec3d c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 

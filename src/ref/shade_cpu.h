@@ -22,10 +22,6 @@ struct cpu_materials {
 /* Load the scene's textures and sky faces. 0, or -1 with err naming the file. */
 int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *err, size_t errlen);
 void cpu_materials_free(struct cpu_materials *mat);
-/* The frequency factor D at the camera of light that arrives along `view` (the observer's frame)
- * from a source at rest at infinity: the observer's Doppler factor over the static lapse at the
- * camera (observer.glsl). 1 for an observer at rest in flat space. */
-double cpu_camera_doppler(const struct scene *s, vec3d view);
 /* Final RGBA8 colour of a ray's result; view is the direction the observer looked in (its own frame).
  * Alpha is render.sky_alpha where the ray reached the sky, else 1. */
 void cpu_shade(const struct cpu_materials *mat, const struct ref_ray *ray, vec3d view, unsigned char rgba[4]);

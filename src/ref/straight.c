@@ -4,36 +4,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-vec3d camera_view_direction(const struct scene *s, int i, int j)
-{
-    return camera_view_direction_at(s, i, j, 0.0, 0.0);
-}
-
-vec3d camera_view_direction_at(const struct scene *s, int i, int j, double dx, double dy)
-{
-    const struct camera *c = &s->camera;
-    int w = s->render.width, h = s->render.height;
-    vec3d forward = v3_normalize(v3_sub(c->look_at, c->position));
-    vec3d right = v3_normalize(v3_cross(forward, c->up));
-    vec3d up = v3_cross(right, forward);
-    double tan_half = tan(c->fov_deg * PI_D / 360.0);
-    double ndc_x = ((i + 0.5 + dx) / w) * 2.0 - 1.0;
-    double ndc_y = ((h - 1 - j + 0.5 + dy) / h) * 2.0 - 1.0;   /* image rows run top-down, GL rows bottom-up */
-    vec3d d = v3_add(forward, v3_add(v3_scale(right, ndc_x * tan_half * w / h), v3_scale(up, ndc_y * tan_half)));
-    return v3_normalize(d);
-}
-
-vec3d camera_ray(const struct scene *s, int i, int j)
-{
-    return camera_ray_at(s, i, j, 0.0, 0.0);
-}
-
-vec3d camera_ray_at(const struct scene *s, int i, int j, double dx, double dy)
-{
-    vec3d d = camera_view_direction_at(s, i, j, dx, dy);
-    return observer_moving(s) ? v3_normalize(aberrate_to_scene(s->observer.velocity, d)) : d;
-}
-
 vec3d straight_rest_point(const struct scene *s, int k, vec3d a, vec3d b, double t)
 {
     struct object_motion m;

@@ -2,17 +2,9 @@
  * when every field is off (flat space, zero mass, zero potential). */
 #ifndef BT_STRAIGHT_H
 #define BT_STRAIGHT_H
-#include "scene/scene.h"
+#include "scene/camera.h"
 #include <stdint.h>
 
-/* Direction the observer looks in through pixel (i, j), in the observer's own frame; j counted from
- * the top row; pixel centres at (i + 0.5) / W. */
-vec3d camera_view_direction(const struct scene *s, int i, int j);
-/* The same viewing ray in the scene's frame (aberrated when the observer moves): where rays start. */
-vec3d camera_ray(const struct scene *s, int i, int j);
-/* The same for a ray (dx, dy) pixels off the centre, dy up (render.samples: scene/pixel_samples.h). */
-vec3d camera_view_direction_at(const struct scene *s, int i, int j, double dx, double dy);
-vec3d camera_ray_at(const struct scene *s, int i, int j, double dx, double dy);
 /* Where the point at fraction t of the straight segment a -> b (a: the camera) lies on object k's
  * rest-frame shape (the point itself for an object at rest): the event on the photon's path,
  * Poincaré transformed (docs/RELATIVITY.md), in the coordinates the object's keys are written in,

@@ -2,14 +2,51 @@
 #include "render/frame_bands.h"
 #include "io/sample_average.h"
 #include "results/dump_scene.h"
+#include "results/star_light.h"
 #include "scene/pixel_samples.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, int with_state,
-                      enum progress_mode progress, char *err, size_t errlen)
+/* The stars and Milky Way of [sky] on one image of the frame, from its rays' exit directions. */
+static int add_star_light(const struct star_sky *k, struct render_result *img, double dx, double dy, char *err,
+                          size_t errlen)
+{
+    size_t n = (size_t)img->width * img->height;
+    unsigned char *sky = malloc(n ? n : 1);
+    if (!sky) {
+        snprintf(err, errlen, "out of memory for the stars of a %dx%d image", img->width, img->height);
+        return -1;
+    }
+    for (size_t i = 0; i < n; i++)
+        sky[i] = lrintf(img->image[4 * i + 3]) == DUMP_SKY;
+    /* the renderer's subpixel offsets run up the image, as the camera's do (scene/camera.h) */
+    struct star_view v = {img->width, img->height, dx, dy, img->velocity, 4, sky};
+    star_sky_add(k, &v, img->rgba, img->color, NULL);
+    free(sky);
+    return 0;
+}
+
+/* One image of the frame, its rays started (dx, dy) off the pixels' centres, with the stars when
+ * stars is not NULL. */
+static int run_image(struct renderer *r, const struct scene *s, const struct star_sky *stars, double dx, double dy,
+                     struct render_result *out, int with_state, struct frame_progress *p, char *err, size_t errlen)
+{
+    if (!stars)
+        return frame_run_image(r, s, dx, dy, out, with_state, p, err, errlen);
+    if (frame_run_image(r, s, dx, dy, out, render_read_with_sky(with_state), p, err, errlen) != 0)
+        return -1;
+    if (add_star_light(stars, out, dx, dy, err, errlen) != 0) {
+        render_result_free(out);
+        return -1;
+    }
+    return 0;
+}
+
+static int run_samples(struct renderer *r, const struct scene *s, const struct star_sky *stars,
+                       struct render_result *out, int with_state, enum progress_mode progress, char *err,
+                       size_t errlen)
 {
     struct pixel_samples pattern;
     pixel_samples_make(s->render.samples, &pattern);
@@ -21,7 +58,7 @@ int frame_run_samples(struct renderer *r, const struct scene *s, struct render_r
     long pixel_samples = (long)s->render.width * s->render.height * p.runs;
     p.banded = progress == PROGRESS_ALWAYS || (progress == PROGRESS_AUTO && pixel_samples >= FRAME_BAND_MIN_PIXELS);
     if (pattern.n == 1) {
-        int rc = frame_run_image(r, s, 0.0, 0.0, out, with_state, &p, err, errlen);
+        int rc = run_image(r, s, stars, 0.0, 0.0, out, with_state, &p, err, errlen);
         progress_end(&p.line);
         return rc;
     }
@@ -37,7 +74,7 @@ int frame_run_samples(struct renderer *r, const struct scene *s, struct render_r
         rc = frame_run_image(r, s, 0.0, 0.0, out, RENDER_READ_STATE, &p, err, errlen);
         p.run++;
     } else {
-        rc = frame_run_image(r, s, pattern.dx[0], pattern.dy[0], out, with_state, &p, err, errlen);
+        rc = run_image(r, s, stars, pattern.dx[0], pattern.dy[0], out, with_state, &p, err, errlen);
         if (rc == 0)
             sample_average_add(&sum, out->rgba, out->color);
         first = 1;
@@ -46,7 +83,7 @@ int frame_run_samples(struct renderer *r, const struct scene *s, struct render_r
     for (int k = first; k < pattern.n && rc == 0; k++) {
         struct render_result sample;
         p.sample = k;
-        rc = frame_run_image(r, s, pattern.dx[k], pattern.dy[k], &sample, 0, &p, err, errlen);
+        rc = run_image(r, s, stars, pattern.dx[k], pattern.dy[k], &sample, RENDER_READ_IMAGE, &p, err, errlen);
         p.run++;
         if (rc == 0) {
             sample_average_add(&sum, sample.rgba, sample.color);
@@ -61,6 +98,23 @@ int frame_run_samples(struct renderer *r, const struct scene *s, struct render_r
         render_result_free(out);
     sample_average_free(&sum);
     progress_end(&p.line);
+    return rc;
+}
+
+int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, int with_state,
+                      enum progress_mode progress, char *err, size_t errlen)
+{
+    if (!star_sky_wanted(s))
+        return run_samples(r, s, NULL, out, with_state, progress, err, errlen);
+    struct star_sky *stars = malloc(sizeof *stars);
+    if (!stars) {
+        snprintf(err, errlen, "out of memory for the stars of the sky");
+        return -1;
+    }
+    int rc = star_sky_init(stars, s, err, errlen) == 0 ? run_samples(r, s, stars, out, with_state, progress, err, errlen)
+                                                        : -1;
+    star_sky_free(stars);
+    free(stars);
     return rc;
 }
 

@@ -15,8 +15,9 @@ static int frame_alloc(struct render_result *out, int w, int h, int with_state, 
     if (ok && hdr)
         ok = (out->color = malloc(4 * n * sizeof(float))) != NULL;
     float **state[4] = {&out->position, &out->velocity, &out->hit, &out->image};
-    for (int k = with_state == RENDER_READ_OUTCOMES ? 3 : 0; k < 4 && with_state != RENDER_READ_IMAGE && ok; k++)
-        ok = (*state[k] = malloc(4 * n * sizeof(float))) != NULL;
+    for (int k = 0; k < 4 && ok; k++)
+        if (render_read_includes(with_state, k))
+            ok = (*state[k] = malloc(4 * n * sizeof(float))) != NULL;
     if (!ok) {
         render_result_free(out);
         snprintf(err, errlen, "out of memory for a %dx%d frame", w, h);

@@ -265,6 +265,18 @@ int renderer_read_position(struct renderer *r, int x, int y, float xyzw[4], char
     return 0;
 }
 
+int render_read_includes(int with_state, int k)
+{
+    switch (with_state) {
+    case RENDER_READ_STATE: return 1;
+    case RENDER_READ_OUTCOMES: return k == 3;
+    case RENDER_READ_SKY: return k == 1 || k == 3;
+    default: return 0;
+    }
+}
+
+int render_read_with_sky(int with_state) { return with_state == RENDER_READ_STATE ? RENDER_READ_STATE : RENDER_READ_SKY; }
+
 int renderer_read(struct renderer *r, struct render_result *out, int with_state, char *err, size_t errlen)
 {
     struct raystate *rs = &r->rs;
@@ -306,12 +318,14 @@ int renderer_read(struct renderer *r, struct render_result *out, int with_state,
     }
     if (with_state == RENDER_READ_IMAGE)
         return 0;
-    int first = with_state == RENDER_READ_OUTCOMES ? 3 : 0;   /* the image texture is written by every pipeline */
-    if (first == 0 && renderer_complete_state(r, err, errlen) != 0)
+    /* the image and velocity textures are written by every pipeline, position and hit on demand */
+    if (render_read_includes(with_state, 0) && renderer_complete_state(r, err, errlen) != 0)
         return -1;
     float **dst[4] = {&out->position, &out->velocity, &out->hit, &out->image};
     GLuint src[4] = {rs->result_position, rs->result_velocity, rs->result_hit, rs->result_image};
-    for (int k = first; k < 4; k++) {
+    for (int k = 0; k < 4; k++) {
+        if (!render_read_includes(with_state, k))
+            continue;
         *dst[k] = malloc(n * 4 * sizeof(float));
         if (!*dst[k]) {
             snprintf(err, errlen, "out of memory reading the ray state back");

@@ -42,8 +42,14 @@ int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int 
 void renderer_set_subpixel(struct renderer *r, double dx, double dy);
 /* What renderer_read reads besides the image: nothing, the whole ray state, or only the image
  * texture with each ray's outcome code (what a summary needs; a single-pass frame then skips the
- * pass that writes hit and position). */
-enum render_read { RENDER_READ_IMAGE = 0, RENDER_READ_STATE = 1, RENDER_READ_OUTCOMES = 2 };
+ * pass that writes hit and position), or the outcome codes and exit directions (what the stars of the
+ * sky are drawn from, results/star_light.h). */
+enum render_read { RENDER_READ_IMAGE = 0, RENDER_READ_STATE = 1, RENDER_READ_OUTCOMES = 2, RENDER_READ_SKY = 3 };
+/* Whether a read of kind with_state brings back part k of the ray state: 0 position, 1 velocity,
+ * 2 hit, 3 image (render_result's order). */
+int render_read_includes(int with_state, int k);
+/* The read that brings back what both with_state and RENDER_READ_SKY ask for. */
+int render_read_with_sky(int with_state);
 /* With on, each run also keeps the final colour unclamped, as floats, and renderer_read returns it
  * in render_result.color (16-bit PNG and PFM output). Off until set. */
 void renderer_set_hdr(struct renderer *r, int on);

@@ -105,6 +105,13 @@ struct sky {
     vec3d color;             /* SKY_COLOR */
     char cubemap[SCENE_PATH_LEN]; /* SKY_CUBEMAP: path prefix, faces are PREFIX_{px,nx,py,ny,pz,nz}.png */
     double temperature;      /* K; > 0: every texel a black body, its luminance from the texel */
+    /* Point stars and the Milky Way over the sky above (results/star_light.h) */
+    int stars;               /* stars of a generated catalogue (physics/star_catalogue.h); 0: none */
+    int star_seed;           /* the catalogue's seed: the same stars for the same seed */
+    double star_brightness;  /* light of a 6th-magnitude star at rest, linear, summed over its pixels */
+    double star_size;        /* standard deviation of a star's Gaussian image, pixels */
+    double milky_way;        /* linear radiance of the galactic band at its brightest; 0: none */
+    vec3d galactic_pole;     /* the band's axis; the stars gather toward the plane it is normal to */
 };
 
 /* Relativistic effects shown (Müller, Grottel and Weiskopf 2010): aberration only; black-body

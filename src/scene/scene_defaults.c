@@ -175,7 +175,7 @@ void object_rest_geometry(const struct object *o, struct object *rest)
 
 int scene_has_black_body(const struct scene *s)
 {
-    int found = s->sky.temperature > 0.0;
+    int found = s->sky.temperature > 0.0 || s->sky.stars > 0 || s->sky.milky_way > 0.0;
     for (int i = 0; i < s->n_lights; i++)
         found |= s->lights[i].temperature > 0.0;
     for (int i = 0; i < s->n_objects; i++)
@@ -205,6 +205,10 @@ void scene_defaults(struct scene *s)
     model_defaults(&s->model);
     s->sky.type = SKY_COLOR;
     s->sky.color = v3(0.02, 0.02, 0.05);
+    s->sky.star_seed = 1;
+    s->sky.star_brightness = 0.1;
+    s->sky.star_size = 0.6;
+    s->sky.galactic_pole = v3(0.25, 0.9, 0.35);
     s->ambient_light = v3(1.0, 1.0, 1.0);
     s->quality = (struct quality_bound){-1.0, -1.0, -1.0};
 }

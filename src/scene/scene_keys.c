@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include "scene/scene_keys.h"
 #include "io/text_file.h"
+#include "physics/star_catalogue.h"
 
 /* ---- names of enumerations, in enum order ------------------------------------------------- */
 
@@ -517,6 +518,12 @@ const struct scene_key scene_keys[] = {
     {SECTION_SKY, "color", KEY_COLOR, COLOR_RANGE, .offset = AT_SCENE(sky.color)},
     {SECTION_SKY, "cubemap", KEY_PATH, .set = set_cubemap},
     {SECTION_SKY, "temperature", KEY_NUMBER, TEMPERATURE_RANGE, .offset = AT_SCENE(sky.temperature)},
+    {SECTION_SKY, "stars", KEY_INTEGER, .lo = 0, .hi = STAR_CATALOGUE_MAX, .offset = AT_SCENE(sky.stars)},
+    {SECTION_SKY, "star_seed", KEY_INTEGER, .lo = 0, .hi = 2147483647, .offset = AT_SCENE(sky.star_seed)},
+    {SECTION_SKY, "star_brightness", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .offset = AT_SCENE(sky.star_brightness)},
+    {SECTION_SKY, "star_size", KEY_NUMBER, .lo = 0.3, .hi = 8.0, .offset = AT_SCENE(sky.star_size)},
+    {SECTION_SKY, "milky_way", KEY_NUMBER, .lo = 0.0, .hi = 100.0, .offset = AT_SCENE(sky.milky_way)},
+    {SECTION_SKY, "galactic_pole", KEY_VECTOR, ANY, .flags = KEY_NONZERO, .offset = AT_SCENE(sky.galactic_pole)},
 
     {SECTION_OBJECT, "type", CHOICE(primitive_names, set_object_type)},
     {SECTION_OBJECT, "center", KEY_VECTOR, ANY,

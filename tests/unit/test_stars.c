@@ -1,0 +1,288 @@
+/* The star sky ([sky] stars, milky_way): the generated catalogue (deterministic, its distributions,
+ * its lookup by direction), black-body colours, and every star of a test sky at the pixel its
+ * direction predicts with its flux, in flat space at rest and seen from a ship at 0.6 c, on both
+ * engines; and a lensed star's brightness against the point lens's magnification. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <stdlib.h>
+#include "hard_cases.h"
+#include "io/sample_average.h"
+#include "physics/relativity.h"
+#include "physics/star_catalogue.h"
+#include "render/frame.h"
+#include "results/star_light.h"
+#include "scene/camera.h"
+
+/* The same seed gives the same stars, another seed other stars; every star lies in its cell. */
+static void test_catalogue_deterministic(void **state)
+{
+    (void)state;
+    struct star_catalogue a, b, c;
+    vec3d pole = v3(0.2, 1.0, 0.3);
+    assert_int_equal(star_catalogue_make(&a, 5000, 7, pole), 0);
+    assert_int_equal(star_catalogue_make(&b, 5000, 7, pole), 0);
+    assert_int_equal(star_catalogue_make(&c, 5000, 8, pole), 0);
+    assert_int_equal(a.n, 5000);
+    assert_memory_equal(a.stars, b.stars, 5000 * sizeof *a.stars);
+    int same = 0;
+    for (int i = 0; i < 5000; i++)
+        same += memcmp(&a.stars[i], &c.stars[i], sizeof a.stars[i]) == 0;
+    assert_int_equal(same, 0);
+    for (int cell = 0; cell < a.rows * a.columns; cell++)
+        for (int k = a.cell_start[cell]; k < a.cell_start[cell + 1]; k++) {
+            double lat, lon;
+            star_catalogue_galactic(&a, a.stars[k].direction, &lat, &lon);
+            int row = (int)floor((lat + 0.5 * PI_D) / a.row_step), col = (int)floor((lon + PI_D) / a.column_step);
+            row = row >= a.rows ? a.rows - 1 : row;
+            col = col >= a.columns ? a.columns - 1 : col;
+            assert_int_equal(row * a.columns + col, cell);
+            assert_true(fabs(v3_len(a.stars[k].direction) - 1.0) < 1e-12);
+        }
+    assert_int_equal(a.cell_start[a.rows * a.columns], 5000);
+    star_catalogue_free(&a);
+    star_catalogue_free(&b);
+    star_catalogue_free(&c);
+}
+
+/* |observed - expected| within 5 standard deviations of a binomial count. */
+static void assert_share(long count, long n, double p, const char *what)
+{
+    double sd = sqrt(n * p * (1.0 - p));
+    if (fabs(count - n * p) > 5.0 * sd)
+        fail_msg("%s: %ld of %ld, expected %.0f +- %.0f", what, count, n, n * p, 5.0 * sd);
+}
+
+/* 200000 stars: magnitudes follow N(<m) ~ 10^(0.5 m) (a tenth of the stars are 2 magnitudes
+ * brighter than the faintest), the spectral classes come in their shares, and the disk half gathers
+ * toward the galactic plane. */
+static void test_catalogue_distributions(void **state)
+{
+    (void)state;
+    struct star_catalogue c;
+    const int n = 200000;
+    assert_int_equal(star_catalogue_make(&c, n, 1, v3(0.0, 0.0, 1.0)), 0);
+    double faintest = star_faintest_magnitude(n), brightest = INFINITY, dimmest = -INFINITY;
+    assert_true(fabs(faintest - (6.0 + 2.0 * log10(40.0))) < 1e-12);
+    long two_brighter = 0, near_plane = 0, hot = 0, a_class = 0, m_class = 0;
+    for (int i = 0; i < n; i++) {
+        const struct star *s = &c.stars[i];
+        brightest = fmin(brightest, s->magnitude);
+        dimmest = fmax(dimmest, s->magnitude);
+        two_brighter += s->magnitude < faintest - 2.0;
+        near_plane += fabs(s->direction.z) < sin(0.2);
+        assert_true(s->temperature >= 2400.0 && s->temperature <= 45000.0);
+        hot += s->temperature >= 30000.0;
+        a_class += s->temperature >= 7500.0 && s->temperature < 10000.0;
+        m_class += s->temperature < 3700.0;
+    }
+    assert_true(dimmest <= faintest && brightest < faintest - 8.0);
+    assert_share(two_brighter, n, 0.1, "stars 2 magnitudes above the faintest");
+    assert_share(hot, n, 0.005, "O stars");
+    assert_share(a_class, n, 0.2, "A stars");
+    assert_share(m_class, n, 0.095, "M stars");
+    /* uniform half: sin(0.2) of the sphere; disk half: 1 - e^-1 within a latitude scale */
+    assert_share(near_plane, n, 0.5 * sin(0.2) + 0.5 * (1.0 - exp(-1.0)), "stars within 0.2 rad of the plane");
+    star_catalogue_free(&c);
+}
+
+struct visited {
+    char *seen;
+    const struct star *base;
+};
+
+static void mark(const struct star *s, void *arg)
+{
+    struct visited *v = arg;
+    v->seen[s - v->base] = 1;
+}
+
+/* The lookup visits every star within the radius, at the poles and across longitude's seam too. */
+static void test_catalogue_near(void **state)
+{
+    (void)state;
+    struct star_catalogue c;
+    assert_int_equal(star_catalogue_make(&c, 20000, 3, v3(0.3, -0.2, 1.0)), 0);
+    struct visited v = {malloc(c.n), c.stars};
+    uint64_t x = 12345;
+    const double radii[] = {1e-4, 3e-3, 0.05, 0.3, 1.6};
+    for (int trial = 0; trial < 400; trial++) {
+        double u[3];
+        for (int k = 0; k < 3; k++) {
+            x = x * 6364136223846793005ull + 1442695040888963407ull;
+            u[k] = (double)(x >> 11) * 0x1.0p-53;
+        }
+        vec3d d = v3_normalize(v3(u[0] - 0.5, u[1] - 0.5, u[2] - 0.5));
+        if (trial < 20)   /* right at the poles and on the seam at longitude pi */
+            d = trial < 10 ? v3_scale(c.pole, trial % 2 ? 1.0 : -1.0) : v3_normalize(v3_scale(c.x_axis, -1.0));
+        double radius = radii[trial % 5];
+        memset(v.seen, 0, c.n);
+        star_catalogue_near(&c, d, radius, mark, &v);
+        for (int i = 0; i < c.n; i++)
+            if (acos(fmin(v3_dot(c.stars[i].direction, d), 1.0)) <= radius && !v.seen[i])
+                fail_msg("trial %d: star %d within %g rad was not visited", trial, i, radius);
+    }
+    free(v.seen);
+    star_catalogue_free(&c);
+}
+
+static double luminance(const double rgb[3]) { return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]; }
+
+/* Unit luminance; a 6500 K star nearly white, a 3000 K one red, a 20000 K one blue. */
+static void test_chromaticity(void **state)
+{
+    (void)state;
+    double c[3];
+    star_chromaticity(6500.0, c);
+    /* BT.709's luminance row of the XYZ -> RGB matrix, to its printed digits */
+    assert_true(fabs(luminance(c) - 1.0) < 1e-3);
+    assert_true(fabs(c[0] - 1.0) < 0.1 && fabs(c[1] - 1.0) < 0.1 && fabs(c[2] - 1.0) < 0.1);
+    star_chromaticity(3000.0, c);
+    assert_true(fabs(luminance(c) - 1.0) < 1e-3);
+    assert_true(c[0] > c[1] && c[1] > c[2]);
+    star_chromaticity(20000.0, c);
+    assert_true(c[2] > c[1] && c[1] > c[0]);
+}
+
+/* A flat scene of point stars only: camera at the origin looking down -z, black sky. */
+static void star_scene(struct scene *s, int width, int height, vec3d velocity)
+{
+    scene_defaults(s);
+    const char *const sets[] = {
+        "model.type=flat", "camera.position=0 0 0", "camera.look_at=0 0 -1", "camera.fov=60",
+        "sky.color=0 0 0", "sky.stars=400", "sky.star_seed=11", "sky.star_size=0.8",
+        "sky.star_brightness=0.01", "render.bound_radius=10", NULL};
+    struct scene_error err;
+    for (int i = 0; sets[i]; i++)
+        if (scene_set(s, sets[i], &err) != 0)
+            fail_msg("%s: %s", err.where, err.message);
+    s->observer.velocity = velocity;
+    s->observer.effects = v3_len(velocity) > 0.0 ? EFFECTS_SEARCHLIGHT : EFFECTS_GEOMETRY;
+    s->render.width = width;
+    s->render.height = height;
+    hc_validate(s);
+}
+
+/* Where star direction d (scene frame) falls on the image: pixel coordinates, x right and y down
+ * from the top-left pixel's centre, through the pinhole camera of s (aberrated to the observer's
+ * frame when it moves). 0 when behind the camera. */
+static int project(const struct scene *s, vec3d d, double *x, double *y)
+{
+    if (v3_len(s->observer.velocity) > 0.0)
+        d = aberrate_to_observer(s->observer.velocity, d);
+    struct camera_frame f;
+    camera_frame_make(s, &f);
+    double z = v3_dot(d, f.forward);
+    if (z <= 0.0)
+        return 0;
+    int w = s->render.width, h = s->render.height;
+    double ndc_x = v3_dot(d, f.right) / z / (f.tan_half * w / h), ndc_y = v3_dot(d, f.up) / z / f.tan_half;
+    *x = (ndc_x + 1.0) * 0.5 * w - 0.5;
+    *y = h - 1 - ((ndc_y + 1.0) * 0.5 * h - 0.5);
+    return 1;
+}
+
+/* Every star of the test sky that lies in view, at least 4 pixels from the edges and from every
+ * other star: the brightest pixel of the 9x9 window about its predicted position is the one the
+ * position falls in, and the window's light sums to the star's flux (times D^2 under the
+ * searchlight) within 1%. color: the image's unclamped sRGB-encoded floats. */
+static int check_stars(const struct scene *s, const float *color, const char *engine)
+{
+    struct star_catalogue c;
+    assert_int_equal(star_catalogue_make(&c, s->sky.stars, (uint64_t)s->sky.star_seed, s->sky.galactic_pole), 0);
+    int w = s->render.width, h = s->render.height, checked = 0;
+    for (int i = 0; i < c.n; i++) {
+        double x, y;
+        if (!project(s, c.stars[i].direction, &x, &y) || x < 4 || y < 4 || x > w - 5 || y > h - 5)
+            continue;
+        int alone = 1;
+        for (int k = 0; k < c.n && alone; k++) {
+            double xk, yk;
+            alone = k == i || !project(s, c.stars[k].direction, &xk, &yk) || hypot(xk - x, yk - y) > 8.0;
+        }
+        double doppler = 1.0;
+        if (s->observer.effects != EFFECTS_GEOMETRY)
+            doppler = camera_doppler(s, aberrate_to_observer(s->observer.velocity, c.stars[i].direction));
+        double chroma[3];
+        star_chromaticity(c.stars[i].temperature * doppler, chroma);
+        /* colours cut at the gamut's edge; positions within 0.05 px of a pixel's border, where
+         * either pixel may be the brighter */
+        double off_x = fabs(x - floor(x) - 0.5), off_y = fabs(y - floor(y) - 0.5);
+        if (!alone || fabs(luminance(chroma) - 1.0) > 1e-3 || off_x < 0.05 || off_y < 0.05)
+            continue;
+        int px = (int)lrint(x), py = (int)lrint(y), best_x = -1, best_y = -1;
+        double best = -1.0, sum = 0.0;
+        for (int v = py - 4; v <= py + 4; v++)
+            for (int u = px - 4; u <= px + 4; u++) {
+                const float *p = color + 4 * ((size_t)v * w + u);
+                double lin[3] = {srgb_to_linear(p[0]), srgb_to_linear(p[1]), srgb_to_linear(p[2])};
+                double l = luminance(lin);
+                sum += l;
+                if (l > best) {
+                    best = l;
+                    best_x = u;
+                    best_y = v;
+                }
+            }
+        double flux = s->sky.star_brightness * pow(10.0, -0.4 * (c.stars[i].magnitude - 6.0));
+        if (s->observer.effects == EFFECTS_SEARCHLIGHT)
+            flux *= doppler * doppler;
+        if (best_x != px || best_y != py || fabs(sum / flux - 1.0) > 0.01)
+            fail_msg("%s: star %d predicted at (%.2f, %.2f): brightest pixel (%d, %d), light %.5g of flux %.5g",
+                     engine, i, x, y, best_x, best_y, sum, flux);
+        checked++;
+    }
+    star_catalogue_free(&c);
+    return checked;
+}
+
+static void stars_on_both_engines(vec3d velocity)
+{
+    static struct scene s;
+    star_scene(&s, 240, 180, velocity);
+    struct render_result g;
+    char err[2048];
+    int bad;
+    if (render_frame(&s, &(struct frame_request){.backend = "egl", .hdr = 1}, &g, NULL, err, sizeof err, &bad) != 0)
+        fail_msg("render: %s", err);
+    int on_gpu = check_stars(&s, g.color, "gpu");
+    struct cpu_image cpu;
+    struct cpu_render_options o = {.threads = 0, .hdr = 1};
+    ref_options_default(&o.ref, &s);
+    if (cpu_render(&s, &o, &cpu, err, sizeof err) != 0)
+        fail_msg("cpu render: %s", err);
+    int on_cpu = check_stars(&s, cpu.color, "cpu");
+    print_message("beta %.2f: %d stars at their pixels with their flux on the GPU, %d on the CPU\n",
+                  v3_len(velocity), on_gpu, on_cpu);
+    assert_true(on_gpu >= 5 && on_gpu == on_cpu);
+    render_result_free(&g);
+    cpu_image_free(&cpu);
+}
+
+static void test_flat_stars_at_rest(void **state)
+{
+    (void)state;
+    stars_on_both_engines(v3(0.0, 0.0, 0.0));
+}
+
+/* At 0.6 c along the view: each star where aberration puts it, with its flux times D^2. */
+static void test_flat_stars_aberrated(void **state)
+{
+    (void)state;
+    stars_on_both_engines(v3(0.0, 0.0, -0.6));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_catalogue_deterministic),
+        cmocka_unit_test(test_catalogue_distributions),
+        cmocka_unit_test(test_catalogue_near),
+        cmocka_unit_test(test_chromaticity),
+        cmocka_unit_test(test_flat_stars_at_rest),
+        cmocka_unit_test(test_flat_stars_aberrated),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
