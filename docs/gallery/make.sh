@@ -9,6 +9,8 @@ BT=./bentray
 OUT=docs/gallery
 md=docs/GALLERY.md
 ANIMATE="bentray animate --scene assets/scenes/demo.scene --frames 48 --size 320x180 --set-range model.mass=0:1.4 --fps 12 --out FRAMES --video docs/gallery/demo_mass.gif"
+CUBEMAP_SKY="bentray render --scene assets/scenes/star_sky.scene --size 1920x1080 --set sky.stars=0 --set sky.milky_way=0 --set sky.type=cubemap --set sky.cubemap=../sky/stars"
+POINT_SKY="bentray render --scene assets/scenes/star_sky.scene --size 1920x1080"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 {
@@ -26,9 +28,27 @@ trap 'rm -rf "$tmp"' EXIT
     echo
     echo "![The demo's black hole growing from no mass](gallery/demo_mass.gif)"
     echo
+    echo "## The star sky at 1920x1080"
+    echo
+    echo "star_sky.scene at 1920x1080, twice: first with the sky of a cube map of stars, 256x256 texels a"
+    echo "face, as the scenes had it before \`[sky] stars\`, then with 30000 point stars and the Milky Way"
+    echo "(docs/STARS.md). The texels blur into blobs and smear into arcs next to the shadow; the point"
+    echo "stars stay points of the same size everywhere, brighter where the hole magnifies them."
+    echo
+    echo "\`$CUBEMAP_SKY\`"
+    echo
+    echo "![star_sky with the cube map of stars](gallery/star_sky_cubemap_1080p.png)"
+    echo
+    echo "\`$POINT_SKY\`"
+    echo
+    echo "![star_sky with point stars and the Milky Way](gallery/star_sky_1080p.png)"
+    echo
     echo "## Scenes"
     echo
 } > "$tmp/GALLERY.md"
+$BT render --scene assets/scenes/star_sky.scene --size 1920x1080 --set sky.stars=0 --set sky.milky_way=0 \
+    --set sky.type=cubemap --set sky.cubemap=../sky/stars --out "$OUT/star_sky_cubemap_1080p.png" --force --quiet > /dev/null
+$BT render --scene assets/scenes/star_sky.scene --size 1920x1080 --out "$OUT/star_sky_1080p.png" --force --quiet > /dev/null
 $BT animate --scene assets/scenes/demo.scene --frames 48 --size 320x180 --set-range model.mass=0:1.4 --fps 12 \
     --out "$tmp/frames" --video "$OUT/demo_mass.gif" --force --quiet > /dev/null
 for f in assets/scenes/*.scene; do

@@ -75,6 +75,8 @@ int bench_relativity(struct bench *b, char *err, size_t errlen);
 int bench_kiosk(struct bench *b, char *err, size_t errlen);
 /* the cost of render.samples against the error it leaves (bench_antialias.c) */
 int bench_antialias(struct bench *b, char *err, size_t errlen);
+/* the cost of the stars of the sky, drawn on the CPU (bench_stars.c) */
+int bench_stars(struct bench *b, char *err, size_t errlen);
 
 /* Open out_dir/bench/NAME for writing (CSV, gnuplot script). NULL with err. */
 FILE *bench_data_file(struct bench *b, const char *name, char *err, size_t errlen);

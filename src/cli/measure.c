@@ -48,8 +48,11 @@ int measure_gpu(const struct scene *s, const char *backend, int need_state, enum
     m->nonfinite = count_nonfinite(&res);
     char samples[48];
     samples_text(s, samples, sizeof samples);
-    snprintf(m->how, sizeof m->how, "%s on %s (%s), %.3f s%s, %ld passes (%s: %s)", info.path_description,
-             info.backend, info.renderer, res.seconds, samples, res.passes, info.pipeline, info.pipeline_why);
+    char stars[64] = "";
+    if (res.sky_seconds > 0.0)
+        snprintf(stars, sizeof stars, ", the stars of the sky %.3f s on the CPU", res.sky_seconds);
+    snprintf(m->how, sizeof m->how, "%s on %s (%s), %.3f s%s%s, %ld passes (%s: %s)", info.path_description,
+             info.backend, info.renderer, res.seconds, samples, stars, res.passes, info.pipeline, info.pipeline_why);
     render_result_free(&res);
     return 0;
 }

@@ -78,15 +78,23 @@ static int cell_of(const struct star_catalogue *c, vec3d d)
     return row * c->columns + column;
 }
 
-int star_catalogue_make(struct star_catalogue *c, int n, uint64_t seed, vec3d pole)
+void star_catalogue_frame(struct star_catalogue *c, vec3d pole, vec3d centre)
+{
+    c->pole = v3_normalize(pole);
+    vec3d in_plane = v3_sub(centre, v3_scale(c->pole, v3_dot(centre, c->pole)));
+    c->x_axis = v3_len(in_plane) > 1e-9 * v3_len(centre) && v3_len(in_plane) > 0.0 ? v3_normalize(in_plane)
+                                                                                   : v3_perpendicular(c->pole);
+    c->y_axis = v3_cross(c->pole, c->x_axis);
+}
+
+int star_catalogue_make(struct star_catalogue *c, int n, uint64_t seed, vec3d pole, vec3d centre)
 {
     memset(c, 0, sizeof *c);
     n = n < 0 ? 0 : n > STAR_CATALOGUE_MAX ? STAR_CATALOGUE_MAX : n;
-    c->pole = v3_normalize(pole);
-    c->x_axis = v3_perpendicular(c->pole);
-    c->y_axis = v3_cross(c->pole, c->x_axis);
-    /* about four stars a cell */
-    int rows = (int)lrint(sqrt(n / 8.0));
+    star_catalogue_frame(c, pole, centre);
+    /* about one star a cell: a pixel's reach is far smaller than a cell, so that most lookups visit
+     * one cell, and the fewer stars it holds the fewer are tested */
+    int rows = (int)lrint(sqrt(n / 2.0));
     c->rows = rows < 1 ? 1 : rows > 2048 ? 2048 : rows;
     c->columns = 2 * c->rows;
     c->row_step = PI_D / c->rows;

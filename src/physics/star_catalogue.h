@@ -40,9 +40,12 @@ struct star_catalogue {
     int32_t *cell_start;   /* rows * columns + 1: stars of cell c are [cell_start[c], cell_start[c + 1]) */
 };
 
-/* Generate n stars (0..STAR_CATALOGUE_MAX) from seed around the galactic pole (need not be unit;
- * not zero). 0, or -1 when out of memory (the catalogue is then empty). */
-int star_catalogue_make(struct star_catalogue *c, int n, uint64_t seed, vec3d pole);
+/* Generate n stars (0..STAR_CATALOGUE_MAX) from seed in the galactic frame of pole and centre
+ * (star_catalogue_frame). 0, or -1 when out of memory (the catalogue is then empty). */
+int star_catalogue_make(struct star_catalogue *c, int n, uint64_t seed, vec3d pole, vec3d centre);
+/* The galactic frame alone: pole (need not be unit; not zero), and longitude 0 toward centre's part
+ * in the galactic plane (a direction of the plane's own choosing when centre lies along the pole). */
+void star_catalogue_frame(struct star_catalogue *c, vec3d pole, vec3d centre);
 void star_catalogue_free(struct star_catalogue *c);
 
 /* Calls visit(star, arg) for every star whose direction lies within `radius` radians of the unit

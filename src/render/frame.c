@@ -37,10 +37,12 @@ static int run_image(struct renderer *r, const struct scene *s, const struct sta
         return frame_run_image(r, s, dx, dy, out, with_state, p, err, errlen);
     if (frame_run_image(r, s, dx, dy, out, render_read_with_sky(with_state), p, err, errlen) != 0)
         return -1;
+    double t0 = progress_now();
     if (add_star_light(stars, out, dx, dy, err, errlen) != 0) {
         render_result_free(out);
         return -1;
     }
+    out->sky_seconds += progress_now() - t0;
     return 0;
 }
 
@@ -88,6 +90,7 @@ static int run_samples(struct renderer *r, const struct scene *s, const struct s
         if (rc == 0) {
             sample_average_add(&sum, sample.rgba, sample.color);
             out->seconds += sample.seconds;
+            out->sky_seconds += sample.sky_seconds;
             out->passes += sample.passes;
         }
         render_result_free(&sample);

@@ -23,6 +23,8 @@ struct render_result {
     float *color;                           /* the same unclamped, RGBA floats (renderer_set_hdr); else NULL */
     float *position, *velocity, *hit, *image; /* ray state, RGBA floats, top row first; NULL if not read */
     double seconds;                         /* wall time of the GPU passes (glFinish included) */
+    double sky_seconds;                     /* wall time of the stars of the sky, drawn on the CPU
+                                               (render/frame.h); 0 without them */
     long passes;                            /* quads drawn */
 };
 

@@ -59,7 +59,8 @@ int star_sky_init(struct star_sky *k, const struct scene *s, char *err, size_t e
         star_chromaticity(t, k->chroma[i]);
     }
     if (s->sky.stars > 0 &&
-        star_catalogue_make(&k->catalogue, s->sky.stars, (uint64_t)s->sky.star_seed, s->sky.galactic_pole) != 0) {
+        star_catalogue_make(&k->catalogue, s->sky.stars, (uint64_t)s->sky.star_seed, s->sky.galactic_pole,
+                            s->sky.galactic_center) != 0) {
         snprintf(err, errlen, "out of memory for a catalogue of %d stars ([sky] stars)", s->sky.stars);
         return -1;
     }
@@ -67,12 +68,8 @@ int star_sky_init(struct star_sky *k, const struct scene *s, char *err, size_t e
     for (int i = 0; i < k->catalogue.n; i++)
         brightest = fmin(brightest, k->catalogue.stars[i].magnitude);
     k->brightest_flux = k->catalogue.n > 0 ? star_flux(s, brightest) : 0.0;
-    if (k->catalogue.n == 0 && s->sky.milky_way > 0.0) {
-        /* the band's frame without stars */
-        k->catalogue.pole = v3_normalize(s->sky.galactic_pole);
-        k->catalogue.x_axis = v3_perpendicular(k->catalogue.pole);
-        k->catalogue.y_axis = v3_cross(k->catalogue.pole, k->catalogue.x_axis);
-    }
+    if (k->catalogue.n == 0)
+        star_catalogue_frame(&k->catalogue, s->sky.galactic_pole, s->sky.galactic_center);   /* the band's */
     return 0;
 }
 
@@ -83,6 +80,9 @@ void star_sky_free(struct star_sky *k) { star_catalogue_free(&k->catalogue); }
  * ripple in longitude for its clouds. Smooth: it holds up at any resolution. */
 static double milky_way_shape(const struct star_catalogue *c, vec3d d)
 {
+    /* beyond 0.95 rad of the plane both the disk and the bulge are below 1e-6 of their peak */
+    if (fabs(v3_dot(d, c->pole)) > 0.8134)
+        return 0.0;
     double b, l;
     star_catalogue_galactic(c, d, &b, &l);
     double towards_centre = 0.5 + 0.5 * cos(l);
@@ -126,6 +126,7 @@ struct pixel_stars {
     vec3d d, jx, jy;
     double inverse[3];        /* (J^T J)^-1: xx, xy, yy */
     double gain;              /* flux factor: magnification, and D^2 under the searchlight */
+    double reach_cos;         /* cosine of the angle the brightest star's light reaches from d */
     double doppler;           /* temperature factor */
     double rgb[3];
 };
@@ -135,7 +136,7 @@ static void add_star(const struct star *star, void *arg)
     struct pixel_stars *p = arg;
     const struct scene *s = p->k->scene;
     double along = v3_dot(star->direction, p->d);
-    if (along <= 0.0)
+    if (along < p->reach_cos || along <= 0.0)   /* most of the stars of the cells visited */
         return;
     vec3d t = v3_sub(v3_scale(star->direction, 1.0 / along), p->d);   /* on the tangent plane at d */
     double rx = v3_dot(p->jx, t), ry = v3_dot(p->jy, t);
@@ -161,8 +162,9 @@ void star_sky_light(const struct star_sky *k, const struct star_view *v, int i, 
     int doppler_on = s->observer.effects != EFFECTS_GEOMETRY;
     int searchlight = s->observer.effects == EFFECTS_SEARCHLIGHT;
     double doppler = doppler_on ? camera_doppler(s, camera_frame_view(&k->camera, i, j, v->dx, v->dy)) : 1.0;
-    if (s->sky.milky_way > 0.0) {
-        double c[3], radiance = s->sky.milky_way * milky_way_shape(&k->catalogue, d);
+    double band = s->sky.milky_way > 0.0 ? milky_way_shape(&k->catalogue, d) : 0.0;
+    if (band > 0.0) {
+        double c[3], radiance = s->sky.milky_way * band;
         radiance *= searchlight ? doppler * doppler * doppler * doppler : 1.0;
         chroma(k, k->milky_way_temperature * doppler, c);
         for (int n = 0; n < 3; n++)
@@ -193,6 +195,7 @@ void star_sky_light(const struct star_sky *k, const struct star_view *v, int i, 
     double reach = reach_px * widest;
     if (!(reach <= STAR_FOOTPRINT_MAX_RAD))
         return;
+    p.reach_cos = cos(reach);
     star_catalogue_near(&k->catalogue, d, reach, add_star, &p);
     for (int n = 0; n < 3; n++)
         rgb[n] += p.rgb[n];
@@ -211,6 +214,9 @@ static void *add_rows(void *arg)
 {
     const struct add_job *job = arg;
     const struct star_view *v = job->v;
+    double decoded[256];
+    for (int code = 0; code < 256; code++)
+        decoded[code] = srgb_to_linear(code / 255.0);
     for (int j = job->first_row; j < v->height; j += job->row_step)
         for (int i = 0; i < v->width; i++) {
             double light[3];
@@ -220,7 +226,7 @@ static void *add_rows(void *arg)
             size_t at = 4 * ((size_t)j * v->width + i);
             for (int c = 0; c < 3; c++) {
                 if (job->rgba)
-                    job->rgba[at + c] = unorm8(linear_to_srgb(srgb_to_linear(job->rgba[at + c] / 255.0) + light[c]));
+                    job->rgba[at + c] = unorm8(linear_to_srgb(decoded[job->rgba[at + c]] + light[c]));
                 if (job->color)
                     job->color[at + c] = (float)linear_to_srgb_unclamped(srgb_to_linear(job->color[at + c]) + light[c]);
                 if (job->color_d)

@@ -112,6 +112,7 @@ struct sky {
     double star_size;        /* standard deviation of a star's Gaussian image, pixels */
     double milky_way;        /* linear radiance of the galactic band at its brightest; 0: none */
     vec3d galactic_pole;     /* the band's axis; the stars gather toward the plane it is normal to */
+    vec3d galactic_center;   /* toward the band's bright bulge (its part in the plane counts) */
 };
 
 /* Relativistic effects shown (Müller, Grottel and Weiskopf 2010): aberration only; black-body

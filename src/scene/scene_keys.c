@@ -524,6 +524,7 @@ const struct scene_key scene_keys[] = {
     {SECTION_SKY, "star_size", KEY_NUMBER, .lo = 0.3, .hi = 8.0, .offset = AT_SCENE(sky.star_size)},
     {SECTION_SKY, "milky_way", KEY_NUMBER, .lo = 0.0, .hi = 100.0, .offset = AT_SCENE(sky.milky_way)},
     {SECTION_SKY, "galactic_pole", KEY_VECTOR, ANY, .flags = KEY_NONZERO, .offset = AT_SCENE(sky.galactic_pole)},
+    {SECTION_SKY, "galactic_center", KEY_VECTOR, ANY, .flags = KEY_NONZERO, .offset = AT_SCENE(sky.galactic_center)},
 
     {SECTION_OBJECT, "type", CHOICE(primitive_names, set_object_type)},
     {SECTION_OBJECT, "center", KEY_VECTOR, ANY,

@@ -256,5 +256,9 @@ int scene_validate(const struct scene *s, struct scene_error *err)
     if (s->sky.type == SKY_CUBEMAP && s->sky.cubemap[0] == '\0')
         return invalid(s, err, "[sky] type is cubemap but no cubemap is given: add cubemap = PREFIX "
                        "(faces PREFIX_px.png ... PREFIX_nz.png)");
+    vec3d pole = v3_normalize(s->sky.galactic_pole), centre = v3_normalize(s->sky.galactic_center);
+    if (v3_len(v3_cross(pole, centre)) < 1e-6)
+        return invalid(s, err, "[sky] galactic_center lies along galactic_pole: it must point away from the pole, "
+                       "toward the Milky Way's bulge in the galactic plane");
     return 0;
 }

@@ -215,6 +215,13 @@ check "quality not stated" 2 "states no \[quality\]" -- $BT error --scene "$TMP/
 # relativity: the observer's speed and the effects are checked
 check "observer too fast" 2 "observer.velocity has speed 1.2 c" -- $BT render --scene $S --set observer.velocity="0 0 1.2" --out "$TMP/r.png"
 check "effects without black body" 2 "nothing in the scene is one" -- $BT render --scene $S --set observer.effects=doppler --out "$TMP/r.png"
+# point stars (docs/STARS.md): drawn on both back-ends, the same rays and colours; bad keys named
+check "stars egl" 0 "the stars of the sky [0-9.]+ s on the CPU" -- $BT render --scene assets/scenes/star_sky.scene --size 96x54 --backend egl --out "$TMP/st_egl.png" --dump "$TMP/st_egl.dump" --force
+check "stars osmesa" 0 "the stars of the sky [0-9.]+ s on the CPU" -- $BT render --scene assets/scenes/star_sky.scene --size 96x54 --backend osmesa --out "$TMP/st_osm.png" --dump "$TMP/st_osm.dump" --force
+check "stars backends agree" 0 "image: (identical|PSNR ([6-9][0-9]|[1-9][0-9][0-9])[0-9.]* dB)" -- $BT compare "$TMP/st_egl.dump" "$TMP/st_osm.dump"
+check "stars negative" 2 "key 'stars' in \\[sky\\]: expected an integer from 0 to 1000000" -- $BT render --scene $S --set sky.stars=-1 --out "$TMP/st.png"
+check "star size zero" 2 "key 'star_size' in \\[sky\\]: expected a number from 0.3 to 8" -- $BT render --scene $S --set sky.star_size=0 --out "$TMP/st.png"
+check "galactic center along pole" 2 "galactic_center lies along galactic_pole" -- $BT render --scene $S --set "sky.galactic_pole=0 1 0" --set "sky.galactic_center=0 -2 0" --out "$TMP/st.png"
 check "starflight egl" 0 "76800 sky" -- $BT render --scene assets/scenes/starflight.scene --backend egl --out "$TMP/sf_egl.png"
 check "starflight osmesa" 0 "76800 sky" -- $BT render --scene assets/scenes/starflight.scene --backend osmesa --out "$TMP/sf_osm.png"
 check "starflight backends agree" 0 "outcome differs: 0 of" -- sh -c "$BT render --scene assets/scenes/starflight.scene --size 64x48 --backend egl --out $TMP/a1.png --dump $TMP/a1.dump >/dev/null && $BT render --scene assets/scenes/starflight.scene --size 64x48 --backend osmesa --out $TMP/a2.png --dump $TMP/a2.dump >/dev/null && $BT compare $TMP/a1.dump $TMP/a2.dump"

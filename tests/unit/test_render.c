@@ -20,7 +20,7 @@
 
 static const char *const scenes[] = {"test", "lorenz", "potential", "refraction", "schwarzschild", "neutron_star",
                                      "demo", "rossler", "starflight", "blackhole_flight", "cube_approach",
-                                     "three_ships", "clocks"};
+                                     "three_ships", "clocks", "star_sky"};
 #define N_SCENES (sizeof scenes / sizeof scenes[0])
 
 static void load(struct scene *s, const char *name, const char *const *sets)

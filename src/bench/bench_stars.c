@@ -1,0 +1,85 @@
+/* The stars of the sky ([sky] stars, milky_way): what drawing them on the CPU adds to a frame
+ * whose rays the GPU traced, star_sky.scene at 1920x1080 with no stars, the Milky Way alone, its
+ * own 30000 stars and ten times as many. */
+#include <stdlib.h>
+#include "bench/bench.h"
+#include "render/frame.h"
+#include "render/renderer.h"
+
+static const struct {
+    int stars;
+    int milky_way;
+    const char *what;
+} star_configs[] = {
+    {0, 0, "no stars, no Milky Way"},
+    {0, 1, "the Milky Way alone"},
+    {30000, 1, "30000 stars and the Milky Way (the scene)"},
+    {300000, 1, "300000 stars and the Milky Way"},
+};
+#define STAR_CONFIGS (int)(sizeof star_configs / sizeof star_configs[0])
+
+/* Median GPU and star seconds of runs frames after a warm-up. */
+static int time_stars(struct bench *b, const struct scene *s, int runs, double *gpu, double *stars, char *err,
+                      size_t errlen)
+{
+    int bad;
+    struct renderer *r = renderer_create(b->ctx, s, err, errlen, &bad);
+    if (!r)
+        return -1;
+    double g[64], t[64];
+    runs = runs < 1 ? 1 : runs < 64 ? runs : 64;
+    int rc = 0;
+    for (int k = 0; k <= runs && rc == 0; k++) {
+        struct render_result res;
+        rc = frame_run_samples(r, s, &res, 0, PROGRESS_NONE, err, errlen);
+        if (rc == 0 && k > 0) {
+            g[k - 1] = res.seconds;
+            t[k - 1] = res.sky_seconds;
+        }
+        if (rc == 0)
+            render_result_free(&res);
+    }
+    renderer_destroy(r);
+    if (rc != 0)
+        return -1;
+    *gpu = bench_median(g, runs);
+    *stars = bench_median(t, runs);
+    return 0;
+}
+
+int bench_stars(struct bench *b, char *err, size_t errlen)
+{
+    static struct scene s;
+    if (bench_load_scene(&s, "star_sky", b->quick ? 64 : 1920, b->quick ? 36 : 1080, err, errlen) != 0)
+        return -1;
+    FILE *csv = bench_data_file(b, "stars.csv", err, errlen);
+    if (!csv)
+        return -1;
+    fprintf(csv, "stars,milky_way,gpu_seconds,star_seconds\n");
+    double milky_way = s.sky.milky_way;
+    fprintf(b->md, "## Stars of the sky\n\n`[sky] stars` and `milky_way` (docs/STARS.md): star_sky.scene at %dx%d. "
+                   "The GPU traces the rays; the stars and the Milky Way are then drawn on the CPU's cores from "
+                   "the rays' exit directions. Median seconds per frame of %d runs.\n\n"
+                   "| sky | GPU seconds | star seconds | total | ratio to no stars |\n|---|---|---|---|---|\n",
+            s.render.width, s.render.height, b->runs);
+    double none = 0.0;
+    int rc = 0;
+    for (int k = 0; k < (b->quick ? 2 : STAR_CONFIGS) && rc == 0; k++) {
+        s.sky.stars = star_configs[k].stars;
+        s.sky.milky_way = star_configs[k].milky_way ? milky_way : 0.0;
+        bench_progress(b, "stars: %s", star_configs[k].what);
+        double gpu, stars;
+        rc = time_stars(b, &s, b->runs, &gpu, &stars, err, errlen);
+        if (rc != 0)
+            break;
+        b->done++;
+        double total = gpu + stars;
+        none = k == 0 ? total : none;
+        fprintf(b->md, "| %s | %.3f | %.3f | %.3f | %.2f |\n", star_configs[k].what, gpu, stars, total,
+                none > 0.0 ? total / none : 0.0);
+        fprintf(csv, "%d,%g,%.5f,%.5f\n", s.sky.stars, s.sky.milky_way, gpu, stars);
+    }
+    fprintf(b->md, "\n");
+    fclose(csv);
+    return rc;
+}
