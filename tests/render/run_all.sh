@@ -228,12 +228,12 @@ check "starflight backends agree" 0 "outcome differs: 0 of" -- sh -c "$BT render
 # bench: the tiny configuration proves the command and its report work; it times nothing that matters
 mkdir -p "$TMP/bench"
 check "bench quick" 0 "wrote .*BENCH.md" -- $BT bench --out "$TMP/bench" --quick
-check "bench sections" 0 "^11 sections, table1 21 rows, pipelines 23 rows, figure5 3 rows, limit 3 rows, pareto 4 rows, relativity 5 rows, kiosk 2 rows, antialias 3 rows$" -- sh -c "
-    printf '%s sections, table1 %s rows, pipelines %s rows, figure5 %s rows, limit %s rows, pareto %s rows, relativity %s rows, kiosk %s rows, antialias %s rows\n' \
+check "bench sections" 0 "^12 sections, table1 21 rows, pipelines 23 rows, figure5 3 rows, limit 3 rows, pareto 4 rows, relativity 5 rows, kiosk 2 rows, antialias 3 rows, stars 3 rows$" -- sh -c "
+    printf '%s sections, table1 %s rows, pipelines %s rows, figure5 %s rows, limit %s rows, pareto %s rows, relativity %s rows, kiosk %s rows, antialias %s rows, stars %s rows\n' \
       \$(grep -c '^## ' $TMP/bench/BENCH.md) \$(wc -l < $TMP/bench/bench/table1.csv) \$(wc -l < $TMP/bench/bench/pipelines.csv) \
       \$(wc -l < $TMP/bench/bench/figure5.csv) \$(wc -l < $TMP/bench/bench/limit.csv) \
       \$(wc -l < $TMP/bench/bench/pareto.csv) \$(wc -l < $TMP/bench/bench/relativity.csv) \
-      \$(wc -l < $TMP/bench/bench/kiosk.csv) \$(wc -l < $TMP/bench/bench/antialias.csv)"
+      \$(wc -l < $TMP/bench/bench/kiosk.csv) \$(wc -l < $TMP/bench/bench/antialias.csv) \$(wc -l < $TMP/bench/bench/stars.csv)"
 check "bench kiosk to stdout" 0 "^\| schwarzschild.scene \| [0-9.]+ \| [0-9.]+ \| (met|MISSED) \|" -- $BT bench --kiosk --quick
 check "bench no overwrite" 2 "exists; pass --force" -- $BT bench --out "$TMP/bench" --quick
 check "bench bad section" 2 "--only: unknown section 'speed'" -- $BT bench --out "$TMP/bench" --only speed
