@@ -5,6 +5,7 @@
 #   make test   build and run every test
 #   make golden re-render the committed golden images (on purpose only; look at them)
 #   make bench  measure speed and speed against error: docs/BENCH.md, docs/bench/ (CSV, PNG plots)
+#   make vm-test  the kiosk on a virtual exhibit (QEMU, KMS, systemd, GPIO): build/vm/vm-test.log
 
 CC      ?= cc
 BUILD   ?= build
@@ -37,7 +38,7 @@ SHADERS   := $(sort $(wildcard shaders_es/*.glsl))
 TEST_SRCS := $(sort $(wildcard tests/unit/test_*.c))
 TEST_BINS := $(TEST_SRCS:tests/unit/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps deps-bench deps-gallery gallery install demo check-layers test test-unit test-render test-sanitize test-valgrind golden assets accuracy bench clean
+.PHONY: all deps deps-bench deps-gallery deps-vm vm-test gallery install demo check-layers test test-unit test-render test-sanitize test-valgrind golden assets accuracy bench clean
 all: $(BIN)
 
 # The version: the commit this tree was built from (git describe), or "unknown" outside a checkout;
@@ -133,6 +134,19 @@ deps-gallery:
 gallery: deps deps-gallery
 	@$(MAKE) --no-print-directory bentray
 	docs/gallery/make.sh
+
+VM_PACKAGES := qemu-system-x86 qemu-utils debootstrap e2fsprogs python3
+
+deps-vm:
+	@$(MAKE) --no-print-directory deps DEB_PACKAGES="$(VM_PACKAGES)"
+
+# The kiosk deployed on a virtual exhibit (docs/KIOSK.md, "The virtual exhibit"): Debian 12 in
+# QEMU on KMS, installed by kiosk/install.sh, driven through its keyboard, GPIO lines and systemd.
+# Not part of make test (about 10 minutes without KVM, and it needs root); run it before every
+# change to the kiosk is committed. Log: build/vm/vm-test.log.
+vm-test: deps deps-vm
+	@$(MAKE) --no-print-directory bentray
+	tests/vm/run.sh
 
 demo: deps
 	@$(MAKE) --no-print-directory bentray
@@ -281,4 +295,5 @@ golden: bentray
 clean:
 	rm -rf $(BUILD) bentray
 
--include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
+# the compilers' dependency files (not build/vm/, where a guest's /etc holds directories named *.d)
+-include $(shell find $(BUILD) -path $(BUILD)/vm -prune -o -type f -name '*.d' -print 2>/dev/null)

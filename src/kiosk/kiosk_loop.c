@@ -347,6 +347,8 @@ static void start_attract(struct kiosk *k)
 /* One turn of the loop; 1 to go on, 0 to stop, -1 on failure (err). */
 static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
 {
+    double started = input_clock();
+    const char *did = "reading inputs";
     k->now = kiosk_now(k);
     struct input_event ev[KIOSK_MAX_EVENTS];
     int n = gather_events(k, ev, KIOSK_MAX_EVENTS);
@@ -360,17 +362,21 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
         changed = 1;
     }
     /* the view knows which scene it holds: a change of scene (or none loaded yet) loads it */
-    if (k->view.scene_index != k->state.scene) {
+    int loading = k->view.scene_index != k->state.scene;
+    if (loading) {
+        did = "loading the scene, then drawing its preview";
         if (kiosk_view_load(&k->view, k->state.scene, &k->scenes[k->state.scene], err, errlen) != 0)
             return -1;
         changed = 1;
     }
     int drew = 0;
     if (changed) {
+        did = loading ? did : "drawing a preview";
         if (kiosk_view_preview(&k->view, &k->state, err, errlen) != 0)
             return -1;
         drew = 1;
     } else if (!kiosk_view_refined(&k->view)) {
+        did = kiosk_view_preview_pending(&k->view) ? "drawing a tile of the preview" : "refining the frame";
         if (kiosk_view_refine(&k->view, err, errlen) != 0)
             return -1;
         drew = 1;
@@ -406,6 +412,12 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
                 k->frames_written, limit);
         return 0;
     }
+    /* a turn that keeps signals, input and the watchdog waiting long says what it did: the journal
+     * then explains a watchdog restart on a machine too slow for the scene */
+    double took = input_clock() - started;
+    if (took >= KIOSK_SLOW_TURN_SECONDS && !k->virtual_clock)
+        fprintf(k->log, "bentray kiosk: one turn of the loop took %.1f s (%s of %s)\n", took, did,
+                k->scenes[k->state.scene].name);
     service_watchdog();
     k->turn++;
     if (!drew && kiosk_view_refined(&k->view) && (!k->virtual_clock || !scripts_pending(k)))

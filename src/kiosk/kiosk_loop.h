@@ -15,6 +15,9 @@
 /* The longest a turn waits for input when there is nothing to draw, s: script events and the
  * watchdog are served at least this often. */
 #define KIOSK_IDLE_WAIT_SECONDS 0.02
+/* A turn of the loop at least this long is logged with what it did (a scene's load, a preview, a
+ * band of refinement): input and the watchdog waited that long. */
+#define KIOSK_SLOW_TURN_SECONDS 1.0
 
 /* How often a KMS display without a connected monitor is looked at again, s. */
 #define KIOSK_DISPLAY_RETRY_SECONDS 2.0

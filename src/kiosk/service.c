@@ -69,9 +69,11 @@ int service_watchdog(void)
     if (!svc.notify || svc.watchdog_usec == 0)
         return 0;
     uint64_t now = monotonic_usec();
-    /* half the interval, as sd_watchdog_enabled(3) advises: one late frame then still falls
-     * inside the interval */
-    if (svc.watchdog_sent && now - svc.last_watchdog_usec < svc.watchdog_usec / 2)
+    /* every twentieth of the interval (half a second of WatchdogSec=10): a slow turn of the loop
+     * then has nearly the whole interval before the service manager takes the kiosk as hung.
+     * Half the interval, which sd_watchdog_enabled(3) gives as the least, left a turn that began
+     * just before a due datagram only half of it (a scene's shaders compiling on a slow machine). */
+    if (svc.watchdog_sent && now - svc.last_watchdog_usec < svc.watchdog_usec / SERVICE_WATCHDOG_FRACTION)
         return 0;
     int r = send_message("WATCHDOG=1");
     if (r > 0) {

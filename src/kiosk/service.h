@@ -16,9 +16,11 @@
  * service_reset). Until it is sent, systemd counts the kiosk as starting. */
 int service_ready(void);
 
-/* WATCHDOG=1 when half of the watchdog interval (WatchdogSec=, from sd_watchdog_enabled) has
- * passed since the last one sent, so that calling it every frame costs a clock read. Nothing
- * when the unit has no watchdog or it is meant for another process (WATCHDOG_PID). */
+/* WATCHDOG=1 when 1/SERVICE_WATCHDOG_FRACTION of the watchdog interval (WatchdogSec=, from
+ * sd_watchdog_enabled) has passed since the last one sent, so that calling it every frame costs a
+ * clock read and a slow turn of the loop has nearly the whole interval. Nothing when the unit has
+ * no watchdog or it is meant for another process (WATCHDOG_PID). */
+#define SERVICE_WATCHDOG_FRACTION 20
 int service_watchdog(void);
 
 /* STATUS=text, printf-style: what `systemctl status` shows beside the unit. Line breaks in the

@@ -1,6 +1,6 @@
 /* The kiosk's messages to systemd, received the way systemd receives them: a unix datagram socket
  * named by NOTIFY_SOCKET (here in a temporary directory), one datagram per message. Checks what is
- * sent (READY=1 once, WATCHDOG=1 rate-limited to half the interval, STATUS=text on one line,
+ * sent (READY=1 once, WATCHDOG=1 rate-limited to a twentieth of the interval, STATUS=text on one line,
  * STOPPING=1), that a watchdog meant for another process is left alone, that a failed send is
  * tried again, and that without NOTIFY_SOCKET every call does nothing and succeeds. */
 #include <stdarg.h>
@@ -140,13 +140,15 @@ static void test_watchdog_rate_limited(void **state)
     assert_string_equal(messages[0], "WATCHDOG=1");
 }
 
-/* Once half the interval has passed the next call sends again: an interval of 20 ms and a pause
- * of 15 ms (only a lower bound on the time passed matters, so a busy machine cannot fail it). */
-static void test_watchdog_after_half_interval(void **state)
+/* Once a twentieth of the interval has passed the next call sends again: an interval of 200 ms
+ * and a pause of 15 ms (only a lower bound on the time passed matters, so a busy machine cannot
+ * fail it). Half the interval, the rule before, sent nothing for 100 ms: a turn of the loop that
+ * began just then had only half of WatchdogSec before the kiosk was taken as hung. */
+static void test_watchdog_after_twentieth_of_interval(void **state)
 {
     (void)state;
     char messages[MAX_MESSAGES][MESSAGE_LEN];
-    set_watchdog("20000", (long)getpid());
+    set_watchdog("200000", (long)getpid());
     assert_int_equal(service_watchdog(), 1);
     struct timespec pause = {.tv_sec = 0, .tv_nsec = 15 * 1000 * 1000};
     while (nanosleep(&pause, &pause) != 0 && errno == EINTR) {
@@ -252,7 +254,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup(test_ready_once, case_setup),
         cmocka_unit_test_setup(test_watchdog_rate_limited, case_setup),
-        cmocka_unit_test_setup(test_watchdog_after_half_interval, case_setup),
+        cmocka_unit_test_setup(test_watchdog_after_twentieth_of_interval, case_setup),
         cmocka_unit_test_setup(test_watchdog_not_ours, case_setup),
         cmocka_unit_test_setup(test_status, case_setup),
         cmocka_unit_test_setup(test_stopping, case_setup),

@@ -1,0 +1,420 @@
+#!/usr/bin/env python3
+"""The virtual exhibit's test, host side (`make vm-test`, tests/vm/run.sh builds the disk first).
+
+Boots the Debian 12 guest in QEMU (KVM where /dev/kvm works, otherwise TCG) with a virtio GPU,
+whose KMS display the kiosk drives through Mesa's llvmpipe and GBM, a PS/2 keyboard on tty1, a
+simulated GPIO chip with the shipped configuration's line names, and an agent port through which
+every check runs (tests/vm/guest_agent.sh). It installs the kiosk with kiosk/install.sh as staff
+would, starts the systemd unit, and then checks what an exhibition technician meets, each step
+with what it measured, into the log (build/vm/vm-test.log):
+
+  boot, install, READY through systemd, the first frame on the screen (a QMP screendump), the
+  service keyboard on tty1 (keys sent through QMP), the GPIO button and encoder (edges on the
+  simulated chip), a killed kiosk restarted by Restart=, a hung one by the watchdog, a console
+  switch and back, and a stop within TimeoutStopSec.
+
+Exit status: 0 every check passed, 1 a check failed, 2 the guest could not be started.
+"""
+import json
+import os
+import socket
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+class Failed(Exception):
+    pass
+
+
+class Log:
+    def __init__(self, path):
+        self.file = open(path, "w", encoding="utf-8")
+        self.failures = 0
+        self.start = time.monotonic()
+
+    def say(self, text):
+        line = "[%6.1f s] %s" % (time.monotonic() - self.start, text)
+        print(line, flush=True)
+        self.file.write(line + "\n")
+        self.file.flush()
+
+    def check(self, name, ok, measured):
+        self.say("%s %s: %s" % ("ok  " if ok else "FAIL", name, measured))
+        if not ok:
+            self.failures += 1
+        return ok
+
+
+class Qmp:
+    def __init__(self, path, deadline):
+        self.sock = connect_unix(path, deadline)
+        self.buf = b""
+        self.read()  # greeting
+        self.cmd("qmp_capabilities")
+
+    def read(self):
+        while b"\n" not in self.buf:
+            chunk = self.sock.recv(65536)
+            if not chunk:
+                raise Failed("QMP closed")
+            self.buf += chunk
+        line, self.buf = self.buf.split(b"\n", 1)
+        return json.loads(line)
+
+    def cmd(self, name, **args):
+        msg = {"execute": name}
+        if args:
+            msg["arguments"] = args
+        self.sock.sendall(json.dumps(msg).encode() + b"\n")
+        while True:
+            reply = self.read()
+            if "return" in reply:
+                return reply["return"]
+            if "error" in reply:
+                raise Failed("QMP %s: %s" % (name, reply["error"].get("desc")))
+
+    def key(self, qcode):
+        self.cmd("send-key", keys=[{"type": "qcode", "data": qcode}])
+
+    def screendump(self, path):
+        self.cmd("screendump", filename=path)
+        return read_ppm(path)
+
+
+class Agent:
+    def __init__(self, path, deadline):
+        self.sock = connect_unix(path, deadline)
+        self.buf = b""
+        self.sock.settimeout(max(1.0, deadline - time.monotonic()))
+        while True:
+            line = self.readline()
+            if line.startswith("BTVM-AGENT ready"):
+                return
+
+    def readline(self):
+        while b"\n" not in self.buf:
+            chunk = self.sock.recv(65536)
+            if not chunk:
+                raise Failed("the guest's agent closed its port")
+            self.buf += chunk
+        line, self.buf = self.buf.split(b"\n", 1)
+        return line.decode("utf-8", "replace")
+
+    def run(self, command, timeout=60.0):
+        """(status, output) of a shell command in the guest."""
+        self.sock.settimeout(timeout)
+        self.sock.sendall(command.encode() + b"\n")
+        out = []
+        try:
+            while True:
+                line = self.readline()
+                if line.startswith("BTVM-RC "):
+                    return int(line.split()[1]), "\n".join(out)
+                out.append(line)
+        except socket.timeout:
+            raise Failed("guest command did not finish within %.0f s: %s" % (timeout, command))
+
+
+def connect_unix(path, deadline):
+    while True:
+        try:
+            s = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+            s.connect(path)
+            return s
+        except OSError:
+            s.close()
+            if time.monotonic() > deadline:
+                raise Failed("cannot connect to %s" % path)
+            time.sleep(0.2)
+
+
+def read_ppm(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    fields, pos = [], 0
+    while len(fields) < 4:
+        while data[pos:pos + 1].isspace():
+            pos += 1
+        if data[pos:pos + 1] == b"#":
+            pos = data.index(b"\n", pos)
+            continue
+        end = pos
+        while not data[end:end + 1].isspace():
+            end += 1
+        fields.append(data[pos:end])
+        pos = end
+    if fields[0] != b"P6" or fields[3] != b"255":
+        raise Failed("%s: not an 8-bit P6 PPM" % path)
+    w, h = int(fields[1]), int(fields[2])
+    return w, h, data[pos + 1:pos + 1 + 3 * w * h]
+
+
+def mean_level(img):
+    w, h, px = img
+    step = max(1, len(px) // 3 // 20000) * 3
+    sample = px[::step]
+    return sum(sample) / max(1, len(sample))
+
+
+def changed_fraction(a, b):
+    """Fraction of sampled pixels whose colour differs by more than 24/255 in some channel."""
+    if a[0] != b[0] or a[1] != b[1]:
+        return 1.0
+    pa, pb = a[2], b[2]
+    n = changed = 0
+    for i in range(0, len(pa) - 2, 3 * 7):
+        n += 1
+        if abs(pa[i] - pb[i]) > 24 or abs(pa[i + 1] - pb[i + 1]) > 24 or abs(pa[i + 2] - pb[i + 2]) > 24:
+            changed += 1
+    return changed / max(1, n)
+
+
+def launch(out, accel, log):
+    for name in ("qmp.sock", "agent.sock", "serial.log"):
+        try:
+            os.unlink(os.path.join(out, name))
+        except FileNotFoundError:
+            pass
+    qemu = ["qemu-system-x86_64", "-machine", "q35", "-m", "2048", "-smp", "2"] + accel + [
+        "-kernel", os.path.join(out, "vmlinuz"), "-initrd", os.path.join(out, "initrd.img"),
+        "-append", "root=/dev/vda rw console=ttyS0 panic=-1 systemd.show_status=0",
+        "-drive", "file=%s,format=raw,if=virtio" % os.path.join(out, "root.img"),
+        "-vga", "none", "-device", "virtio-gpu-pci", "-display", "none",
+        "-device", "virtio-serial-pci",
+        "-chardev", "socket,id=agent,path=%s,server=on,wait=off" % os.path.join(out, "agent.sock"),
+        "-device", "virtserialport,chardev=agent,name=bt.agent",
+        "-qmp", "unix:%s,server=on,wait=off" % os.path.join(out, "qmp.sock"),
+        "-serial", "file:%s" % os.path.join(out, "serial.log"),
+        "-nic", "none", "-no-reboot"]
+    log.say("qemu: " + " ".join(qemu))
+    return subprocess.Popen(qemu, stdout=subprocess.DEVNULL, stderr=open(os.path.join(out, "qemu.log"), "w"))
+
+
+def kernel_speaks(out, seconds):
+    """Whether the guest's kernel wrote to the serial console within that time."""
+    t0 = time.monotonic()
+    while time.monotonic() - t0 < seconds:
+        try:
+            if os.path.getsize(os.path.join(out, "serial.log")) > 0:
+                return True
+        except OSError:
+            pass
+        time.sleep(0.5)
+    return False
+
+
+def main():
+    out = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else "build/vm")
+    log = Log(os.path.join(out, "vm-test.log"))
+    # /dev/kvm may open and still run nothing (nested virtualisation): KVM counts only once the
+    # guest's kernel has written to its console; otherwise TCG
+    vm, kvm = None, False
+    if os.access("/dev/kvm", os.R_OK | os.W_OK):
+        vm = launch(out, ["-enable-kvm", "-cpu", "host"], log)
+        kvm = kernel_speaks(out, 20)
+        if not kvm:
+            log.say("KVM: the guest wrote nothing in 20 s; starting again under TCG")
+            vm.kill()
+            vm.wait()
+    if not kvm:
+        vm = launch(out, ["-accel", "tcg", "-cpu", "max"], log)
+    log.say("accelerator: %s" % ("KVM" if kvm else "TCG (no working KVM): slow, every wait is longer"))
+    slow = 1.0 if kvm else 6.0
+    t0 = time.monotonic()
+    try:
+        qmp = Qmp(os.path.join(out, "qmp.sock"), t0 + 30)
+        agent = Agent(os.path.join(out, "agent.sock"), t0 + 300 * slow)
+    except (Failed, OSError) as e:
+        log.say("the guest did not come up: %s (serial log: %s)" % (e, os.path.join(out, "serial.log")))
+        vm.kill()
+        return 2
+    log.check("boot", True, "the guest's agent answered %.1f s after qemu started" % (time.monotonic() - t0))
+    try:
+        checks(log, qmp, agent, out, slow, kvm)
+    except Failed as e:
+        log.check("the test ran to its end", False, str(e))
+    finally:
+        try:
+            agent.run("journalctl -u bentray-kiosk --no-pager -o short-monotonic > /dev/ttyS0; sync", 60 * slow)
+            qmp.cmd("quit")
+        except (Failed, OSError):
+            pass
+        try:
+            vm.wait(30)
+        except subprocess.TimeoutExpired:
+            vm.kill()
+    log.say("%d check(s) failed; the kiosk's journal is at the end of %s" % (log.failures,
+                                                                           os.path.join(out, "serial.log")))
+    return 1 if log.failures else 0
+
+
+def show(agent, props):
+    rc, text = agent.run("systemctl show bentray-kiosk -p " + ",".join(props))
+    return dict(line.split("=", 1) for line in text.splitlines() if "=" in line)
+
+
+def wait_for(agent, condition, timeout):
+    """Poll the unit's properties until condition(props) holds; (seconds, props) or (None, props)."""
+    t0 = time.monotonic()
+    props = {}
+    while time.monotonic() - t0 < timeout:
+        props = show(agent, ["ActiveState", "SubState", "NRestarts", "MainPID", "StatusText"])
+        if condition(props):
+            return time.monotonic() - t0, props
+        time.sleep(0.5)
+    return None, props
+
+
+def stable_screen(qmp, out, name, slow, timeout=240.0):
+    """The screen once the kiosk has finished refining it: two screendumps, a few seconds apart
+    (longer than a turn of the loop), that differ in less than 0.5% of the screen (the HUD's
+    text). (image, seconds waited) or (last image, None)."""
+    path = os.path.join(out, name + ".ppm")
+    t0 = time.monotonic()
+    prev = qmp.screendump(path)
+    while time.monotonic() - t0 < timeout * slow:
+        time.sleep(1.5 * slow)
+        cur = qmp.screendump(path)
+        if changed_fraction(prev, cur) < 0.005:
+            return cur, time.monotonic() - t0
+        prev = cur
+    return prev, None
+
+
+def waited(seconds):
+    return "%.0f s" % seconds if seconds is not None else "never (timed out)"
+
+
+def slow_turns(agent):
+    """The kiosk's own account of its slowest turns (one line each, src/kiosk/kiosk_loop.c)."""
+    rc, text = agent.run("journalctl -u bentray-kiosk -o cat --no-pager | grep 'one turn of the loop' | "
+                         "sort -t' ' -k9 -g | tail -n 3")
+    return text.strip().splitlines()
+
+
+def crash_report(log, agent, slow):
+    """Backtraces of the kiosk's crashes, from the core dumps the guest kept."""
+    rc, cores = agent.run("ls /var/crash 2>/dev/null | head -n 3")
+    for core in cores.split():
+        rc, text = agent.run("gdb -batch -ex 'bt 25' /usr/local/bin/bentray /var/crash/%s 2>&1 | grep -E '^#'" % core,
+                             120 * slow)
+        log.say("crash %s:\n%s" % (core, text))
+    # SIGABRT is the watchdog's, on the kiosk stopped on purpose above
+    rc, count = agent.run("ls /var/crash | grep -v '\\.sig6$' | wc -l")
+    log.check("no crash", count.strip() == "0", "%s core dump(s) in /var/crash besides the watchdog's SIGABRT" %
+              count.strip())
+
+
+def checks(log, qmp, agent, out, slow, kvm):
+    rc, text = agent.run("/opt/bentray-src/tests/vm/gpio_sim.sh setup")
+    gpio = rc == 0
+    if gpio:
+        log.check("gpio-sim", True, text.strip())
+    else:
+        log.say("skip gpio-sim: %s (the GPIO checks below are skipped)" % text.strip())
+    t = time.monotonic()
+    rc, text = agent.run("cd /opt/bentray-src && kiosk/install.sh", 120 * slow)
+    log.check("install", rc == 0, "kiosk/install.sh exit %d in %.1f s; %s" % (rc, time.monotonic() - t,
+                                                                                text.strip().splitlines()[-1:]))
+    # a crash leaves a core dump for the backtrace at the end (crash_report)
+    agent.run("mkdir -p /var/crash && chmod 1777 /var/crash && echo '/var/crash/core.%e.%p.sig%s' > /proc/sys/kernel/core_pattern "
+              "&& mkdir -p /etc/systemd/system/bentray-kiosk.service.d && printf '[Service]\\nLimitCORE=infinity\\n' "
+              "> /etc/systemd/system/bentray-kiosk.service.d/vm-core.conf && systemctl daemon-reload")
+    if not kvm:
+        # a machine without KVM emulates the guest's CPU, many times slower than any exhibit: the
+        # watchdog gets the time a site with a slow computer would give it, in a drop-in
+        agent.run("mkdir -p /etc/systemd/system/bentray-kiosk.service.d && printf '[Service]\\nWatchdogSec=%d\\n' "
+                  "> /etc/systemd/system/bentray-kiosk.service.d/vm-slow.conf && systemctl daemon-reload"
+                  % int(10 * slow))
+        log.say("TCG: WatchdogSec=%d in a drop-in (the shipped 10 s times the emulation's slowness)" % int(10 * slow))
+    t = time.monotonic()
+    rc, text = agent.run("systemctl start bentray-kiosk", 120 * slow)
+    started = time.monotonic() - t
+    props = show(agent, ["ActiveState", "SubState", "StatusText", "WatchdogUSec", "NRestarts", "MainPID"])
+    log.check("READY", rc == 0 and props.get("ActiveState") == "active",
+              "systemctl start returned %d after %.1f s (Type=notify: after READY=1); %s" % (rc, started, props))
+    first, took = stable_screen(qmp, out, "first", slow)
+    level = mean_level(first)
+    log.check("first frame on the screen", level > 8.0 and took is not None,
+              "screendump %dx%d, mean level %.1f of 255 (a black screen is below 8), refined after %s" %
+              (first[0], first[1], level, waited(took)))
+
+    # the service keyboard on tty1: 'n' to the next scene, 'p' back to the same picture
+    qmp.key("n")
+    nxt, took = stable_screen(qmp, out, "after_n", slow)
+    moved = changed_fraction(first, nxt)
+    log.check("key n on tty1", moved > 0.05 and took is not None,
+              "%.0f%% of the screen changed after 'n', refined after %s" % (100 * moved, waited(took)))
+    qmp.key("p")
+    back, took = stable_screen(qmp, out, "after_p", slow)
+    same = changed_fraction(first, back)
+    log.check("key p on tty1", same < 0.005 and took is not None,
+              "%.2f%% differs from the first picture after 'p', refined after %s" % (100 * same, waited(took)))
+
+    if gpio:
+        # the GPIO button (active low: a press pulls the line down) and the mass encoder
+        agent.run("/opt/bentray-src/tests/vm/gpio_sim.sh set BUTTON_NEXT 0; sleep 0.2; "
+                  "/opt/bentray-src/tests/vm/gpio_sim.sh set BUTTON_NEXT 1")
+        pressed, took = stable_screen(qmp, out, "after_button", slow)
+        moved = changed_fraction(back, pressed)
+        log.check("GPIO button next", moved > 0.05, "%.0f%% of the screen changed after a press" % (100 * moved))
+        qmp.key("p")
+        back, took = stable_screen(qmp, out, "before_encoder", slow)
+        steps = []
+        for _ in range(2):   # two detents of a 4-count encoder: A leads B
+            steps += ["KNOB_MASS_A 0", "KNOB_MASS_B 0", "KNOB_MASS_A 1", "KNOB_MASS_B 1"]
+        agent.run("; ".join("/opt/bentray-src/tests/vm/gpio_sim.sh set %s; sleep 0.05" % s for s in steps))
+        turned, took = stable_screen(qmp, out, "after_encoder", slow)
+        moved = changed_fraction(back, turned)
+        log.check("GPIO encoder mass", moved > 0.01, "%.1f%% of the screen changed after two detents" % (100 * moved))
+
+    before = show(agent, ["NRestarts", "MainPID"])
+    log.check("no restart while in use", before.get("NRestarts") == "0",
+              "NRestarts=%s after the checks above; the slowest turns of the loop: %s" %
+              (before.get("NRestarts"), slow_turns(agent)))
+
+    # a killed kiosk comes back (Restart=always, RestartSec=2)
+    agent.run("kill -KILL %s" % before.get("MainPID", "0"))
+    took, props = wait_for(agent, lambda p: p.get("NRestarts") != before.get("NRestarts") and
+                           p.get("ActiveState") == "active" and p.get("MainPID") not in ("0", before.get("MainPID")),
+                           60 * slow)
+    log.check("restart after a kill", took is not None,
+              "active again after %s; %s" % (waited(took), props))
+    # a hung kiosk (stopped) is taken down by the watchdog and restarted
+    before = show(agent, ["NRestarts", "MainPID", "WatchdogUSec"])
+    agent.run("kill -STOP %s" % before.get("MainPID", "0"))
+    took, props = wait_for(agent, lambda p: p.get("NRestarts") != before.get("NRestarts") and
+                           p.get("ActiveState") == "active", 30 * slow)
+    log.check("watchdog restarts a hung kiosk", took is not None,
+              "restarted after %s (WatchdogSec %s, RestartSec=2); %s" % (waited(took), before.get("WatchdogUSec"), props))
+    stable_screen(qmp, out, "after_watchdog", slow)
+
+    # a console switch and back: what the screen shows on tty2, and that the kiosk draws again on tty1
+    rc, _ = agent.run("chvt 2")
+    time.sleep(2 * slow)
+    other = qmp.screendump(os.path.join(out, "tty2.ppm"))
+    rc2, _ = agent.run("chvt 1")
+    again, took = stable_screen(qmp, out, "tty1_again", slow)
+    props = show(agent, ["ActiveState", "NRestarts"])
+    log.say("console switch: chvt 2 exit %d, the screen on tty2 has mean level %.1f and differs from the kiosk's "
+            "in %.1f%%; chvt 1 exit %d, mean level %.1f, %s" % (rc, mean_level(other), 100 * changed_fraction(other, again),
+                                                                rc2, mean_level(again), props))
+    log.check("kiosk alive after a console switch", props.get("ActiveState") == "active" and mean_level(again) > 8.0,
+              "active and drawing on tty1 again")
+
+    crash_report(log, agent, slow)
+
+    # systemd itself judges the time: past TimeoutStopSec it kills the kiosk and the result is "timeout"
+    t = time.monotonic()
+    rc, _ = agent.run("systemctl stop bentray-kiosk", 60 * slow)
+    took = time.monotonic() - t
+    props = show(agent, ["ActiveState", "Result"])
+    log.check("stop", rc == 0 and props.get("Result") == "success",
+              "systemctl stop took %.1f s, result %s (TimeoutStopSec=5)" % (took, props.get("Result")))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
