@@ -25,6 +25,13 @@ debootstrap --variant=minbase --include="$packages" bookworm "$root" "$mirror" >
     tail -n 20 "$out/debootstrap.log" >&2
     exit 1
 }
+# gdb through apt, which resolves what debootstrap cannot (packages.txt)
+chroot "$root" apt-get install -y --no-install-recommends gdb >> "$out/debootstrap.log" 2>&1 || {
+    echo "build_base.sh: installing gdb in the guest failed; the end of $out/debootstrap.log:" >&2
+    tail -n 20 "$out/debootstrap.log" >&2
+    exit 1
+}
+chroot "$root" apt-get clean
 # the kernel and initrd the host boots directly (qemu -kernel), and no root password: the guest
 # is driven through its serial console's log and QMP, never logged into
 cp "$root"/boot/vmlinuz-* "$out/vmlinuz"

@@ -268,19 +268,31 @@ def wait_for(agent, condition, timeout):
     return None, props
 
 
-def stable_screen(qmp, out, name, slow, timeout=240.0):
-    """The screen once the kiosk has finished refining it: two screendumps, a few seconds apart
-    (longer than a turn of the loop), that differ in less than 0.5% of the screen (the HUD's
-    text). (image, seconds waited) or (last image, None)."""
+def cpu_seconds(agent):
+    """CPU time the kiosk's process has used (all its threads), from /proc; None without one."""
+    rc, text = agent.run("pid=$(systemctl show bentray-kiosk -p MainPID --value); [ \"$pid\" != 0 ] && "
+                         "cut -d' ' -f14,15 /proc/$pid/stat && getconf CLK_TCK")
+    fields = text.split()
+    if rc != 0 or len(fields) != 3:
+        return None
+    return (int(fields[0]) + int(fields[1])) / int(fields[2])
+
+
+def stable_screen(qmp, out, name, slow, agent, timeout=240.0):
+    """The screen once the kiosk has finished refining it: two screendumps a few seconds apart that
+    differ in less than 0.5% of the screen (the HUD's text), while the kiosk used less than a tenth
+    of that time on the CPU (a long turn, a scene's shaders compiling, also leaves the screen still,
+    but busy). (image, seconds waited) or (last image, None)."""
     path = os.path.join(out, name + ".ppm")
     t0 = time.monotonic()
-    prev = qmp.screendump(path)
+    prev, prev_cpu, prev_t = qmp.screendump(path), cpu_seconds(agent), time.monotonic()
     while time.monotonic() - t0 < timeout * slow:
         time.sleep(1.5 * slow)
-        cur = qmp.screendump(path)
-        if changed_fraction(prev, cur) < 0.005:
+        cur, cur_cpu, cur_t = qmp.screendump(path), cpu_seconds(agent), time.monotonic()
+        idle = prev_cpu is not None and cur_cpu is not None and cur_cpu - prev_cpu < 0.1 * (cur_t - prev_t)
+        if idle and changed_fraction(prev, cur) < 0.005:
             return cur, time.monotonic() - t0
-        prev = cur
+        prev, prev_cpu, prev_t = cur, cur_cpu, cur_t
     return prev, None
 
 
@@ -297,15 +309,17 @@ def slow_turns(agent):
 
 def crash_report(log, agent, slow):
     """Backtraces of the kiosk's crashes, from the core dumps the guest kept."""
-    rc, cores = agent.run("ls /var/crash 2>/dev/null | head -n 3")
+    rc, cores = agent.run("ls /var/cache/bentray | grep '^core\\.' | grep -v '\\.sig6$' | head -n 3")
     for core in cores.split():
-        rc, text = agent.run("gdb -batch -ex 'bt 25' /usr/local/bin/bentray /var/crash/%s 2>&1 | grep -E '^#'" % core,
-                             120 * slow)
+        rc, text = agent.run("gdb -batch -ex 'thread apply all bt 12' /usr/local/bin/bentray /var/cache/bentray/%s 2>&1 "
+                             "| grep -E '^#|^Thread' | head -n 60" % core, 120 * slow)
         log.say("crash %s:\n%s" % (core, text))
-    # SIGABRT is the watchdog's, on the kiosk stopped on purpose above
-    rc, count = agent.run("ls /var/crash | grep -v '\\.sig6$' | wc -l")
-    log.check("no crash", count.strip() == "0", "%s core dump(s) in /var/crash besides the watchdog's SIGABRT" %
-              count.strip())
+    rc, segv = agent.run("dmesg | grep -c 'segfault at'")
+    # SIGABRT is the watchdog's, on the kiosk stopped on purpose
+    rc, count = agent.run("ls /var/cache/bentray | grep '^core\\.' | grep -v '\\.sig6$' | wc -l")
+    log.check("no crash", count.strip() == "0" and segv.strip() == "0",
+              "%s core dump(s) besides the watchdog's SIGABRT, %s segfault line(s) in the kernel's log" %
+              (count.strip(), segv.strip()))
 
 
 def checks(log, qmp, agent, out, slow, kvm):
@@ -319,8 +333,9 @@ def checks(log, qmp, agent, out, slow, kvm):
     rc, text = agent.run("cd /opt/bentray-src && kiosk/install.sh", 120 * slow)
     log.check("install", rc == 0, "kiosk/install.sh exit %d in %.1f s; %s" % (rc, time.monotonic() - t,
                                                                                 text.strip().splitlines()[-1:]))
-    # a crash leaves a core dump for the backtrace at the end (crash_report)
-    agent.run("mkdir -p /var/crash && chmod 1777 /var/crash && echo '/var/crash/core.%e.%p.sig%s' > /proc/sys/kernel/core_pattern "
+    # a crash leaves a core dump for the backtrace at the end (crash_report), in the one directory
+    # the service may write (CacheDirectory=)
+    agent.run("echo '/var/cache/bentray/core.%e.%p.sig%s' > /proc/sys/kernel/core_pattern "
               "&& mkdir -p /etc/systemd/system/bentray-kiosk.service.d && printf '[Service]\\nLimitCORE=infinity\\n' "
               "> /etc/systemd/system/bentray-kiosk.service.d/vm-core.conf && systemctl daemon-reload")
     if not kvm:
@@ -336,7 +351,7 @@ def checks(log, qmp, agent, out, slow, kvm):
     props = show(agent, ["ActiveState", "SubState", "StatusText", "WatchdogUSec", "NRestarts", "MainPID"])
     log.check("READY", rc == 0 and props.get("ActiveState") == "active",
               "systemctl start returned %d after %.1f s (Type=notify: after READY=1); %s" % (rc, started, props))
-    first, took = stable_screen(qmp, out, "first", slow)
+    first, took = stable_screen(qmp, out, "first", slow, agent)
     level = mean_level(first)
     log.check("first frame on the screen", level > 8.0 and took is not None,
               "screendump %dx%d, mean level %.1f of 255 (a black screen is below 8), refined after %s" %
@@ -344,12 +359,12 @@ def checks(log, qmp, agent, out, slow, kvm):
 
     # the service keyboard on tty1: 'n' to the next scene, 'p' back to the same picture
     qmp.key("n")
-    nxt, took = stable_screen(qmp, out, "after_n", slow)
+    nxt, took = stable_screen(qmp, out, "after_n", slow, agent)
     moved = changed_fraction(first, nxt)
     log.check("key n on tty1", moved > 0.05 and took is not None,
               "%.0f%% of the screen changed after 'n', refined after %s" % (100 * moved, waited(took)))
     qmp.key("p")
-    back, took = stable_screen(qmp, out, "after_p", slow)
+    back, took = stable_screen(qmp, out, "after_p", slow, agent)
     same = changed_fraction(first, back)
     log.check("key p on tty1", same < 0.005 and took is not None,
               "%.2f%% differs from the first picture after 'p', refined after %s" % (100 * same, waited(took)))
@@ -358,16 +373,16 @@ def checks(log, qmp, agent, out, slow, kvm):
         # the GPIO button (active low: a press pulls the line down) and the mass encoder
         agent.run("/opt/bentray-src/tests/vm/gpio_sim.sh set BUTTON_NEXT 0; sleep 0.2; "
                   "/opt/bentray-src/tests/vm/gpio_sim.sh set BUTTON_NEXT 1")
-        pressed, took = stable_screen(qmp, out, "after_button", slow)
+        pressed, took = stable_screen(qmp, out, "after_button", slow, agent)
         moved = changed_fraction(back, pressed)
         log.check("GPIO button next", moved > 0.05, "%.0f%% of the screen changed after a press" % (100 * moved))
         qmp.key("p")
-        back, took = stable_screen(qmp, out, "before_encoder", slow)
+        back, took = stable_screen(qmp, out, "before_encoder", slow, agent)
         steps = []
         for _ in range(2):   # two detents of a 4-count encoder: A leads B
             steps += ["KNOB_MASS_A 0", "KNOB_MASS_B 0", "KNOB_MASS_A 1", "KNOB_MASS_B 1"]
         agent.run("; ".join("/opt/bentray-src/tests/vm/gpio_sim.sh set %s; sleep 0.05" % s for s in steps))
-        turned, took = stable_screen(qmp, out, "after_encoder", slow)
+        turned, took = stable_screen(qmp, out, "after_encoder", slow, agent)
         moved = changed_fraction(back, turned)
         log.check("GPIO encoder mass", moved > 0.01, "%.1f%% of the screen changed after two detents" % (100 * moved))
 
@@ -377,27 +392,31 @@ def checks(log, qmp, agent, out, slow, kvm):
               (before.get("NRestarts"), slow_turns(agent)))
 
     # a killed kiosk comes back (Restart=always, RestartSec=2)
-    agent.run("kill -KILL %s" % before.get("MainPID", "0"))
+    if before.get("MainPID", "0") == "0":
+        raise Failed("the kiosk has no main process to kill")
+    agent.run("kill -KILL %s" % before["MainPID"])
     took, props = wait_for(agent, lambda p: p.get("NRestarts") != before.get("NRestarts") and
                            p.get("ActiveState") == "active" and p.get("MainPID") not in ("0", before.get("MainPID")),
                            60 * slow)
-    log.check("restart after a kill", took is not None,
-              "active again after %s; %s" % (waited(took), props))
+    restarted = log.check("restart after a kill", took is not None, "active again after %s; %s" % (waited(took), props))
+    if not restarted:
+        crash_report(log, agent, slow)
+        raise Failed("the kiosk does not come back after a kill: the checks after it cannot run")
     # a hung kiosk (stopped) is taken down by the watchdog and restarted
     before = show(agent, ["NRestarts", "MainPID", "WatchdogUSec"])
-    agent.run("kill -STOP %s" % before.get("MainPID", "0"))
+    agent.run("kill -STOP %s" % before["MainPID"])
     took, props = wait_for(agent, lambda p: p.get("NRestarts") != before.get("NRestarts") and
                            p.get("ActiveState") == "active", 30 * slow)
     log.check("watchdog restarts a hung kiosk", took is not None,
               "restarted after %s (WatchdogSec %s, RestartSec=2); %s" % (waited(took), before.get("WatchdogUSec"), props))
-    stable_screen(qmp, out, "after_watchdog", slow)
+    stable_screen(qmp, out, "after_watchdog", slow, agent)
 
     # a console switch and back: what the screen shows on tty2, and that the kiosk draws again on tty1
     rc, _ = agent.run("chvt 2")
     time.sleep(2 * slow)
     other = qmp.screendump(os.path.join(out, "tty2.ppm"))
     rc2, _ = agent.run("chvt 1")
-    again, took = stable_screen(qmp, out, "tty1_again", slow)
+    again, took = stable_screen(qmp, out, "tty1_again", slow, agent)
     props = show(agent, ["ActiveState", "NRestarts"])
     log.say("console switch: chvt 2 exit %d, the screen on tty2 has mean level %.1f and differs from the kiosk's "
             "in %.1f%%; chvt 1 exit %d, mean level %.1f, %s" % (rc, mean_level(other), 100 * changed_fraction(other, again),
