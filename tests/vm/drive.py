@@ -220,7 +220,11 @@ def main():
             vm.kill()
             vm.wait()
     if not kvm:
-        vm = launch(out, ["-accel", "tcg", "-cpu", "max"], log)
+        # without AVX2: QEMU 7.2's emulation of AVX2 gathers faulted in llvmpipe's shader code
+        # (vpgatherdd reading heap addresses that masked-off lanes hold; real processors never
+        # touch those), a SIGSEGV in the kiosk's rendering threads at every start, the shader
+        # cache on or off. Without AVX2 llvmpipe takes its SSE/AVX paths.
+        vm = launch(out, ["-accel", "tcg", "-cpu", "max,-avx2"], log)
     log.say("accelerator: %s" % ("KVM" if kvm else "TCG (no working KVM): slow, every wait is longer"))
     slow = 1.0 if kvm else 6.0
     t0 = time.monotonic()
