@@ -14,7 +14,7 @@ struct measured {
     long work;              /* GPU: quads drawn; CPU: accepted integration steps */
     char engine[40];        /* "gpu fp32+mrt", "cpu dopri5 rtol 1e-10" */
     char device[160];       /* GL renderer and back-end, or the CPU thread count */
-    char how[768];          /* one line for people: path, device, time, work */
+    char how[1280];          /* one line for people: path, device, time, work */
     long nonfinite;         /* GPU: non-finite values in the ray state (should be 0) */
 };
 
