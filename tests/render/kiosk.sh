@@ -34,14 +34,18 @@ check "kiosk stray frame" 2 "refusing to replace existing file .*stray/frame_000
 # so a slow start cannot turn it into a kill.
 mkdir -p "$TMP/term"
 stop_check() {  # name, signal, then the signals sent before it that must change nothing
-    local name=$1 sig=$2; shift 2
-    check "$name" 0 "^logged, exit 0 after [0-9.]+ s$" -- sh -c "$BT kiosk --config $K --out $TMP/term --frames 0 --force 2>$TMP/term/log & pid=\$!;
-    t=0; while ! grep -q . $TMP/term/log 2>/dev/null && [ \$t -lt 300 ]; do sleep 0.1; t=\$((t+1)); done;
-    for s in $*; do kill -\$s \$pid; sleep 0.2; done; kill -0 \$pid || { cat $TMP/term/log; exit 1; };
+    # each check its own log, created by the kiosk: a log left by the check before would let the
+    # signals go out before this kiosk has set its handlers (the shell truncates a reused file only
+    # once the child runs, which a loaded machine delays)
+    local name=$1 sig=$2 log=$TMP/term/$2.log; shift 2
+    rm -f "$log"
+    check "$name" 0 "^logged, exit 0 after [0-9.]+ s$" -- sh -c "$BT kiosk --config $K --out $TMP/term --frames 0 --force 2>$log & pid=\$!;
+    t=0; while ! grep -q . $log 2>/dev/null && [ \$t -lt 300 ]; do sleep 0.1; t=\$((t+1)); done;
+    for s in $*; do kill -\$s \$pid; sleep 0.2; done; kill -0 \$pid || { cat $log; exit 1; };
     start=\$(date +%s%N); kill -$sig \$pid;
     t=0; while kill -0 \$pid 2>/dev/null && [ \$t -lt 300 ]; do sleep 0.1; t=\$((t+1)); done;
     wait \$pid; rc=\$?; took=\$(( (\$(date +%s%N) - start) / 1000000 ));
-    grep -q 'stopped after .* (signal)' $TMP/term/log && [ \$t -lt 300 ] && echo \"logged, exit \$rc after \$((took / 1000)).\$((took % 1000 / 100)) s\""
+    grep -q 'stopped after .* (signal)' $log && [ \$t -lt 300 ] && echo \"logged, exit \$rc after \$((took / 1000)).\$((took % 1000 / 100)) s\""
     grep -h "logged, exit" "$TMP/out" 2>/dev/null | sed "s/^/    $name: /"
 }
 stop_check "kiosk stops on SIGTERM" TERM
