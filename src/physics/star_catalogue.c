@@ -104,9 +104,11 @@ int star_catalogue_make(struct star_catalogue *c, int n, uint64_t seed, vec3d po
     int *cell = malloc((n > 0 ? n : 1) * sizeof *cell);
     c->stars = malloc((n > 0 ? n : 1) * sizeof *c->stars);
     c->cell_start = calloc(cells + 1, sizeof *c->cell_start);
-    if (!drawn || !cell || !c->stars || !c->cell_start) {
+    int32_t *fill = malloc(cells * sizeof *fill);
+    if (!drawn || !cell || !c->stars || !c->cell_start || !fill) {
         free(drawn);
         free(cell);
+        free(fill);
         star_catalogue_free(c);
         return -1;
     }
@@ -122,13 +124,6 @@ int star_catalogue_make(struct star_catalogue *c, int n, uint64_t seed, vec3d po
     /* counting sort by cell, stable: the order within a cell is the order drawn */
     for (size_t k = 0; k < cells; k++)
         c->cell_start[k + 1] += c->cell_start[k];
-    int32_t *fill = malloc((cells > 0 ? cells : 1) * sizeof *fill);
-    if (!fill) {
-        free(drawn);
-        free(cell);
-        star_catalogue_free(c);
-        return -1;
-    }
     memcpy(fill, c->cell_start, cells * sizeof *fill);
     for (int i = 0; i < n; i++)
         c->stars[fill[cell[i]]++] = drawn[i];

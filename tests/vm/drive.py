@@ -48,21 +48,32 @@ class Log:
         return ok
 
 
-class Qmp:
-    def __init__(self, path, deadline):
+class LineSocket:
+    """A unix socket read a line at a time."""
+
+    def __init__(self, path, deadline, what):
         self.sock = connect_unix(path, deadline)
         self.buf = b""
+        self.what = what
+
+    def readline(self):
+        while b"\n" not in self.buf:
+            chunk = self.sock.recv(65536)
+            if not chunk:
+                raise Failed("%s closed" % self.what)
+            self.buf += chunk
+        line, self.buf = self.buf.split(b"\n", 1)
+        return line.decode("utf-8", "replace")
+
+
+class Qmp(LineSocket):
+    def __init__(self, path, deadline):
+        super().__init__(path, deadline, "QMP")
         self.read()  # greeting
         self.cmd("qmp_capabilities")
 
     def read(self):
-        while b"\n" not in self.buf:
-            chunk = self.sock.recv(65536)
-            if not chunk:
-                raise Failed("QMP closed")
-            self.buf += chunk
-        line, self.buf = self.buf.split(b"\n", 1)
-        return json.loads(line)
+        return json.loads(self.readline())
 
     def cmd(self, name, **args):
         msg = {"execute": name}
@@ -84,24 +95,14 @@ class Qmp:
         return read_ppm(path)
 
 
-class Agent:
+class Agent(LineSocket):
     def __init__(self, path, deadline):
-        self.sock = connect_unix(path, deadline)
-        self.buf = b""
+        super().__init__(path, deadline, "the guest's agent port")
         self.sock.settimeout(max(1.0, deadline - time.monotonic()))
         while True:
             line = self.readline()
             if line.startswith("BTVM-AGENT ready"):
                 return
-
-    def readline(self):
-        while b"\n" not in self.buf:
-            chunk = self.sock.recv(65536)
-            if not chunk:
-                raise Failed("the guest's agent closed its port")
-            self.buf += chunk
-        line, self.buf = self.buf.split(b"\n", 1)
-        return line.decode("utf-8", "replace")
 
     def run(self, command, timeout=60.0):
         """(status, output) of a shell command in the guest."""
