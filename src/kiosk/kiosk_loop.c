@@ -39,7 +39,8 @@ static void set_action(int sig, void (*handler)(int))
 
 /* No SA_RESTART: a signal cuts poll() short, so the loop sees it at once. SIGHUP (the terminal or
  * session went away) stops as cleanly as SIGTERM. A reader that went away (a closed log pipe) is a
- * failed write, not the end of the exhibit, and the user signals mean nothing here: ignored. */
+ * failed write, not the end of the exhibit, and the user signals mean nothing here: ignored, except
+ * that the KMS screen on a virtual terminal takes them for its console switches (vt_switch.h). */
 static void catch_stop_signals(void)
 {
     stop_requested = 0;
@@ -392,7 +393,8 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
     int hud_changed = update_hud(k, err, errlen, &hud_failed);
     if (hud_failed)
         return -1;
-    if (drew || hud_changed || k->turn == 0) {
+    if (drew || hud_changed || k->turn == 0 || k->screen->redraw) {
+        k->screen->redraw = 0;
         if (compositor_draw(&k->view.comp, k->screen, err, errlen) != 0 ||
             k->screen->present(k->screen, err, errlen) != 0)
             return -1;
@@ -654,6 +656,9 @@ enum kiosk_status kiosk_run(const struct kiosk_config *c, const struct kiosk_run
     fprintf(k.log, "bentray kiosk: %s screen %dx%d (%s), frames %dx%d, previews %dx%d\n", k.screen->name,
             k.screen->width, k.screen->height, k.screen->gl->platform_version, c->kiosk.width, c->kiosk.height,
             c->kiosk.preview_width, c->kiosk.preview_height);
+    if (k.screen->note[0])
+        fprintf(k.log, "bentray kiosk: %s\n", k.screen->note);
+    k.screen->log = k.log;
     enum kiosk_status rc = KIOSK_STOPPED;
     if (kiosk_view_init(&k.view, c, k.screen->gl, err, sizeof err) != 0) {
         fprintf(k.log, "bentray kiosk: %s\n", err);

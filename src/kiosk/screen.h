@@ -4,6 +4,7 @@
 #ifndef BT_KIOSK_SCREEN_H
 #define BT_KIOSK_SCREEN_H
 #include <stddef.h>
+#include <stdio.h>
 #include "gl/context.h"
 #include "gl/gl_api.h"
 #include "kiosk/input.h"
@@ -25,6 +26,13 @@ struct screen {
     /* Puts the display back as it was (the console's mode), frees the context. */
     void (*close)(struct screen *s);
     void *priv;
+    /* Set by the back-end: what it wants said once it is open (the KMS screen's console handling),
+     * "" for nothing; and that it lost its picture (a console switch back), so that the loop draws
+     * and presents a frame at its next turn, which clears it. */
+    char note[256];
+    int redraw;
+    /* Set by the loop: where the back-end says what happens later (a console switch), or NULL. */
+    FILE *log;
 };
 
 /* Each returns NULL with err when the back-end cannot open here. gl_backend (headless only):

@@ -1,8 +1,11 @@
 /* The kiosk on a display with no window system, as in kmscube: a DRM/KMS card drives one connector
  * in one mode, EGL draws into a GBM surface, each frame is scanned out by a page flip. What was on
- * the CRTC before (the console) is put back at close. */
+ * the CRTC before (the console) is put back at close. Console switches (vt_switch.h): while
+ * another console is in front, frames are drawn but not shown; back in front, the mode is set
+ * again and the next frame shows. */
 #include "kiosk/screen.h"
 #include "kiosk/screen_egl.h"
+#include "kiosk/vt_switch.h"
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <dirent.h>
@@ -37,6 +40,7 @@ struct kms {
     int mode_set;                    /* the first frame went out with drmModeSetCrtc */
     int vsync;
     int async_flip;                  /* the driver flips without waiting for vertical blank */
+    struct vt_switch vt;             /* the console the kiosk runs on (standard input) */
 };
 
 __attribute__((format(printf, 3, 4)))
@@ -345,6 +349,8 @@ static int wait_flip(struct kms *k, char *err, size_t errlen)
 static int kms_present(struct screen *s, char *err, size_t errlen)
 {
     struct kms *k = s->priv;
+    if (!k->vt.showing)
+        return 0;
     /* A flip that timed out last time may have completed since: its buffer is needed back. */
     if (k->flip_bo && wait_flip(k, err, errlen) != 0)
         return -1;
@@ -394,6 +400,22 @@ static int kms_present(struct screen *s, char *err, size_t errlen)
     return wait_flip(k, err, errlen);
 }
 
+/* No input of its own: the console switches the signals announced, served at every turn. */
+static int kms_events(struct screen *s, double now, struct input_event *out, int max)
+{
+    (void)now, (void)out, (void)max;
+    struct kms *k = s->priv;
+    char note[sizeof s->note];
+    if (vt_switch_serve(&k->vt, vt_switch_pending(), note, sizeof note)) {
+        /* the console set its own mode meanwhile: the next frame sets the kiosk's again */
+        k->mode_set = 0;
+        s->redraw = 1;
+    }
+    if (note[0] && s->log)
+        fprintf(s->log, "bentray kiosk: %s\n", note);
+    return 0;
+}
+
 static int kms_fd(struct screen *s)
 {
     struct kms *k = s->priv;
@@ -411,7 +433,8 @@ static void kms_close(struct screen *s)
             char ignored[128];
             wait_flip(k, ignored, sizeof ignored);
         }
-        if (k->mode_set) {
+        /* on another console, the display is that console's */
+        if (k->mode_set && k->vt.showing) {
             drmModeCrtc *c = k->saved_crtc;
             if (c && c->mode_valid)
                 drmModeSetCrtc(k->fd, c->crtc_id, c->buffer_id, c->x, c->y, &k->connector_id, 1, &c->mode);
@@ -425,6 +448,9 @@ static void kms_close(struct screen *s)
                 gbm_surface_release_buffer(k->surface, k->shown_bo);
         }
     }
+    /* the console's text mode back once its picture is */
+    if (k)
+        vt_switch_close(&k->vt);
     /* the EGL surface owns the GBM buffers and their framebuffers: it goes before the GBM surface */
     if (s->gl)
         s->gl->destroy(s->gl);
@@ -503,7 +529,7 @@ struct screen *screen_open_kms(const struct kiosk_config *c, char *err, size_t e
     s->priv = k;
     s->framebuffer = 0;
     s->fd = kms_fd;
-    s->events = NULL;
+    s->events = kms_events;
     s->present = kms_present;
     s->close = kms_close;
     if (open_card(k, &c->display, err, errlen) != 0) {
@@ -533,5 +559,6 @@ struct screen *screen_open_kms(const struct kiosk_config *c, char *err, size_t e
         kms_close(s);
         return NULL;
     }
+    vt_switch_open(&k->vt, &vt_linux, STDIN_FILENO, k->fd, s->note, sizeof s->note);
     return s;
 }

@@ -414,20 +414,29 @@ def checks(log, qmp, agent, out, slow, kvm):
                            p.get("ActiveState") == "active", 30 * slow)
     log.check("watchdog restarts a hung kiosk", took is not None,
               "restarted after %s (WatchdogSec %s, RestartSec=2); %s" % (waited(took), before.get("WatchdogUSec"), props))
-    stable_screen(qmp, out, "after_watchdog", slow, agent)
+    before_switch, _ = stable_screen(qmp, out, "after_watchdog", slow, agent)
 
-    # a console switch and back: what the screen shows on tty2, and that the kiosk draws again on tty1
+    # a console switch and back: the kiosk hands the display to tty2's console (VT_PROCESS) and
+    # takes it back on tty1, drawing its picture again, without a restart
+    restarts = show(agent, ["NRestarts"]).get("NRestarts")
     rc, _ = agent.run("chvt 2")
     time.sleep(2 * slow)
     other = qmp.screendump(os.path.join(out, "tty2.ppm"))
     rc2, _ = agent.run("chvt 1")
     again, took = stable_screen(qmp, out, "tty1_again", slow, agent)
     props = show(agent, ["ActiveState", "NRestarts"])
+    away = changed_fraction(other, before_switch)
+    back = changed_fraction(again, before_switch)
     log.say("console switch: chvt 2 exit %d, the screen on tty2 has mean level %.1f and differs from the kiosk's "
-            "in %.1f%%; chvt 1 exit %d, mean level %.1f, %s" % (rc, mean_level(other), 100 * changed_fraction(other, again),
-                                                                rc2, mean_level(again), props))
-    log.check("kiosk alive after a console switch", props.get("ActiveState") == "active" and mean_level(again) > 8.0,
-              "active and drawing on tty1 again")
+            "picture in %.1f%%; chvt 1 exit %d, the picture again after %s, mean level %.1f, differing from the one "
+            "before the switch in %.2f%%; %s" % (rc, mean_level(other), 100 * away, rc2, waited(took),
+                                                 mean_level(again), 100 * back, props))
+    log.check("console switch hands the display over", rc == 0 and away > 0.5,
+              "the screen on tty2 differs from the kiosk's picture in %.1f%% (more than 50%%)" % (100 * away))
+    log.check("console switch back draws the kiosk's picture again",
+              rc2 == 0 and back < 0.01 and props.get("ActiveState") == "active" and props.get("NRestarts") == restarts,
+              "%.2f%% differs from the picture before the switch (less than 1%%), NRestarts %s before, %s after"
+              % (100 * back, restarts, props.get("NRestarts")))
 
     crash_report(log, agent, slow)
 
