@@ -9,6 +9,9 @@
 #define KIOSK_MAX_SCENES 32
 #define KIOSK_MAX_BUTTONS 16
 #define KIOSK_MAX_INPUTS 16
+/* [kiosk] image_memory's default, MB: every scene's textures and sky faces are decoded at start
+ * and kept (io/image_cache.h); a kiosk's computer may have 1 GB in all */
+#define KIOSK_IMAGE_MEMORY_MB 256
 #define KIOSK_NAME_LEN 64            /* section names, GPIO chips and line names, connectors */
 #define KIOSK_PATH_LEN 512           /* every stored path, after joining the config's directory */
 /* Capacity of the record of where each key was set; kiosk_config_keys.c checks its table fits. */
@@ -71,6 +74,7 @@ struct kiosk_main {
     int preview_width, preview_height;   /* px, drawn while a knob moves */
     int width, height;               /* px, the refined frame */
     int refine_frames;               /* frames from preview to full quality */
+    int image_memory;                /* MB the scenes' decoded images may take in all */
     int hud;                         /* 1: draw the values on screen */
     char font[KIOSK_PATH_LEN];
     char log[KIOSK_PATH_LEN];        /* a file, or "stderr" */

@@ -187,6 +187,7 @@ const struct kiosk_key kiosk_keys[] = {
     {KSEC_KIOSK, "width", KK_INT, SIZE_RANGE, .offset = AT_CONFIG(kiosk.width)},
     {KSEC_KIOSK, "height", KK_INT, SIZE_RANGE, .offset = AT_CONFIG(kiosk.height)},
     {KSEC_KIOSK, "refine_frames", KK_INT, .lo = 1, .hi = 60, .offset = AT_CONFIG(kiosk.refine_frames)},
+    {KSEC_KIOSK, "image_memory", KK_INT, .lo = 1, .hi = 65536, .offset = AT_CONFIG(kiosk.image_memory)},
     {KSEC_KIOSK, "hud", SWITCH, .offset = AT_CONFIG(kiosk.hud)},
     {KSEC_KIOSK, "font", KK_FILE, .offset = AT_CONFIG(kiosk.font)},
     {KSEC_KIOSK, "log", KK_SPECIAL, .set = kiosk_set_log},
@@ -281,6 +282,7 @@ void kiosk_config_defaults(struct kiosk_config *c)
     c->kiosk.width = 1280;
     c->kiosk.height = 720;
     c->kiosk.refine_frames = 4;
+    c->kiosk.image_memory = KIOSK_IMAGE_MEMORY_MB;
     c->kiosk.hud = 1;
     snprintf(c->kiosk.font, sizeof c->kiosk.font, "%s", KIOSK_DEFAULT_FONT);
     snprintf(c->kiosk.log, sizeof c->kiosk.log, "stderr");

@@ -6,6 +6,7 @@
 #include "io/png_io.h"
 #include "kiosk/hud.h"
 #include "kiosk/kiosk_events.h"
+#include "kiosk/kiosk_images.h"
 #include "kiosk/kiosk_view.h"
 #include "kiosk/screen.h"
 #include "kiosk/script_player.h"
@@ -508,6 +509,8 @@ static int preflight(struct kiosk *k, char *err, size_t errlen)
             }
         }
     }
+    if (kiosk_image_memory_check(c, k->scenes, err, errlen) != 0)
+        return -1;
     image_cache_keep(1);
     for (int i = 0; i < c->kiosk.n_scenes; i++)
         if (keep_scene_images(&k->scenes[i], err, errlen) != 0)

@@ -9,6 +9,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "scene/scene_keys.h"
+#include "io/png_io.h"
 #include "io/text_file.h"
 #include "physics/star_catalogue.h"
 
@@ -144,24 +145,6 @@ static int check_readable(const char *what, const char *path, char *reason, size
     return 0;
 }
 
-/* The size a PNG file declares in its header (the IHDR chunk, which must come first), read
- * without decoding, so that a texture too large for the renderer is refused at the line that names
- * it rather than when the renderer decodes it. 0 with the size; 1 when the file does not start
- * like a PNG: that is left to the PNG reader, which says so when the image is loaded. */
-static int png_declared_size(const char *path, unsigned long *width, unsigned long *height)
-{
-    static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    unsigned char head[24];
-    FILE *f = fopen(path, "rb");
-    size_t n = f ? fread(head, 1, sizeof head, f) : 0;
-    if (f)
-        fclose(f);
-    if (n != sizeof head || memcmp(head, signature, 8) != 0 || memcmp(head + 12, "IHDR", 4) != 0)
-        return 1;
-    *width = (unsigned long)head[16] << 24 | (unsigned long)head[17] << 16 | (unsigned long)head[18] << 8 | head[19];
-    *height = (unsigned long)head[20] << 24 | (unsigned long)head[21] << 16 | (unsigned long)head[22] << 8 | head[23];
-    return 0;
-}
 
 /* A PNG (texture or cube face) within SCENE_MAX_TEXTURE_SIZE a side; *declared tells whether the
  * header could be read, and then *w and *h hold its size. */

@@ -18,6 +18,14 @@ mkdir -p "$TMP/badscript"
 printf '0.5 turn speed +3\n0.2 frame\n' > "$TMP/badscript/bad.events"
 sed "s|path = visitor.events|path = $TMP/badscript/bad.events|; s|\.\./\.\./assets|$PWD/assets|g" $K > "$TMP/badscript/k.conf"
 check "kiosk bad script" 2 "bad.events:2: time 0.2 goes back" -- $BT kiosk --config "$TMP/badscript/k.conf" --out "$TMP/badscript"
+# the scenes' decoded images are held to [kiosk] image_memory before any is decoded: the two
+# scenes' six sky faces and one texture of 256 x 256 take 2 MB (1.8), each file once, also where
+# a scene is listed twice
+mkdir -p "$TMP/images"
+sed '/^refine_frames/a image_memory = 1' $K | sed 's|\.\./\.\./assets|'"$PWD"'/assets|g; s|path = visitor.events|path = '"$PWD"'/tests/kiosk/visitor.events|' > "$TMP/images/k.conf"
+check "kiosk image memory bound" 2 "k.conf:10: \[kiosk\] image_memory = 1 MB: the scenes' textures and sky faces take 2 MB decoded.*checker_grey.png, is 256x256" -- $BT kiosk --config "$TMP/images/k.conf" --out "$TMP/images"
+sed 's|^scenes = \(.*\)$|scenes = \1, '"$PWD"'/assets/scenes/schwarzschild.scene|; s|^start_scene = .*|start_scene = 0|' "$TMP/images/k.conf" > "$TMP/images/twice.conf"
+check "kiosk image memory counts a file once" 2 "take 2 MB decoded" -- $BT kiosk --config "$TMP/images/twice.conf" --out "$TMP/images"
 # every device missing: one log line each, and the kiosk runs on its script
 mkdir -p "$TMP/absent"
 check "kiosk without devices" 0 "^1 1 1 1 2 frames$" -- sh -c "$BT kiosk --config tests/kiosk/absent_devices.conf --out $TMP/absent --frames 2 > $TMP/absent/log 2>&1;
