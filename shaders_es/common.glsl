@@ -19,7 +19,7 @@ const float CODE_FAILED = -4.0;        // the integration produced a non-finite 
 //   16-bit precision: break at the top of the next turn instead (stage_frame.glsl), or keep the
 //   loop's inputs and compute the outputs again after it (stage_orbit_frame.glsl);
 // - int is mediump by default, kept in 16 bits: a loop counter bound beyond 32767 is highp;
-// - Mesa's atan is off by up to 3.3e-6 rad on llvmpipe: orbit_table.glsl has an accurate one.
+// - Mesa's atan is off by up to 3.3e-6 rad on llvmpipe: accurate_angle below is not.
 
 uniform vec2 u_inv_size;               // 1 / ray-state texture size
 
@@ -41,3 +41,29 @@ uniform vec2 u_inv_size;               // 1 / ray-state texture size
 #define WRITE_TARGET0(value)
 #define WRITE_TARGET1(value) gl_FragColor = (value)
 #endif
+
+// The angle of (x, y), y >= 0, in [0, pi], to a float rounding or two (Cephes' atanf: octant
+// reduction and its minimax polynomial). Mesa 22.3's built-in atan is off by up to 3.3e-6 rad on
+// llvmpipe (measured), which next to the shadow's edge the orbit magnifies a thousandfold.
+float accurate_angle(float y, float x)
+{
+    float ax = abs(x);
+    float big = max(ax, y);
+    float small = min(ax, y);
+    float t = small / max(big, 1e-30);
+    bool upper = t > 0.41421356237309503;
+    float z_upper = (t - 1.0) / (t + 1.0);
+    float z = upper ? z_upper : t;
+    float z2 = z * z;
+    float p = (((0.0805374449538 * z2 - 0.138776856032) * z2 + 0.199777106478) * z2 - 0.333329491539) * z2 * z + z;
+    float quarter_pi = 0.78539816339744831;
+    float half_pi = 1.5707963267948966;
+    float pi = 3.1415926535897931;
+    float zero = 0.0;
+    float base = upper ? quarter_pi : zero;
+    float octant = base + p;
+    float steep = half_pi - octant;
+    float first = y > ax ? steep : octant;
+    float behind = pi - first;
+    return x < 0.0 ? behind : first;
+}

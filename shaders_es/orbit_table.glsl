@@ -7,7 +7,7 @@ uniform sampler2D u_orbit_table;
 uniform vec2 u_orbit_texel;           // 1 / (texture width, height)
 uniform float u_orbit_rows;           // rows per side of the critical angle
 uniform float u_orbit_columns;        // samples along each orbit; column u_orbit_columns holds
-                                      // (phi_end / sin psi, segments, phi_end, psi), the columns
+                                      // (phi_end / sin psi, segments, phi_infinity / sin psi, psi), the columns
                                       // after it the chord schedule's u_orbit_warps samples
 uniform float u_orbit_warps;
 uniform vec2 u_orbit_span;            // row coordinate of each side's outermost row
@@ -22,6 +22,7 @@ struct orbit_ray {
     float row_fraction;               // the ray's place between rows row0 + 1 and row0 + 2
     vec4 weights;                     // Catmull-Rom weights of rows row0 .. row0 + 3
     float phi_end;                    // angle swept to the orbit's end
+    float phi_infinity;               // escaping: angle swept to infinity, where the sky is
     float segments;                   // chords along the orbit
 };
 
@@ -47,32 +48,6 @@ uniform vec3 u_orbit_across_y;
 uniform vec3 u_orbit_along;           // along-axis part: at that pixel, per ndc unit of x and y
 #endif
 
-// The angle of (x, y), y >= 0, in [0, pi], to a float rounding or two (Cephes' atanf: octant
-// reduction and its minimax polynomial). Mesa 22.3's built-in atan is off by up to 3.3e-6 rad on
-// llvmpipe (measured), which next to the shadow's edge the orbit magnifies a thousandfold.
-float orbit_angle(float y, float x)
-{
-    float ax = abs(x);
-    float big = max(ax, y);
-    float small = min(ax, y);
-    float t = small / max(big, 1e-30);
-    bool upper = t > 0.41421356237309503;
-    float z_upper = (t - 1.0) / (t + 1.0);
-    float z = upper ? z_upper : t;
-    float z2 = z * z;
-    float p = (((0.0805374449538 * z2 - 0.138776856032) * z2 + 0.199777106478) * z2 - 0.333329491539) * z2 * z + z;
-    float quarter_pi = 0.78539816339744831;
-    float half_pi = 1.5707963267948966;
-    float pi = 3.1415926535897931;
-    float zero = 0.0;
-    float base = upper ? quarter_pi : zero;
-    float octant = base + p;
-    float steep = half_pi - octant;
-    float first = y > ax ? steep : octant;
-    float behind = pi - first;
-    return x < 0.0 ? behind : first;
-}
-
 orbit_ray orbit_ray_of()
 {
     orbit_ray ray;
@@ -88,7 +63,7 @@ orbit_ray orbit_ray_of()
     float along = u_orbit_along.x + offset.x * u_orbit_along.y + offset.y * u_orbit_along.z;
 #endif
     float across_length = length(across);
-    float chi = orbit_angle(across_length, along);
+    float chi = accurate_angle(across_length, along);
     float sin_psi = across_length / sqrt(along * along + across_length * across_length);
     // a radial ray has no plane of its own: any plane through it holds it (phi_end is 0)
     vec3 axis_x = vec3(1.0, 0.0, 0.0);
@@ -114,16 +89,19 @@ orbit_ray orbit_ray_of()
     float side_base = escapes ? 0.0 : u_orbit_rows;
     ray.row0 = i - 1.0;
     float phi_over_sin = 0.0;
+    float infinity_over_sin = 0.0;
     vec4 ends[4];
     for (int m = 0; m < 4; m++) {
         float r = clamp(ray.row0 + float(m), 0.0, last_row) + side_base;
         ends[m] = ORBIT_TEXEL(u_orbit_columns, r);
         phi_over_sin += ray.weights[m] * ends[m].x;
+        infinity_over_sin += ray.weights[m] * ends[m].z;
     }
     ray.row0 += side_base;
     ray.side_first = side_base;
     ray.side_last = side_base + last_row;
     ray.phi_end = phi_over_sin * sin_psi;
+    ray.phi_infinity = infinity_over_sin * sin_psi;
     // rows i and i + 1 are the stencil's middle two (0 <= i <= last_row - 1: no clamp)
     ray.segments = max(ends[1].y, ends[2].y);
     return ray;
@@ -262,6 +240,13 @@ vec3 orbit_chord_point(orbit_ray ray, vec2 q, float s, bool leaves)
     vec3 crossing = p - u_bound_center;
     vec3 outside = u_bound_center + crossing * (u_bound_outside / length(crossing));
     return leaves ? outside : p;
+}
+
+// The direction at infinity of an escaping ray, where the sky rests (physics/escape.h): its
+// orbit's asymptote.
+vec3 orbit_direction_at_infinity(orbit_ray ray)
+{
+    return cos(ray.phi_infinity) * ray.e1 + sin(ray.phi_infinity) * ray.e2;
 }
 
 // The orbit's unit tangent at fraction s, where it has u, du/ds = q.

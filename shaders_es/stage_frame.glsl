@@ -109,6 +109,11 @@ void main()
     WRITE_TARGET0(found ? new_hit : end_hit);
     WRITE_TARGET1(vec4(x, steps));
 #else
+#ifdef SKY_AT_INFINITY
+    // a ray that left looks the sky up along its direction at infinity (as the retire stage)
+    vec3 escape = model_exit_direction(x, v) * length(v);
+    v = !found && code == CODE_SKY ? escape : v;
+#endif
     WRITE_TARGET0(found ? new_image : end_image);
     WRITE_TARGET1(vec4(v, h));
 #endif

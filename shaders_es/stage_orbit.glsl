@@ -21,11 +21,16 @@ void main()
     bool leaves;
     orbit_chord(ray, k, q, s, leaves);
     vec3 b = orbit_chord_point(ray, q, s, leaves);
+    // a ray that leaves looks the sky up along its direction at infinity
     vec3 tangent = orbit_tangent(ray, q, s);
+    vec3 escape = orbit_direction_at_infinity(ray);
+    vec3 direction = leaves ? escape : tangent;
     bool moves = running && k < ray.segments;
     float next_steps = k + 1.0;
     vec4 new_position = vec4(b, next_steps);
-    vec4 new_velocity = vec4(tangent, s);
+    // velocity.w: the fraction of the orbit reached, 1 for a ray that left (it goes to infinity)
+    float reached = leaves ? 1.0 : s;
+    vec4 new_velocity = vec4(direction, reached);
     WRITE_TARGET0(moves ? new_position : position);
     WRITE_TARGET1(moves ? new_velocity : velocity);
 }

@@ -8,6 +8,22 @@
 uniform vec3 u_capture_center;
 uniform float u_capture_radius2;
 
+#if defined(ORBIT_NOTHING_TO_MEET) && !defined(FRAME_STATE)
+// A scene without objects, for the image: each ray's outcome is its side of the critical angle, and
+// an escaping ray's sky is along its direction at infinity, both from the table. No chord is
+// followed (the multipass scheme's one chord per orbit ends the same: it leaves or falls in at the
+// orbit's end), no crossing of the bounding sphere is found: the state pass finds it for --dump.
+void main()
+{
+    orbit_ray ray = orbit_ray_of();
+    bool escapes = ray.side_first < 0.5;
+    vec2 q = orbit_at(ray, 1.0);
+    vec3 fallen = orbit_tangent(ray, q, 1.0);
+    vec3 escape = orbit_direction_at_infinity(ray);
+    WRITE_TARGET0(vec4(0.0, 0.0, 0.0, escapes ? CODE_SKY : CODE_CAPTURED));
+    WRITE_TARGET1(vec4(escapes ? escape : fallen, 1.0));
+}
+#else
 void main()
 {
     orbit_ray ray = orbit_ray_of();
@@ -93,7 +109,10 @@ void main()
     }
     // the final state again from (q, s), outside the loop: see the precision note in common.glsl
     vec3 end = orbit_chord_point(ray, q, s, leaves);
-    vec3 tangent = orbit_tangent(ray, q, s);
+    // a ray that leaves looks the sky up along its direction at infinity (as the orbit stage)
+    vec3 along_orbit = orbit_tangent(ray, q, s);
+    vec3 escape = orbit_direction_at_infinity(ray);
+    vec3 tangent = leaves ? escape : along_orbit;
     // a hit is found again on the orbit itself; a ray without one skips that (no pixel group of
     // the sky-only frame runs it)
     if (best.slot >= 0.0)
@@ -107,7 +126,9 @@ void main()
     WRITE_TARGET0(found ? new_hit : end_hit);
     WRITE_TARGET1(vec4(end, steps));
 #else
+    float reached = leaves ? 1.0 : s;
     WRITE_TARGET0(found ? new_image : end_image);
-    WRITE_TARGET1(vec4(tangent, s));
+    WRITE_TARGET1(vec4(tangent, reached));
 #endif
 }
+#endif

@@ -8,12 +8,25 @@ uniform sampler2D u_state0;
 uniform sampler2D u_state1;
 uniform sampler2D u_hit;
 uniform float u_retire_all;
+#ifdef SKY_AT_INFINITY
+// Integrated rays around a mass: a ray that left (its image's code) looks the sky up along its
+// direction at infinity (model_exit_direction), as the single pass does. Pair 0 only.
+uniform sampler2D u_image;
+uniform float u_exit_pair;
+#endif
 
 void main()
 {
     bool finished = fetch(u_hit).w < NO_HIT;
     if (!finished && u_retire_all < 0.5)
         discard;
-    WRITE_TARGET0(fetch(u_state0));
-    WRITE_TARGET1(fetch(u_state1));
+    vec4 state0 = fetch(u_state0);
+    vec4 state1 = fetch(u_state1);
+#ifdef SKY_AT_INFINITY
+    vec3 escape = model_exit_direction(state0.xyz, state1.xyz) * length(state1.xyz);
+    bool left = u_exit_pair > 0.5 && fetch(u_image).a == CODE_SKY;
+    state1.xyz = left ? escape : state1.xyz;
+#endif
+    WRITE_TARGET0(state0);
+    WRITE_TARGET1(state1);
 }

@@ -1,5 +1,6 @@
 // Stage 5, sky and final colour (paper section 4.3): rays without a hit look the sky up by
-// their direction, asymptotically flat at the bounding sphere. It writes the 8-bit image, and
+// their final direction: at the bounding sphere, or around a Schwarzschild mass at infinity (the
+// earlier stages put it in the velocity). It writes the 8-bit image, and
 // with HDR_OUTPUT the same colours unclamped into a float target (renderer_set_hdr). Captured and failed rays are black;
 // a ray still travelling when its budget ran out shows render.unfinished_color, so that no one takes
 // it for the sky.

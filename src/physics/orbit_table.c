@@ -1,5 +1,6 @@
 /* Photon orbits of Schwarzschild space tabulated for a static observer (orbit_table.h). */
 #include "physics/orbit_table.h"
+#include "physics/escape.h"
 #include <math.h>
 #include <pthread.h>
 #include <unistd.h>
@@ -430,10 +431,13 @@ static int build_row(struct orbit_table *t, int row, double *phi_s, char *err, s
         texel[1] = m + 1 < ORBIT_WARP_SAMPLES ? (float)warp[m + 1] : (float)warp[m];
     }
     t->segments[row] = row_segments(t, &k, warp, sigma);
+    /* escaping: on from r_far to infinity, where the sky is (physics/escape.h) */
+    double sweep = side == ORBIT_ESCAPES ? escape_sweep(p->mass, k.u[k.n - 1], k.w[k.n - 1]) : 0.0;
+    t->phi_infinity_over_sin[row] = sweep >= 0.0 ? (phi_end + sweep) / sin(psi) : t->phi_over_sin[row];
     float *last = t->texels + ((size_t)row * t->width + cols) * 4;
     last[0] = (float)t->phi_over_sin[row];
     last[1] = (float)t->segments[row];
-    last[2] = (float)phi_end;
+    last[2] = (float)t->phi_infinity_over_sin[row];
     last[3] = (float)psi;
     knots_free(&k);
     return 0;
@@ -496,9 +500,10 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
     t->u = calloc((size_t)rows * cols, sizeof *t->u);
     t->du_ds = calloc((size_t)rows * cols, sizeof *t->du_ds);
     t->phi_over_sin = calloc(rows, sizeof *t->phi_over_sin);
+    t->phi_infinity_over_sin = calloc(rows, sizeof *t->phi_infinity_over_sin);
     t->psi = calloc(rows, sizeof *t->psi);
     t->segments = calloc(rows, sizeof *t->segments);
-    if (!t->texels || !t->u || !t->du_ds || !t->phi_over_sin || !t->psi || !t->segments) {
+    if (!t->texels || !t->u || !t->du_ds || !t->phi_over_sin || !t->phi_infinity_over_sin || !t->psi || !t->segments) {
         orbit_table_free(t);
         snprintf(err, errlen, "orbit table: out of memory");
         return -1;
@@ -559,6 +564,7 @@ void orbit_table_free(struct orbit_table *t)
     free(t->u);
     free(t->du_ds);
     free(t->phi_over_sin);
+    free(t->phi_infinity_over_sin);
     free(t->psi);
     free(t->segments);
     memset(t, 0, sizeof *t);
@@ -621,6 +627,21 @@ void orbit_table_eval(const struct orbit_table *t, double psi, double s, struct 
     out->u = u;
     out->phi = s * *phi_end;
     out->du_dphi = *phi_end > 0.0 ? du / *phi_end : 0.0;
+}
+
+double orbit_table_phi_infinity(const struct orbit_table *t, double psi)
+{
+    enum orbit_side side;
+    int rps = t->p.rows_per_side, cols = t->p.columns;
+    double f, wr[4], sum = 0.0;
+    int i = row_stencil(t, psi, &side, &f);
+    catmull_rom(f, wr);
+    for (int m = 0; m < 4; m++) {
+        int r = i - 1 + m;
+        r = r < 0 ? 0 : r > rps - 1 ? rps - 1 : r;
+        sum += wr[m] * t->texels[((size_t)(side * rps + r) * t->width + cols) * 4 + 2];
+    }
+    return sum * sin(psi);
 }
 
 double orbit_table_chord_end(const struct orbit_table *t, double psi, int k, int n)

@@ -67,7 +67,7 @@ struct orbit_table {
     /* texture layout: width columns + 1 + ORBIT_WARP_SAMPLES, height 2 rows_per_side (escaping
      * rows first, from psi_c outwards); texel (j, row) = (u(s_j), du/ds(s_j), u(s_j+1), du/ds(s_j+1))
      * with s_j = j / (columns - 1) (the last column's next pair is 0); texel (columns, row) =
-     * (phi_end / sin psi, segments, phi_end, psi); texel (columns + 1 + m, row) = (s where chord
+     * (phi_end / sin psi, segments, phi_infinity / sin psi, psi); texel (columns + 1 + m, row) = (s where chord
      * schedule sample m lies, the same for sample m + 1 (or m, the last), and these two of the next
      * row of the same side (the last row: its own)): chord k of n ends at the warp interpolated
      * linearly at k / n. The orbit's interpolation reads one texel per row, the chord schedule one
@@ -76,6 +76,9 @@ struct orbit_table {
     float *texels;             /* RGBA, width x height, row-major */
     double *u, *du_ds;         /* the same in double: height x columns */
     double *phi_over_sin;      /* height */
+    /* the angle swept to infinity (escaping rows; captured rows: phi_end), over sin psi: where the
+     * sky is seen (physics/escape.h) */
+    double *phi_infinity_over_sin;
     double *psi;               /* launch angle of each row */
     int *segments;             /* height */
     int max_segments;          /* over all rows */
@@ -99,6 +102,9 @@ struct orbit_point {
 void orbit_table_eval(const struct orbit_table *t, double psi, double s, struct orbit_point *out, double *phi_end,
                       int *segments);
 double orbit_table_chord_end(const struct orbit_table *t, double psi, int k, int n);
+/* The angle an escaping ray of launch angle psi sweeps to infinity, as the shader interpolates it:
+ * its sky is seen along cos(phi) e1 + sin(phi) e2. */
+double orbit_table_phi_infinity(const struct orbit_table *t, double psi);
 
 /* One orbit traced directly (no table): phi_end and whether it is captured, and u, du/dphi at
  * n_at angles phi_at[] (ascending, <= phi_end; NULL for none). 0, or -1 when it does not end. */

@@ -1,4 +1,5 @@
 #include "ref/reference.h"
+#include "physics/escape.h"
 #include "ref/dopri5.h"
 #include "results/dump.h"
 #include "ref/straight.h"
@@ -179,6 +180,12 @@ static void finish(struct tracer *t, struct ref_ray *out, int32_t outcome, vec3d
     out->outcome = outcome;
     out->position = x;
     out->velocity = v;
+    /* around a mass the sky is looked up where the light goes at infinity (physics/escape.h) */
+    const struct model *m = &t->scene->model;
+    vec3d at_infinity;
+    if (outcome == DUMP_SKY && m->type == MODEL_SCHWARZSCHILD &&
+        escape_direction(m->mass, m->center, x, v, &at_infinity))
+        out->velocity = v3_scale(at_infinity, v3_len(v));
     out->lambda = lambda;
     out->depth = lambda / (rs->steps_per_segment * rs->step_size);
     out->steps = t->d.steps;

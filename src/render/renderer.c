@@ -26,14 +26,18 @@ static int renderer_follow_scene(struct renderer *r, char *err, size_t errlen)
     /* exact orbits need fp32 textures; without them the rays are integrated (the path says so) */
     r->method = scene->render.method == METHOD_ORBIT_TABLE && !r->path.fp32 ? METHOD_RK4 : scene->render.method;
     r->exact_orbits = !r->straight && r->method == METHOD_ORBIT_TABLE;
+    /* integrated rays around a mass look the sky up along their direction at infinity (exact
+     * orbits take it from the orbit table) */
+    r->sky_at_infinity = !r->straight && !r->exact_orbits && scene->model.type == MODEL_SCHWARZSCHILD;
     snprintf(r->model_file, sizeof r->model_file, "model_%s.glsl",
              r->straight ? "flat" : model_name(scene->model.type));
     static const char *const method_defines[] = {"EULER", "RK4", "DOPRI5", "ORBIT_TABLE"};
     static const char *const control_defines[] = {"FIXED", "DOUBLING", "EMBEDDED"};
     snprintf(r->model_defines, sizeof r->model_defines,
-             "#define MODEL_%s 1\n%s#define METHOD_%s 1\n#define STEP_%s 1\n#define STEPS_PER_PASS %d\n%s",
+             "#define MODEL_%s 1\n%s%s#define METHOD_%s 1\n#define STEP_%s 1\n#define STEPS_PER_PASS %d\n%s",
              r->straight ? "FLAT" : "CURVED",
              !r->straight && model_capture_radius(&scene->model) > 0.0 ? "#define MODEL_HORIZON 1\n" : "",
+             r->sky_at_infinity ? "#define SKY_AT_INFINITY 1\n" : "",
              method_defines[r->method],
              control_defines[scene->render.step_control], scene->render.steps_per_pass,
              !r->straight && scene->model.type == MODEL_POTENTIAL && scene->model.profile == PROFILE_POLYNOMIAL

@@ -113,8 +113,9 @@ int stage_frame(struct renderer *r, int state, char *err, size_t errlen)
     files[n] = NULL;
     char defines[sizeof batch + sizeof r->model_defines + 128];
     if (r->exact_orbits)
-        snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define MAX_SEGMENTS %d\n%s", r->model_defines,
-                 batch, s->render.max_chords, state ? "#define FRAME_STATE 1\n" : "");
+        snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define MAX_SEGMENTS %d\n%s%s", r->model_defines,
+                 batch, s->render.max_chords, state ? "#define FRAME_STATE 1\n" : "",
+                 a.batch.count == 0 ? "#define ORBIT_NOTHING_TO_MEET 1\n" : "");
     else
         snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define PASSES_PER_SEGMENT %d\n%s",
                  r->model_defines, batch, r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass,

@@ -36,6 +36,7 @@ struct renderer {
     int straight;                 /* rays are straight: one segment, not integrated */
     enum integration_method method;  /* the scene's, or rk4 where orbit_table lacks fp32 textures */
     int exact_orbits;             /* rays follow tabulated exact orbits (not straight, orbit_table) */
+    int sky_at_infinity;          /* integrated rays around a mass: the sky along the direction at infinity */
     int image_width, image_height;
     const char *pipeline_name;    /* of the last run: "multipass", "fused segment", "single pass" */
     char pipeline_why[200];       /* why the last run took it */

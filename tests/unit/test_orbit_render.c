@@ -10,6 +10,7 @@
 #include <cmocka.h>
 
 #include "hard_cases.h"
+#include "physics/escape.h"
 #include "physics/orbit_table.h"
 #include "ref/straight.h"
 
@@ -362,11 +363,72 @@ static void test_needs_fp32(void **state)
     gl_context_destroy(ctx);
 }
 
+/* ---- the sky at infinity ---- */
+
+/* Light that leaves the bounding sphere (r = 30 M) is bent on its way on: its sky is seen along its
+ * direction at infinity (physics/escape.h). A static observer at 20 M looks along launch angles
+ * outwards, sideways and inwards past a periapsis (5.5 M at psi = 2.8); each engine and path
+ * (exact orbits and RK4, single pass and the paper's multipass scheme, the CPU reference) must
+ * give the direction of the orbit's asymptote, from escape_sweep (test_orbit_table.c holds it to
+ * 1e-11 rad of the closed forms). The direction where the orbit crosses the bounding sphere is
+ * 2.3e-4 to 9.1e-3 rad away from it for these rays (escape_sweep from the crossing, against the
+ * straight line's angle there), 10 to 900 times the tolerances: a path that kept it fails. */
+static void test_sky_at_infinity(void **state)
+{
+    (void)state;
+    static struct scene s;
+    const double r0 = 20.0, psis[5] = {0.3, 0.8, 1.3, 2.2, 2.8};
+    const struct { enum integration_method method; enum pipeline_choice pipeline; const char *name; double tolerance; }
+        paths[] = {
+            /* exact orbits: the table's float interpolation, measured 1e-6 */
+            {METHOD_ORBIT_TABLE, PIPELINE_SINGLE, "exact orbits, single pass", 1e-5},
+            {METHOD_ORBIT_TABLE, PIPELINE_MULTIPASS, "exact orbits, multipass", 1e-5},
+            /* RK4 at step 0.01 M: its own error and the float quadrature of the way out, measured 1e-6 */
+            {METHOD_RK4, PIPELINE_SINGLE, "rk4, single pass", 2e-5},
+            {METHOD_RK4, PIPELINE_MULTIPASS, "rk4, multipass", 2e-5},
+        };
+    for (int k = 0; k < 5; k++) {
+        double psi = psis[k], u = 1.0 / r0;
+        double sweep = escape_sweep(1.0, u, -u * sqrt(1.0 - 2.0 * u) * cos(psi) / sin(psi));
+        vec3d expected = v3(sin(sweep), 0.0, cos(sweep));
+        for (size_t m = 0; m < sizeof paths / sizeof paths[0]; m++) {
+            orbit_hole(&s, 30.0);
+            s.render.method = paths[m].method;
+            s.render.pipeline = paths[m].pipeline;
+            s.render.step_size = 0.01;
+            s.render.steps_per_segment = 100;
+            s.render.steps_per_pass = 10;
+            s.render.segments = 400;
+            hc_aim(&s, v3(0.0, 0.0, r0), v3(sin(psi), 0.0, cos(psi)));
+            s.camera.fov_deg = 1e-3;
+            struct cpu_image cpu;
+            struct hc_gpu g;
+            hc_render_both(&s, 1, 1, &cpu, &g);
+            const struct dump_record *a = &g.dump.records[0], *c = &cpu.dump.records[0];
+            vec3d ga = v3(a->direction[0], a->direction[1], a->direction[2]);
+            vec3d ca = v3(c->direction[0], c->direction[1], c->direction[2]);
+            double gpu_off = atan2(v3_len(v3_cross(ga, expected)), v3_dot(ga, expected));
+            double cpu_off = atan2(v3_len(v3_cross(ca, expected)), v3_dot(ca, expected));
+            print_message("psi %.1f, %-26s swept %.6f rad to infinity: gpu %.2e, cpu %.2e rad off\n", psi,
+                          paths[m].name, sweep, gpu_off, cpu_off);
+            assert_int_equal(a->outcome, DUMP_SKY);
+            assert_int_equal(c->outcome, DUMP_SKY);
+            assert_true(gpu_off <= paths[m].tolerance);
+            /* the reference integrates at rtol 1e-10 and continues in double; the dump keeps the
+             * direction as float32 (6e-8 a component) */
+            assert_true(cpu_off <= 2e-7);
+            cpu_image_free(&cpu);
+            hc_gpu_free(&g);
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_single_pass_bit_identical),
         cmocka_unit_test(test_photon_sphere),
+        cmocka_unit_test(test_sky_at_infinity),
         cmocka_unit_test(test_observers),
         cmocka_unit_test(test_shadow_fills_view),
         cmocka_unit_test(test_mass_to_zero),

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 
 #include "binet_closed_form.h"
+#include "physics/escape.h"
 #include "physics/orbit_table.h"
 
 static const double pi = 3.14159265358979323846;
@@ -239,6 +240,51 @@ static void test_table_interpolation(void **state)
     }
 }
 
+/* The angle swept on to infinity (physics/escape.h), from the observer itself and from a table's
+ * rows, against the closed forms with u_end = 0: outwards with and without a periapsis, inwards
+ * past one, nearly tangential, next to the critical angle; light that falls in has none. */
+static void test_sweep_to_infinity(void **state)
+{
+    (void)state;
+    const double mass = 1.0;
+    struct { double r_o, psi; } cases[] = {
+        {10.0, 0.2}, {10.0, 1.0}, {10.0, 1.5}, {10.0, 2.0}, {10.0, 2.5}, {1000.0, 0.5}, {1000.0, 3.13},
+        {30.0, 1.5707}, {2.5, 0.3}, {2.01, 0.05}, {50.0, 3.0}, {10.0, 1e-5},
+    };
+    int bad = 0;
+    print_message("%8s %10s %24s %24s %10s\n", "r_o/M", "psi", "escape_sweep", "closed form", "diff");
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        double r_o = cases[i].r_o, psi = cases[i].psi, u = 1.0 / r_o;
+        double w = -u * sqrt(1.0 - 2.0 * mass * u) * cos(psi) / sin(psi);
+        double sweep = escape_sweep(mass, u, w), exact = exact_phi_end(mass, r_o, psi, 0.0);
+        print_message("%8g %10.6g %24.17g %24.17g %10.2e\n", r_o, psi, sweep, exact, sweep - exact);
+        if (isnan(exact) || !(fabs(sweep - exact) <= 1e-11 * fmax(1.0, exact))) {
+            print_error("r_o %g psi %g: swept %.17g, exact %.17g\n", r_o, psi, sweep, exact);
+            bad++;
+        }
+    }
+    assert_int_equal(bad, 0);
+    /* falling in: inwards with b < b_c, and outwards inside the photon sphere's barrier */
+    assert_true(escape_sweep(mass, 0.1, 0.5) < 0.0);
+    assert_true(escape_sweep(mass, 1.0 / 2.2, 0.01) < 0.0);
+    /* flat space: the straight line's own angle */
+    assert_true(fabs(escape_sweep(0.0, 0.1, -0.1 / tan(0.7)) - 0.7) < 1e-14);
+    /* the table's rows: phi_end to r_far and on, against the closed form to infinity */
+    struct orbit_table t;
+    char err[256];
+    struct orbit_table_params p = params(mass, 10.0, 60.0, 256, 64);
+    assert_int_equal(orbit_table_build(&t, &p, err, sizeof err), 0);
+    for (int row = 0; row < p.rows_per_side; row += 7) {
+        double phi = t.phi_infinity_over_sin[row] * sin(t.psi[row]), exact = exact_phi_end(mass, 10.0, t.psi[row], 0.0);
+        if (!(fabs(phi - exact) <= critical_bound(fabs(t.psi[row] - t.psi_c)))) {
+            print_error("row %d psi %.17g: to infinity %.17g, exact %.17g\n", row, t.psi[row], phi, exact);
+            bad++;
+        }
+    }
+    assert_int_equal(bad, 0);
+    orbit_table_free(&t);
+}
+
 static void test_refuses_bad_parameters(void **state)
 {
     (void)state;
@@ -258,6 +304,7 @@ int main(void)
         cmocka_unit_test(test_orbits_against_closed_forms),
         cmocka_unit_test(test_orbit_points_against_darwin),
         cmocka_unit_test(test_table_rows_exact),
+        cmocka_unit_test(test_sweep_to_infinity),
         cmocka_unit_test(test_table_interpolation),
         cmocka_unit_test(test_refuses_bad_parameters),
     };
