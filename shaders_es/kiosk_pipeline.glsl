@@ -3,7 +3,13 @@
 //   u_panel 0  ray positions: xyz / bound radius mapped to colour
 //   u_panel 1  ray directions: the unit velocity mapped to colour
 //   u_panel 2  depth: the segment index of the hit, blue (first) to red (last); grey: no hit
-//   u_panel 3  step size: log2 of h against the scene's step, blue (shorter) to red (longer)
+//   u_panel 3  step size: log2 of h against the scene's step, blue (shorter) to red (longer);
+//              with exact orbits (u_orbit_rows > 0) the orbit table instead: one orbit per row,
+//              from the observer (left) to where it ends (right), coloured by u = 1/r against the
+//              horizon's, blue (far) to red (at the horizon), the photon sphere at 2/3; escaping
+//              orbits in the upper half, captured ones in the lower, the critical launch angle
+//              (the shadow's edge) on the middle line, launch angles outwards from it as the
+//              table spaces them (logarithmically next to it)
 //   u_panel 4  outcome: objects green, sky blue, captured black, unfinished red, failed magenta
 uniform sampler2D u_position;
 uniform sampler2D u_velocity;
@@ -13,6 +19,11 @@ uniform float u_panel;
 uniform float u_bound_radius;
 uniform float u_segments;
 uniform float u_step;
+uniform sampler2D u_orbit_table;
+uniform vec2 u_orbit_size;          // the table texture's width and height in texels
+uniform float u_orbit_columns;
+uniform float u_orbit_rows;         // rows each side; 0: no table
+uniform float u_orbit_u_capture;
 varying vec2 v_uv;
 
 const float PIPELINE_NO_HIT = 60000.0;
@@ -21,6 +32,15 @@ vec3 ramp(float t)
 {
     t = clamp(t, 0.0, 1.0);
     return vec3(smoothstep(0.4, 0.9, t), sin(3.14159265 * t), 1.0 - smoothstep(0.1, 0.6, t));
+}
+
+vec3 orbit_table_panel(vec2 uv)
+{
+    float escaping = step(0.5, uv.y);
+    float row = min(floor(abs(uv.y - 0.5) * 2.0 * u_orbit_rows), u_orbit_rows - 1.0) + (1.0 - escaping) * u_orbit_rows;
+    float column = min(floor(uv.x * u_orbit_columns), u_orbit_columns - 1.0);
+    float u = texture2D(u_orbit_table, (vec2(column, row) + 0.5) / u_orbit_size).x;
+    return ramp(u / u_orbit_u_capture);
 }
 
 void main()
@@ -35,6 +55,8 @@ void main()
     } else if (u_panel < 2.5) {
         float depth = texture2D(u_hit, v_uv).w;
         c = depth < PIPELINE_NO_HIT ? ramp(depth / u_segments) : vec3(0.25);
+    } else if (u_panel < 3.5 && u_orbit_rows > 0.0) {
+        c = orbit_table_panel(v_uv);
     } else if (u_panel < 3.5) {
         float h = abs(texture2D(u_velocity, v_uv).w);
         c = h > 0.0 ? ramp(0.5 + 0.125 * log2(h / u_step)) : vec3(0.0);

@@ -181,11 +181,17 @@ int compositor_put_pipeline(struct compositor *c, const struct renderer_textures
     bind_sampler(p, "u_velocity", 1, t->velocity);
     bind_sampler(p, "u_hit", 2, t->hit);
     bind_sampler(p, "u_outcome", 3, t->outcome);
-    glActiveTexture(GL_TEXTURE0);
     set_uv_rect(p, 0, 0, 1, 1);
     glUniform1f(glGetUniformLocation(p, "u_bound_radius"), (float)bound_radius);
     glUniform1f(glGetUniformLocation(p, "u_segments"), (float)(segments > 0 ? segments : 1));
     glUniform1f(glGetUniformLocation(p, "u_step"), (float)step);
+    /* exact orbits: the step-size panel shows the orbit table instead */
+    bind_sampler(p, "u_orbit_table", 4, t->orbit_table);
+    glActiveTexture(GL_TEXTURE0);
+    glUniform2f(glGetUniformLocation(p, "u_orbit_size"), (float)t->orbit_width, (float)t->orbit_height);
+    glUniform1f(glGetUniformLocation(p, "u_orbit_columns"), (float)t->orbit_columns);
+    glUniform1f(glGetUniformLocation(p, "u_orbit_rows"), t->orbit_table ? (float)t->orbit_rows_per_side : 0.0f);
+    glUniform1f(glGetUniformLocation(p, "u_orbit_u_capture"), (float)t->orbit_u_capture);
     static const int cells[5][2] = {{1, 1}, {2, 1}, {0, 0}, {1, 0}, {2, 0}};
     for (int k = 0; k < 5; k++) {
         glViewport(cells[k][0] * pw, cells[k][1] * ph, pw, ph);

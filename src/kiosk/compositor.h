@@ -39,7 +39,8 @@ int compositor_put_preview_tile(struct compositor *c, GLuint image, int tex_w, i
                                 int h, int pw, int ph, char *err, size_t errlen);
 int compositor_show_preview(struct compositor *c, char *err, size_t errlen);
 /* The pipeline view of a run's ray state: five panels (positions, directions, segment index of
- * the hit, step size, outcome) and the image, in a 3 x 2 grid over the canvas. */
+ * the hit, step size, outcome) and the image, in a 3 x 2 grid over the canvas. With exact orbits
+ * (t->orbit_table) the step-size panel shows the orbit table the run followed. */
 int compositor_put_pipeline(struct compositor *c, const struct renderer_textures *t, double bound_radius,
                             int segments, double step, char *err, size_t errlen);
 /* The HUD image (screen-sized, top row first, straight alpha), or NULL for none. */

@@ -337,6 +337,7 @@ const char *const hud_pipeline_labels[HUD_PIPELINE_PANELS] = {
     "image", "ray positions", "ray directions", "segment of the hit", "step size",
     "outcome: green object, blue sky, black captured, red unfinished",
 };
+const char *const hud_pipeline_table_label = "orbit table: 1/r along each orbit";
 
 /* Each panel's label on a band of its own in the panel's top-left corner, cut to the panel's width. */
 static void draw_panel_labels(struct hud_font *font, unsigned char *rgba, int w, int h, const struct hud_view *v)
@@ -349,7 +350,8 @@ static void draw_panel_labels(struct hud_font *font, unsigned char *rgba, int w,
         if (p == 0 && v->title)
             snprintf(text, sizeof text, "image: %s", v->title);
         else
-            snprintf(text, sizeof text, "%s", hud_pipeline_labels[p]);
+            snprintf(text, sizeof text, "%s",
+                     p == HUD_PIPELINE_TABLE_PANEL && v->orbit_table ? hud_pipeline_table_label : hud_pipeline_labels[p]);
         size_t take = fitting_head(font, px, text, pw - 2 * pad);
         text[take] = '\0';
         int tw = hud_text_width(font, px, text);

@@ -34,12 +34,16 @@ struct hud_view {
      * its label in its top-left corner, and the block of lines gives way to the scene's name in
      * the image panel's label. canvas_*: where the canvas lies on the screen (top-down pixels). */
     int pipeline_view;
+    int orbit_table;                 /* exact orbits: the step-size panel shows the orbit table */
     int canvas_x, canvas_y, canvas_w, canvas_h;
 };
 
 /* The pipeline view's panels, left to right, top row first. */
 #define HUD_PIPELINE_PANELS 6
 extern const char *const hud_pipeline_labels[HUD_PIPELINE_PANELS];
+/* The step-size panel's label where it shows the orbit table, and that panel's index. */
+#define HUD_PIPELINE_TABLE_PANEL 4
+extern const char *const hud_pipeline_table_label;
 
 /* The HUD's text, one line per entry (title, explanation, knobs with units, effects, fps,
  * notice), for the log and for tests; returns the number of lines. */

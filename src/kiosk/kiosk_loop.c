@@ -134,6 +134,9 @@ static void hud_view_of(struct kiosk *k, struct hud_view *v)
                                         : NULL;
     /* the pipeline view labels its panels instead (hud.c) */
     v->pipeline_view = k->state.pipeline_view;
+    struct renderer_textures t;
+    renderer_textures(k->view.renderer, &t);
+    v->orbit_table = t.orbit_table != 0;
     compositor_letterbox(&k->view.comp, k->screen->width, k->screen->height, &v->canvas_x, &v->canvas_y,
                          &v->canvas_w, &v->canvas_h);
 }

@@ -362,6 +362,14 @@ void renderer_textures(const struct renderer *r, struct renderer_textures *out)
     out->velocity = r->rs.result_velocity;
     out->hit = r->rs.result_hit;
     out->outcome = r->rs.result_image;
+    if (r->exact_orbits && r->orbit_texture) {
+        out->orbit_table = r->orbit_texture;
+        out->orbit_width = r->orbit.width;
+        out->orbit_height = r->orbit.height;
+        out->orbit_columns = r->orbit.p.columns;
+        out->orbit_rows_per_side = r->orbit.p.rows_per_side;
+        out->orbit_u_capture = r->orbit.u_capture;
+    }
 }
 
 void render_result_free(struct render_result *res)

@@ -69,6 +69,12 @@ void render_result_free(struct render_result *res);
 struct renderer_textures {
     int width, height;
     GLuint image, position, velocity, hit, outcome;
+    /* render.method = orbit_table: the orbit table the last run followed (physics/orbit_table.h:
+     * texel (j, row).x is u = 1/r at fraction j / (columns - 1) of the row's orbit; escaping rows
+     * first, each side from the critical launch angle outwards); 0 for integrated rays */
+    GLuint orbit_table;
+    int orbit_width, orbit_height, orbit_columns, orbit_rows_per_side;
+    double orbit_u_capture;         /* u where captured orbits end, just inside the horizon */
 };
 void renderer_textures(const struct renderer *r, struct renderer_textures *out);
 /* The single-pass frame's deferred hit and position (a no-op after a multipass frame). */

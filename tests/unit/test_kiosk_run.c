@@ -238,7 +238,8 @@ static void test_attract_mode(void **state)
 
 /* The pipeline view shows the renderer's own ray state in a 3 x 2 grid; its last panel colours each
  * ray by its outcome, in exactly one of five colours (shaders_es/kiosk_pipeline.glsl). The start
- * view of the black hole has rays that hit objects, rays that reach the sky and captured rays. */
+ * view of the black hole has rays that hit objects, rays that reach the sky and captured rays.
+ * With exact orbits its step-size panel shows the orbit table instead. */
 static void test_pipeline_view(void **state)
 {
     (void)state;
@@ -265,6 +266,27 @@ static void test_pipeline_view(void **state)
                   seen[0], seen[1], seen[2], seen[3], seen[4], other);
     assert_int_equal(other, 0);
     assert_true(seen[0] > 0 && seen[1] > 0 && seen[2] > 0);
+
+    /* The black hole's rays follow exact orbits, so the step-size panel (bottom middle) shows the
+     * orbit table: each row one orbit, coloured by 1/r against the horizon's, escaping orbits in
+     * its upper half, captured ones in its lower. Only captured orbits come near the horizon
+     * (red: 1/r at 0.9 of the horizon's or more, ramp() in kiosk_pipeline.glsl); no escaping
+     * orbit comes nearer than the photon sphere (2/3, where the red channel is at most 140 of 255). */
+    int near_horizon[2] = {0, 0}, panel_pixels = 0;
+    for (int y = height - ph + 1; y < height - 1; y++) {
+        int lower = y >= height - ph / 2;
+        if (y == height - ph / 2 - 1 || y == height - ph / 2)
+            continue;                  /* the middle line, where the canvas's filter mixes both halves */
+        for (int x = pw + 1; x < 2 * pw - 1; x++) {
+            const unsigned char *p = &frames[PIPELINE_FRAME][((size_t)y * width + x) * 4];
+            near_horizon[lower] += p[0] >= 230 && p[1] <= 100 && p[2] <= 40;
+            panel_pixels++;
+        }
+    }
+    print_message("orbit table panel: %d of %d pixels near the horizon in the escaping half, %d in the captured "
+                  "half\n", near_horizon[0], panel_pixels, near_horizon[1]);
+    assert_int_equal(near_horizon[0], 0);
+    assert_true(near_horizon[1] > 0);
 }
 
 int main(void)
