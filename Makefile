@@ -217,12 +217,15 @@ FUZZ_CFLAGS   := -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Wshad
                  -Isrc -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined \
                  -fno-omit-frame-pointer $(shell pkg-config --cflags inih libpng egl 2>/dev/null)
 FUZZ_LIBS     := $(shell pkg-config --libs inih 2>/dev/null) -lm
-# Only what each harness calls: no GL code, no PNG reading. The loaders share src/io/text_file.c.
+# Only what each harness calls: no GL code, no PNG reading. The loaders share src/io/text_file.c,
+# the two configuration files src/conf/conf_reader.c, and what they check of an image its
+# header (src/io/png_header.c, no libpng).
 FUZZ_SRCS_text         := $(wildcard src/io/text_file.c)
-FUZZ_SRCS_scene        := $(FUZZ_SRCS_text) src/scene/scene_defaults.c src/scene/scene_keys.c \
+FUZZ_SRCS_conf         := $(FUZZ_SRCS_text) src/conf/conf_reader.c src/io/png_header.c
+FUZZ_SRCS_scene        := $(FUZZ_SRCS_conf) src/scene/scene_defaults.c src/scene/scene_keys.c \
                           src/scene/scene_load.c src/scene/scene_validate.c src/physics/model.c \
                           src/physics/relativity.c
-FUZZ_SRCS_kiosk_config := $(FUZZ_SRCS_text) src/kiosk/kiosk_config.c src/kiosk/kiosk_config_check.c \
+FUZZ_SRCS_kiosk_config := $(FUZZ_SRCS_conf) src/kiosk/kiosk_config.c src/kiosk/kiosk_config_check.c \
                           src/kiosk/kiosk_config_keys.c src/kiosk/kiosk_config_paths.c \
                           src/kiosk/kiosk_config_values.c src/kiosk/hid_report.c src/kiosk/quadrature.c \
                           src/kiosk/debounce.c src/kiosk/input_hid_decode.c src/kiosk/input_event.c

@@ -7,14 +7,15 @@ cd "$(dirname "$0")/.." || exit 1
 allowed() {
     case $1 in
         io | physics | gl) echo "" ;;
-        scene) echo "io physics" ;;
+        conf) echo "io" ;;
+        scene) echo "io physics conf" ;;
         results) echo "io physics scene" ;;
         ref) echo "io physics scene results" ;;
         render) echo "io physics gl scene results" ;;
-        kiosk) echo "io physics gl scene render" ;;
-        bench) echo "io physics gl scene results ref render kiosk" ;;
-        cli) echo "io physics gl scene results ref render kiosk bench" ;;
-        tools) echo "io physics gl scene results ref render cli" ;;
+        kiosk) echo "io physics gl conf scene render" ;;
+        bench) echo "io physics gl conf scene results ref render kiosk" ;;
+        cli) echo "io physics gl conf scene results ref render kiosk bench" ;;
+        tools) echo "io physics gl conf scene results ref render cli" ;;
         *) echo "?" ;;
     esac
 }

@@ -25,8 +25,4 @@ int png_write_rgba16_stream(FILE *fp, int width, int height, const float *color,
 int png_read_rgba8(const char *path, int max_size, int *width, int *height,
                    unsigned char **rgba_top_down, char *err, size_t errlen);
 
-/* The size PATH declares in its PNG header, without decoding: 0, or 1 when it does not start like
- * a PNG (or cannot be read). */
-int png_declared_size(const char *path, unsigned long *width, unsigned long *height);
-
 #endif

@@ -89,20 +89,6 @@ int kiosk_section_find(const char *name)
     return -1;
 }
 
-const char *kiosk_section_guess(const char *name)
-{
-    const char *best = NULL;
-    int best_d = 3;
-    for (int i = 0; i < KSEC_COUNT; i++) {
-        int d = edit_distance(name, sections[i].name, KIOSK_NAME_LEN);
-        if (d < best_d && (size_t)d < strlen(name)) {
-            best_d = d;
-            best = sections[i].name;
-        }
-    }
-    return best;
-}
-
 void kiosk_section_label(const struct kiosk_config *c, enum kiosk_section section, int instance,
                          char *buf, size_t len)
 {

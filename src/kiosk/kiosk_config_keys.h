@@ -72,8 +72,6 @@ int kiosk_section_find(const char *name);
 int kiosk_section_named(enum kiosk_section section);
 /* "kiosk, display, ...", for messages. */
 const char *kiosk_section_list(void);
-/* The closest section name within edit distance 2 of NAME, or NULL. */
-const char *kiosk_section_guess(const char *name);
 /* "[speed]" or "[input knob]". */
 void kiosk_section_label(const struct kiosk_config *c, enum kiosk_section section, int instance,
                          char *buf, size_t len);

@@ -1,6 +1,6 @@
 /* The memory the kiosk's images take (kiosk_images.h). */
 #include "kiosk/kiosk_images.h"
-#include "io/png_io.h"
+#include "io/png_header.h"
 #include "kiosk/kiosk_config_keys.h"
 #include <stdio.h>
 #include <stdlib.h>

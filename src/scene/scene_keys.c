@@ -9,7 +9,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "scene/scene_keys.h"
-#include "io/png_io.h"
+#include "io/png_header.h"
 #include "io/text_file.h"
 #include "physics/star_catalogue.h"
 

@@ -397,7 +397,7 @@ static const struct {
     int line;
     const char *words;
 } bad_scenes[] = {
-    {"unknown_section", 5, "unknown section [camrea]"},
+    {"unknown_section", 5, "unknown section [camrea] (did you mean [camera]?"},
     {"unknown_key", 4, "unknown key 'radiuss' in [object earth]"},
     {"unknown_light_key", 3, "unknown key 'intensity'"},
     {"model_key_before_type", 3, "set type first"},

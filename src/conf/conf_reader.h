@@ -1,0 +1,76 @@
+/* Reading an INI-style configuration file: the scene files and the kiosk configuration share this
+ * reader, and each brings only its schema (its sections and keys, and what a key's value sets).
+ *
+ * The reader takes the whole file (bounded in size, a regular file only: io/text_file.h), hands
+ * its lines to inih one at a time so that every message knows its line, and reads section headers
+ * itself (inih would cut long names and skip empty sections silently). What it settles the same
+ * way for every schema, with the first error at FILE:LINE:
+ *   - headers: '[kind]' or '[kind NAME]', nothing but a comment after ']', a known kind (else
+ *     the kinds, and the nearest within two edits as "did you mean"), a name exactly where the
+ *     kind takes one, a section given twice;
+ *   - lines: a NUL byte, a line too long for inih's buffer (refused, never cut), a key before any
+ *     section, '=' without a key, anything that is neither a pair, a header nor a comment;
+ *   - keys: a key given twice in one section, a key before the 'type' of a section whose type
+ *     decides its other keys;
+ *   - continuation lines: a key whose value the schema lets go on takes the indented lines after
+ *     it, one item each (a comment line leaves one out; a blank, unindented or '=' line ends it).
+ * Indentation is otherwise only layout. */
+#ifndef BT_CONF_READER_H
+#define BT_CONF_READER_H
+#include <stddef.h>
+
+/* Keys per section kind a schema may number (conf_schema.key_find); sections per file; bytes of
+ * an instance name with its NUL (a schema keeps names no longer). */
+#define CONF_MAX_KEYS 256
+#define CONF_MAX_SECTIONS 256
+#define CONF_NAME_MAX 64
+
+/* where: "FILE:LINE", or FILE alone for a problem with the whole file. */
+struct conf_error {
+    char where[600];
+    char message[512];
+};
+
+struct conf_schema {
+    const char *what;                  /* "scene file": names the file in messages */
+    long max_bytes;                    /* larger files are refused */
+    const char *long_line_hint;        /* added to the message for a line too long, or NULL */
+    int n_kinds;                       /* section kinds 0 .. n_kinds - 1 */
+    const char *(*kind_name)(int kind);
+    int (*kind_named)(int kind);       /* 1: '[kind NAME]', 0: '[kind]' */
+    const char *(*kind_list)(void);    /* "scene, camera, ...": the kinds, for messages */
+    int (*name_ok)(const char *name);  /* an instance name the schema can keep */
+    int name_max;                      /* its longest, for the message */
+    /* 1 where the section's 'type' decides its other keys and must come first */
+    int (*type_first)(int kind);
+    /* the key's index (< CONF_MAX_KEYS) among its kind's, -1 when the kind has no such key */
+    int (*key_find)(int kind, const char *key);
+    /* "[camera]", "[object earth]" */
+    void (*label)(const void *target, int kind, int instance, char *buf, size_t len);
+    /* a section starts at line: its instance (index of a named kind's instances, else 0); -1 with
+     * msg when the schema has no room for another */
+    int (*open)(void *target, int kind, const char *name, int line, int *instance, char *msg, size_t msglen);
+    /* the section ended (next header or end of file): -1 with msg, told at its header's line.
+     * key_line[k]: where key k was set in it, 0 where not. */
+    int (*close)(void *target, int kind, int instance, const int *key_line, char *msg, size_t msglen);
+    /* key = value in the section (unknown keys too, so that one place words the guess): 0, or -1
+     * with the whole message */
+    int (*pair)(void *target, int kind, int instance, const char *key, const char *value, int line, char *msg,
+                size_t msglen);
+    /* NULL, or 1 where the key's value goes on over indented lines, each handed to continuation
+     * (-1 with msg, told as "key 'KEY' in LABEL: MSG") */
+    int (*continues)(int kind, const char *key);
+    int (*continuation)(void *target, int kind, int instance, const char *key, const char *item, char *msg,
+                        size_t msglen);
+};
+
+/* Reads path into target by schema: 0, or -1 with the first error in err. */
+int conf_read(const char *path, const struct conf_schema *schema, void *target, struct conf_error *err);
+
+/* p without its leading and trailing white space (cut in place). */
+char *conf_trim(char *p);
+
+/* The kind name within two edits of name (and nearer than its length), or NULL. */
+const char *conf_kind_guess(const struct conf_schema *schema, const char *name);
+
+#endif
