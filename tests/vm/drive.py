@@ -11,7 +11,9 @@ with what it measured, into the log (build/vm/vm-test.log):
   boot, install, READY through systemd, the first frame on the screen (a QMP screendump), the
   service keyboard on tty1 (keys sent through QMP), the GPIO button and encoder (edges on the
   simulated chip), a killed kiosk restarted by Restart=, a hung one by the watchdog, a console
-  switch and back, and a stop within TimeoutStopSec.
+  switch and back, a USB HID knob set up as docs/KIOSK.md tells staff to (QEMU's usb-mouse, its
+  wheel turned through QMP, unplugged and plugged in again with device_del and device_add), and
+  a stop within TimeoutStopSec.
 
 Exit status: 0 every check passed, 1 a check failed, 2 the guest could not be started.
 """
@@ -89,6 +91,14 @@ class Qmp(LineSocket):
 
     def key(self, qcode):
         self.cmd("send-key", keys=[{"type": "qcode", "data": qcode}])
+
+    def wheel(self, clicks):
+        """Turns the mouse wheel by clicks (up when positive), one click at a time."""
+        button = "wheel-up" if clicks > 0 else "wheel-down"
+        for _ in range(abs(clicks)):
+            self.cmd("input-send-event", events=[{"type": "btn", "data": {"down": True, "button": button}}])
+            self.cmd("input-send-event", events=[{"type": "btn", "data": {"down": False, "button": button}}])
+            time.sleep(0.2)
 
     def screendump(self, path):
         self.cmd("screendump", filename=path)
@@ -185,6 +195,8 @@ def launch(out, accel, log):
         "-drive", "file=%s,format=raw,if=virtio" % os.path.join(out, "root.img"),
         "-vga", "none", "-device", "virtio-gpu-pci", "-display", "none",
         "-device", "virtio-serial-pci",
+        # a USB knob: QEMU's usb-mouse (0627:0001), its wheel read as a relative HID axis
+        "-device", "qemu-xhci,id=xhci", "-device", "usb-mouse,id=knob,bus=xhci.0",
         "-chardev", "socket,id=agent,path=%s,server=on,wait=off" % os.path.join(out, "agent.sock"),
         "-device", "virtserialport,chardev=agent,name=bt.agent",
         "-qmp", "unix:%s,server=on,wait=off" % os.path.join(out, "qmp.sock"),
@@ -327,6 +339,76 @@ def crash_report(log, agent, slow):
               (count.strip(), segv.strip()))
 
 
+def journal_count(agent, text):
+    rc, count = agent.run("journalctl -u bentray-kiosk -o cat --no-pager | grep -c -F '%s'" % text)
+    return int(count.strip() or "0")
+
+
+def wait_journal(agent, text, count, timeout):
+    """Seconds until the kiosk's journal holds text count times, or None."""
+    t0 = time.monotonic()
+    while time.monotonic() - t0 < timeout:
+        if journal_count(agent, text) >= count:
+            return time.monotonic() - t0
+        time.sleep(1.0)
+    return None
+
+
+USB_CONNECTED = "input speed_knob: HID device 0627:0001 connected"
+USB_GONE = "input speed_knob: HID device 0627:0001 disconnected"
+
+
+def usb_knob_setup(log, agent, slow):
+    """The speed knob as a USB HID device, set up before the kiosk starts the way docs/KIOSK.md
+    tells staff: the two example lines of 99-bentray.rules copied into 99-bentray-local.rules with
+    the device's ids, and the input's section in kiosk.conf changed to type = hid with its report's
+    layout (QEMU's usb-mouse: 4 bytes, buttons, x, y, the wheel in byte 3). The knob starts at 0.5
+    so that it can turn either way."""
+    rules = "/etc/udev/rules.d/99-bentray-local.rules"
+    rc, _ = agent.run("grep '^#SUBSYSTEM' /etc/udev/rules.d/99-bentray.rules | sed -e 's/^#//' -e 's/1234/0627/' "
+                      "-e 's/5678/0001/' > %s && udevadm control --reload && udevadm trigger --action=add "
+                      "--subsystem-match=usb --subsystem-match=hidraw && udevadm settle" % rules, 60 * slow)
+    conf = "/etc/bentray/kiosk.conf"
+    rc2, text = agent.run("sed -i -e 's/^type = powermate$/type = hid/' -e 's/^vid = 0x077d$/vid = 0x0627/' "
+                          "-e 's/^pid = 0x0410$/pid = 0x0001\\nreport_length = 4\\naxis_offset = 3/' "
+                          "-e '/^\\[speed\\]/,/^\\[/ s/^start = 0$/start = 0.5/' %s && "
+                          "grep -A 5 '^\\[input speed_knob\\]' %s | paste -sd ' '" % (conf, conf))
+    log.say("USB knob: udev rule from the example lines (exit %d), kiosk.conf changed (exit %d): %s" %
+            (rc, rc2, text.strip()))
+
+
+def usb_knob(log, qmp, agent, out, slow, before):
+    """The USB knob turns the speed, is unplugged and plugged in again while the kiosk runs, and
+    then turns the picture back to the one before (before: the screen, refined)."""
+    found = wait_journal(agent, USB_CONNECTED, 1, 60 * slow)
+    log.check("USB HID knob found", found is not None, "'%s' in the kiosk's journal" % USB_CONNECTED)
+    if found is None:
+        return
+    qmp.wheel(4)
+    turned, took = stable_screen(qmp, out, "usb_turned", slow, agent)
+    moved = changed_fraction(before, turned)
+    log.check("USB HID knob turns the speed", moved > 0.01 and took is not None,
+              "%.1f%% of the screen changed after 4 clicks of the wheel, refined after %s" % (100 * moved, waited(took)))
+
+    restarts = show(agent, ["NRestarts"]).get("NRestarts")
+    qmp.cmd("device_del", id="knob")
+    lost = wait_journal(agent, USB_GONE, 1, 60 * slow)
+    props = show(agent, ["ActiveState", "NRestarts"])
+    log.check("USB HID knob unplugged", lost is not None and props.get("ActiveState") == "active" and
+              props.get("NRestarts") == restarts,
+              "'%s' in the journal after %s; %s" % (USB_GONE, waited(lost), props))
+    qmp.cmd("device_add", driver="usb-mouse", id="knob", bus="xhci.0")
+    found = wait_journal(agent, USB_CONNECTED, 2, 60 * slow)
+    qmp.wheel(-4)
+    back, took = stable_screen(qmp, out, "usb_turned_back", slow, agent)
+    same = changed_fraction(before, back)
+    props = show(agent, ["ActiveState", "NRestarts"])
+    log.check("USB HID knob plugged in again", found is not None and same < 0.005 and took is not None and
+              props.get("NRestarts") == restarts,
+              "connected again after %s; 4 clicks back: %.2f%% differs from the picture before the first turn, "
+              "refined after %s; %s" % (waited(found), 100 * same, waited(took), props))
+
+
 def checks(log, qmp, agent, out, slow, kvm):
     rc, text = agent.run("/opt/bentray-src/tests/vm/gpio_sim.sh setup")
     gpio = rc == 0
@@ -350,6 +432,7 @@ def checks(log, qmp, agent, out, slow, kvm):
                   "> /etc/systemd/system/bentray-kiosk.service.d/vm-slow.conf && systemctl daemon-reload"
                   % int(10 * slow))
         log.say("TCG: WatchdogSec=%d in a drop-in (the shipped 10 s times the emulation's slowness)" % int(10 * slow))
+    usb_knob_setup(log, agent, slow)
     t = time.monotonic()
     rc, text = agent.run("systemctl start bentray-kiosk", 120 * slow)
     started = time.monotonic() - t
@@ -361,6 +444,14 @@ def checks(log, qmp, agent, out, slow, kvm):
     log.check("first frame on the screen", level > 8.0 and took is not None,
               "screendump %dx%d, mean level %.1f of 255 (a black screen is below 8), refined after %s" %
               (first[0], first[1], level, waited(took)))
+
+    if os.environ.get("BT_VM_ONLY") == "usb":
+        # a change to the USB knob alone: the checks in between are skipped (BT_VM_ONLY=usb)
+        log.say("BT_VM_ONLY=usb: only the USB knob's checks follow the first frame")
+        usb_knob(log, qmp, agent, out, slow, first)
+        crash_report(log, agent, slow)
+        stop(log, agent, slow)
+        return
 
     # the service keyboard on tty1: 'n' to the next scene, 'p' back to the same picture
     qmp.key("n")
@@ -438,8 +529,12 @@ def checks(log, qmp, agent, out, slow, kvm):
               "%.2f%% differs from the picture before the switch (less than 1%%), NRestarts %s before, %s after"
               % (100 * back, restarts, props.get("NRestarts")))
 
+    usb_knob(log, qmp, agent, out, slow, again)
     crash_report(log, agent, slow)
+    stop(log, agent, slow)
 
+
+def stop(log, agent, slow):
     # systemd itself judges the time: past TimeoutStopSec it kills the kiosk and the result is "timeout"
     t = time.monotonic()
     rc, _ = agent.run("systemctl stop bentray-kiosk", 60 * slow)
