@@ -32,8 +32,7 @@ struct reader {
     int instance;
     int header_line;
     int key_line[CONF_MAX_KEYS];
-    const char *continuing;      /* the key whose indented lines are being read, or NULL */
-    char continuing_key[CONF_NAME_MAX];
+    char continuing[CONF_NAME_MAX];  /* the key whose indented lines are being read, or "" */
     struct seen_section seen[CONF_MAX_SECTIONS];
     int n_seen;
 };
@@ -226,9 +225,9 @@ static char *next_line(char *buf, int size, void *stream)
     }
     memcpy(buf, start, len);
     buf[len] = '\0';
-    if (r->continuing && (len == 0 || (!indented && *buf != ';' && *buf != '#') || *buf == '[' || strchr(buf, '=')))
-        r->continuing = NULL;
-    if (r->continuing)
+    if (*r->continuing && (len == 0 || (!indented && *buf != ';' && *buf != '#') || *buf == '[' || strchr(buf, '=')))
+        *r->continuing = '\0';
+    if (*r->continuing)
         return continue_value(r, buf);
     if (buf[0] == '[') {
         if (read_header(r, buf) != 0)
@@ -280,8 +279,7 @@ static int on_pair(void *user, const char *inih_section, const char *name, const
     }
     r->key_line[key] = r->line;
     if (schema->continues && schema->continues(r->kind, name)) {
-        snprintf(r->continuing_key, sizeof r->continuing_key, "%s", name);
-        r->continuing = r->continuing_key;
+        snprintf(r->continuing, sizeof r->continuing, "%s", name);
     }
     return 1;
 }
