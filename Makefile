@@ -221,7 +221,7 @@ FUZZ_LIBS     := $(shell pkg-config --libs inih 2>/dev/null) -lm
 # the two configuration files src/conf/conf_reader.c, and what they check of an image its
 # header (src/io/png_header.c, no libpng).
 FUZZ_SRCS_text         := $(wildcard src/io/text_file.c)
-FUZZ_SRCS_conf         := $(FUZZ_SRCS_text) src/conf/conf_reader.c src/io/png_header.c
+FUZZ_SRCS_conf         := $(FUZZ_SRCS_text) src/conf/conf_reader.c src/conf/conf_value.c src/io/png_header.c
 FUZZ_SRCS_scene        := $(FUZZ_SRCS_conf) src/scene/scene_defaults.c src/scene/scene_keys.c \
                           src/scene/scene_load.c src/scene/scene_validate.c src/physics/model.c \
                           src/physics/relativity.c

@@ -155,11 +155,11 @@ static const char speed_hint[] = "speeds are fractions of c: 0.99 at most (gamma
 /* The two knobs take the same keys with their own ranges and curves. */
 #define KNOB_KEYS(sec, knob, top, curves, hint_text)                                                 \
     {sec, "input", KK_NAME, .offset = AT_CONFIG(knob.input)},                                        \
-    {sec, "min", KK_NUMBER, .lo = 0.0, .hi = top, .flags = KK_BELOW_HI, .offset = AT_CONFIG(knob.min), \
+    {sec, "min", KK_NUMBER, .lo = 0.0, .hi = top, .flags = CONF_BELOW_HI, .offset = AT_CONFIG(knob.min), \
      .hint = hint_text},                                                                             \
-    {sec, "max", KK_NUMBER, .lo = 0.0, .hi = top, .flags = KK_ABOVE_LO, .offset = AT_CONFIG(knob.max), \
+    {sec, "max", KK_NUMBER, .lo = 0.0, .hi = top, .flags = CONF_ABOVE_LO, .offset = AT_CONFIG(knob.max), \
      .hint = hint_text},                                                                             \
-    {sec, "step", KK_NUMBER, .lo = 0.0, .hi = KNOB_STEP_MAX, .flags = KK_ABOVE_LO,                   \
+    {sec, "step", KK_NUMBER, .lo = 0.0, .hi = KNOB_STEP_MAX, .flags = CONF_ABOVE_LO,                   \
      .offset = AT_CONFIG(knob.step)},                                                                \
     {sec, "curve", CHOOSE(curves), .offset = AT_CONFIG(knob.curve)},                                 \
     {sec, "start", KK_NUMBER, .lo = 0.0, .hi = top, .offset = AT_CONFIG(knob.start), .hint = hint_text}
@@ -194,17 +194,17 @@ const struct kiosk_key kiosk_keys[] = {
     {KSEC_ATTRACT, "enabled", SWITCH, .offset = AT_CONFIG(attract.enabled)},
     {KSEC_ATTRACT, "script", KK_FILE, .offset = AT_CONFIG(attract.script)},
 
-    {KSEC_BUTTON, "action", CHOOSE(action_choices), .flags = KK_REQUIRED, .offset = AT_BUTTON(action)},
-    {KSEC_BUTTON, "input", KK_NAME, .flags = KK_REQUIRED, .offset = AT_BUTTON(input)},
+    {KSEC_BUTTON, "action", CHOOSE(action_choices), .flags = CONF_REQUIRED, .offset = AT_BUTTON(action)},
+    {KSEC_BUTTON, "input", KK_NAME, .flags = CONF_REQUIRED, .offset = AT_BUTTON(input)},
     {KSEC_BUTTON, "bit", KK_INT, .lo = 0, .hi = 7, .offset = AT_BUTTON(bit)},
 
-    {KSEC_INPUT, "type", CHOOSE(type_choices), .flags = KK_REQUIRED, .offset = AT_INPUT(type),
+    {KSEC_INPUT, "type", CHOOSE(type_choices), .flags = CONF_REQUIRED, .offset = AT_INPUT(type),
      .set = kiosk_set_input_type},
     /* a name may have one entry per group of types: USB ids are optional for the PowerMate */
     {KSEC_INPUT, "vid", KK_HEX, .applies = POWERMATE, .offset = AT_INPUT(vid)},
-    {KSEC_INPUT, "vid", KK_HEX, .applies = HID, .flags = KK_REQUIRED, .offset = AT_INPUT(vid)},
+    {KSEC_INPUT, "vid", KK_HEX, .applies = HID, .flags = CONF_REQUIRED, .offset = AT_INPUT(vid)},
     {KSEC_INPUT, "pid", KK_HEX, .applies = POWERMATE, .offset = AT_INPUT(pid)},
-    {KSEC_INPUT, "pid", KK_HEX, .applies = HID, .flags = KK_REQUIRED, .offset = AT_INPUT(pid)},
+    {KSEC_INPUT, "pid", KK_HEX, .applies = HID, .flags = CONF_REQUIRED, .offset = AT_INPUT(pid)},
     {KSEC_INPUT, "report_id", KK_INT, .lo = 0, .hi = 255, .applies = HID, .offset = AT_INPUT(report_id)},
     {KSEC_INPUT, "report_length", KK_INT, .lo = 1, .hi = HID_REPORT_MAX, .applies = HID,
      .offset = AT_INPUT(report_length)},
@@ -218,7 +218,7 @@ const struct kiosk_key kiosk_keys[] = {
     {KSEC_INPUT, "button_offset", KK_INT, .lo = 0, .hi = HID_REPORT_MAX - 1, .applies = HID,
      .offset = AT_INPUT(button_offset)},
     {KSEC_INPUT, "buttons", KK_INT, .lo = 0, .hi = 8, .applies = HID, .offset = AT_INPUT(buttons)},
-    {KSEC_INPUT, "chip", KK_WORD, .applies = ENCODER | GPIO_BUTTON, .flags = KK_REQUIRED,
+    {KSEC_INPUT, "chip", KK_WORD, .applies = ENCODER | GPIO_BUTTON, .flags = CONF_REQUIRED,
      .offset = AT_INPUT(chip)},
     {KSEC_INPUT, "line_a", KK_INT, .lo = 0, .hi = GPIO_LINE_MAX, .applies = ENCODER,
      .offset = AT_INPUT(line_a)},
@@ -234,7 +234,7 @@ const struct kiosk_key kiosk_keys[] = {
     {KSEC_INPUT, "active_low", SWITCH, .applies = GPIO_BUTTON, .offset = AT_INPUT(active_low)},
     {KSEC_INPUT, "debounce_ms", KK_INT, .lo = 1, .hi = 200, .applies = GPIO_BUTTON,
      .offset = AT_INPUT(debounce_ms)},
-    {KSEC_INPUT, "path", KK_FILE, .applies = SCRIPT, .flags = KK_REQUIRED, .offset = AT_INPUT(path)},
+    {KSEC_INPUT, "path", KK_FILE, .applies = SCRIPT, .flags = CONF_REQUIRED, .offset = AT_INPUT(path)},
 };
 
 const int kiosk_key_count = (int)(sizeof kiosk_keys / sizeof kiosk_keys[0]);

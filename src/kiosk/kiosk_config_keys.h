@@ -4,6 +4,7 @@
 #ifndef BT_KIOSK_CONFIG_KEYS_H
 #define BT_KIOSK_CONFIG_KEYS_H
 #include <stddef.h>
+#include "conf/conf_value.h"
 #include "kiosk/kiosk_config.h"
 
 /* No honest configuration comes near this; refusing earlier keeps a wrong path (a log, an image)
@@ -34,9 +35,8 @@ enum kiosk_key_kind {
     KK_SPECIAL          /* parsed and stored by set() */
 };
 
-#define KK_ABOVE_LO 1u      /* value > lo instead of >= lo */
-#define KK_BELOW_HI 2u      /* value < hi instead of <= hi */
-#define KK_REQUIRED 4u      /* the section is incomplete without it (for the types it applies to) */
+/* flags: CONF_ABOVE_LO, CONF_BELOW_HI and CONF_REQUIRED (conf/conf_value.h: the section is
+ * incomplete without the key, for the types it applies to) */
 
 struct kiosk_choice {
     const char *name;

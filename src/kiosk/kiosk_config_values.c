@@ -11,7 +11,7 @@
 #include "io/text_file.h"
 
 /* Values are quoted back as given, shortened: a whole line of junk helps nobody. */
-#define QUOTE_MAX 80
+
 /* A near miss of a real name within this many edits is nearly always a typo. */
 #define GUESS_MAX_EDITS 2
 /* USB vendor and product ids are 16 bits. */
@@ -19,17 +19,11 @@
 
 /* ---- numbers ------------------------------------------------------------------------------- */
 
-/* inih has trimmed the value, so anything left after the number is garbage ("120 s", "0.5,"). */
+/* Numbers and integers as every configuration reads them (conf/conf_value.h). */
 static int parse_int64(const char *text, int64_t *out)
 {
-    char *end;
     long long x;
-    /* decimal digits, with a minus sign for a negative number: no plus sign, no blanks */
-    if (!isdigit((unsigned char)text[text[0] == '-']))
-        return -1;
-    errno = 0;
-    x = strtoll(text, &end, 10);
-    if (end == text || *end != '\0' || errno == ERANGE)
+    if (conf_parse_integer(text, &x) != 0)
         return -1;
     *out = (int64_t)x;
     return 0;
@@ -37,24 +31,7 @@ static int parse_int64(const char *text, int64_t *out)
 
 static int parse_number(const char *text, double *out, const char **why)
 {
-    char *end;
-    /* strtod reads hexadecimal floats; nobody means 0x1p-1 for a knob's range */
-    if (strpbrk(text, "xX"))
-        return -1;
-    errno = 0;
-    *out = strtod(text, &end);
-    if (end == text || *end != '\0')
-        return -1;
-    if (!isfinite(*out)) {
-        *why = "not a finite number";
-        return -1;
-    }
-    /* as a scene number: beyond a double's range either way is refused, a denormal (1e-320) too */
-    if (errno == ERANGE) {
-        *why = "too large or too small for a double";
-        return -1;
-    }
-    return 0;
+    return conf_parse_numbers(text, out, 1, why);
 }
 
 /* "0x077d": the prefix is required, so that 0410 cannot be read as decimal 410. */
@@ -76,11 +53,7 @@ static int parse_hex(const char *text, int *out)
 
 static int in_range(const struct kiosk_key *k, double x)
 {
-    if (k->flags & KK_ABOVE_LO ? !(x > k->lo) : !(x >= k->lo))
-        return 0;
-    if (k->flags & KK_BELOW_HI ? !(x < k->hi) : !(x <= k->hi))
-        return 0;
-    return 1;
+    return conf_in_range(x, k->lo, k->hi, k->flags);
 }
 
 static int word_ok(const char *text)
@@ -98,12 +71,7 @@ static int word_ok(const char *text)
 
 static void describe_range(const struct kiosk_key *k, char *buf, size_t len)
 {
-    const char *gt = k->flags & KK_ABOVE_LO ? ">" : ">=";
-    const char *lt = k->flags & KK_BELOW_HI ? "<" : "<=";
-    if (!(k->flags & (KK_ABOVE_LO | KK_BELOW_HI)))
-        snprintf(buf, len, " from %.15g to %.15g", k->lo, k->hi);
-    else
-        snprintf(buf, len, " %s %.15g and %s %.15g", gt, k->lo, lt, k->hi);
+    conf_describe_range(k->lo, k->hi, k->flags, buf, len);
 }
 
 static void describe_expected(const struct kiosk_key *k, char *buf, size_t len)
@@ -268,7 +236,7 @@ int kiosk_key_apply(struct kiosk_config *c, enum kiosk_section section, int inst
     const char *why = NULL;
     const struct kiosk_key *k;
     void *target = c;
-    int first, n = (int)strlen(value);
+    int first;
 
     kiosk_section_label(c, section, instance, label, sizeof label);
     first = kiosk_key_find(section, name);
@@ -305,9 +273,10 @@ int kiosk_key_apply(struct kiosk_config *c, enum kiosk_section section, int inst
         return 0;
     }
     if (parse_store(k, c, target, value, &why) != 0) {
+        char quoted[CONF_QUOTE_MAX + 8];
         describe_expected(k, expected, sizeof expected);
-        snprintf(msg, msg_len, "key '%s' in %s: expected %s, got \"%.*s%s\"%s%s%s%s%s", name, label,
-                 expected, n > QUOTE_MAX ? QUOTE_MAX : n, value, n > QUOTE_MAX ? "..." : "",
+        conf_quote(value, quoted, sizeof quoted);
+        snprintf(msg, msg_len, "key '%s' in %s: expected %s, got %s%s%s%s%s%s", name, label, expected, quoted,
                  why ? " (" : "", why ? why : "", why ? ")" : "",
                  k->hint && !why ? ": " : "", k->hint && !why ? k->hint : "");
         if (strchr(value, '#'))
@@ -335,7 +304,7 @@ const char *kiosk_key_missing(const struct kiosk_config *c, enum kiosk_section s
     unsigned type_bit = section_type_bit(c, section, instance);
     for (int i = 0; i < kiosk_key_count; i++) {
         const struct kiosk_key *k = &kiosk_keys[i];
-        if (k->section != section || !(k->flags & KK_REQUIRED) || !applies_to(k, type_bit))
+        if (k->section != section || !(k->flags & CONF_REQUIRED) || !applies_to(k, type_bit))
             continue;
         if (kiosk_key_line(c, section, instance, k->name) == 0)
             return k->name;
@@ -351,7 +320,7 @@ int kiosk_set_start_scene(struct kiosk_config *c, void *t, const char *value, ch
     (void)t;
     if (!word_ok(value)) {
         snprintf(reason, len, "expected a scene's index (0 is the first) or its name, got \"%.*s\"",
-                 QUOTE_MAX, value);
+                 CONF_QUOTE_MAX, value);
         return -1;
     }
     snprintf(c->kiosk.start_scene_name, sizeof c->kiosk.start_scene_name, "%s", value);
@@ -372,7 +341,7 @@ int kiosk_set_mode(struct kiosk_config *c, void *t, const char *value, char *rea
     if (!end || *end != '\0' || w < KIOSK_MIN_SIZE || w > KIOSK_MAX_SIZE || h < KIOSK_MIN_SIZE ||
         h > KIOSK_MAX_SIZE) {
         snprintf(reason, len, "expected WIDTHxHEIGHT such as 1920x1080, each from %d to %d, got "
-                 "\"%.*s\"", KIOSK_MIN_SIZE, KIOSK_MAX_SIZE, QUOTE_MAX, value);
+                 "\"%.*s\"", KIOSK_MIN_SIZE, KIOSK_MAX_SIZE, CONF_QUOTE_MAX, value);
         return -1;
     }
     c->display.mode_width = (int)w;

@@ -377,7 +377,7 @@ static int set_cubemap(struct scene *s, void *t, const union scene_key_value *v,
 #define AT_LIGHT(field) offsetof(struct light, field)
 
 #define ANY .lo = -INFINITY, .hi = INFINITY
-#define POSITIVE .lo = 0.0, .hi = INFINITY, .flags = KEY_ABOVE_LO
+#define POSITIVE .lo = 0.0, .hi = INFINITY, .flags = CONF_ABOVE_LO
 #define NON_NEGATIVE .lo = 0.0, .hi = INFINITY
 #define COLOR_RANGE .lo = 0.0, .hi = 1000.0
 /* 0 is "not a black body"; hotter than any star's surface is a typo */
@@ -398,7 +398,7 @@ const struct scene_key scene_keys[] = {
     {SECTION_CAMERA, "position", KEY_VECTOR, ANY, .offset = AT_SCENE(camera.position)},
     {SECTION_CAMERA, "look_at", KEY_VECTOR, ANY, .offset = AT_SCENE(camera.look_at)},
     {SECTION_CAMERA, "up", KEY_VECTOR, ANY, .flags = KEY_NONZERO, .offset = AT_SCENE(camera.up)},
-    {SECTION_CAMERA, "fov", KEY_NUMBER, .lo = 0.0, .hi = 180.0, .flags = KEY_ABOVE_LO | KEY_BELOW_HI,
+    {SECTION_CAMERA, "fov", KEY_NUMBER, .lo = 0.0, .hi = 180.0, .flags = CONF_ABOVE_LO | CONF_BELOW_HI,
      .offset = AT_SCENE(camera.fov_deg)},
 
     {SECTION_OBSERVER, "velocity", KEY_VECTOR, ANY, .offset = AT_SCENE(observer.velocity)},
@@ -409,7 +409,7 @@ const struct scene_key scene_keys[] = {
     {SECTION_RENDER, "width", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .set = set_width},
     {SECTION_RENDER, "height", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .set = set_height},
     {SECTION_RENDER, "method", CHOICE(method_names, set_method)},
-    {SECTION_RENDER, "step", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .flags = KEY_ABOVE_LO,
+    {SECTION_RENDER, "step", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .flags = CONF_ABOVE_LO,
      .offset = AT_SCENE(render.step_size)},
     {SECTION_RENDER, "steps_per_segment", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_STEPS_PER_SEGMENT,
      .offset = AT_SCENE(render.steps_per_segment)},
@@ -428,16 +428,16 @@ const struct scene_key scene_keys[] = {
      .offset = AT_SCENE(render.termination_interval)},
     {SECTION_RENDER, "batch", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_BATCH, .offset = AT_SCENE(render.batch)},
     {SECTION_RENDER, "step_control", CHOICE(step_control_names, set_step_control)},
-    {SECTION_RENDER, "tolerance", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .flags = KEY_ABOVE_LO,
+    {SECTION_RENDER, "tolerance", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .flags = CONF_ABOVE_LO,
      .offset = AT_SCENE(render.tolerance)},
-    {SECTION_RENDER, "grow_fraction", KEY_NUMBER, .lo = 0.0, .hi = 1.0, .flags = KEY_ABOVE_LO | KEY_BELOW_HI,
+    {SECTION_RENDER, "grow_fraction", KEY_NUMBER, .lo = 0.0, .hi = 1.0, .flags = CONF_ABOVE_LO | CONF_BELOW_HI,
      .offset = AT_SCENE(render.grow_fraction)},
     {SECTION_RENDER, "step_min", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .offset = AT_SCENE(render.step_min)},
     {SECTION_RENDER, "step_max", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .offset = AT_SCENE(render.step_max)},
     {SECTION_RENDER, "moving_objects", CHOICE(moving_names, set_moving_objects)},
     {SECTION_RENDER, "polygon_subdivision", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SUBDIVISION,
      .offset = AT_SCENE(render.polygon_subdivision)},
-    {SECTION_RENDER, "chord_tolerance", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .flags = KEY_ABOVE_LO,
+    {SECTION_RENDER, "chord_tolerance", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .flags = CONF_ABOVE_LO,
      .offset = AT_SCENE(render.chord_tolerance)},
     {SECTION_RENDER, "sky_alpha", KEY_NUMBER, .lo = 0.0, .hi = 1.0, .offset = AT_SCENE(render.sky_alpha)},
     {SECTION_RENDER, "samples", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SAMPLES, .offset = AT_SCENE(render.samples)},
@@ -610,68 +610,30 @@ int scene_key_find(enum scene_section_kind section, const char *name)
 #define NUMBER_TEXT(x) NUMBER_TEXT_(x)
 #define NUMBER_TEXT_(x) #x
 
-/* Reads COUNT numbers separated by blanks; the whole text must be used. reason says what was
- * wrong beyond the expected form (a non-finite number, overflow), or stays NULL. */
+/* COUNT numbers as every configuration reads them (conf/conf_value.h), each within the most a
+ * scene number may be. */
 static int parse_numbers(const char *text, double *out, int count, const char **reason)
 {
-    const char *p = text;
-    for (int i = 0; i < count; i++) {
-        char *end;
-        while (isspace((unsigned char)*p))
-            p++;
-        if (*p == '\0')
-            return -1;
-        errno = 0;
-        out[i] = strtod(p, &end);
-        if (end == p)
-            return -1;
-        if (errno == ERANGE) {
-            *reason = "too large or too small for a double";
-            return -1;
-        }
-        if (!isfinite(out[i])) {
-            *reason = "not a finite number";
-            return -1;
-        }
+    if (conf_parse_numbers(text, out, count, reason) != 0)
+        return -1;
+    for (int i = 0; i < count; i++)
         if (fabs(out[i]) > SCENE_MAX_ABS_VALUE) {
             *reason = "larger in magnitude than " NUMBER_TEXT(SCENE_MAX_ABS_VALUE) ", the most a scene number "
                       "may be: the GPU squares lengths in 32-bit floats";
             return -1;
         }
-        /* "1,2" must not read as 1 followed by garbage that happens to parse later */
-        if (*end != '\0' && !isspace((unsigned char)*end))
-            return -1;
-        p = end;
-    }
-    while (isspace((unsigned char)*p))
-        p++;
-    return *p == '\0' ? 0 : -1;
+    return 0;
 }
 
 static int in_range(const struct scene_key *k, double x)
 {
-    if (k->flags & KEY_ABOVE_LO ? !(x > k->lo) : !(x >= k->lo))
-        return 0;
-    if (k->flags & KEY_BELOW_HI ? !(x < k->hi) : !(x <= k->hi))
-        return 0;
-    return 1;
+    return conf_in_range(x, k->lo, k->hi, k->flags);
 }
 
-/* Decimal digits, with a minus sign for a negative number: strtol alone would also take a plus
- * sign and leading blanks ("+32"), which the format does not have. */
 static int parse_integer(const char *text, int *out)
 {
-    char *end;
-    long x;
-    if (!isdigit((unsigned char)text[text[0] == '-']))
-        return -1;
-    errno = 0;
-    x = strtol(text, &end, 10);
-    if (end == text || errno == ERANGE || x < -2147483647L || x > 2147483647L)
-        return -1;
-    while (isspace((unsigned char)*end))
-        end++;
-    if (*end != '\0')
+    long long x;
+    if (conf_parse_integer(text, &x) != 0 || x < -2147483647LL || x > 2147483647LL)
         return -1;
     *out = (int)x;
     return 0;
@@ -711,13 +673,8 @@ static int parse_value(const struct scene_key *k, const char *text, union scene_
             return -1;
         return 0;
     case KEY_CHOICE:
-        for (int i = 0; k->choices[i]; i++) {
-            if (strcmp(k->choices[i], text) == 0) {
-                v->choice = i;
-                return 0;
-            }
-        }
-        return -1;
+        v->choice = conf_choice_find(k->choices, text);
+        return v->choice >= 0 ? 0 : -1;
     case KEY_TEXT:
         if (strlen(text) < (size_t)k->lo || strlen(text) > (size_t)k->hi)
             return -1;
@@ -762,25 +719,12 @@ static void store_value(const struct scene_key *k, void *target, const union sce
 
 static void describe_range(const struct scene_key *k, char *buf, size_t len)
 {
-    int lo = isfinite(k->lo), hi = isfinite(k->hi);
-    const char *gt = k->flags & KEY_ABOVE_LO ? ">" : ">=";
-    const char *lt = k->flags & KEY_BELOW_HI ? "<" : "<=";
-    if (lo && hi && !(k->flags & (KEY_ABOVE_LO | KEY_BELOW_HI)))
-        snprintf(buf, len, " from %.15g to %.15g", k->lo, k->hi);
-    else if (lo && hi)
-        snprintf(buf, len, " %s %.15g and %s %.15g", gt, k->lo, lt, k->hi);
-    else if (lo)
-        snprintf(buf, len, " %s %.15g", gt, k->lo);
-    else if (hi)
-        snprintf(buf, len, " %s %.15g", lt, k->hi);
-    else
-        buf[0] = '\0';
+    conf_describe_range(k->lo, k->hi, k->flags, buf, len);
 }
 
 static void describe_expected(const struct scene_key *k, char *buf, size_t len)
 {
     char range[64];
-    size_t used;
     describe_range(k, range, sizeof range);
     switch (k->kind) {
     case KEY_NUMBER:
@@ -799,9 +743,7 @@ static void describe_expected(const struct scene_key *k, char *buf, size_t len)
         snprintf(buf, len, "2 numbers \"u v\"");
         break;
     case KEY_CHOICE:
-        used = (size_t)snprintf(buf, len, "one of");
-        for (int i = 0; k->choices[i] && used < len; i++)
-            used += (size_t)snprintf(buf + used, len - used, "%s %s", i ? "," : "", k->choices[i]);
+        conf_describe_choices(k->choices, buf, len);
         break;
     case KEY_TEXT:
         if (k->lo > 0)
@@ -869,9 +811,6 @@ static const struct scene_key *applicable_key(const struct scene *s, enum scene_
     return NULL;
 }
 
-/* Values are quoted back as given, shortened: a whole line of junk helps nobody. */
-#define QUOTE_MAX 80
-
 int scene_key_apply(struct scene *s, enum scene_section_kind section, int instance,
                     const char *name, const char *value, char *msg, size_t msg_len)
 {
@@ -907,10 +846,10 @@ int scene_key_apply(struct scene *s, enum scene_section_kind section, int instan
         return -1;
     }
     if (parse_value(k, value, &v, &why) != 0) {
-        int n = (int)strlen(value);
+        char quoted[CONF_QUOTE_MAX + 8];
         describe_expected(k, expected, sizeof expected);
-        snprintf(msg, msg_len, "key '%s' in %s: expected %s, got \"%.*s%s\"%s%s%s", name, label,
-                 expected, n > QUOTE_MAX ? QUOTE_MAX : n, value, n > QUOTE_MAX ? "..." : "",
+        conf_quote(value, quoted, sizeof quoted);
+        snprintf(msg, msg_len, "key '%s' in %s: expected %s, got %s%s%s%s", name, label, expected, quoted,
                  why ? " (" : "", why ? why : "", why ? ")" : "");
         return -1;
     }

@@ -3,6 +3,7 @@
 #ifndef BT_SCENE_KEYS_H
 #define BT_SCENE_KEYS_H
 #include <stddef.h>
+#include "conf/conf_value.h"
 #include "scene/scene.h"
 
 /* No honest scene file comes near this; refusing earlier keeps a wrong path (a video, a disk image)
@@ -39,9 +40,8 @@ enum scene_key_kind {
     KEY_PATH            /* a file relative to the scene file's directory, checked by the setter */
 };
 
-#define KEY_ABOVE_LO 1u     /* value > lo instead of >= lo */
-#define KEY_BELOW_HI 2u     /* value < hi instead of <= hi */
-#define KEY_NONZERO 4u      /* a vector that gives a direction: not all components zero */
+/* flags: CONF_ABOVE_LO, CONF_BELOW_HI (conf/conf_value.h), and the scene's own */
+#define KEY_NONZERO CONF_FLAGS_OWN  /* a vector that gives a direction: not all components zero */
 
 union scene_key_value {
     double number;
