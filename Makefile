@@ -210,7 +210,7 @@ test-sanitize:
 FUZZ_PACKAGES := clang libclang-rt-14-dev
 FUZZ_CC       ?= clang
 FUZZ_SECONDS  ?= 60
-FUZZ_TARGETS  := scene kiosk_config dump hid gpio script
+FUZZ_TARGETS  := conf scene kiosk_config dump hid gpio script
 FUZZ_DIR      := $(BUILD)/fuzz
 # -fno-sanitize-recover: undefined behaviour stops the run, so that libFuzzer keeps the input
 FUZZ_CFLAGS   := -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes \

@@ -79,6 +79,7 @@ mv "$totals.tmp" "$totals"
 
 feeds() {
     case $1 in
+    conf) echo "the configuration reader and its values, on a schema of its own: conf_read, conf_parse_numbers, conf_parse_integer" ;;
     scene) echo "scene files: scene_load, scene_validate, scene_set" ;;
     kiosk_config) echo "kiosk configuration: kiosk_config_load, kiosk_config_check" ;;
     dump) echo "per-pixel dumps: dump_read, dump_write" ;;
