@@ -8,7 +8,8 @@ every check runs (tests/vm/guest_agent.sh). It installs the kiosk with kiosk/ins
 would, starts the systemd unit, and then checks what an exhibition technician meets, each step
 with what it measured, into the log (build/vm/vm-test.log):
 
-  boot, install, READY through systemd, the first frame on the screen (a QMP screendump), the
+  boot, install, READY through systemd, the first frame on the screen (a QMP screendump),
+  that screen against the host's headless renderer of the same configuration (screen_compare.py), the
   service keyboard on tty1 (keys sent through QMP), the GPIO button and encoder (edges on the
   simulated chip), a killed kiosk restarted by Restart=, a hung one by the watchdog, a console
   switch and back, a USB HID knob set up as docs/KIOSK.md tells staff to (QEMU's usb-mouse, its
@@ -24,7 +25,12 @@ import subprocess
 import sys
 import time
 
+import screen_compare
+
 HERE = os.path.dirname(os.path.abspath(__file__))
+TOP = os.path.dirname(os.path.dirname(HERE))
+# where the speed knob starts once it is the USB knob (usb_knob_setup): it can turn either way
+USB_KNOB_START = "0.5"
 
 
 class Failed(Exception):
@@ -371,8 +377,8 @@ def usb_knob_setup(log, agent, slow):
     conf = "/etc/bentray/kiosk.conf"
     rc2, text = agent.run("sed -i -e 's/^type = powermate$/type = hid/' -e 's/^vid = 0x077d$/vid = 0x0627/' "
                           "-e 's/^pid = 0x0410$/pid = 0x0001\\nreport_length = 4\\naxis_offset = 3/' "
-                          "-e '/^\\[speed\\]/,/^\\[/ s/^start = 0$/start = 0.5/' %s && "
-                          "grep -A 5 '^\\[input speed_knob\\]' %s | paste -sd ' '" % (conf, conf))
+                          "-e '/^\\[speed\\]/,/^\\[/ s/^start = 0$/start = %s/' %s && "
+                          "grep -A 5 '^\\[input speed_knob\\]' %s | paste -sd ' '" % (USB_KNOB_START, conf, conf))
     log.say("USB knob: udev rule from the example lines (exit %d), kiosk.conf changed (exit %d): %s" %
             (rc, rc2, text.strip()))
 
@@ -407,6 +413,26 @@ def usb_knob(log, qmp, agent, out, slow, before):
               props.get("NRestarts") == restarts,
               "connected again after %s; 4 clicks back: %.2f%% differs from the picture before the first turn, "
               "refined after %s; %s" % (waited(found), 100 * same, waited(took), props))
+
+
+def same_picture(log, screen, out):
+    """The first picture on the guest's KMS screen is the host's headless frame of the same
+    configuration, pixel for pixel below the HUD (screen_compare.py)."""
+    t = time.monotonic()
+    frame_path, message = screen_compare.render_reference(out, TOP, USB_KNOB_START)
+    if frame_path is None:
+        log.check("the screen shows the headless renderer's picture", False, "no reference frame: " + message)
+        return
+    result = screen_compare.compare(screen, screen_compare.read_png(frame_path))
+    if result is None:
+        log.check("the screen shows the headless renderer's picture", False,
+                  "the frame %s does not fit the %dx%d screen unscaled" % (frame_path, screen[0], screen[1]))
+        return
+    log.check("the screen shows the headless renderer's picture", result["differ"] <= 0.001,
+              "rows %d to %d of the screen (the frame at %s, below the HUD's band): %.3f%% of %d pixels differ by "
+              "more than %d levels (at most 0.1%%), %.3f%% are equal; the host's headless frame (%s) took %.1f s" %
+              (result["rows"][0], result["rows"][1] - 1, result["offset"], 100 * result["differ"], result["pixels"],
+               screen_compare.LEVELS, 100 * result["equal"], frame_path, time.monotonic() - t))
 
 
 def checks(log, qmp, agent, out, slow, kvm):
@@ -444,6 +470,13 @@ def checks(log, qmp, agent, out, slow, kvm):
     log.check("first frame on the screen", level > 8.0 and took is not None,
               "screendump %dx%d, mean level %.1f of 255 (a black screen is below 8), refined after %s" %
               (first[0], first[1], level, waited(took)))
+
+    same_picture(log, first, out)
+    if os.environ.get("BT_VM_ONLY") == "screen":
+        log.say("BT_VM_ONLY=screen: only the comparison with the headless renderer follows the first frame")
+        crash_report(log, agent, slow)
+        stop(log, agent, slow)
+        return
 
     if os.environ.get("BT_VM_ONLY") == "usb":
         # a change to the USB knob alone: the checks in between are skipped (BT_VM_ONLY=usb)
