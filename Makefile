@@ -225,14 +225,14 @@ FUZZ_SRCS_conf         := $(FUZZ_SRCS_text) src/conf/conf_reader.c src/conf/conf
 FUZZ_SRCS_scene        := $(FUZZ_SRCS_conf) src/scene/scene_defaults.c src/scene/scene_keys.c \
                           src/scene/scene_load.c src/scene/scene_validate.c src/physics/model.c \
                           src/physics/relativity.c
-FUZZ_SRCS_kiosk_config := $(FUZZ_SRCS_conf) src/kiosk/kiosk_config.c src/kiosk/kiosk_config_check.c \
-                          src/kiosk/kiosk_config_keys.c src/kiosk/kiosk_config_paths.c \
-                          src/kiosk/kiosk_config_values.c src/kiosk/hid_report.c src/kiosk/quadrature.c \
-                          src/kiosk/debounce.c src/kiosk/input_hid_decode.c src/kiosk/input_event.c
+FUZZ_SRCS_kiosk_config := $(FUZZ_SRCS_conf) src/kiosk_config/kiosk_config.c src/kiosk_config/kiosk_config_check.c \
+                          src/kiosk_config/kiosk_config_keys.c src/kiosk_config/kiosk_config_paths.c \
+                          src/kiosk_config/kiosk_config_values.c src/input/hid_report.c src/input/quadrature.c \
+                          src/input/debounce.c src/input/input_hid_decode.c src/input/input_event.c
 FUZZ_SRCS_dump         := $(FUZZ_SRCS_text) src/io/output_file.c src/results/dump.c
-FUZZ_SRCS_hid          := src/kiosk/hid_report.c
-FUZZ_SRCS_gpio         := src/kiosk/quadrature.c src/kiosk/debounce.c src/kiosk/event_merge.c
-FUZZ_SRCS_script       := $(FUZZ_SRCS_text) src/kiosk/script.c src/kiosk/script_player.c
+FUZZ_SRCS_hid          := src/input/hid_report.c
+FUZZ_SRCS_gpio         := src/input/quadrature.c src/input/debounce.c src/input/event_merge.c
+FUZZ_SRCS_script       := $(FUZZ_SRCS_text) src/input/script.c src/input/script_player.c
 FUZZ_BINS     := $(FUZZ_TARGETS:%=$(FUZZ_DIR)/fuzz_%)
 # Where the harnesses write their input as a file: from tree/scenes, a scene's ../textures and
 # ../sky, and from tree/kiosk, the configuration's ../assets, are the project's, as from

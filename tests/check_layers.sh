@@ -12,9 +12,12 @@ allowed() {
         results) echo "io physics scene" ;;
         ref) echo "io physics scene results" ;;
         render) echo "io physics gl scene results" ;;
-        kiosk) echo "io physics gl conf scene render" ;;
-        bench) echo "io physics gl conf scene results ref render kiosk" ;;
-        cli) echo "io physics gl conf scene results ref render kiosk bench" ;;
+        kiosk_config) echo "io conf scene" ;;
+        input) echo "io kiosk_config" ;;
+        display) echo "io gl kiosk_config input" ;;
+        kiosk) echo "io physics gl conf scene render kiosk_config input display" ;;
+        bench) echo "io physics gl conf scene results ref render kiosk_config input display kiosk" ;;
+        cli) echo "io physics gl conf scene results ref render kiosk_config input display kiosk bench" ;;
         tools) echo "io physics gl conf scene results ref render cli" ;;
         *) echo "?" ;;
     esac

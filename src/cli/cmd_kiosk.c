@@ -1,7 +1,7 @@
 /* bentray kiosk: the exhibition kiosk (src/kiosk/), or a check of its inputs. */
 #include "cli/commands.h"
 #include "cli/options.h"
-#include "kiosk/keymap.h"
+#include "input/keymap.h"
 #include "kiosk/kiosk_loop.h"
 #include <errno.h>
 #include <stdio.h>

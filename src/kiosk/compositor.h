@@ -5,7 +5,7 @@
 #ifndef BT_KIOSK_COMPOSITOR_H
 #define BT_KIOSK_COMPOSITOR_H
 #include <stddef.h>
-#include "kiosk/screen.h"
+#include "display/screen.h"
 #include "render/renderer.h"
 
 struct compositor {

@@ -3,7 +3,7 @@
 #ifndef BT_KIOSK_EVENTS_H
 #define BT_KIOSK_EVENTS_H
 #include "kiosk/hud.h"
-#include "kiosk/input.h"
+#include "input/input.h"
 #include "kiosk/kiosk_state.h"
 
 struct event_outcome {

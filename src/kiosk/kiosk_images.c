@@ -1,7 +1,7 @@
 /* The memory the kiosk's images take (kiosk_images.h). */
 #include "kiosk/kiosk_images.h"
 #include "io/png_header.h"
-#include "kiosk/kiosk_config_keys.h"
+#include "kiosk_config/kiosk_config_keys.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

@@ -4,7 +4,7 @@
 #ifndef BT_KIOSK_IMAGES_H
 #define BT_KIOSK_IMAGES_H
 #include <stddef.h>
-#include "kiosk/kiosk_config.h"
+#include "kiosk_config/kiosk_config.h"
 #include "scene/scene.h"
 
 /* Bytes the images of scenes[0 .. n-1] take decoded; the largest one's path and size. */

@@ -8,8 +8,8 @@
 #include "kiosk/kiosk_events.h"
 #include "kiosk/kiosk_images.h"
 #include "kiosk/kiosk_view.h"
-#include "kiosk/screen.h"
-#include "kiosk/script_player.h"
+#include "display/screen.h"
+#include "input/script_player.h"
 #include "kiosk/service.h"
 #include <errno.h>
 #include <math.h>

@@ -5,7 +5,7 @@
 #ifndef BT_KIOSK_LOOP_H
 #define BT_KIOSK_LOOP_H
 #include <stdio.h>
-#include "kiosk/kiosk_config.h"
+#include "kiosk_config/kiosk_config.h"
 
 /* The headless screen runs on a clock of its own that advances by one frame of this rate per
  * turn, so that a script gives the same frames on any machine, however slow. */

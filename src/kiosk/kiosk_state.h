@@ -3,7 +3,7 @@
  * the loop, the inputs and the display live elsewhere. */
 #ifndef BT_KIOSK_STATE_H
 #define BT_KIOSK_STATE_H
-#include "kiosk/kiosk_config.h"
+#include "kiosk_config/kiosk_config.h"
 #include "scene/scene.h"
 
 struct kiosk_state {

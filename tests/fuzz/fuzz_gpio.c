@@ -1,4 +1,4 @@
-/* libFuzzer harness: the GPIO input decoders (src/kiosk/quadrature.h, debounce.h, event_merge.h),
+/* libFuzzer harness: the GPIO input decoders (src/input/quadrature.h, debounce.h, event_merge.h),
  * fed edge streams as a worn encoder, a bouncing button or a confused clock may produce them.
  *
  * Input, little-endian, missing bytes read as 0:
@@ -33,9 +33,9 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include "kiosk/debounce.h"
-#include "kiosk/event_merge.h"
-#include "kiosk/quadrature.h"
+#include "input/debounce.h"
+#include "input/event_merge.h"
+#include "input/quadrature.h"
 
 #include "fuzz_bytes.h"
 

@@ -1,4 +1,4 @@
-/* libFuzzer harness: the HID report decoders (src/kiosk/hid_report.h), fed what a knob, a worn-out
+/* libFuzzer harness: the HID report decoders (src/input/hid_report.h), fed what a knob, a worn-out
  * button box or a layout typed into the kiosk's configuration may send them.
  *
  * Input, little-endian, missing bytes read as 0:
@@ -20,7 +20,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
-#include "kiosk/hid_report.h"
+#include "input/hid_report.h"
 
 #include "fuzz_bytes.h"
 

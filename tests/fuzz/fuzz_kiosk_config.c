@@ -23,11 +23,11 @@
 #include <sys/types.h>
 #include <unistd.h>
 #include "fuzz_input_file.h"
-#include "kiosk/debounce.h"
-#include "kiosk/hid_report.h"
-#include "kiosk/input_hid_decode.h"
-#include "kiosk/kiosk_config.h"
-#include "kiosk/quadrature.h"
+#include "input/debounce.h"
+#include "input/hid_report.h"
+#include "input/input_hid_decode.h"
+#include "kiosk_config/kiosk_config.h"
+#include "input/quadrature.h"
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);

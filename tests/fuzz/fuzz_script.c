@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "fuzz_input_file.h"
-#include "kiosk/script_player.h"
+#include "input/script_player.h"
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);

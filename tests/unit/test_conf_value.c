@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "conf/conf_value.h"
-#include "kiosk/kiosk_config_keys.h"
+#include "kiosk_config/kiosk_config_keys.h"
 #include "scene/scene_keys.h"
 
 static void test_numbers(void **state)

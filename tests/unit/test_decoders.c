@@ -9,10 +9,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include <cmocka.h>
-#include "kiosk/debounce.h"
-#include "kiosk/event_merge.h"
-#include "kiosk/hid_report.h"
-#include "kiosk/quadrature.h"
+#include "input/debounce.h"
+#include "input/event_merge.h"
+#include "input/hid_report.h"
+#include "input/quadrature.h"
 
 #define MS 1000000ull
 #define STABLE_NS (20 * MS)

@@ -16,13 +16,13 @@
 #include <time.h>
 #include <unistd.h>
 #include <cmocka.h>
-#include "kiosk/input.h"
-#include "kiosk/input_gpio.h"
-#include "kiosk/input_gpio_decode.h"
-#include "kiosk/input_hid.h"
-#include "kiosk/input_hid_decode.h"
-#include "kiosk/input_queue.h"
-#include "kiosk/input_retry.h"
+#include "input/input.h"
+#include "input/input_gpio.h"
+#include "input/input_gpio_decode.h"
+#include "input/input_hid.h"
+#include "input/input_hid_decode.h"
+#include "input/input_queue.h"
+#include "input/input_retry.h"
 
 #define MS 1000000ull
 /* USB ids no device has: 0xffff is reserved as a vendor id. */

@@ -7,7 +7,7 @@
 #include <stdint.h>
 #include <setjmp.h>
 #include <cmocka.h>
-#include "kiosk/input.h"
+#include "input/input.h"
 #include <fcntl.h>
 #include <stdio.h>
 #include <string.h>

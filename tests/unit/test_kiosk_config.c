@@ -15,8 +15,8 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "kiosk/kiosk_config.h"
-#include "kiosk/kiosk_config_keys.h"
+#include "kiosk_config/kiosk_config.h"
+#include "kiosk_config/kiosk_config_keys.h"
 
 #define EXAMPLE "kiosk/kiosk.conf"
 #define DIR "build/test_kiosk_config"

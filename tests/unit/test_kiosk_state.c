@@ -9,7 +9,7 @@
 #include "hard_cases.h"
 #include "kiosk/kiosk_events.h"
 #include "kiosk/kiosk_state.h"
-#include "kiosk/script.h"
+#include "input/script.h"
 
 static struct kiosk_config config;
 

@@ -7,7 +7,7 @@
 #include <setjmp.h>
 #include <cmocka.h>
 #include "hard_cases.h"
-#include "kiosk/kiosk_config.h"
+#include "kiosk_config/kiosk_config.h"
 #include "kiosk/kiosk_view.h"
 #include "render/frame.h"
 

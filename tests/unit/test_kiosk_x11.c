@@ -21,7 +21,7 @@
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
 #include "io/png_io.h"
-#include "kiosk/kiosk_config.h"
+#include "kiosk_config/kiosk_config.h"
 #include "kiosk/kiosk_loop.h"
 #include "kiosk/kiosk_state.h"
 #include "render/frame.h"

@@ -20,7 +20,7 @@
 #include <X11/Xutil.h>
 #include <X11/keysym.h>
 #include "gl/gl_api.h"
-#include "kiosk/screen.h"
+#include "display/screen.h"
 #include "xvfb.h"
 
 #define MISSING_DRM_DEVICE "/nonexistent/dri/card7"

@@ -1,4 +1,4 @@
-/* The KMS screen's console switches (src/kiosk/vt_switch.c) against a stand-in for the kernel: the
+/* The KMS screen's console switches (src/display/vt_switch.c) against a stand-in for the kernel: the
  * console's modes at open and close, a switch away (DRM master dropped before the switch is let
  * go), a switch back (acknowledged, master taken again, the screen told to draw), a stray signal
  * (nothing changes), a master that another program holds for a while (taken at a later turn), and
@@ -14,7 +14,7 @@
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
-#include "kiosk/vt_switch.h"
+#include "display/vt_switch.h"
 
 /* The kernel's side: the console's state and a log of the calls, one letter each. */
 static struct {

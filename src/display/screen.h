@@ -1,0 +1,50 @@
+/* Where the kiosk's frames go, behind one interface: a KMS display with no window system, a
+ * window under X11, or PNG files (headless). Each back-end makes its own GL context (EGL on GBM,
+ * EGL on X11, EGL surfaceless or OSMesa) and says which framebuffer a frame is drawn into. */
+#ifndef BT_KIOSK_SCREEN_H
+#define BT_KIOSK_SCREEN_H
+#include <stddef.h>
+#include <stdio.h>
+#include "gl/context.h"
+#include "gl/gl_api.h"
+#include "input/input.h"
+#include "kiosk_config/kiosk_config.h"
+
+struct screen {
+    const char *name;                /* "kms", "x11" or "headless" */
+    struct gl_context *gl;           /* current on this thread while the screen is open */
+    int width, height;               /* pixels of the framebuffer a frame fills */
+    GLuint framebuffer;              /* draw a frame into this (0: the window's or display's own) */
+    /* The descriptor to poll for the screen's own events (window system, page flips), -1 for none. */
+    int (*fd)(struct screen *s);
+    /* The screen's events without blocking (keys of a window, a window closed: INPUT_QUIT), at
+     * most max; returns how many. NULL where there are none. */
+    int (*events)(struct screen *s, double now, struct input_event *out, int max);
+    /* Show what was drawn into framebuffer: swap, page flip (waiting for vertical blank when the
+     * configuration asks), or nothing (headless). 0, or -1 with err. */
+    int (*present)(struct screen *s, char *err, size_t errlen);
+    /* Puts the display back as it was (the console's mode), frees the context. */
+    void (*close)(struct screen *s);
+    void *priv;
+    /* Set by the back-end: what it wants said once it is open (the KMS screen's console handling),
+     * "" for nothing; and that it lost its picture (a console switch back), so that the loop draws
+     * and presents a frame at its next turn, which clears it. */
+    char note[256];
+    int redraw;
+    /* Set by the loop: where the back-end says what happens later (a console switch), or NULL. */
+    FILE *log;
+};
+
+/* Each returns NULL with err when the back-end cannot open here. gl_backend (headless only):
+ * "egl", "osmesa" or "auto". */
+struct screen *screen_open_headless(const struct kiosk_config *c, const char *gl_backend, char *err, size_t errlen);
+/* The headless screen's framebuffer on a context the caller keeps (the bench's): width x height,
+ * RGBA8; screen_close leaves the context open. */
+struct screen *screen_open_offscreen(struct gl_context *gl, int width, int height, char *err, size_t errlen);
+struct screen *screen_open_x11(const struct kiosk_config *c, char *err, size_t errlen);
+struct screen *screen_open_kms(const struct kiosk_config *c, char *err, size_t errlen);
+/* The configured back-end; auto tries kms, then x11 (when DISPLAY is set), then headless. */
+struct screen *screen_open(const struct kiosk_config *c, const char *gl_backend, char *err, size_t errlen);
+void screen_close(struct screen *s);
+
+#endif

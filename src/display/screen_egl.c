@@ -1,0 +1,146 @@
+/* The context owns the EGL display, context and surface, so that each screen's close frees them
+ * with ctx->destroy() before the window or the GBM surface they draw into. */
+#include "display/screen_egl.h"
+#include "gl/caps.h"
+#include "gl/gl_api.h"
+#include <EGL/eglext.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+struct screen_egl {
+    EGLDisplay display;
+    EGLContext context;
+    EGLSurface surface;
+    PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC create_window_surface;
+    const char *who;
+};
+
+static void *screen_egl_get_proc(const char *name)
+{
+    void *p;
+    __eglMustCastToProperFunctionPointerType f = eglGetProcAddress(name);
+    memcpy(&p, &f, sizeof p);
+    return p;
+}
+
+static void screen_egl_destroy(struct gl_context *ctx)
+{
+    struct screen_egl *egl = ctx->priv;
+    if (egl) {
+        if (egl->display != EGL_NO_DISPLAY) {
+            eglMakeCurrent(egl->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+            if (egl->surface != EGL_NO_SURFACE)
+                eglDestroySurface(egl->display, egl->surface);
+            if (egl->context != EGL_NO_CONTEXT)
+                eglDestroyContext(egl->display, egl->context);
+            eglTerminate(egl->display);
+        }
+        free(egl);
+    }
+    free(ctx);
+}
+
+struct gl_context *screen_egl_open(const struct screen_egl_platform *p, void *native_display, const char *who,
+                                   const char *version_label, char *err, size_t errlen)
+{
+    const char *client_ext = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    if (!client_ext || !(extension_list_has(client_ext, p->extension) ||
+                         extension_list_has(client_ext, p->other_extension))) {
+        snprintf(err, errlen, "%s: EGL has no %s platform (%s); install Mesa's EGL (libegl-mesa0)", who, p->name,
+                 p->extension);
+        return NULL;
+    }
+    PFNEGLGETPLATFORMDISPLAYEXTPROC get_platform_display =
+        (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
+    PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC create_window_surface =
+        (PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC)eglGetProcAddress("eglCreatePlatformWindowSurfaceEXT");
+    if (!get_platform_display || !create_window_surface) {
+        snprintf(err, errlen, "%s: EGL lacks eglGetPlatformDisplayEXT or eglCreatePlatformWindowSurfaceEXT", who);
+        return NULL;
+    }
+    struct gl_context *ctx = calloc(1, sizeof *ctx);
+    struct screen_egl *egl = calloc(1, sizeof *egl);
+    if (!ctx || !egl) {
+        free(ctx);
+        free(egl);
+        snprintf(err, errlen, "%s: out of memory", who);
+        return NULL;
+    }
+    egl->display = EGL_NO_DISPLAY;
+    egl->context = EGL_NO_CONTEXT;
+    egl->surface = EGL_NO_SURFACE;
+    egl->create_window_surface = create_window_surface;
+    egl->who = who;
+    ctx->backend = "egl";
+    ctx->dialect = DIALECT_GLSL_ES_100;
+    ctx->is_es = 1;
+    ctx->get_proc = screen_egl_get_proc;
+    ctx->destroy = screen_egl_destroy;
+    ctx->priv = egl;
+
+    EGLint major = 0, minor = 0;
+    egl->display = get_platform_display(p->platform, native_display, NULL);
+    if (egl->display == EGL_NO_DISPLAY || !eglInitialize(egl->display, &major, &minor)) {
+        snprintf(err, errlen, "%s: cannot initialise EGL on %s (EGL error 0x%x)", who, p->display_name,
+                 eglGetError());
+        egl->display = EGL_NO_DISPLAY;
+        goto fail;
+    }
+    snprintf(ctx->platform_version, sizeof ctx->platform_version, "EGL %d.%d (%s)", major, minor, version_label);
+    if (!eglBindAPI(EGL_OPENGL_ES_API)) {
+        snprintf(err, errlen, "%s: the OpenGL ES API is not available in EGL", who);
+        goto fail;
+    }
+    return ctx;
+
+fail:
+    screen_egl_destroy(ctx);
+    return NULL;
+}
+
+EGLDisplay screen_egl_display(const struct gl_context *ctx)
+{
+    const struct screen_egl *egl = ctx->priv;
+    return egl->display;
+}
+
+int screen_egl_attach(struct gl_context *ctx, EGLConfig config, void *native_window, char *err, size_t errlen)
+{
+    struct screen_egl *egl = ctx->priv;
+    egl->surface = egl->create_window_surface(egl->display, config, native_window, NULL);
+    if (egl->surface == EGL_NO_SURFACE) {
+        snprintf(err, errlen, "%s: cannot create an EGL window surface (EGL error 0x%x)", egl->who, eglGetError());
+        return -1;
+    }
+    /* Drivers may give a higher compatible version than ES2 (llvmpipe gives 3.2). */
+    static const EGLint ctx_attribs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
+    egl->context = eglCreateContext(egl->display, config, EGL_NO_CONTEXT, ctx_attribs);
+    if (egl->context == EGL_NO_CONTEXT) {
+        snprintf(err, errlen, "%s: cannot create an OpenGL ES 2 context (EGL error 0x%x)", egl->who,
+                 eglGetError());
+        return -1;
+    }
+    if (!eglMakeCurrent(egl->display, egl->surface, egl->surface, egl->context)) {
+        snprintf(err, errlen, "%s: cannot make the context current on the window (EGL error 0x%x)", egl->who,
+                 eglGetError());
+        return -1;
+    }
+    const char *missing = gl_api_load(ctx->get_proc);
+    if (missing) {
+        snprintf(err, errlen, "%s: the GL entry point %s is missing", egl->who, missing);
+        return -1;
+    }
+    gl_context_now_current(ctx);
+    return 0;
+}
+
+int screen_egl_swap(struct gl_context *ctx, char *err, size_t errlen)
+{
+    struct screen_egl *egl = ctx->priv;
+    if (!eglSwapBuffers(egl->display, egl->surface)) {
+        snprintf(err, errlen, "%s: eglSwapBuffers failed (EGL error 0x%x)", egl->who, eglGetError());
+        return -1;
+    }
+    return 0;
+}

@@ -1,0 +1,121 @@
+/* The key table of the kiosk configuration (src/kiosk_config/; src/kiosk/kiosk_images.c asks it
+ * for a key's line): every key the file may hold, described once (section, name, kind, range, the
+ * input types it belongs to, where it is stored), and the parsing of values, so that the loader,
+ * the checks and the tests cannot disagree about a key. */
+#ifndef BT_KIOSK_CONFIG_KEYS_H
+#define BT_KIOSK_CONFIG_KEYS_H
+#include <stddef.h>
+#include "conf/conf_value.h"
+#include "kiosk_config/kiosk_config.h"
+
+/* No honest configuration comes near this; refusing earlier keeps a wrong path (a log, an image)
+ * from being read into memory. */
+#define KIOSK_MAX_FILE_BYTES (1L << 20)
+
+enum kiosk_section {
+    KSEC_KIOSK,
+    KSEC_DISPLAY,
+    KSEC_SPEED,
+    KSEC_MASS,
+    KSEC_ATTRACT,
+    KSEC_BUTTON,        /* named: [button NAME] */
+    KSEC_INPUT,         /* named: [input NAME], typed: its 'type' comes first */
+    KSEC_COUNT
+};
+
+enum kiosk_key_kind {
+    KK_INT,             /* an int in [lo, hi] */
+    KK_INT64,           /* an int64_t in [lo, hi] */
+    KK_NUMBER,          /* a finite double in [lo, hi], ends as flags say */
+    KK_CHOICE,          /* one of choices, stored as its int value */
+    KK_HEX,             /* 0x0000 .. 0xffff, for USB ids */
+    KK_NAME,            /* letters, digits, '_' and '-': a reference to a section */
+    KK_WORD,            /* any text without blanks: GPIO chips, line names, connectors */
+    KK_FILE,            /* a readable regular file, relative to the config's directory */
+    KK_DIR,             /* an existing directory, relative to the config's directory */
+    KK_SPECIAL          /* parsed and stored by set() */
+};
+
+/* flags: CONF_ABOVE_LO, CONF_BELOW_HI and CONF_REQUIRED (conf/conf_value.h: the section is
+ * incomplete without the key, for the types it applies to) */
+
+struct kiosk_choice {
+    const char *name;
+    int value;
+};
+
+/* KK_SPECIAL: parses and stores what a plain field cannot take. Other kinds: called after the value
+ * is stored, for what follows from it (an input type's own defaults). target is the config, the
+ * button or the input the section stands for. On failure writes why into reason (the caller adds
+ * key and section). */
+typedef int (*kiosk_key_setter)(struct kiosk_config *c, void *target, const char *value,
+                                char *reason, size_t reason_len);
+
+struct kiosk_key {
+    enum kiosk_section section;
+    const char *name;
+    enum kiosk_key_kind kind;
+    double lo, hi;
+    unsigned flags;
+    const struct kiosk_choice *choices;  /* KK_CHOICE: ends with a NULL name */
+    unsigned applies;                    /* [input]: bits of kiosk_input_type; 0: every type */
+    size_t offset;                       /* field in the config, button or input */
+    kiosk_key_setter set;                /* KK_SPECIAL; otherwise optional, runs after storing */
+    const char *hint;                    /* added to a refused value's message */
+};
+
+extern const struct kiosk_key kiosk_keys[];
+extern const int kiosk_key_count;
+
+const char *kiosk_section_name(enum kiosk_section section);
+/* Section kind called NAME, -1 if there is none. */
+int kiosk_section_find(const char *name);
+int kiosk_section_named(enum kiosk_section section);
+/* "kiosk, display, ...", for messages. */
+const char *kiosk_section_list(void);
+/* "[speed]" or "[input knob]". */
+void kiosk_section_label(const struct kiosk_config *c, enum kiosk_section section, int instance,
+                         char *buf, size_t len);
+/* Index into source.header and source.key of a section instance. */
+int kiosk_slot(enum kiosk_section section, int instance);
+
+/* Index of the table entry of SECTION called NAME, -1 when there is none. */
+int kiosk_key_find(enum kiosk_section section, const char *name);
+/* Line where the key was set in the file, 0 when it was not (or the key does not exist). */
+int kiosk_key_line(const struct kiosk_config *c, enum kiosk_section section, int instance,
+                   const char *name);
+/* Parse VALUE for key NAME of a section instance and store it: 0, or -1 with the whole message. */
+int kiosk_key_apply(struct kiosk_config *c, enum kiosk_section section, int instance,
+                    const char *name, const char *value, char *msg, size_t msg_len);
+/* For a section that is closed: the first required key that was not given, or NULL. */
+const char *kiosk_key_missing(const struct kiosk_config *c, enum kiosk_section section, int instance);
+
+/* Section names: 1 to KIOSK_NAME_LEN - 1 of letters, digits, '_' and '-'. */
+int kiosk_name_ok(const char *name);
+/* REL against the config's directory (absolute paths are kept): 0, or -1 if it does not fit. */
+int kiosk_resolve_path(const struct kiosk_config *c, const char *rel, char *out, size_t out_len);
+/* PATH is a readable regular file (an existing directory): 0, or -1 with the reason, which quotes
+ * the path. */
+int kiosk_check_file(const char *path, char *reason, size_t len);
+int kiosk_check_dir(const char *path, char *reason, size_t len);
+/* Whether PATH, with ".." and symbolic links resolved, lies inside the directory ROOT: 1 inside,
+ * 0 outside (with both resolved paths in REASON), -1 when either cannot be resolved. */
+int kiosk_path_inside(const char *path, const char *root, char *reason, size_t len);
+/* Index of the scene called NAME (its file name without the extension), -1 if none is, -2 if
+ * more than one is. */
+int kiosk_scene_find(const struct kiosk_config *c, const char *name);
+
+/* The table's setters (kiosk_config_values.c, kiosk_config_paths.c). */
+int kiosk_set_scenes(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len);
+/* More scenes for the list, from a line that continues 'scenes'. */
+int kiosk_scenes_append(struct kiosk_config *c, const char *text, char *reason, size_t len);
+int kiosk_set_start_scene(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len);
+int kiosk_set_log(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len);
+int kiosk_set_device(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len);
+int kiosk_set_mode(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len);
+int kiosk_set_input_type(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len);
+
+void kiosk_button_defaults(struct kiosk_button *b, const char *name);
+void kiosk_input_defaults(struct kiosk_input *in, const char *name);
+
+#endif

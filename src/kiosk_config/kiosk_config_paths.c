@@ -1,0 +1,202 @@
+/* Files and directories named by the configuration: joined with the configuration file's
+ * directory, so the kiosk can be started from anywhere, and checked when they are read, so that a
+ * missing file is reported at its line instead of when a visitor first reaches it. */
+/* realpath() is X/Open, beyond the POSIX base the project builds against */
+#define _XOPEN_SOURCE 700
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include "kiosk_config/kiosk_config_keys.h"
+
+#define RELATIVE_NOTE "relative paths start at the configuration file's directory"
+/* What a list entry may be separated by. */
+#define SCENE_SEPARATORS ", \t"
+
+int kiosk_resolve_path(const struct kiosk_config *c, const char *rel, char *out, size_t out_len)
+{
+    int n;
+    if (rel[0] == '/' || c->dir[0] == '\0' || strcmp(c->dir, ".") == 0)
+        n = snprintf(out, out_len, "%s", rel);
+    else if (strcmp(c->dir, "/") == 0)
+        n = snprintf(out, out_len, "/%s", rel);
+    else
+        n = snprintf(out, out_len, "%s/%s", c->dir, rel);
+    return n < 0 || (size_t)n >= out_len ? -1 : 0;
+}
+
+/* A directory opens fine with fopen on Linux, so regular files are asked for explicitly. */
+int kiosk_check_file(const char *path, char *reason, size_t len)
+{
+    struct stat st;
+    FILE *f;
+    if (stat(path, &st) != 0) {
+        snprintf(reason, len, "cannot read \"%s\": %s (" RELATIVE_NOTE ")", path, strerror(errno));
+        return -1;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        snprintf(reason, len, "\"%s\" is not a regular file", path);
+        return -1;
+    }
+    f = fopen(path, "rb");
+    if (!f) {
+        snprintf(reason, len, "cannot read \"%s\": %s", path, strerror(errno));
+        return -1;
+    }
+    fclose(f);
+    return 0;
+}
+
+int kiosk_check_dir(const char *path, char *reason, size_t len)
+{
+    struct stat st;
+    if (stat(path, &st) != 0) {
+        snprintf(reason, len, "no directory \"%s\": %s (" RELATIVE_NOTE ")", path, strerror(errno));
+        return -1;
+    }
+    if (!S_ISDIR(st.st_mode)) {
+        snprintf(reason, len, "\"%s\" is not a directory", path);
+        return -1;
+    }
+    return 0;
+}
+
+int kiosk_path_inside(const char *path, const char *root, char *reason, size_t len)
+{
+    char *real_path = realpath(path, NULL), *real_root = realpath(root, NULL);
+    int inside = -1;
+    if (!real_path || !real_root) {
+        snprintf(reason, len, "cannot resolve \"%s\": %s", real_path ? root : path, strerror(errno));
+    } else {
+        size_t n = strlen(real_root);
+        /* "/srv/assets2" is not inside "/srv/assets": the match has to end at a '/' */
+        inside = strcmp(real_root, "/") == 0 ||
+                 (strncmp(real_path, real_root, n) == 0 && real_path[n] == '/');
+        if (!inside)
+            snprintf(reason, len, "\"%s\" is \"%s\", outside assets_root \"%s\"", path, real_path,
+                     real_root);
+    }
+    free(real_path);
+    free(real_root);
+    return inside;
+}
+
+/* ---- setters ------------------------------------------------------------------------------- */
+
+/* "a.scene, b.scene c.scene": commas or blanks between entries. An empty entry between two commas
+ * is a slip (a deleted name), not a separator; a comma at the end of a line is not, since the list
+ * may go on on the next. Paths with blanks cannot be listed. */
+int kiosk_scenes_append(struct kiosk_config *c, const char *text, char *reason, size_t len)
+{
+    struct kiosk_main *k = &c->kiosk;
+    const char *p = text;
+    int after_comma = 0;
+
+    while (*p) {
+        size_t word = strcspn(p, SCENE_SEPARATORS);
+        if (word == 0) {
+            if (*p == ',' && after_comma) {
+                snprintf(reason, len, "empty entry in the list after scene %d: remove the extra ','",
+                         k->n_scenes);
+                return -1;
+            }
+            if (*p == ',')
+                after_comma = 1;
+            p++;
+            continue;
+        }
+        if (k->n_scenes >= KIOSK_MAX_SCENES) {
+            snprintf(reason, len, "more than %d scenes", KIOSK_MAX_SCENES);
+            return -1;
+        }
+        char rel[KIOSK_PATH_LEN], why[KIOSK_PATH_LEN + 128];
+        char *path = k->scenes[k->n_scenes];
+        int number = k->n_scenes + 1;
+        if (word < sizeof rel) {
+            memcpy(rel, p, word);
+            rel[word] = '\0';
+        }
+        if (word >= sizeof rel || kiosk_resolve_path(c, rel, path, KIOSK_PATH_LEN) != 0) {
+            snprintf(reason, len, "scene %d: the path is longer than %d characters", number,
+                     KIOSK_PATH_LEN - 1);
+            return -1;
+        }
+        if (kiosk_check_file(path, why, sizeof why) != 0) {
+            snprintf(reason, len, "scene %d: %s", number, why);
+            return -1;
+        }
+        k->n_scenes++;
+        after_comma = 0;
+        p += word;
+    }
+    return 0;
+}
+
+int kiosk_set_scenes(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len)
+{
+    (void)t;
+    c->kiosk.n_scenes = 0;
+    return kiosk_scenes_append(c, value, reason, len);
+}
+
+/* A log file need not exist yet, but the directory it goes into must. */
+int kiosk_set_log(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len)
+{
+    char path[KIOSK_PATH_LEN], dir[KIOSK_PATH_LEN];
+    struct stat st;
+    const char *slash;
+    (void)t;
+    if (strcmp(value, "stderr") == 0) {
+        snprintf(c->kiosk.log, sizeof c->kiosk.log, "stderr");
+        return 0;
+    }
+    if (kiosk_resolve_path(c, value, path, sizeof path) != 0) {
+        snprintf(reason, len, "the path is longer than %d characters", KIOSK_PATH_LEN - 1);
+        return -1;
+    }
+    slash = strrchr(path, '/');
+    if (!slash)
+        snprintf(dir, sizeof dir, ".");
+    else
+        snprintf(dir, sizeof dir, "%.*s", slash == path ? 1 : (int)(slash - path), path);
+    if (kiosk_check_dir(dir, reason, len) != 0)
+        return -1;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        snprintf(reason, len, "\"%s\" exists and is not a regular file", path);
+        return -1;
+    }
+    memcpy(c->kiosk.log, path, sizeof path);
+    return 0;
+}
+
+/* Not looked for here: at boot the card may appear after the kiosk's configuration is read, and the
+ * display code says so when it opens it. */
+int kiosk_set_device(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len)
+{
+    (void)t;
+    if (value[0] != '/' || strlen(value) >= sizeof c->display.drm_device) {
+        snprintf(reason, len, "expected an absolute device path such as /dev/dri/card0 (at most %d "
+                 "characters), got \"%.80s\"", KIOSK_PATH_LEN - 1, value);
+        return -1;
+    }
+    snprintf(c->display.drm_device, sizeof c->display.drm_device, "%s", value);
+    return 0;
+}
+
+int kiosk_scene_find(const struct kiosk_config *c, const char *name)
+{
+    int found = -1;
+    for (int i = 0; i < c->kiosk.n_scenes; i++) {
+        const char *slash = strrchr(c->kiosk.scenes[i], '/');
+        const char *base = slash ? slash + 1 : c->kiosk.scenes[i];
+        const char *dot = strrchr(base, '.');
+        size_t n = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+        if (strlen(name) == n && strncmp(base, name, n) == 0) {
+            if (found >= 0)
+                return -2;
+            found = i;
+        }
+    }
+    return found;
+}
