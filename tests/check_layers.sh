@@ -12,8 +12,8 @@ allowed() {
         results) echo "io physics scene" ;;
         ref) echo "io physics scene results" ;;
         render) echo "io physics gl scene results" ;;
-        kiosk_config) echo "io conf scene" ;;
-        input) echo "io kiosk_config" ;;
+        input) echo "io" ;;
+        kiosk_config) echo "io conf scene input" ;;
         display) echo "io gl kiosk_config input" ;;
         kiosk) echo "io physics gl conf scene render kiosk_config input display" ;;
         bench) echo "io physics gl conf scene results ref render kiosk_config input display kiosk" ;;

@@ -11,25 +11,25 @@ double input_clock(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-struct input_source *input_open(const struct kiosk_config *c, int index, FILE *log, double now)
+struct input_source *input_open(const struct kiosk_input *in, int index, FILE *log, double now)
 {
-    switch (c->inputs[index].type) {
+    switch (in->type) {
     case KIOSK_INPUT_POWERMATE:
     case KIOSK_INPUT_HID:
-        return input_open_hid(c, index, log, now);
+        return input_open_hid(in, index, log, now);
     case KIOSK_INPUT_GPIO_ENCODER:
     case KIOSK_INPUT_GPIO_BUTTON:
-        return input_open_gpio(c, index, log, now);
+        return input_open_gpio(in, index, log, now);
     case KIOSK_INPUT_KEYBOARD:
-        return input_open_keyboard(c, index, log, now);
+        return input_open_keyboard(in, index, log, now);
     case KIOSK_INPUT_SCRIPT:
-        return input_open_script(c, index, log, now);
+        return input_open_script(in, index, log, now);
     default:
         return NULL;
     }
 }
 
-struct input_source *input_source_new(const struct kiosk_config *c, int index, FILE *log, size_t priv_size,
+struct input_source *input_source_new(const struct kiosk_input *in, int index, FILE *log, size_t priv_size,
                                       int (*fds)(struct input_source *src, struct pollfd *out, int max),
                                       int (*drain)(struct input_source *src, double now,
                                                    struct input_event *out, int max),
@@ -42,7 +42,7 @@ struct input_source *input_source_new(const struct kiosk_config *c, int index, F
         free(priv);
         return NULL;
     }
-    src->cfg = &c->inputs[index];
+    src->cfg = in;
     src->index = index;
     src->log = log;
     src->fds = fds;

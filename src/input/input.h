@@ -6,7 +6,7 @@
 #define BT_KIOSK_INPUT_H
 #include <poll.h>
 #include <stdio.h>
-#include "kiosk_config/kiosk_config.h"
+#include "input/input_settings.h"
 
 #define INPUT_RETRY_SECONDS 1.5      /* re-enumerate an absent device this often */
 #define INPUT_MAX_FDS 4              /* descriptors one source asks to be polled */
@@ -54,19 +54,19 @@ struct input_source {
 
 /* The source for one configured input: never NULL for a valid configuration (a device that is
  * missing gives a source that is not present and retries), NULL only when out of memory. */
-struct input_source *input_open(const struct kiosk_config *c, int index, FILE *log, double now);
+struct input_source *input_open(const struct kiosk_input *in, int index, FILE *log, double now);
 void input_close(struct input_source *src);
 
 /* The constructors behind input_open, one per family (input_hid.c, input_gpio.c,
  * input_keyboard.c, input_script.c). */
-struct input_source *input_open_hid(const struct kiosk_config *c, int index, FILE *log, double now);
-struct input_source *input_open_gpio(const struct kiosk_config *c, int index, FILE *log, double now);
-struct input_source *input_open_keyboard(const struct kiosk_config *c, int index, FILE *log, double now);
-struct input_source *input_open_script(const struct kiosk_config *c, int index, FILE *log, double now);
+struct input_source *input_open_hid(const struct kiosk_input *in, int index, FILE *log, double now);
+struct input_source *input_open_gpio(const struct kiosk_input *in, int index, FILE *log, double now);
+struct input_source *input_open_keyboard(const struct kiosk_input *in, int index, FILE *log, double now);
+struct input_source *input_open_script(const struct kiosk_input *in, int index, FILE *log, double now);
 
 /* A source for input `index` with its family's callbacks and priv_size zeroed bytes of the
  * family's own state at src->priv (which its close frees); NULL when out of memory. */
-struct input_source *input_source_new(const struct kiosk_config *c, int index, FILE *log, size_t priv_size,
+struct input_source *input_source_new(const struct kiosk_input *in, int index, FILE *log, size_t priv_size,
                                       int (*fds)(struct input_source *src, struct pollfd *out, int max),
                                       int (*drain)(struct input_source *src, double now,
                                                    struct input_event *out, int max),

@@ -168,18 +168,17 @@ static void gpio_source_close(struct input_source *src)
     src->priv = NULL;
 }
 
-struct input_source *input_open_gpio(const struct kiosk_config *c, int index, FILE *log, double now)
+struct input_source *input_open_gpio(const struct kiosk_input *in, int index, FILE *log, double now)
 {
-    return input_open_gpio_api(c, index, log, now, &input_gpio_libgpiod);
+    return input_open_gpio_api(in, index, log, now, &input_gpio_libgpiod);
 }
 
-struct input_source *input_open_gpio_api(const struct kiosk_config *c, int index, FILE *log, double now,
+struct input_source *input_open_gpio_api(const struct kiosk_input *in, int index, FILE *log, double now,
                                          const struct input_gpio_api *api)
 {
-    const struct kiosk_input *in = &c->inputs[index];
     if (in->type != KIOSK_INPUT_GPIO_ENCODER && in->type != KIOSK_INPUT_GPIO_BUTTON)
         return NULL;
-    struct input_source *src = input_source_new(c, index, log, sizeof(struct gpio_source), gpio_source_fds,
+    struct input_source *src = input_source_new(in, index, log, sizeof(struct gpio_source), gpio_source_fds,
                                                 gpio_source_drain, gpio_source_close);
     if (src == NULL)
         return NULL;

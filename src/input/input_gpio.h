@@ -22,7 +22,7 @@ struct input_gpio_api {
 extern const struct input_gpio_api input_gpio_libgpiod;
 
 /* input_open_gpio() on the back-end `api`, which must outlive the source. */
-struct input_source *input_open_gpio_api(const struct kiosk_config *c, int index, FILE *log, double now,
+struct input_source *input_open_gpio_api(const struct kiosk_input *in, int index, FILE *log, double now,
                                          const struct input_gpio_api *api);
 
 #endif

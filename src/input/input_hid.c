@@ -142,18 +142,17 @@ static void hid_source_close(struct input_source *src)
         api->exit();
 }
 
-struct input_source *input_open_hid(const struct kiosk_config *c, int index, FILE *log, double now)
+struct input_source *input_open_hid(const struct kiosk_input *in, int index, FILE *log, double now)
 {
-    return input_open_hid_api(c, index, log, now, &input_hid_libusb);
+    return input_open_hid_api(in, index, log, now, &input_hid_libusb);
 }
 
-struct input_source *input_open_hid_api(const struct kiosk_config *c, int index, FILE *log, double now,
+struct input_source *input_open_hid_api(const struct kiosk_input *in, int index, FILE *log, double now,
                                         const struct input_hid_api *api)
 {
-    const struct kiosk_input *in = &c->inputs[index];
     if (in->type != KIOSK_INPUT_POWERMATE && in->type != KIOSK_INPUT_HID)
         return NULL;
-    struct input_source *src = input_source_new(c, index, log, sizeof(struct hid_source), hid_source_fds,
+    struct input_source *src = input_source_new(in, index, log, sizeof(struct hid_source), hid_source_fds,
                                                 hid_source_drain, hid_source_close);
     if (src == NULL)
         return NULL;

@@ -22,7 +22,7 @@ struct input_hid_api {
 extern const struct input_hid_api input_hid_libusb;
 
 /* input_open_hid() on the back-end `api`, which must outlive the source. */
-struct input_source *input_open_hid_api(const struct kiosk_config *c, int index, FILE *log, double now,
+struct input_source *input_open_hid_api(const struct kiosk_input *in, int index, FILE *log, double now,
                                         const struct input_hid_api *api);
 
 #endif

@@ -141,11 +141,11 @@ static void keyboard_close(struct input_source *src)
     free(k);
 }
 
-struct input_source *input_open_keyboard(const struct kiosk_config *c, int index, FILE *log, double now)
+struct input_source *input_open_keyboard(const struct kiosk_input *in, int index, FILE *log, double now)
 {
     (void)now;
     struct input_source *src =
-        input_source_new(c, index, log, sizeof(struct keyboard), keyboard_fds, keyboard_drain, keyboard_close);
+        input_source_new(in, index, log, sizeof(struct keyboard), keyboard_fds, keyboard_drain, keyboard_close);
     if (!src)
         return NULL;
     struct keyboard *k = src->priv;

@@ -32,10 +32,10 @@ static void script_close(struct input_source *src)
     free(src->priv);
 }
 
-struct input_source *input_open_script(const struct kiosk_config *c, int index, FILE *log, double now)
+struct input_source *input_open_script(const struct kiosk_input *in, int index, FILE *log, double now)
 {
     struct input_source *src =
-        input_source_new(c, index, log, sizeof(struct script_source), script_fds, script_drain, script_close);
+        input_source_new(in, index, log, sizeof(struct script_source), script_fds, script_drain, script_close);
     if (!src)
         return NULL;
     struct script_source *s = src->priv;

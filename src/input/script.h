@@ -12,7 +12,7 @@
 #ifndef BT_SCRIPT_H
 #define BT_SCRIPT_H
 #include <stddef.h>
-#include "kiosk_config/kiosk_config.h"
+#include "input/input_settings.h"
 
 #define SCRIPT_MAX_EVENTS 4096
 #define SCRIPT_MAX_BYTES (4L << 20)   /* a script file: events and comments */

@@ -681,7 +681,7 @@ enum kiosk_status kiosk_run(const struct kiosk_config *c, const struct kiosk_run
     k.last_input = k.now;
     k.second_start = k.now;
     for (int i = 0; i < c->n_inputs; i++) {
-        k.inputs[i] = input_open(c, i, k.log, k.now);
+        k.inputs[i] = input_open(&c->inputs[i], i, k.log, k.now);
         if (!k.inputs[i])
             fprintf(k.log, "input %s: out of memory; left out\n", c->inputs[i].name);
     }
@@ -710,7 +710,7 @@ int kiosk_check_inputs(const struct kiosk_config *c, FILE *out, FILE *log)
     catch_stop_signals();
     double now = input_clock();
     for (int i = 0; i < c->n_inputs; i++) {
-        inputs[i] = input_open(c, i, log, now);
+        inputs[i] = input_open(&c->inputs[i], i, log, now);
         if (inputs[i] && inputs[i]->present)
             fprintf(out, "input %s (%s): ready\n", c->inputs[i].name, kiosk_input_type_name(c->inputs[i].type));
     }

@@ -5,6 +5,7 @@
 #ifndef BT_KIOSK_CONFIG_H
 #define BT_KIOSK_CONFIG_H
 #include <stdint.h>
+#include "input/input_settings.h"
 
 #define KIOSK_MAX_SCENES 32
 #define KIOSK_MAX_BUTTONS 16
@@ -12,17 +13,11 @@
 /* [kiosk] image_memory's default, MB: every scene's textures and sky faces are decoded at start
  * and kept (io/image_cache.h); a kiosk's computer may have 1 GB in all */
 #define KIOSK_IMAGE_MEMORY_MB 256
-#define KIOSK_NAME_LEN 64            /* section names, GPIO chips and line names, connectors */
-#define KIOSK_PATH_LEN 512           /* every stored path, after joining the config's directory */
 /* Capacity of the record of where each key was set; kiosk_config_keys.c checks its table fits. */
 #define KIOSK_KEY_TABLE_MAX 96
 /* One record per section instance: the five single sections, then buttons, then inputs. */
 #define KIOSK_SINGLE_SECTIONS 5
 #define KIOSK_SLOTS (KIOSK_SINGLE_SECTIONS + KIOSK_MAX_BUTTONS + KIOSK_MAX_INPUTS)
-
-/* Griffin PowerMate's USB ids, the defaults of a powermate input. */
-#define KIOSK_POWERMATE_VID 0x077d
-#define KIOSK_POWERMATE_PID 0x0410
 
 /* The HUD's font where Debian's fonts-dejavu-core puts it. */
 #define KIOSK_DEFAULT_FONT "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
@@ -42,27 +37,6 @@ enum kiosk_backend { KIOSK_BACKEND_AUTO, KIOSK_BACKEND_KMS, KIOSK_BACKEND_X11, K
  * step is in rapidity, atanh(v/c), so equal turns give equal boosts and gamma grows without the
  * knob slowing to a crawl near c. log (mass): step is in ln(mass), each count multiplies. */
 enum kiosk_curve { KIOSK_CURVE_LINEAR, KIOSK_CURVE_RAPIDITY, KIOSK_CURVE_LOG };
-
-enum kiosk_action {
-    KIOSK_ACTION_NEXT_SCENE,
-    KIOSK_ACTION_PREVIOUS_SCENE,
-    KIOSK_ACTION_CYCLE_EFFECTS,
-    KIOSK_ACTION_RESET,
-    KIOSK_ACTION_PIPELINE_VIEW,
-    KIOSK_ACTION_COUNT
-};
-
-enum kiosk_input_type {
-    KIOSK_INPUT_POWERMATE,           /* Griffin PowerMate: a USB knob with one push button */
-    KIOSK_INPUT_HID,                 /* any HID device, its report layout given in the file */
-    KIOSK_INPUT_GPIO_ENCODER,        /* quadrature encoder on two GPIO lines */
-    KIOSK_INPUT_GPIO_BUTTON,         /* push button on one GPIO line */
-    KIOSK_INPUT_KEYBOARD,            /* the program's fixed key mapping, for service and tests */
-    KIOSK_INPUT_SCRIPT,              /* a file of timestamped events, replayed */
-    KIOSK_INPUT_TYPE_COUNT
-};
-
-enum kiosk_axis_mode { KIOSK_AXIS_RELATIVE, KIOSK_AXIS_ABSOLUTE };
 
 /* [kiosk] */
 struct kiosk_main {
@@ -107,29 +81,6 @@ struct kiosk_button {
     enum kiosk_action action;
     char input[KIOSK_NAME_LEN];
     int bit;                         /* hid: button bit 0..7; -1 for other input types */
-};
-
-/* [input NAME]: fields apply by type, as the comments say; the others keep their defaults. */
-struct kiosk_input {
-    char name[KIOSK_NAME_LEN];
-    enum kiosk_input_type type;
-    int vid, pid;                    /* powermate, hid: USB vendor and product */
-    int report_id;                   /* hid: 0 for devices without numbered reports */
-    int report_length;               /* hid: bytes, the report id byte included */
-    int axis_offset, axis_size;      /* hid: byte offset and width (1, 2, 4) of the knob's value */
-    int axis_signed;
-    enum kiosk_axis_mode axis_mode;  /* relative: counts per report; absolute: a position */
-    int64_t axis_min, axis_max;      /* hid, absolute: raw values at the two ends of the knob */
-    int button_offset, buttons;      /* hid: byte holding the button bits, how many bits */
-    char chip[KIOSK_NAME_LEN];       /* gpio_*: "gpiochip0" */
-    int line_a, line_b;              /* gpio_encoder: line offsets, -1 when given by name */
-    char line_a_name[KIOSK_NAME_LEN], line_b_name[KIOSK_NAME_LEN];
-    int counts_per_detent;           /* gpio_encoder: 1, 2 or 4 */
-    int line;                        /* gpio_button: line offset, -1 when given by name */
-    char line_name[KIOSK_NAME_LEN];
-    int active_low;                  /* gpio_button */
-    int debounce_ms;                 /* gpio_button, ms */
-    char path[KIOSK_PATH_LEN];       /* script */
 };
 
 /* [attract] */

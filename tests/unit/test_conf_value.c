@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "kiosk_config/kiosk_config.h"
 #include "conf/conf_value.h"
 #include "kiosk_config/kiosk_config_keys.h"
 #include "scene/scene_keys.h"

@@ -16,6 +16,7 @@
 #include <time.h>
 #include <unistd.h>
 #include <cmocka.h>
+#include "kiosk_config/kiosk_config.h"
 #include "input/input.h"
 #include "input/input_gpio.h"
 #include "input/input_gpio_decode.h"
@@ -101,8 +102,8 @@ static void check_absent(enum kiosk_input_type type, const char *name, const cha
     memlog_open(&log);
     const double t0 = 100.0;
     struct input_source *src = type == KIOSK_INPUT_GPIO_ENCODER || type == KIOSK_INPUT_GPIO_BUTTON
-                                   ? input_open_gpio(c, 0, log.f, t0)
-                                   : input_open_hid(c, 0, log.f, t0);
+                                   ? input_open_gpio(&c->inputs[0], 0, log.f, t0)
+                                   : input_open_hid(&c->inputs[0], 0, log.f, t0);
     assert_non_null(src);
     assert_int_equal(src->present, 0);
     assert_int_equal(src->index, 0);
@@ -162,8 +163,8 @@ static void test_hid_sources_share_hidapi(void **state)
     c->n_inputs = 2;
     struct memlog log;
     memlog_open(&log);
-    struct input_source *a = input_open_hid(c, 0, log.f, 0.0);
-    struct input_source *b = input_open_hid(c, 1, log.f, 0.0);
+    struct input_source *a = input_open_hid(&c->inputs[0], 0, log.f, 0.0);
+    struct input_source *b = input_open_hid(&c->inputs[1], 1, log.f, 0.0);
     assert_non_null(a);
     assert_non_null(b);
     assert_int_equal(b->index, 1);
@@ -171,7 +172,7 @@ static void test_hid_sources_share_hidapi(void **state)
     struct input_event ev[4];
     assert_int_equal(b->drain(b, 2.0, ev, 4), 0);
     input_close(b);
-    struct input_source *again = input_open_hid(c, 0, log.f, 5.0);
+    struct input_source *again = input_open_hid(&c->inputs[0], 0, log.f, 5.0);
     assert_non_null(again);
     input_close(again);
     assert_int_equal(memlog_lines(&log), 3);
@@ -310,7 +311,7 @@ static void test_powermate_lifecycle(void **state)
     struct memlog log;
     memlog_open(&log);
     struct input_event ev[16];
-    struct input_source *src = input_open_hid_api(c, 0, log.f, 0.0, &fake_hid_api);
+    struct input_source *src = input_open_hid_api(&c->inputs[0], 0, log.f, 0.0, &fake_hid_api);
     assert_non_null(src);
     assert_int_equal(src->present, 0);
     assert_int_equal(fake_hid.inits, 1);
@@ -416,7 +417,7 @@ static void test_hid_box_reports(void **state)
     fake_hid_report((const unsigned char[]){2, 0x00, 0x02}, 3);
     struct memlog log;
     memlog_open(&log);
-    struct input_source *src = input_open_hid_api(c, 0, log.f, 0.0, &fake_hid_api);
+    struct input_source *src = input_open_hid_api(&c->inputs[0], 0, log.f, 0.0, &fake_hid_api);
     assert_non_null(src);
     assert_int_equal(src->present, 1);
     assert_string_equal(log.text, "input box: HID device 077d:0410 connected\n");
@@ -621,7 +622,7 @@ static void test_gpio_encoder_lifecycle(void **state)
     memlog_open(&log);
     struct input_event ev[16];
     struct pollfd fds[INPUT_MAX_FDS];
-    struct input_source *src = input_open_gpio_api(c, 0, log.f, 0.0, &fake_gpio_api);
+    struct input_source *src = input_open_gpio_api(&c->inputs[0], 0, log.f, 0.0, &fake_gpio_api);
     assert_non_null(src);
     assert_int_equal(src->present, 0);
     assert_string_equal(log.text, "input mass_knob: GPIO chip fakechip not found; looking for it every 1.5 s\n");
@@ -721,7 +722,7 @@ static void check_button(clockid_t kernel_clock)
     uint64_t mono = now_ns(CLOCK_MONOTONIC) - 1000 * MS;
     uint64_t t = kernel_clock == CLOCK_MONOTONIC ? mono : now_ns(CLOCK_REALTIME) - 1000 * MS;
     double loop0 = seconds(mono);
-    struct input_source *src = input_open_gpio_api(c, 0, log.f, loop0, &fake_gpio_api);
+    struct input_source *src = input_open_gpio_api(&c->inputs[0], 0, log.f, loop0, &fake_gpio_api);
     assert_non_null(src);
     assert_int_equal(src->present, 1);
     assert_string_equal(log.text, "input next_button: GPIO chip fakechip line BUTTON_NEXT connected\n");

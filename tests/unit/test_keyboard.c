@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <setjmp.h>
 #include <cmocka.h>
+#include "kiosk_config/kiosk_config.h"
 #include "input/input.h"
 #include <fcntl.h>
 #include <stdio.h>
@@ -29,7 +30,7 @@ static int open_keyboard(void **state)
     assert_true(dup2(p[0], STDIN_FILENO) >= 0);
     close(p[0]);
     write_end = p[1];
-    src = input_open(&config, 0, stderr, 0.0);
+    src = input_open(&config.inputs[0], 0, stderr, 0.0);
     assert_non_null(src);
     assert_true(src->present);
     return 0;

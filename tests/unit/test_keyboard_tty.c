@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <setjmp.h>
 #include <cmocka.h>
+#include "kiosk_config/kiosk_config.h"
 #include "input/input.h"
 #include <fcntl.h>
 #include <stdio.h>
@@ -37,7 +38,7 @@ static void test_idle_terminal_stays_open(void **state)
     config.n_inputs = 1;
     snprintf(config.inputs[0].name, sizeof config.inputs[0].name, "keys");
     config.inputs[0].type = KIOSK_INPUT_KEYBOARD;
-    struct input_source *src = input_open(&config, 0, stderr, 0.0);
+    struct input_source *src = input_open(&config.inputs[0], 0, stderr, 0.0);
     assert_non_null(src);
     assert_true(src->present);
     struct input_event ev[16];

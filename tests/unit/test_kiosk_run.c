@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <setjmp.h>
 #include <cmocka.h>
+#include "kiosk_config/kiosk_config.h"
 #include "io/png_io.h"
 #include "kiosk/kiosk_loop.h"
 #include "kiosk/kiosk_state.h"

@@ -6,6 +6,7 @@
 #include <stdint.h>
 #include <setjmp.h>
 #include <cmocka.h>
+#include "kiosk_config/kiosk_config.h"
 #include "hard_cases.h"
 #include "kiosk/kiosk_events.h"
 #include "kiosk/kiosk_state.h"

@@ -19,6 +19,7 @@
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
 #include <X11/keysym.h>
+#include "kiosk_config/kiosk_config.h"
 #include "gl/gl_api.h"
 #include "display/screen.h"
 #include "xvfb.h"
