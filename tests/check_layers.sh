@@ -13,8 +13,8 @@ allowed() {
         ref) echo "io physics scene results" ;;
         render) echo "io physics gl scene results" ;;
         input) echo "io" ;;
-        kiosk_config) echo "io conf scene input" ;;
-        display) echo "io gl kiosk_config input" ;;
+        display) echo "io gl input" ;;
+        kiosk_config) echo "io conf scene input display" ;;
         kiosk) echo "io physics gl conf scene render kiosk_config input display" ;;
         bench) echo "io physics gl conf scene results ref render kiosk_config input display kiosk" ;;
         cli) echo "io physics gl conf scene results ref render kiosk_config input display kiosk bench" ;;

@@ -19,19 +19,20 @@ static void add_reason(char *err, size_t errlen, const char *name, const char *r
 
 /* auto: kms, then x11 where an X display is named, then headless. When one opens, err keeps why
  * those before it did not ("" when the first opened), for the log; when none does, err has all. */
-static struct screen *open_auto(const struct kiosk_config *c, const char *gl_backend, char *err, size_t errlen)
+static struct screen *open_auto(const struct kiosk_display *d, int width, int height, const char *gl_backend, char *err,
+                                size_t errlen)
 {
     char why[SCREEN_REASON_LEN] = "";
     if (errlen)
         err[0] = '\0';
-    struct screen *s = screen_open_kms(c, why, sizeof why);
+    struct screen *s = screen_open_kms(d, why, sizeof why);
     if (s)
         return s;
     add_reason(err, errlen, "kms", why);
     const char *display = getenv("DISPLAY");
     if (display && *display) {
         why[0] = '\0';
-        s = screen_open_x11(c, why, sizeof why);
+        s = screen_open_x11(d, width, height, why, sizeof why);
         if (s)
             return s;
         add_reason(err, errlen, "x11", why);
@@ -39,22 +40,23 @@ static struct screen *open_auto(const struct kiosk_config *c, const char *gl_bac
         add_reason(err, errlen, "x11", "DISPLAY is not set");
     }
     why[0] = '\0';
-    s = screen_open_headless(c, gl_backend, why, sizeof why);
+    s = screen_open_headless(width, height, gl_backend, why, sizeof why);
     if (s)
         return s;
     add_reason(err, errlen, "headless", why);
     return NULL;
 }
 
-struct screen *screen_open(const struct kiosk_config *c, const char *gl_backend, char *err, size_t errlen)
+struct screen *screen_open(const struct kiosk_display *d, int width, int height, const char *gl_backend, char *err,
+                           size_t errlen)
 {
-    switch (c->display.backend) {
-    case KIOSK_BACKEND_KMS: return screen_open_kms(c, err, errlen);
-    case KIOSK_BACKEND_X11: return screen_open_x11(c, err, errlen);
-    case KIOSK_BACKEND_HEADLESS: return screen_open_headless(c, gl_backend, err, errlen);
-    case KIOSK_BACKEND_AUTO: return open_auto(c, gl_backend, err, errlen);
+    switch (d->backend) {
+    case KIOSK_BACKEND_KMS: return screen_open_kms(d, err, errlen);
+    case KIOSK_BACKEND_X11: return screen_open_x11(d, width, height, err, errlen);
+    case KIOSK_BACKEND_HEADLESS: return screen_open_headless(width, height, gl_backend, err, errlen);
+    case KIOSK_BACKEND_AUTO: return open_auto(d, width, height, gl_backend, err, errlen);
     }
-    snprintf(err, errlen, "unknown display back-end %d", (int)c->display.backend);
+    snprintf(err, errlen, "unknown display back-end %d", (int)d->backend);
     return NULL;
 }
 

@@ -8,7 +8,7 @@
 #include "gl/context.h"
 #include "gl/gl_api.h"
 #include "input/input.h"
-#include "kiosk_config/kiosk_config.h"
+#include "display/display_settings.h"
 
 struct screen {
     const char *name;                /* "kms", "x11" or "headless" */
@@ -37,14 +37,15 @@ struct screen {
 
 /* Each returns NULL with err when the back-end cannot open here. gl_backend (headless only):
  * "egl", "osmesa" or "auto". */
-struct screen *screen_open_headless(const struct kiosk_config *c, const char *gl_backend, char *err, size_t errlen);
+struct screen *screen_open_headless(int width, int height, const char *gl_backend, char *err, size_t errlen);
 /* The headless screen's framebuffer on a context the caller keeps (the bench's): width x height,
  * RGBA8; screen_close leaves the context open. */
 struct screen *screen_open_offscreen(struct gl_context *gl, int width, int height, char *err, size_t errlen);
-struct screen *screen_open_x11(const struct kiosk_config *c, char *err, size_t errlen);
-struct screen *screen_open_kms(const struct kiosk_config *c, char *err, size_t errlen);
+struct screen *screen_open_x11(const struct kiosk_display *d, int width, int height, char *err, size_t errlen);
+struct screen *screen_open_kms(const struct kiosk_display *d, char *err, size_t errlen);
 /* The configured back-end; auto tries kms, then x11 (when DISPLAY is set), then headless. */
-struct screen *screen_open(const struct kiosk_config *c, const char *gl_backend, char *err, size_t errlen);
+struct screen *screen_open(const struct kiosk_display *d, int width, int height, const char *gl_backend, char *err,
+                           size_t errlen);
 void screen_close(struct screen *s);
 
 #endif

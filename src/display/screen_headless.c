@@ -82,12 +82,12 @@ struct screen *screen_open_offscreen(struct gl_context *gl, int width, int heigh
     return offscreen(gl, 0, width, height, err, errlen);
 }
 
-struct screen *screen_open_headless(const struct kiosk_config *c, const char *gl_backend, char *err, size_t errlen)
+struct screen *screen_open_headless(int width, int height, const char *gl_backend, char *err, size_t errlen)
 {
     struct gl_context *gl = gl_context_create(gl_backend, err, errlen);
     if (!gl)
         return NULL;
-    struct screen *s = offscreen(gl, 1, c->kiosk.width, c->kiosk.height, err, errlen);
+    struct screen *s = offscreen(gl, 1, width, height, err, errlen);
     if (!s)
         gl_context_destroy(gl);
     return s;

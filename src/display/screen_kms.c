@@ -513,7 +513,7 @@ static int init_egl_gbm(struct screen *s, struct kms *k, char *err, size_t errle
     return screen_egl_attach(s->gl, config, k->surface, err, errlen);
 }
 
-struct screen *screen_open_kms(const struct kiosk_config *c, char *err, size_t errlen)
+struct screen *screen_open_kms(const struct kiosk_display *d, char *err, size_t errlen)
 {
     struct screen *s = calloc(1, sizeof *s);
     struct kms *k = calloc(1, sizeof *k);
@@ -524,7 +524,7 @@ struct screen *screen_open_kms(const struct kiosk_config *c, char *err, size_t e
         return NULL;
     }
     k->fd = -1;
-    k->vsync = c->display.vsync;
+    k->vsync = d->vsync;
     s->name = "kms";
     s->priv = k;
     s->framebuffer = 0;
@@ -532,7 +532,7 @@ struct screen *screen_open_kms(const struct kiosk_config *c, char *err, size_t e
     s->events = kms_events;
     s->present = kms_present;
     s->close = kms_close;
-    if (open_card(k, &c->display, err, errlen) != 0) {
+    if (open_card(k, d, err, errlen) != 0) {
         kms_close(s);
         return NULL;
     }

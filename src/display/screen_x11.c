@@ -209,7 +209,7 @@ static int attach_window(struct screen *s, struct x11_window *w, int vsync, char
     return 0;
 }
 
-struct screen *screen_open_x11(const struct kiosk_config *c, char *err, size_t errlen)
+struct screen *screen_open_x11(const struct kiosk_display *d, int width, int height, char *err, size_t errlen)
 {
     const char *name = getenv("DISPLAY");
     if (!name || !*name) {
@@ -226,8 +226,8 @@ struct screen *screen_open_x11(const struct kiosk_config *c, char *err, size_t e
     }
     s->name = "x11";
     s->priv = w;
-    s->width = c->kiosk.width;
-    s->height = c->kiosk.height;
+    s->width = width;
+    s->height = height;
     s->framebuffer = 0;
     s->fd = x11_fd;
     s->events = x11_events;
@@ -245,7 +245,7 @@ struct screen *screen_open_x11(const struct kiosk_config *c, char *err, size_t e
     static const struct screen_egl_platform x11 = {EGL_PLATFORM_X11_KHR, "X11", "the X display",
                                                    "EGL_KHR_platform_x11", "EGL_EXT_platform_x11"};
     s->gl = screen_egl_open(&x11, w->dpy, "x11", "X11", err, errlen);
-    if (!s->gl || attach_window(s, w, c->display.vsync, err, errlen) != 0) {
+    if (!s->gl || attach_window(s, w, d->vsync, err, errlen) != 0) {
         x11_close(s);
         return NULL;
     }

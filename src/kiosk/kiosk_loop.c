@@ -577,7 +577,7 @@ static struct screen *open_screen(struct kiosk *k, char *err, size_t errlen)
     int logged = 0;
     for (;;) {
         err[0] = '\0';
-        struct screen *s = screen_open(c, k->opt->gl_backend, err, errlen);
+        struct screen *s = screen_open(&c->display, c->kiosk.width, c->kiosk.height, k->opt->gl_backend, err, errlen);
         if (s) {
             if (c->display.backend == KIOSK_BACKEND_AUTO && err[0])
                 fprintf(k->log, "bentray kiosk: display %s (passed over: %s)\n", s->name, err);

@@ -5,6 +5,7 @@
 #ifndef BT_KIOSK_CONFIG_H
 #define BT_KIOSK_CONFIG_H
 #include <stdint.h>
+#include "display/display_settings.h"
 #include "input/input_settings.h"
 
 #define KIOSK_MAX_SCENES 32
@@ -31,8 +32,6 @@
 #define KIOSK_MIN_SIZE 16
 #define KIOSK_MAX_SIZE 8192
 
-enum kiosk_backend { KIOSK_BACKEND_AUTO, KIOSK_BACKEND_KMS, KIOSK_BACKEND_X11, KIOSK_BACKEND_HEADLESS };
-
 /* How a knob's counts move its value. linear: step is in the value's own unit. rapidity (speed):
  * step is in rapidity, atanh(v/c), so equal turns give equal boosts and gamma grows without the
  * knob slowing to a crawl near c. log (mass): step is in ln(mass), each count multiplies. */
@@ -53,17 +52,6 @@ struct kiosk_main {
     char font[KIOSK_PATH_LEN];
     char log[KIOSK_PATH_LEN];        /* a file, or "stderr" */
     char assets_root[KIOSK_PATH_LEN];    /* "": scenes may be anywhere */
-};
-
-/* [display] */
-struct kiosk_display {
-    enum kiosk_backend backend;
-    char drm_device[KIOSK_PATH_LEN]; /* "": the first card that drives a display */
-    char connector[KIOSK_NAME_LEN];  /* "": the first connected one */
-    int mode_width, mode_height;     /* px; 0: the connector's preferred mode */
-    int vsync;
-    char headless_out[KIOSK_PATH_LEN];   /* directory for PNG frames */
-    int headless_frames;             /* frames to write before exiting; 0: until stopped */
 };
 
 /* [speed] and [mass]. speed: fractions of c; mass: the scene's mass unit (M = 1: horizon at 2). */

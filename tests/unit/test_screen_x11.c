@@ -80,7 +80,7 @@ static void config_of_size(struct kiosk_config *c, int width, int height)
 static void open_x11(struct screen **s, const struct kiosk_config *c)
 {
     char err[512] = "";
-    *s = screen_open_x11(c, err, sizeof err);
+    *s = screen_open_x11(&c->display, c->kiosk.width, c->kiosk.height, err, sizeof err);
     if (!*s)
         fail_msg("screen_open_x11 on %s: %s", xvfb.display, err);
 }
@@ -255,7 +255,7 @@ static void test_auto_passes_over_kms(void **state)
     config_of_size(&c, WIDTH, HEIGHT);
     snprintf(c.display.drm_device, sizeof c.display.drm_device, "%s", MISSING_DRM_DEVICE);
     char err[1024] = "";
-    struct screen *s = screen_open(&c, "auto", err, sizeof err);
+    struct screen *s = screen_open(&c.display, c.kiosk.width, c.kiosk.height, "auto", err, sizeof err);
     if (!s)
         fail_msg("screen_open (auto): %s", err);
     assert_string_equal(s->name, "x11");
@@ -274,7 +274,7 @@ static void test_x11_without_display(void **state)
     struct kiosk_config c;
     config_of_size(&c, WIDTH, HEIGHT);
     char err[256] = "";
-    struct screen *s = screen_open_x11(&c, err, sizeof err);
+    struct screen *s = screen_open_x11(&c.display, c.kiosk.width, c.kiosk.height, err, sizeof err);
     if (saved) {
         setenv("DISPLAY", saved, 1);
         free(saved);
@@ -291,17 +291,17 @@ static void test_kms_missing_device(void **state)
     config_of_size(&c, WIDTH, HEIGHT);
     snprintf(c.display.drm_device, sizeof c.display.drm_device, "%s", MISSING_DRM_DEVICE);
     char err[256] = "";
-    assert_null(screen_open_kms(&c, err, sizeof err));
+    assert_null(screen_open_kms(&c.display, err, sizeof err));
     print_message("%s\n", err);
     assert_non_null(strstr(err, MISSING_DRM_DEVICE));
     c.display.backend = KIOSK_BACKEND_KMS;
     err[0] = '\0';
-    assert_null(screen_open(&c, "auto", err, sizeof err));
+    assert_null(screen_open(&c.display, c.kiosk.width, c.kiosk.height, "auto", err, sizeof err));
     assert_non_null(strstr(err, MISSING_DRM_DEVICE));
     /* a device that is there but drives no display */
     snprintf(c.display.drm_device, sizeof c.display.drm_device, "/dev/null");
     err[0] = '\0';
-    assert_null(screen_open_kms(&c, err, sizeof err));
+    assert_null(screen_open_kms(&c.display, err, sizeof err));
     print_message("%s\n", err);
     assert_non_null(strstr(err, "/dev/null: not a display controller"));
 }
