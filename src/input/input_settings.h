@@ -13,14 +13,18 @@
 #define KIOSK_POWERMATE_VID 0x077d
 #define KIOSK_POWERMATE_PID 0x0410
 
-enum kiosk_action {
-    KIOSK_ACTION_NEXT_SCENE,
-    KIOSK_ACTION_PREVIOUS_SCENE,
-    KIOSK_ACTION_CYCLE_EFFECTS,
-    KIOSK_ACTION_RESET,
-    KIOSK_ACTION_PIPELINE_VIEW,
-    KIOSK_ACTION_COUNT
-};
+/* The actions, each with the name a button's `action`, a script's `press` and the log use:
+ * X(ID, "name") for each, in the enum's order (the one list of their names). */
+#define KIOSK_ACTIONS(X)                                                                           \
+    X(NEXT_SCENE, "next_scene")                                                                    \
+    X(PREVIOUS_SCENE, "previous_scene")                                                            \
+    X(CYCLE_EFFECTS, "cycle_effects")                                                              \
+    X(RESET, "reset")                                                                              \
+    X(PIPELINE_VIEW, "pipeline_view")
+
+#define KIOSK_ACTION_ENUM(id, name) KIOSK_ACTION_##id,
+enum kiosk_action { KIOSK_ACTIONS(KIOSK_ACTION_ENUM) KIOSK_ACTION_COUNT };
+#undef KIOSK_ACTION_ENUM
 
 enum kiosk_input_type {
     KIOSK_INPUT_POWERMATE,           /* Griffin PowerMate: a USB knob with one push button */

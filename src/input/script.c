@@ -11,8 +11,9 @@
 
 #define SCRIPT_LINE_MAX 256
 
-static const char *const action_words[KIOSK_ACTION_COUNT] = {"next_scene", "previous_scene", "cycle_effects",
-                                                             "reset", "pipeline_view"};
+#define ACTION_WORD(id, name) name,
+static const char *const action_words[KIOSK_ACTION_COUNT] = {KIOSK_ACTIONS(ACTION_WORD)};
+#undef ACTION_WORD
 
 __attribute__((format(printf, 5, 6)))
 static int refuse(char *err, size_t errlen, const char *path, int line, const char *fmt, ...)

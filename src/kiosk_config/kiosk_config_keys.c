@@ -21,11 +21,9 @@ static const struct kiosk_choice speed_curves[] = {
 static const struct kiosk_choice mass_curves[] = {
     {"linear", KIOSK_CURVE_LINEAR}, {"log", KIOSK_CURVE_LOG}, {NULL, 0}
 };
-static const struct kiosk_choice action_choices[] = {
-    {"next_scene", KIOSK_ACTION_NEXT_SCENE}, {"previous_scene", KIOSK_ACTION_PREVIOUS_SCENE},
-    {"cycle_effects", KIOSK_ACTION_CYCLE_EFFECTS}, {"reset", KIOSK_ACTION_RESET},
-    {"pipeline_view", KIOSK_ACTION_PIPELINE_VIEW}, {NULL, 0}
-};
+#define ACTION_CHOICE(id, name) {name, KIOSK_ACTION_##id},
+static const struct kiosk_choice action_choices[] = {KIOSK_ACTIONS(ACTION_CHOICE) {NULL, 0}};
+#undef ACTION_CHOICE
 static const struct kiosk_choice type_choices[] = {
     {"powermate", KIOSK_INPUT_POWERMATE}, {"hid", KIOSK_INPUT_HID},
     {"gpio_encoder", KIOSK_INPUT_GPIO_ENCODER}, {"gpio_button", KIOSK_INPUT_GPIO_BUTTON},
