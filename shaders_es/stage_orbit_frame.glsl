@@ -4,7 +4,8 @@
 // where it leaves the bounding sphere (as the termination stage). It writes what the multipass
 // scheme leaves in the result textures: image and velocity, all the sky stage needs
 // (FRAME_STATE undefined), or hit and position (FRAME_STATE 1), only when they are
-// read. MAX_SEGMENTS is the scene's render.max_chords.
+// read, or where only the image is read the final colour itself (FRAME_COLOUR: the sky stage's
+// sky_colour.glsl, in this pass). MAX_SEGMENTS is the scene's render.max_chords.
 uniform vec3 u_capture_center;
 uniform float u_capture_radius2;
 
@@ -20,8 +21,15 @@ void main()
     vec2 q = orbit_at(ray, 1.0);
     vec3 fallen = orbit_tangent(ray, q, 1.0);
     vec3 escape = orbit_direction_at_infinity(ray);
-    WRITE_TARGET0(vec4(0.0, 0.0, 0.0, escapes ? CODE_SKY : CODE_CAPTURED));
-    WRITE_TARGET1(vec4(escapes ? escape : fallen, 1.0));
+    vec4 image = vec4(0.0, 0.0, 0.0, escapes ? CODE_SKY : CODE_CAPTURED);
+    vec3 direction = escapes ? escape : fallen;
+#ifdef FRAME_COLOUR
+    // only the image is read: the sky stage's final colour, here (stage_frame.c)
+    WRITE_TARGET0(sky_final_colour(image, direction));
+#else
+    WRITE_TARGET0(image);
+    WRITE_TARGET1(vec4(direction, 1.0));
+#endif
 }
 #else
 void main()
@@ -125,6 +133,9 @@ void main()
 #ifdef FRAME_STATE
     WRITE_TARGET0(found ? new_hit : end_hit);
     WRITE_TARGET1(vec4(end, steps));
+#elif defined(FRAME_COLOUR)
+    // only the image is read: the sky stage's final colour, here (stage_frame.c)
+    WRITE_TARGET0(sky_final_colour(found ? new_image : end_image, tangent));
 #else
     float reached = leaves ? 1.0 : s;
     WRITE_TARGET0(found ? new_image : end_image);

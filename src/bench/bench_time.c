@@ -39,6 +39,8 @@ int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_ti
         return -1;
     double times[64];
     runs = runs < 1 ? 1 : runs < 64 ? runs : 64;
+    /* the frame as a display draws it, the image alone; the dump's state is traced after the timed run */
+    renderer_set_reads(r, RENDER_READ_IMAGE);
     int rc = 0;
     for (int k = 0; k <= runs && rc == 0; k++) {
         rc = renderer_run(r, 0, 0, s->render.width, s->render.height, NULL, NULL, err, errlen);

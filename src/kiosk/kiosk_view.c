@@ -159,6 +159,9 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char 
     kiosk_tiles_plan(&v->refine, k->width, k->height, v->band_rows, steps_per_ray(&v->full));
     kiosk_tiles_plan(&v->preview, k->preview_width, k->preview_height, k->preview_height,
                      v->pipeline_view ? 0 : steps_per_ray(&v->live));
+    /* the screen shows the image alone, which a single pass then draws in one pass; the pipeline
+     * view shows every ray's final state too */
+    renderer_set_reads(v->renderer, v->pipeline_view ? RENDER_READ_STATE : RENDER_READ_IMAGE);
     if (v->preview.count > 1)
         return preview_tile(v, err, errlen);
     v->preview.next = v->preview.count;
@@ -192,6 +195,7 @@ int kiosk_view_refine(struct kiosk_view *v, char *err, size_t errlen)
         return preview_tile(v, err, errlen);
     if (v->refined_rows >= k->height)
         return 0;
+    renderer_set_reads(v->renderer, RENDER_READ_IMAGE);
     v->live = v->full;
     struct kiosk_tiles *t = &v->refine;
     if (t->tile_width == k->width) {

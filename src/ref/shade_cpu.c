@@ -193,7 +193,7 @@ static unsigned char to_unorm8(double c)
     return (unsigned char)lrint(c * 255.0);
 }
 
-/* stage_sky.glsl: an RGB sky, or black bodies at infinity lent their luminance by the sky's texels */
+/* sky_colour.glsl: an RGB sky, or black bodies at infinity lent their luminance by the sky's texels */
 static vec3d shade_sky(const struct cpu_materials *mat, const struct ref_ray *ray, vec3d view)
 {
     const struct scene *s = mat->scene;

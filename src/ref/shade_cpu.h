@@ -1,4 +1,4 @@
-/* Colour of a traced ray on the CPU, computed as shaders_es/shade.glsl and stage_sky.glsl compute
+/* Colour of a traced ray on the CPU, computed as shaders_es/shade.glsl and sky_colour.glsl compute
  * it: the same material model, bilinear texture filtering with clamped edges, cube-map face
  * selection of the GL specification, and the same rounding to 8 bits. */
 #ifndef BT_SHADE_CPU_H

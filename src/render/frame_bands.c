@@ -70,6 +70,7 @@ int frame_run_image(struct renderer *r, const struct scene *s, double dx, double
 {
     int w = s->render.width, h = s->render.height, rc = 0;
     renderer_set_subpixel(r, dx, dy);
+    renderer_set_reads(r, with_state);
     if (!p || !p->banded) {
         memset(out, 0, sizeof *out);
         rc = renderer_run(r, 0, 0, w, h, NULL, NULL, err, errlen) == 0 &&
@@ -99,6 +100,7 @@ int frame_run_bands(struct renderer *r, const struct scene *s, int band_rows, st
                     int with_state, char *err, size_t errlen)
 {
     int h = s->render.height, rc = frame_alloc(out, s->render.width, h, with_state, renderer_hdr(r), err, errlen);
+    renderer_set_reads(r, with_state);
     band_rows = band_rows < 1 ? 1 : band_rows;
     for (int top = 0; top < h && rc == 0; top += band_rows)
         rc = run_rows(r, s, top, band_rows < h - top ? band_rows : h - top, out, with_state, err, errlen);

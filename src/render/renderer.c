@@ -59,6 +59,8 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
         return NULL;
     }
     r->scene = scene;
+    /* until a caller says it reads only the image, every run keeps its outcomes readable */
+    r->reads = RENDER_READ_OUTCOMES;
     if (gl_caps_probe(&r->caps, ctx, err, errlen) != 0) {
         quad_release();              /* the probe takes its share of the pass quad even when it fails */
         free(r);
@@ -162,11 +164,15 @@ int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int 
     r->origin_y = origin_y;
     if (frame_choose(r, hook != NULL, r->pipeline_why, sizeof r->pipeline_why)) {
         /* the whole ray in one pass */
-        if ((r->exact_orbits && orbit_prepare(r, err, errlen) != 0) || stage_frame(r, 0, err, errlen) != 0 ||
-            stage_sky(r, err, errlen) != 0)
+        /* where only the image is read, the pass draws it itself (the sky stage's colour in it) */
+        int colour = r->reads == RENDER_READ_IMAGE && !r->hdr;
+        if ((r->exact_orbits && orbit_prepare(r, err, errlen) != 0) ||
+            stage_frame(r, colour ? FRAME_WRITES_COLOUR : FRAME_WRITES_OUTCOMES, err, errlen) != 0 ||
+            (!colour && stage_sky(r, err, errlen) != 0))
             return -1;
         r->pipeline_name = "single pass";
         r->state_pending = 1;
+        r->outcomes_pending = colour;
         glFinish();
         r->seconds = now_seconds() - t0;
         r->image_width = width;
@@ -184,6 +190,7 @@ int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int 
     }
     r->pipeline_name = fused ? "fused segment" : "multipass";
     r->state_pending = 0;
+    r->outcomes_pending = 0;
     if (stage_setup(r, err, errlen) != 0)
         return -1;
     int early_z = s->render.early_z;
@@ -281,6 +288,22 @@ int render_read_includes(int with_state, int k)
 
 int render_read_with_sky(int with_state) { return with_state == RENDER_READ_STATE ? RENDER_READ_STATE : RENDER_READ_SKY; }
 
+/* The single-pass frame's deferred outcome textures (image and velocity), traced again when the
+ * frame drew its colour itself; then, with state, its hit and position. */
+static int complete(struct renderer *r, int state, char *err, size_t errlen)
+{
+    glDisable(GL_DEPTH_TEST);
+    if (r->outcomes_pending) {
+        r->outcomes_pending = 0;
+        if (stage_frame(r, FRAME_WRITES_OUTCOMES, err, errlen) != 0)
+            return -1;
+    }
+    if (!state || !r->state_pending)
+        return 0;
+    r->state_pending = 0;
+    return stage_frame(r, FRAME_WRITES_STATE, err, errlen);
+}
+
 int renderer_read(struct renderer *r, struct render_result *out, int with_state, char *err, size_t errlen)
 {
     struct raystate *rs = &r->rs;
@@ -322,8 +345,9 @@ int renderer_read(struct renderer *r, struct render_result *out, int with_state,
     }
     if (with_state == RENDER_READ_IMAGE)
         return 0;
-    /* the image and velocity textures are written by every pipeline, position and hit on demand */
-    if (render_read_includes(with_state, 0) && renderer_complete_state(r, err, errlen) != 0)
+    /* the image and velocity textures are written by every pipeline (a single pass that drew its
+     * colour itself writes them now), position and hit on demand */
+    if (complete(r, render_read_includes(with_state, 0), err, errlen) != 0)
         return -1;
     float **dst[4] = {&out->position, &out->velocity, &out->hit, &out->image};
     GLuint src[4] = {rs->result_position, rs->result_velocity, rs->result_hit, rs->result_image};
@@ -343,11 +367,12 @@ int renderer_read(struct renderer *r, struct render_result *out, int with_state,
 
 int renderer_complete_state(struct renderer *r, char *err, size_t errlen)
 {
-    if (!r->state_pending)
-        return 0;
-    r->state_pending = 0;
-    glDisable(GL_DEPTH_TEST);
-    return stage_frame(r, 1, err, errlen);
+    return complete(r, 1, err, errlen);
+}
+
+void renderer_set_reads(struct renderer *r, int with_state)
+{
+    r->reads = with_state;
 }
 
 void renderer_textures(const struct renderer *r, struct renderer_textures *out)

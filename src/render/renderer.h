@@ -47,6 +47,11 @@ void renderer_set_subpixel(struct renderer *r, double dx, double dy);
  * pass that writes hit and position), or the outcome codes and exit directions (what the stars of the
  * sky are drawn from, results/star_light.h). */
 enum render_read { RENDER_READ_IMAGE = 0, RENDER_READ_STATE = 1, RENDER_READ_OUTCOMES = 2, RENDER_READ_SKY = 3 };
+/* What the caller reads after each following run (enum render_read; RENDER_READ_OUTCOMES until
+ * set). It changes no result, only the passes: with RENDER_READ_IMAGE a single-pass frame draws
+ * its final image in its own pass (the sky stage's colour in it, one full-screen pass and two float
+ * targets less), and a later read of more traces the frame again for its outcomes. */
+void renderer_set_reads(struct renderer *r, int with_state);
 /* Whether a read of kind with_state brings back part k of the ray state: 0 position, 1 velocity,
  * 2 hit, 3 image (render_result's order). */
 int render_read_includes(int with_state, int k);
@@ -77,7 +82,8 @@ struct renderer_textures {
     double orbit_u_capture;         /* u where captured orbits end, just inside the horizon */
 };
 void renderer_textures(const struct renderer *r, struct renderer_textures *out);
-/* The single-pass frame's deferred hit and position (a no-op after a multipass frame). */
+/* The single-pass frame's deferred hit and position, and its outcome textures where it drew its
+ * image itself (a no-op after a multipass frame). */
 int renderer_complete_state(struct renderer *r, char *err, size_t errlen);
 /* "multipass", "fused segment" or "single pass": how the last run was scheduled. */
 const char *renderer_pipeline(const struct renderer *r);

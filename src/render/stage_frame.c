@@ -4,7 +4,9 @@
  * functions of the setup, integration (or orbit), intersection and termination stages, and write
  * the result textures of the multipass scheme, two colour targets a pass as every stage here:
  * image and velocity, which the sky stage needs, and on demand (a dump, trace or the kiosk's
- * pipeline view) hit and position in a second pass of the same loop. */
+ * pipeline view) hit and position in a second pass of the same loop. Where only the image is read
+ * (renderer_set_reads), the pass ends with the sky stage's colour instead (sky_colour.glsl) and
+ * writes the final image itself: one full-screen pass and two float targets less. */
 #include "render/stages.h"
 #include <stdio.h>
 #include <string.h>
@@ -56,6 +58,7 @@ int frame_batch(const struct renderer *r, struct object_batch *b, char *err, siz
 struct frame_args {
     const struct renderer *r;
     struct object_batch batch;
+    enum frame_output output;
 };
 
 static void set_frame(const struct program_uniforms *p, const void *arg)
@@ -63,6 +66,8 @@ static void set_frame(const struct program_uniforms *p, const void *arg)
     const struct frame_args *a = arg;
     const struct renderer *r = a->r;
     object_batch_set_uniforms(p, &a->batch);
+    if (a->output == FRAME_WRITES_COLOUR)
+        sky_colour_set_uniforms(p, r, UNIT_FRAME_SKY);
     if (r->exact_orbits) {
         orbit_set_uniforms(p, r, 0);
         return;
@@ -88,19 +93,21 @@ int frame_batch_defines(const struct renderer *r, const struct object_batch *b, 
     return 0;
 }
 
-int stage_frame(struct renderer *r, int state, char *err, size_t errlen)
+int stage_frame(struct renderer *r, enum frame_output output, char *err, size_t errlen)
 {
     struct raystate *rs = &r->rs;
     const struct scene *s = r->scene;
-    struct frame_args a = {.r = r};
+    struct frame_args a = {.r = r, .output = output};
     if (frame_batch(r, &a.batch, err, errlen) != 0)
         return -1;
     char batch[4096];
     if (frame_batch_defines(r, &a.batch, batch, sizeof batch, err, errlen) != 0)
         return -1;
-    const char *files[PRIM_COUNT + 10] = {"common.glsl", r->model_file};
+    const char *files[PRIM_COUNT + 11] = {"common.glsl", r->model_file};
     int n = object_batch_files(&a.batch, files, 2);
     files[n++] = "observer.glsl";
+    if (output == FRAME_WRITES_COLOUR)
+        files[n++] = "sky_colour.glsl";
     if (r->exact_orbits)
         files[n++] = "orbit_table.glsl";
     files[n++] = "shade.glsl";
@@ -111,20 +118,26 @@ int stage_frame(struct renderer *r, int state, char *err, size_t errlen)
         files[n++] = "stage_frame.glsl";
     }
     files[n] = NULL;
-    char defines[sizeof batch + sizeof r->model_defines + 128];
+    char written[64];
+    snprintf(written, sizeof written, "%s%s",
+             output == FRAME_WRITES_STATE ? "#define FRAME_STATE 1\n" : output == FRAME_WRITES_COLOUR ? "#define FRAME_COLOUR 1\n" : "",
+             output == FRAME_WRITES_COLOUR ? sky_colour_defines(r) : "");
+    char defines[sizeof batch + sizeof r->model_defines + sizeof written + 128];
     if (r->exact_orbits)
         snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define MAX_SEGMENTS %d\n%s%s", r->model_defines,
-                 batch, s->render.max_chords, state ? "#define FRAME_STATE 1\n" : "",
-                 a.batch.count == 0 ? "#define ORBIT_NOTHING_TO_MEET 1\n" : "");
+                 batch, s->render.max_chords, written, a.batch.count == 0 ? "#define ORBIT_NOTHING_TO_MEET 1\n" : "");
     else
         snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define PASSES_PER_SEGMENT %d\n%s",
                  r->model_defines, batch, r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass,
-                 state ? "#define FRAME_STATE 1\n" : "");
-    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, err, errlen);
+                 written);
+    const struct stage_program *sp =
+        program_cache_get(&r->programs, files, defines, output != FRAME_WRITES_COLOUR, err, errlen);
     if (!sp)
         return -1;
-    GLuint out0 = state ? rs->result_hit : rs->result_image;
-    GLuint out1 = state ? rs->result_position : rs->result_velocity;
+    GLuint out0 = output == FRAME_WRITES_STATE ? rs->result_hit : output == FRAME_WRITES_COLOUR ? rs->final_color
+                                                                                               : rs->result_image;
+    GLuint out1 = output == FRAME_WRITES_STATE ? rs->result_position : output == FRAME_WRITES_COLOUR ? 0
+                                                                                                    : rs->result_velocity;
     if (pass_run(r, sp, out0, out1, NULL, 0, set_frame, &a, err, errlen) != 0)
         return -1;
     return gl_check("the single-pass frame", err, errlen);

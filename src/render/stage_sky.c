@@ -1,18 +1,19 @@
-/* Stage 5, sky and final colour (paper section 4.3), from the retired state of every ray. */
+/* Stage 5, sky and final colour (paper section 4.3), from the retired state of every ray. The
+ * colour itself is shaders_es/sky_colour.glsl, which a single-pass frame also calls in its own pass
+ * (stage_frame.c) when only the image is read. */
 #include "render/stages.h"
 #include <stdio.h>
 
-static void set_sky(const struct program_uniforms *p, const void *arg)
+void sky_colour_set_uniforms(const struct program_uniforms *p, const struct renderer *r, int sky_unit)
 {
-    const struct renderer *r = arg;
     if (doppler_colour(r->scene)) {
         observer_set_uniforms(p, r);
         uniform_float(p, "u_sky_temperature", r->scene->sky.temperature);
     }
     if (r->sky_cubemap) {
-        glActiveTexture(GL_TEXTURE0 + UNIT_SKY);
+        glActiveTexture(GL_TEXTURE0 + sky_unit);
         glBindTexture(GL_TEXTURE_CUBE_MAP, r->sky_cubemap);
-        glUniform1i(program_uniform(p, "u_sky"), UNIT_SKY);
+        glUniform1i(program_uniform(p, "u_sky"), sky_unit);
     } else {
         uniform_vec3(p, "u_sky_color", r->scene->sky.color);
     }
@@ -20,12 +21,22 @@ static void set_sky(const struct program_uniforms *p, const void *arg)
     uniform_float(p, "u_sky_alpha", r->scene->render.sky_alpha);
 }
 
+const char *sky_colour_defines(const struct renderer *r)
+{
+    return r->sky_cubemap ? "#define SKY_CUBEMAP 1\n" : "";
+}
+
+static void set_sky(const struct program_uniforms *p, const void *arg)
+{
+    sky_colour_set_uniforms(p, arg, UNIT_SKY);
+}
+
 int stage_sky(struct renderer *r, char *err, size_t errlen)
 {
-    static const char *const files[] = {"common.glsl", "observer.glsl", "stage_sky.glsl", NULL};
+    static const char *const files[] = {"common.glsl", "observer.glsl", "sky_colour.glsl", "stage_sky.glsl", NULL};
     struct raystate *rs = &r->rs;
     char defines[sizeof r->observer_defines + 32];
-    snprintf(defines, sizeof defines, "%s%s", r->sky_cubemap ? "#define SKY_CUBEMAP 1\n" : "", r->observer_defines);
+    snprintf(defines, sizeof defines, "%s%s", sky_colour_defines(r), r->observer_defines);
     const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 0, err, errlen);
     if (!sp)
         return -1;

@@ -8,6 +8,9 @@
 
 /* Texture units: ray-state inputs first, then scene textures. */
 #define UNIT_SKY 6
+/* the sky in a single-pass frame that draws its colour (FRAME_WRITES_COLOUR): that pass reads no ray
+ * state, so a unit of the inputs is free, while UNIT_SKY may hold an object's texture there */
+#define UNIT_FRAME_SKY 3
 /* the black-body table: below the object textures, which start at FIRST_OBJECT_UNIT (intersect) */
 #define UNIT_BLACKBODY 4
 /* the orbit table: the GPU's last texture unit (object textures stay below it) */
@@ -41,6 +44,8 @@ struct renderer {
     const char *pipeline_name;    /* of the last run: "multipass", "fused segment", "single pass" */
     char pipeline_why[200];       /* why the last run took it */
     int state_pending;            /* single pass: hit and position not yet written */
+    int outcomes_pending;         /* single pass drawn as FRAME_COLOUR: image and velocity neither */
+    int reads;                    /* enum render_read: what the caller reads after a run */
     long passes;
     double seconds;
     struct orbit_table orbit;     /* render.method = orbit_table: the table of the last run */
@@ -126,8 +131,7 @@ int object_batch_all(const struct renderer *r, struct object_batch *b);
 /* render.pipeline (stage_frame.c): 1 when this frame runs in one pass, with why in words (the
  * choice forced, or auto: this GPU runs long fragment loops, every object fits one intersection
  * batch and no hook reads the rays back after every segment); 0 for the multipass scheme, with
- * why. The pass itself: image and velocity (state 0, what the sky stage needs), or hit and
- * position (state 1, for the read-back of the ray state). */
+ * why. */
 int frame_choose(const struct renderer *r, int per_segment_hook, char *why, size_t whylen);
 /* render.pipeline = fused (stage_segment.c): whether this frame's segments each run as one pass
  * (integrate, intersect and terminate fused; four draw buffers), with why in words; forced where
@@ -140,13 +144,21 @@ int frame_batch_defines(const struct renderer *r, const struct object_batch *b, 
                         size_t errlen);
 int segment_fused_choose(const struct renderer *r, char *why, size_t whylen, char *err, size_t errlen);
 int stage_segment(struct renderer *r, int segment, char *err, size_t errlen);
-int stage_frame(struct renderer *r, int state, char *err, size_t errlen);
+/* What a single-pass frame writes: the outcome textures (image and velocity, what the sky stage
+ * reads), the state (hit and position, for a read-back of the ray state), or the final colour itself
+ * (the sky stage's sky_colour.glsl in the same pass, when only the image is read: FRAME_COLOUR
+ * in the shaders). */
+enum frame_output { FRAME_WRITES_OUTCOMES, FRAME_WRITES_STATE, FRAME_WRITES_COLOUR };
+int stage_frame(struct renderer *r, enum frame_output output, char *err, size_t errlen);
 /* Every object of the scene as the single pass's batch; -1 with err saying why they do not fit. */
 int frame_batch(const struct renderer *r, struct object_batch *b, char *err, size_t errlen);
 int stage_terminate(struct renderer *r, int segment, char *err, size_t errlen);
 /* Retire finished rays (all: every ray) into the result textures; mark them for early-z. */
 int stage_retire(struct renderer *r, int all, char *err, size_t errlen);
 int stage_sky(struct renderer *r, char *err, size_t errlen);
+/* The final colour's uniforms and defines (sky_colour.glsl), for the sky stage and FRAME_WRITES_COLOUR. */
+void sky_colour_set_uniforms(const struct program_uniforms *p, const struct renderer *r, int sky_unit);
+const char *sky_colour_defines(const struct renderer *r);
 /* The polygon method for moving objects (stage_polygons.c): which objects it draws, their meshes,
  * and the stage that rasterises them into the results. */
 int polygons_draw_object(const struct renderer *r, int k);

@@ -293,6 +293,72 @@ static void test_single_pass_is_exact(void **state)
         assert_true(seen[o] > 0);
 }
 
+/* A single-pass frame of which only the image is read draws its final colour in its own pass (the
+ * sky stage's sky_colour.glsl, FRAME_COLOUR): the very image of the frame and sky passes, bit for
+ * bit, in one pass; a read of the state afterwards traces the frame again and finds the same rays.
+ * The cases cover hits, sky, capture, unfinished and failed rays, a cubemap and a plain sky, the
+ * sky's alpha, Doppler colour and the searchlight, integrated rays and exact orbits with and without
+ * objects. */
+static void test_frame_colour_is_exact(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *scene;
+        const char *sets[4];
+        int no_objects;
+    } cases[] = {
+        {"schwarzschild", {NULL}, 1},
+        {"schwarzschild", {"render.sky_alpha=0.25", NULL}, 0},
+        {"blackhole_flight", {NULL}, 0},
+        {"neutron_star", {NULL}, 0},
+        {"starflight", {"observer.effects=searchlight", NULL}, 0},
+        {"three_ships", {NULL}, 0},
+        {"test", {"sky.type=color", "sky.color=0.2 0.4 0.9", NULL}, 0},
+        {"lorenz", {"render.unfinished_color=1 0 1", "render.max_path=0", "render.segments=4"}, 0},
+        {"lorenz", {"render.step=5", "render.bound_radius=1e18", "render.max_path=0", "render.segments=60"}, 0},
+    };
+    long seen[5] = {0};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        static struct scene s;
+        hc_load(&s, cases[k].scene, W, H, cases[k].sets);
+        if (cases[k].no_objects)
+            s.n_objects = 0;
+        s.render.pipeline = PIPELINE_SINGLE;
+        struct hc_gpu both;
+        hc_gpu_render(&s, &both);
+        char err[2048], what[200];
+        case_label(what, sizeof what, cases[k].scene, cases[k].sets, cases[k].no_objects ? "(no objects)" : "");
+        int bad;
+        struct renderer *r = renderer_create(hc_context(), &s, err, sizeof err, &bad);
+        if (!r)
+            fail_msg("renderer: %s", err);
+        renderer_set_reads(r, RENDER_READ_IMAGE);
+        struct hc_gpu colour;
+        struct render_result image;
+        if (renderer_run(r, 0, 0, W, H, NULL, NULL, err, sizeof err) != 0 ||
+            renderer_read(r, &image, RENDER_READ_IMAGE, err, sizeof err) != 0)
+            fail_msg("%s: %s", what, err);
+        print_message("%s: %ld pass(es) for the image, %ld with the sky stage\n", what, image.passes,
+                      both.res.passes);
+        assert_memory_equal(image.rgba, both.res.rgba, (size_t)W * H * 4);
+        /* one pass for the image where the path writes two targets in one (MRT): the sky stage's is gone */
+        assert_true(image.passes < both.res.passes);
+        render_result_free(&image);
+        /* the rays' state, read after the image alone: traced again, the same */
+        if (renderer_read(r, &colour.res, RENDER_READ_STATE, err, sizeof err) != 0)
+            fail_msg("%s: %s", what, err);
+        assert_same_rays(&colour, &both, what);
+        renderer_destroy(r);
+        count_outcomes(&both, seen);
+        render_result_free(&colour.res);
+        hc_gpu_free(&both);
+    }
+    print_message("outcomes compared: %ld object, %ld sky, %ld captured, %ld unfinished, %ld failed\n", seen[0],
+                  seen[1], seen[2], seen[3], seen[4]);
+    for (int o = 0; o < 5; o++)
+        assert_true(seen[o] > 0);
+}
+
 /* A copy of shaders_es/ in a fresh directory with CHECK_EVERY_STEP defined in the integration
  * stage: every step checked, as the scheme states it. */
 static void shaders_checking_every_step(char *dir, size_t len)
@@ -566,6 +632,7 @@ int main(void)
         cmocka_unit_test(test_unrolling_is_exact),
         cmocka_unit_test(test_single_pass_is_exact),
         cmocka_unit_test(test_single_pass_many_objects),
+        cmocka_unit_test(test_frame_colour_is_exact),
         cmocka_unit_test(test_unchecked_steps_are_exact),
         cmocka_unit_test(test_step_doubling_adapts),
         cmocka_unit_test(test_embedded_pair),
