@@ -4,7 +4,7 @@
  * another console is in front, frames are drawn but not shown; back in front, the mode is set
  * again and the next frame shows. */
 #include "display/screen.h"
-#include "display/screen_egl.h"
+#include "gl/egl.h"
 #include "display/vt_switch.h"
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -354,7 +354,7 @@ static int kms_present(struct screen *s, char *err, size_t errlen)
     /* A flip that timed out last time may have completed since: its buffer is needed back. */
     if (k->flip_bo && wait_flip(k, err, errlen) != 0)
         return -1;
-    if (screen_egl_swap(s->gl, err, errlen) != 0)
+    if (egl_swap(s->gl, err, errlen) != 0)
         return -1;
     struct gbm_bo *bo = gbm_surface_lock_front_buffer(k->surface);
     if (!bo) {
@@ -498,19 +498,19 @@ static int config_for_format(EGLDisplay dpy, uint32_t format, EGLConfig *out)
  * the caller's close frees what was made. */
 static int init_egl_gbm(struct screen *s, struct kms *k, char *err, size_t errlen)
 {
-    static const struct screen_egl_platform gbm = {EGL_PLATFORM_GBM_KHR, "GBM", "GBM", "EGL_KHR_platform_gbm",
-                                                   "EGL_MESA_platform_gbm"};
+    static const struct egl_platform gbm = {EGL_PLATFORM_GBM_KHR, "GBM", "GBM", "EGL_KHR_platform_gbm",
+                                            "EGL_MESA_platform_gbm", "install Mesa's EGL (libegl-mesa0)"};
     char version_label[48];
     snprintf(version_label, sizeof version_label, "GBM, %.32s", k->path);
-    s->gl = screen_egl_open(&gbm, k->gbm, k->path, version_label, err, errlen);
+    s->gl = egl_open(&gbm, k->gbm, k->path, version_label, err, errlen);
     if (!s->gl)
         return -1;
     EGLConfig config;
-    if (config_for_format(screen_egl_display(s->gl), GBM_FORMAT_XRGB8888, &config) != 0) {
+    if (config_for_format(egl_display(s->gl), GBM_FORMAT_XRGB8888, &config) != 0) {
         say(err, errlen, "%s: no EGL config renders XRGB8888 for scan-out", k->path);
         return -1;
     }
-    return screen_egl_attach(s->gl, config, k->surface, err, errlen);
+    return egl_attach_window(s->gl, config, k->surface, err, errlen);
 }
 
 struct screen *screen_open_kms(const struct kiosk_display *d, char *err, size_t errlen)

@@ -3,7 +3,7 @@
  * stops the kiosk. */
 #include "display/screen.h"
 #include "input/keymap.h"
-#include "display/screen_egl.h"
+#include "gl/egl.h"
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <X11/Xlib.h>
@@ -114,11 +114,11 @@ static int x11_events(struct screen *s, double now, struct input_event *out, int
 
 static int x11_present(struct screen *s, char *err, size_t errlen)
 {
-    return screen_egl_swap(s->gl, err, errlen);
+    return egl_swap(s->gl, err, errlen);
 }
 
 /* The window in the visual of the EGL config, an ES2 context current on it. The window is made
- * here, between the two steps of screen_egl.h, because its visual comes from the config. On
+ * here, between the two steps of gl/egl.h, because its visual comes from the config. On
  * failure the caller's close frees the context and the window. */
 /* What an exhibit's window is: fullscreen (EWMH's _NET_WM_STATE_FULLSCREEN, asked before it is
  * mapped; the compositor letterboxes the frame into whatever size the window manager gives it),
@@ -161,7 +161,7 @@ static void exhibit_window(Display *dpy, Window window, int width, int height)
 static int attach_window(struct screen *s, struct x11_window *w, int vsync, char *err, size_t errlen)
 {
     int width = s->width, height = s->height;
-    EGLDisplay display = screen_egl_display(s->gl);
+    EGLDisplay display = egl_display(s->gl);
     static const EGLint config_attribs[] = {EGL_SURFACE_TYPE, EGL_WINDOW_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8,
                                             EGL_BLUE_SIZE, 8, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT, EGL_NONE};
     EGLConfig config = NULL;
@@ -202,7 +202,7 @@ static int attach_window(struct screen *s, struct x11_window *w, int vsync, char
     exhibit_window(w->dpy, w->window, width, height);
     XSetWMProtocols(w->dpy, w->window, &w->wm_delete_window, 1);
     XMapWindow(w->dpy, w->window);
-    if (screen_egl_attach(s->gl, config, &w->window, err, errlen) != 0)
+    if (egl_attach_window(s->gl, config, &w->window, err, errlen) != 0)
         return -1;
     /* Advisory: a server without vertical blank (Xvfb) may refuse it, and frames still show. */
     eglSwapInterval(display, vsync ? 1 : 0);
@@ -242,9 +242,9 @@ struct screen *screen_open_x11(const struct kiosk_display *d, int width, int hei
     }
     w->wm_protocols = XInternAtom(w->dpy, "WM_PROTOCOLS", False);
     w->wm_delete_window = XInternAtom(w->dpy, "WM_DELETE_WINDOW", False);
-    static const struct screen_egl_platform x11 = {EGL_PLATFORM_X11_KHR, "X11", "the X display",
-                                                   "EGL_KHR_platform_x11", "EGL_EXT_platform_x11"};
-    s->gl = screen_egl_open(&x11, w->dpy, "x11", "X11", err, errlen);
+    static const struct egl_platform x11 = {EGL_PLATFORM_X11_KHR, "X11", "the X display", "EGL_KHR_platform_x11",
+                                            "EGL_EXT_platform_x11", "install Mesa's EGL (libegl-mesa0)"};
+    s->gl = egl_open(&x11, w->dpy, "x11", "X11", err, errlen);
     if (!s->gl || attach_window(s, w, d->vsync, err, errlen) != 0) {
         x11_close(s);
         return NULL;

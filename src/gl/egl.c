@@ -1,6 +1,6 @@
 /* The context owns the EGL display, context and surface, so that each screen's close frees them
  * with ctx->destroy() before the window or the GBM surface they draw into. */
-#include "display/screen_egl.h"
+#include "gl/egl.h"
 #include "gl/caps.h"
 #include "gl/gl_api.h"
 #include <EGL/eglext.h>
@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-struct screen_egl {
+struct egl_state {
     EGLDisplay display;
     EGLContext context;
     EGLSurface surface;
@@ -16,7 +16,7 @@ struct screen_egl {
     const char *who;
 };
 
-static void *screen_egl_get_proc(const char *name)
+static void *egl_get_proc(const char *name)
 {
     void *p;
     __eglMustCastToProperFunctionPointerType f = eglGetProcAddress(name);
@@ -24,9 +24,9 @@ static void *screen_egl_get_proc(const char *name)
     return p;
 }
 
-static void screen_egl_destroy(struct gl_context *ctx)
+static void egl_destroy(struct gl_context *ctx)
 {
-    struct screen_egl *egl = ctx->priv;
+    struct egl_state *egl = ctx->priv;
     if (egl) {
         if (egl->display != EGL_NO_DISPLAY) {
             eglMakeCurrent(egl->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
@@ -41,14 +41,13 @@ static void screen_egl_destroy(struct gl_context *ctx)
     free(ctx);
 }
 
-struct gl_context *screen_egl_open(const struct screen_egl_platform *p, void *native_display, const char *who,
-                                   const char *version_label, char *err, size_t errlen)
+struct gl_context *egl_open(const struct egl_platform *p, void *native_display, const char *who,
+                            const char *version_label, char *err, size_t errlen)
 {
     const char *client_ext = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (!client_ext || !(extension_list_has(client_ext, p->extension) ||
-                         extension_list_has(client_ext, p->other_extension))) {
-        snprintf(err, errlen, "%s: EGL has no %s platform (%s); install Mesa's EGL (libegl-mesa0)", who, p->name,
-                 p->extension);
+                         (p->other_extension && extension_list_has(client_ext, p->other_extension)))) {
+        snprintf(err, errlen, "%s: EGL has no %s platform (%s); %s", who, p->name, p->extension, p->install_hint);
         return NULL;
     }
     PFNEGLGETPLATFORMDISPLAYEXTPROC get_platform_display =
@@ -60,7 +59,7 @@ struct gl_context *screen_egl_open(const struct screen_egl_platform *p, void *na
         return NULL;
     }
     struct gl_context *ctx = calloc(1, sizeof *ctx);
-    struct screen_egl *egl = calloc(1, sizeof *egl);
+    struct egl_state *egl = calloc(1, sizeof *egl);
     if (!ctx || !egl) {
         free(ctx);
         free(egl);
@@ -75,8 +74,8 @@ struct gl_context *screen_egl_open(const struct screen_egl_platform *p, void *na
     ctx->backend = "egl";
     ctx->dialect = DIALECT_GLSL_ES_100;
     ctx->is_es = 1;
-    ctx->get_proc = screen_egl_get_proc;
-    ctx->destroy = screen_egl_destroy;
+    ctx->get_proc = egl_get_proc;
+    ctx->destroy = egl_destroy;
     ctx->priv = egl;
 
     EGLint major = 0, minor = 0;
@@ -95,24 +94,20 @@ struct gl_context *screen_egl_open(const struct screen_egl_platform *p, void *na
     return ctx;
 
 fail:
-    screen_egl_destroy(ctx);
+    egl_destroy(ctx);
     return NULL;
 }
 
-EGLDisplay screen_egl_display(const struct gl_context *ctx)
+EGLDisplay egl_display(const struct gl_context *ctx)
 {
-    const struct screen_egl *egl = ctx->priv;
+    const struct egl_state *egl = ctx->priv;
     return egl->display;
 }
 
-int screen_egl_attach(struct gl_context *ctx, EGLConfig config, void *native_window, char *err, size_t errlen)
+/* An ES2 context in config, current on the state's surface (or none), the GL entry points loaded. */
+static int make_current(struct gl_context *ctx, EGLConfig config, const char *on_what, char *err, size_t errlen)
 {
-    struct screen_egl *egl = ctx->priv;
-    egl->surface = egl->create_window_surface(egl->display, config, native_window, NULL);
-    if (egl->surface == EGL_NO_SURFACE) {
-        snprintf(err, errlen, "%s: cannot create an EGL window surface (EGL error 0x%x)", egl->who, eglGetError());
-        return -1;
-    }
+    struct egl_state *egl = ctx->priv;
     /* Drivers may give a higher compatible version than ES2 (llvmpipe gives 3.2). */
     static const EGLint ctx_attribs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
     egl->context = eglCreateContext(egl->display, config, EGL_NO_CONTEXT, ctx_attribs);
@@ -122,7 +117,7 @@ int screen_egl_attach(struct gl_context *ctx, EGLConfig config, void *native_win
         return -1;
     }
     if (!eglMakeCurrent(egl->display, egl->surface, egl->surface, egl->context)) {
-        snprintf(err, errlen, "%s: cannot make the context current on the window (EGL error 0x%x)", egl->who,
+        snprintf(err, errlen, "%s: cannot make the context current %s (EGL error 0x%x)", egl->who, on_what,
                  eglGetError());
         return -1;
     }
@@ -135,9 +130,30 @@ int screen_egl_attach(struct gl_context *ctx, EGLConfig config, void *native_win
     return 0;
 }
 
-int screen_egl_swap(struct gl_context *ctx, char *err, size_t errlen)
+int egl_attach_window(struct gl_context *ctx, EGLConfig config, void *native_window, char *err, size_t errlen)
 {
-    struct screen_egl *egl = ctx->priv;
+    struct egl_state *egl = ctx->priv;
+    egl->surface = egl->create_window_surface(egl->display, config, native_window, NULL);
+    if (egl->surface == EGL_NO_SURFACE) {
+        snprintf(err, errlen, "%s: cannot create an EGL window surface (EGL error 0x%x)", egl->who, eglGetError());
+        return -1;
+    }
+    return make_current(ctx, config, "on the window", err, errlen);
+}
+
+int egl_attach_surfaceless(struct gl_context *ctx, EGLConfig config, char *err, size_t errlen)
+{
+    struct egl_state *egl = ctx->priv;
+    if (!extension_list_has(eglQueryString(egl->display, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context")) {
+        snprintf(err, errlen, "%s: EGL_KHR_surfaceless_context is missing", egl->who);
+        return -1;
+    }
+    return make_current(ctx, config, "without a surface", err, errlen);
+}
+
+int egl_swap(struct gl_context *ctx, char *err, size_t errlen)
+{
+    struct egl_state *egl = ctx->priv;
     if (!eglSwapBuffers(egl->display, egl->surface)) {
         snprintf(err, errlen, "%s: eglSwapBuffers failed (EGL error 0x%x)", egl->who, eglGetError());
         return -1;
