@@ -208,7 +208,7 @@ static int frame_scene(const struct animation *a, const struct scene *base, int 
 {
     *s = *base;
     *n_sets = frame_sets(a, base, k, sets);
-    struct scene_error err;
+    struct conf_error err;
     for (int i = 0; i < *n_sets; i++)
         if (scene_set(s, sets[i], &err) != 0) {
             fprintf(stderr, "bentray animate: frame %d: %s: error: %s\n", k + 1, err.where, err.message);

@@ -207,7 +207,7 @@ static int check_engine_options(const struct common_options *o, const char *cmd)
 
 int options_load_scene(const struct common_options *o, const char *cmd, struct scene *s)
 {
-    struct scene_error err;
+    struct conf_error err;
     if (check_engine_options(o, cmd) != 0)
         return EXIT_USAGE;
     if (!o->scene_path) {

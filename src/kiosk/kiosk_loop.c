@@ -213,7 +213,7 @@ static void notice(struct kiosk *k, const char *what, const char *why)
 static int take_state(struct kiosk *k, const struct kiosk_state *proposed)
 {
     static struct scene trial;
-    struct scene_error serr;
+    struct conf_error serr;
     if (kiosk_state_apply(proposed, &k->scenes[proposed->scene], &trial, &serr) == 0) {
         k->state = *proposed;
         return 1;
@@ -467,7 +467,7 @@ static int preflight(struct kiosk *k, char *err, size_t errlen)
         return -1;
     }
     for (int i = 0; i < c->kiosk.n_scenes; i++) {
-        struct scene_error serr;
+        struct conf_error serr;
         if (scene_load(&k->scenes[i], c->kiosk.scenes[i], &serr) != 0) {
             snprintf(err, errlen, "%s: %s", serr.where, serr.message);
             return -1;

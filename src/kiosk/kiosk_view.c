@@ -35,7 +35,7 @@ int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *b
     renderer_destroy(v->renderer);
     v->renderer = NULL;
     v->scene_index = -1;
-    struct scene_error serr;
+    struct conf_error serr;
     if (base) {
         v->base = *base;
     } else if (scene_load(&v->base, v->cfg->kiosk.scenes[scene_index], &serr) != 0) {
@@ -146,7 +146,7 @@ static int preview_tile(struct kiosk_view *v, char *err, size_t errlen)
 
 int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char *err, size_t errlen)
 {
-    struct scene_error serr;
+    struct conf_error serr;
     if (kiosk_state_apply(st, &v->base, &v->full, &serr) != 0) {
         snprintf(err, errlen, "%s: %s", serr.where, serr.message);
         return -1;

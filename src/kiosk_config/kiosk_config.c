@@ -117,7 +117,7 @@ static const struct conf_schema kiosk_schema = {
 };
 
 __attribute__((format(printf, 4, 5)))
-static int fail(struct kiosk_config_error *err, const char *path, int line, const char *fmt, ...)
+static int fail(struct conf_error *err, const char *path, int line, const char *fmt, ...)
 {
     va_list ap;
     snprintf(err->where, sizeof err->where, "%s:%d", path, line);
@@ -140,7 +140,7 @@ static void set_dir(struct kiosk_config *c, const char *path)
 
 /* What can only be settled once the whole file is read: start_scene may come before scenes, and a
  * knob's start follows its min unless given. */
-static int finish_file(struct kiosk_config *c, struct kiosk_config_error *err)
+static int finish_file(struct kiosk_config *c, struct conf_error *err)
 {
     const char *want = c->kiosk.start_scene_name;
     int line = kiosk_key_line(c, KSEC_KIOSK, 0, "start_scene");
@@ -170,7 +170,7 @@ static int finish_file(struct kiosk_config *c, struct kiosk_config_error *err)
     return 0;
 }
 
-int kiosk_config_load(struct kiosk_config *c, const char *path, struct kiosk_config_error *err)
+int kiosk_config_load(struct kiosk_config *c, const char *path, struct conf_error *err)
 {
     size_t path_len = strlen(path);
 
@@ -185,12 +185,8 @@ int kiosk_config_load(struct kiosk_config *c, const char *path, struct kiosk_con
     memcpy(c->path, path, path_len + 1);
     set_dir(c, path);
 
-    struct conf_error e;
-    if (conf_read(path, &kiosk_schema, c, &e) != 0) {
-        snprintf(err->where, sizeof err->where, "%s", e.where);
-        snprintf(err->message, sizeof err->message, "%s", e.message);
+    if (conf_read(path, &kiosk_schema, c, err) != 0)
         return -1;
-    }
     memcpy(err->where, path, path_len + 1);
     return finish_file(c, err);
 }

@@ -5,6 +5,7 @@
 #ifndef BT_KIOSK_CONFIG_H
 #define BT_KIOSK_CONFIG_H
 #include <stdint.h>
+#include "conf/conf_reader.h"
 #include "display/display_settings.h"
 #include "input/input_settings.h"
 
@@ -99,18 +100,14 @@ struct kiosk_config {
 };
 
 /* where: "FILE:LINE", or FILE alone for a problem with the whole file. */
-struct kiosk_config_error {
-    char where[600];
-    char message[512];
-};
 
 void kiosk_config_defaults(struct kiosk_config *c);
 /* Defaults, then the file at PATH. 0, or -1 with the first error in ERR. Values are checked one
  * by one here; call kiosk_config_check() for what involves several keys. */
-int kiosk_config_load(struct kiosk_config *c, const char *path, struct kiosk_config_error *err);
+int kiosk_config_load(struct kiosk_config *c, const char *path, struct conf_error *err);
 /* Checks across keys and sections: references between sections, one knob's range and start,
  * frame sizes, an input's settings against its type and its use. 0, or -1 with ERR. */
-int kiosk_config_check(const struct kiosk_config *c, struct kiosk_config_error *err);
+int kiosk_config_check(const struct kiosk_config *c, struct conf_error *err);
 
 /* The input called NAME, NULL if there is none. */
 const struct kiosk_input *kiosk_config_input(const struct kiosk_config *c, const char *name);

@@ -117,7 +117,7 @@ static void split_path(struct scene *s, const char *path)
         snprintf(s->name, sizeof s->name, "%.*s", (int)base_len, base);
 }
 
-int scene_load(struct scene *s, const char *path, struct scene_error *err)
+int scene_load(struct scene *s, const char *path, struct conf_error *err)
 {
     size_t path_len = strlen(path);
 
@@ -133,12 +133,8 @@ int scene_load(struct scene *s, const char *path, struct scene_error *err)
     memcpy(s->path, path, path_len + 1);
     split_path(s, path);
 
-    struct conf_error e;
-    if (conf_read(path, &scene_schema, s, &e) != 0) {
-        snprintf(err->where, sizeof err->where, "%.*s", (int)sizeof err->where - 1, e.where);
-        snprintf(err->message, sizeof err->message, "%s", e.message);
+    if (conf_read(path, &scene_schema, s, err) != 0)
         return -1;
-    }
     memcpy(err->where, path, path_len + 1);
     return scene_kiosk_validate(s, err);
 }
@@ -160,7 +156,7 @@ static int find_instance(const struct scene *s, enum scene_section_kind kind, co
 }
 
 __attribute__((format(printf, 2, 3)))
-static int set_fail(struct scene_error *err, const char *fmt, ...)
+static int set_fail(struct conf_error *err, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
@@ -169,7 +165,7 @@ static int set_fail(struct scene_error *err, const char *fmt, ...)
     return -1;
 }
 
-int scene_set(struct scene *s, const char *assignment, struct scene_error *err)
+int scene_set(struct scene *s, const char *assignment, struct conf_error *err)
 {
     char path[128], *section, *key, *name = NULL, *dot;
     char *value;

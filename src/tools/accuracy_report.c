@@ -164,7 +164,7 @@ static int report_scene(FILE *f, const char *path, int width, int height, char *
                         size_t device_len)
 {
     static struct scene base, s;
-    struct scene_error serr;
+    struct conf_error serr;
     char err[2048];
     if (scene_load(&base, path, &serr) != 0) {
         fprintf(stderr, "%s: error: %s\n", serr.where, serr.message);
@@ -191,7 +191,7 @@ static int report_scene(FILE *f, const char *path, int width, int height, char *
         if (!vary(&s, v))
             continue;
         fprintf(stderr, "accuracy: %s: %s\n", base.name, variation_names[v]);
-        struct scene_error verr;
+        struct conf_error verr;
         if (scene_validate(&s, &verr) != 0) {
             fprintf(stderr, "%s (%s): %s\n", path, variation_names[v], verr.message);
             rc = -1;

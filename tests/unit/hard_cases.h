@@ -44,7 +44,7 @@ static inline void hc_load(struct scene *s, const char *name, int width, int hei
 
 static inline void hc_validate(const struct scene *s)
 {
-    struct scene_error err;
+    struct conf_error err;
     if (scene_validate(s, &err) != 0)
         fail_msg("%s: %s", err.where, err.message);
 }

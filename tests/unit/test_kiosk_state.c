@@ -16,7 +16,7 @@ static struct kiosk_config config;
 
 static void load_example(void)
 {
-    struct kiosk_config_error e;
+    struct conf_error e;
     if (kiosk_config_load(&config, "kiosk/kiosk.conf", &e) != 0 || kiosk_config_check(&config, &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
 }
@@ -104,7 +104,7 @@ static void test_apply(void **state)
     hc_load(&base, "schwarzschild", 16, 12, NULL);
     base.kiosk.mass.key[0] = '\0';                 /* a black hole without [kiosk]: the knob sets its mass */
     struct kiosk_state st = {.speed = 0.6, .mass = 0.5, .effects = EFFECTS_GEOMETRY};
-    struct scene_error e;
+    struct conf_error e;
     assert_int_equal(kiosk_state_apply(&st, &base, &out, &e), 0);
     vec3d view = v3_normalize(v3_sub(base.camera.look_at, base.camera.position));
     assert_true(fabs(v3_len(out.observer.velocity) - 0.6) <= 1e-12);
@@ -201,7 +201,7 @@ static void test_renderer_follows_the_scene(void **state)
         {.speed = 0.8, .mass = 0.3, .effects = EFFECTS_SEARCHLIGHT},
         {.speed = 0.0, .mass = 0.12, .effects = EFFECTS_GEOMETRY},
     };
-    struct scene_error e;
+    struct conf_error e;
     char err[2048];
     int bad;
     struct renderer *r = renderer_create(hc_context(), &live, err, sizeof err, &bad);
@@ -235,7 +235,7 @@ static void test_knobs_mapped_to_scene_keys(void **state)
     (void)state;
     load_example();
     static struct scene lorenz, out;
-    struct scene_error e;
+    struct conf_error e;
     if (scene_load(&lorenz, "assets/scenes/lorenz.scene", &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     assert_string_equal(lorenz.kiosk.mass.key, "model.rho");

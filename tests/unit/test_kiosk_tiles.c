@@ -42,7 +42,7 @@ static void test_tiled_preview(void **state)
 {
     (void)state;
     static struct kiosk_config c;
-    struct kiosk_config_error e;
+    struct conf_error e;
     if (kiosk_config_load(&c, "kiosk/kiosk.conf", &e) != 0 || kiosk_config_check(&c, &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     c.kiosk.preview_width = 32;
@@ -55,7 +55,7 @@ static void test_tiled_preview(void **state)
             scene = i;
     assert_true(scene >= 0);
     static struct scene base;
-    struct scene_error se;
+    struct conf_error se;
     assert_int_equal(scene_load(&base, c.kiosk.scenes[scene], &se), 0);
     base.render.max_path *= 400.0;
     assert_int_equal(scene_validate(&base, &se), 0);

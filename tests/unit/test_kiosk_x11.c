@@ -144,7 +144,7 @@ static void write_kiosk_files(void)
              headless_events);
     write_file(config_path, text);
 
-    struct kiosk_config_error e;
+    struct conf_error e;
     if (kiosk_config_load(&headless_config, config_path, &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     if (kiosk_config_check(&headless_config, &e) != 0)
@@ -450,7 +450,7 @@ static void test_window_shows_the_hud(void **state)
     kiosk_state_reset(&st, &headless_config);
     st.speed = knob_turn(&headless_config.speed, st.speed, TURN_COUNTS);
     static struct scene base, drawn;
-    struct scene_error e;
+    struct conf_error e;
     if (scene_load(&base, headless_config.kiosk.scenes[st.scene], &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     base.render.width = FRAME_WIDTH;

@@ -154,7 +154,7 @@ static void star_scene(struct scene *s, int width, int height, vec3d velocity)
         "model.type=flat", "camera.position=0 0 0", "camera.look_at=0 0 -1", "camera.fov=60",
         "sky.color=0 0 0", "sky.stars=400", "sky.star_seed=11", "sky.star_size=0.8",
         "sky.star_brightness=0.01", "render.bound_radius=10", NULL};
-    struct scene_error err;
+    struct conf_error err;
     for (int i = 0; sets[i]; i++)
         if (scene_set(s, sets[i], &err) != 0)
             fail_msg("%s: %s", err.where, err.message);
@@ -321,7 +321,7 @@ static void test_lensed_star(void **state)
     const char *const fixed[] = {"model.type=schwarzschild", "model.mass=1", "camera.position=0 0 0",
                                  "render.method=orbit_table", "render.bound_radius=1e7", "sky.color=0 0 0",
                                  "sky.stars=1", "sky.star_size=0.8", NULL};
-    struct scene_error err;
+    struct conf_error err;
     for (int i = 0; fixed[i]; i++)
         if (scene_set(&s, fixed[i], &err) != 0)
             fail_msg("%s: %s", err.where, err.message);
