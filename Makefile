@@ -215,24 +215,14 @@ FUZZ_DIR      := $(BUILD)/fuzz
 # -fno-sanitize-recover: undefined behaviour stops the run, so that libFuzzer keeps the input
 FUZZ_CFLAGS   := -std=c11 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -Wshadow -Wstrict-prototypes \
                  -Isrc -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined \
-                 -fno-omit-frame-pointer $(shell pkg-config --cflags inih libpng egl 2>/dev/null)
-FUZZ_LIBS     := $(shell pkg-config --libs inih 2>/dev/null) -lm
-# Only what each harness calls: no GL code, no PNG reading. The loaders share src/io/text_file.c,
-# the two configuration files src/conf/conf_reader.c, and what they check of an image its
-# header (src/io/png_header.c, no libpng).
-FUZZ_SRCS_text         := $(wildcard src/io/text_file.c)
-FUZZ_SRCS_conf         := $(FUZZ_SRCS_text) src/conf/conf_reader.c src/conf/conf_value.c src/io/png_header.c
-FUZZ_SRCS_scene        := $(FUZZ_SRCS_conf) src/scene/scene_defaults.c src/scene/scene_keys.c \
-                          src/scene/scene_load.c src/scene/scene_validate.c src/physics/model.c \
-                          src/physics/relativity.c
-FUZZ_SRCS_kiosk_config := $(FUZZ_SRCS_conf) src/kiosk_config/kiosk_config.c src/kiosk_config/kiosk_config_check.c \
-                          src/kiosk_config/kiosk_config_keys.c src/kiosk_config/kiosk_config_paths.c \
-                          src/kiosk_config/kiosk_config_values.c src/input/hid_report.c src/input/quadrature.c \
-                          src/input/debounce.c src/input/input_hid_decode.c src/input/input_event.c
-FUZZ_SRCS_dump         := $(FUZZ_SRCS_text) src/io/output_file.c src/results/dump.c
-FUZZ_SRCS_hid          := src/input/hid_report.c
-FUZZ_SRCS_gpio         := src/input/quadrature.c src/input/debounce.c src/input/event_merge.c
-FUZZ_SRCS_script       := $(FUZZ_SRCS_text) src/input/script.c src/input/script_player.c
+                 -fno-omit-frame-pointer $(shell pkg-config --cflags inih libpng egl hidapi-libusb libgpiod 2>/dev/null)
+FUZZ_LIBS     := $(shell pkg-config --libs inih libpng hidapi-libusb libgpiod 2>/dev/null) -lm
+# The harnesses link one library of the modules below the GL code (docs/ARCHITECTURE.md: io, conf,
+# physics, scene, results, input, kiosk_config), built with the sanitizers; each takes from it
+# only the objects it calls, so no harness keeps a list of source files.
+FUZZ_LIB_MODULES := io conf physics scene results input kiosk_config
+FUZZ_LIB_SRCS := $(foreach m,$(FUZZ_LIB_MODULES),$(filter src/$(m)/%,$(LIB_SRCS)))
+FUZZ_LIB      := $(FUZZ_DIR)/libbentray_fuzz.a
 FUZZ_BINS     := $(FUZZ_TARGETS:%=$(FUZZ_DIR)/fuzz_%)
 # Where the harnesses write their input as a file: from tree/scenes, a scene's ../textures and
 # ../sky, and from tree/kiosk, the configuration's ../assets, are the project's, as from
@@ -248,12 +238,13 @@ $(FUZZ_DIR)/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link -MMD -MP -c -o $@ $<
 
-define FUZZ_HARNESS
-$(FUZZ_DIR)/fuzz_$(1): tests/fuzz/fuzz_$(1).c $(FUZZ_SRCS_$(1):%.c=$(FUZZ_DIR)/%.o)
-	@mkdir -p $$(dir $$@)
-	$$(FUZZ_CC) $$(FUZZ_CFLAGS) -fsanitize=fuzzer -MMD -MP -MF $$@.d -o $$@ $$< $$(filter %.o,$$^) $$(FUZZ_LIBS)
-endef
-$(foreach t,$(FUZZ_TARGETS),$(eval $(call FUZZ_HARNESS,$(t))))
+$(FUZZ_LIB): $(FUZZ_LIB_SRCS:%.c=$(FUZZ_DIR)/%.o)
+	@rm -f $@
+	$(AR) rcs $@ $^
+
+$(FUZZ_DIR)/fuzz_%: tests/fuzz/fuzz_%.c $(FUZZ_LIB)
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer -MMD -MP -MF $@.d -o $@ $< $(FUZZ_LIB) $(FUZZ_LIBS)
 
 fuzz-build: $(FUZZ_BINS)
 

@@ -102,7 +102,8 @@ failed=$(awk -F'|' '$4 != 0' "$work/run" | wc -l | tr -d ' ')
     echo
     echo "The kiosk runs unattended and reads files that exhibition staff edit (scene files, the kiosk"
     echo "configuration) and whatever its knobs send. Each reader of such input has a libFuzzer harness"
-    echo "(\`tests/fuzz/fuzz_TARGET.c\`), built with clang under AddressSanitizer and"
+    echo "(\`tests/fuzz/fuzz_TARGET.c\`, its name in the Makefile's FUZZ_TARGETS; it links what it calls"
+    echo "from one library of the modules below the GL code), built with clang under AddressSanitizer and"
     echo "UndefinedBehaviorSanitizer (undefined behaviour stops the run); a run fails on a crash, a"
     echo "sanitizer report, a leak, an input slower than 10 s, more than 2 GB asked for at once, or a"
     echo "broken invariant of the harness (\`__builtin_trap()\`). \`make fuzz FUZZ_SECONDS=N\` runs each"
