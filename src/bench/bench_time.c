@@ -43,7 +43,7 @@ int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_ti
     renderer_set_reads(r, RENDER_READ_IMAGE);
     int rc = 0;
     for (int k = 0; k <= runs && rc == 0; k++) {
-        rc = renderer_run(r, 0, 0, s->render.width, s->render.height, NULL, NULL, err, errlen);
+        rc = renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, err, errlen);
         struct render_result res;
         if (rc == 0 && k > 0)
             rc = renderer_read(r, &res, d && k == runs, err, errlen);

@@ -115,7 +115,7 @@ static int trace_gpu(const struct common_options *o, const struct scene *s, long
         fprintf(stderr, "bentray trace: note: the polyline needs the end of every segment, so trace runs the "
                 "multipass scheme (render.pipeline = single applies to render)\n");
     int gl_row = s->render.height - 1 - (int)py;
-    if (r && renderer_run(r, (int)px, gl_row, 1, 1, record_point, pl, err, sizeof err) == 0 &&
+    if (r && renderer_run(r, s, (int)px, gl_row, 1, 1, record_point, pl, err, sizeof err) == 0 &&
         renderer_read(r, &res, 1, err, sizeof err) == 0) {
         struct dump d;
         if (result_to_dump(&res, s, "gpu", &d) == 0) {

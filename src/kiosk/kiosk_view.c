@@ -121,7 +121,7 @@ static int run_tile(struct kiosk_view *v, const struct kiosk_tiles *t, int *x0, 
                     GLuint *image, char *err, size_t errlen)
 {
     tile_at(t, t->next, x0, y0, w, h);
-    if (renderer_run(v->renderer, *x0, *y0, t->tile_width, t->tile_height, NULL, NULL, err, errlen) != 0)
+    if (renderer_run(v->renderer, &v->live, *x0, *y0, t->tile_width, t->tile_height, NULL, NULL, err, errlen) != 0)
         return -1;
     struct renderer_textures tex;
     renderer_textures(v->renderer, &tex);
@@ -165,7 +165,7 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char 
     if (v->preview.count > 1)
         return preview_tile(v, err, errlen);
     v->preview.next = v->preview.count;
-    if (renderer_run(v->renderer, 0, 0, k->preview_width, k->preview_height, NULL, NULL, err, errlen) != 0)
+    if (renderer_run(v->renderer, &v->live, 0, 0, k->preview_width, k->preview_height, NULL, NULL, err, errlen) != 0)
         return -1;
     struct renderer_textures t;
     /* the pipeline view shows every ray's final state, which a single-pass frame writes on demand */
@@ -202,7 +202,7 @@ int kiosk_view_refine(struct kiosk_view *v, char *err, size_t errlen)
         /* whole bands: every band has the same size, so the ray state is made once per refinement;
          * the last one may trace rows above the frame, which are not shown */
         int y0 = v->refined_rows;
-        if (renderer_run(v->renderer, 0, y0, k->width, t->tile_height, NULL, NULL, err, errlen) != 0)
+        if (renderer_run(v->renderer, &v->live, 0, y0, k->width, t->tile_height, NULL, NULL, err, errlen) != 0)
             return -1;
         struct renderer_textures tex;
         renderer_textures(v->renderer, &tex);

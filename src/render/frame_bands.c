@@ -33,7 +33,7 @@ static int run_rows(struct renderer *r, const struct scene *s, int top, int rows
     int w = s->render.width, h = s->render.height;
     struct render_result band;
     memset(&band, 0, sizeof band);
-    if (renderer_run(r, 0, h - top - rows, w, rows, NULL, NULL, err, errlen) != 0 ||
+    if (renderer_run(r, s, 0, h - top - rows, w, rows, NULL, NULL, err, errlen) != 0 ||
         renderer_read(r, &band, with_state, err, errlen) != 0) {
         render_result_free(&band);
         return -1;
@@ -73,7 +73,7 @@ int frame_run_image(struct renderer *r, const struct scene *s, double dx, double
     renderer_set_reads(r, with_state);
     if (!p || !p->banded) {
         memset(out, 0, sizeof *out);
-        rc = renderer_run(r, 0, 0, w, h, NULL, NULL, err, errlen) == 0 &&
+        rc = renderer_run(r, s, 0, 0, w, h, NULL, NULL, err, errlen) == 0 &&
                      renderer_read(r, out, with_state, err, errlen) == 0
                  ? 0 : -1;
     } else if ((rc = frame_alloc(out, w, h, with_state, renderer_hdr(r), err, errlen)) == 0) {

@@ -4,6 +4,7 @@
 #include "render/stages.h"
 #include <stdio.h>
 #include <stdlib.h>
+#include <stdint.h>
 #include <string.h>
 #include <time.h>
 
@@ -18,6 +19,26 @@ static double now_seconds(void)
  * integrated) or on, set the observer moving, or changed the effects between two frames. The
  * programs of every variant stay cached; only the black-body table is rebuilt when the tone
  * mapping changes. */
+static uint64_t fnv1a(uint64_t h, const void *bytes, size_t n)
+{
+    const unsigned char *c = bytes;
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ c[i]) * 1099511628211u;
+    return h;
+}
+
+/* What renderer_create loads of a scene, as one number: its objects' count, its textures and its
+ * sky (FNV-1a over them); a run's scene must have the same. */
+static uint64_t assets_key(const struct scene *s)
+{
+    int counts[3] = {s->n_objects, s->n_textures, (int)s->sky.type};
+    uint64_t h = fnv1a(14695981039346656037u, counts, sizeof counts);
+    h = fnv1a(h, s->sky.cubemap, strlen(s->sky.cubemap) + 1);
+    for (int i = 0; i < s->n_textures; i++)
+        h = fnv1a(h, s->textures[i], strlen(s->textures[i]) + 1);
+    return h;
+}
+
 static int renderer_follow_scene(struct renderer *r, char *err, size_t errlen)
 {
     const struct scene *scene = r->scene;
@@ -59,6 +80,7 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
         return NULL;
     }
     r->scene = scene;
+    r->assets_key = assets_key(scene);
     /* until a caller says it reads only the image, every run keeps its outcomes readable */
     r->reads = RENDER_READ_OUTCOMES;
     if (gl_caps_probe(&r->caps, ctx, err, errlen) != 0) {
@@ -140,9 +162,15 @@ void renderer_set_subpixel(struct renderer *r, double dx, double dy)
     r->subpixel_y = dy;
 }
 
-int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int height, segment_hook hook,
-                 void *hook_arg, char *err, size_t errlen)
+int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, int origin_y, int width, int height,
+                 segment_hook hook, void *hook_arg, char *err, size_t errlen)
 {
+    if (assets_key(scene) != r->assets_key) {
+        snprintf(err, errlen, "internal: a run of scene '%s' on the renderer made for '%s', whose objects, "
+                 "textures or sky it loaded: make a renderer for the new scene", scene->name, r->scene->name);
+        return -1;
+    }
+    r->scene = scene;
     const struct scene *s = r->scene;
     if (!r->have_state || r->rs.width != width || r->rs.height != height) {
         if (r->have_state)

@@ -35,10 +35,14 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
 const struct render_path *renderer_path(const struct renderer *r);
 const struct gl_caps *renderer_caps(const struct renderer *r);
 
-/* Trace the rays of a width x height block of image pixels whose lower-left pixel (GL order,
- * rows bottom-up) is (origin_x, origin_y); a full frame is (0, 0, scene width, scene height). */
-int renderer_run(struct renderer *r, int origin_x, int origin_y, int width, int height, segment_hook hook,
-                 void *hook_arg, char *err, size_t errlen);
+/* Trace the rays of scene through a width x height block of image pixels whose lower-left pixel
+ * (GL order, rows bottom-up) is (origin_x, origin_y); a full frame is (0, 0, scene width, scene
+ * height). scene is the one the renderer was made with, or one that differs from it in values
+ * only (the kiosk's knobs, a preview's size, steps and chords, the camera, the observer): the
+ * same objects, textures and sky, which renderer_create loaded (else -1 with err; a new scene
+ * takes a new renderer). It must stay valid until the next run; reads of this run follow it. */
+int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, int origin_y, int width, int height,
+                 segment_hook hook, void *hook_arg, char *err, size_t errlen);
 /* Where in its pixel every ray of the following runs starts: (dx, dy) pixels from the centre, GL
  * order (dy up), each in [-0.5, 0.5) (scene/pixel_samples.h); (0, 0) until set. */
 void renderer_set_subpixel(struct renderer *r, double dx, double dy);

@@ -1,6 +1,7 @@
 /* Internals shared by the stage files of the pipeline. */
 #ifndef BT_STAGES_H
 #define BT_STAGES_H
+#include <stdint.h>
 #include "render/programs.h"
 #include "render/raystate.h"
 #include "render/renderer.h"
@@ -17,7 +18,8 @@
 #define UNIT_ORBIT(r) ((r)->caps.max_texture_units - 1)
 
 struct renderer {
-    const struct scene *scene;
+    const struct scene *scene;    /* of the last run (renderer_run), first the one it was made for */
+    uint64_t assets_key;          /* what renderer_create loaded of it: objects, textures, sky */
     struct gl_caps caps;
     struct render_path path;
     struct program_cache programs;

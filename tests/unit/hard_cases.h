@@ -81,7 +81,7 @@ static inline void hc_gpu_render_hook(const struct scene *s, struct hc_gpu *g, s
     struct renderer *r = renderer_create(hc_context(), s, err, sizeof err, &bad);
     if (!r)
         fail_msg("renderer: %s", err);
-    if (renderer_run(r, 0, 0, s->render.width, s->render.height, hook, arg, err, sizeof err) != 0 ||
+    if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, hook, arg, err, sizeof err) != 0 ||
         renderer_read(r, &g->res, 1, err, sizeof err) != 0)
         fail_msg("render: %s", err);
     snprintf(g->path, sizeof g->path, "%s", renderer_path(r)->name);

@@ -335,7 +335,7 @@ static void test_frame_colour_is_exact(void **state)
         renderer_set_reads(r, RENDER_READ_IMAGE);
         struct hc_gpu colour;
         struct render_result image;
-        if (renderer_run(r, 0, 0, W, H, NULL, NULL, err, sizeof err) != 0 ||
+        if (renderer_run(r, &s, 0, 0, W, H, NULL, NULL, err, sizeof err) != 0 ||
             renderer_read(r, &image, RENDER_READ_IMAGE, err, sizeof err) != 0)
             fail_msg("%s: %s", what, err);
         print_message("%s: %ld pass(es) for the image, %ld with the sky stage\n", what, image.passes,

@@ -179,7 +179,7 @@ static unsigned char *shifted_image(const struct scene *s, double dx, double dy)
         fail_msg("renderer: %s", err);
     renderer_set_subpixel(r, dx, dy);
     struct render_result res;
-    if (renderer_run(r, 0, 0, s->render.width, s->render.height, NULL, NULL, err, sizeof err) != 0 ||
+    if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, err, sizeof err) != 0 ||
         renderer_read(r, &res, 0, err, sizeof err) != 0)
         fail_msg("render: %s", err);
     renderer_destroy(r);

@@ -23,7 +23,7 @@ static void whole_frame(const struct scene *s, int what, struct render_result *o
 {
     char err[2048];
     struct renderer *r = make_renderer(s);
-    if (renderer_run(r, 0, 0, s->render.width, s->render.height, NULL, NULL, err, sizeof err) != 0 ||
+    if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, err, sizeof err) != 0 ||
         renderer_read(r, out, what, err, sizeof err) != 0)
         fail_msg("render: %s", err);
     renderer_destroy(r);

@@ -214,7 +214,7 @@ static void test_renderer_follows_the_scene(void **state)
             assert_non_null(r);
         }
         struct render_result a;
-        if (renderer_run(r, 0, 0, W, H, NULL, NULL, err, sizeof err) != 0 || renderer_read(r, &a, 0, err, sizeof err))
+        if (renderer_run(r, &live, 0, 0, W, H, NULL, NULL, err, sizeof err) != 0 || renderer_read(r, &a, 0, err, sizeof err))
             fail_msg("%s", err);
         fresh = live;
         struct hc_gpu g;
@@ -224,6 +224,16 @@ static void test_renderer_follows_the_scene(void **state)
         render_result_free(&a);
         hc_gpu_free(&g);
     }
+    /* another scene's objects, textures or sky are not what this renderer loaded: refused, not drawn */
+    static struct scene other;
+    hc_load(&other, "neutron_star", W, H, NULL);
+    assert_int_equal(renderer_run(r, &other, 0, 0, W, H, NULL, NULL, err, sizeof err), -1);
+    assert_non_null(strstr(err, "make a renderer for the new scene"));
+    fresh = live;
+    fresh.n_objects--;
+    assert_int_equal(renderer_run(r, &fresh, 0, 0, W, H, NULL, NULL, err, sizeof err), -1);
+    /* the scene it follows still runs */
+    assert_int_equal(renderer_run(r, &live, 0, 0, W, H, NULL, NULL, err, sizeof err), 0);
     renderer_destroy(r);
 }
 

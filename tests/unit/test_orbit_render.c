@@ -356,7 +356,7 @@ static void test_needs_fp32(void **state)
     const char *how = renderer_path(r)->description;
     print_message("fp16 only: %s\n", how);
     assert_non_null(strstr(how, "integrated with rk4"));
-    assert_int_equal(renderer_run(r, 0, 0, 16, 12, NULL, NULL, err, sizeof err), 0);
+    assert_int_equal(renderer_run(r, &s, 0, 0, 16, 12, NULL, NULL, err, sizeof err), 0);
     /* integrated, and still in one pass: this context runs long fragment loops */
     assert_string_equal(renderer_pipeline(r), "single pass");
     renderer_destroy(r);
