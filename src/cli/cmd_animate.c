@@ -358,35 +358,42 @@ int cmd_animate(int argc, char **argv)
     /* the command line's own options for render, echoed in each frame's command */
     const char *echo[2 * OPTIONS_MAX_SETS + 64];
     int n_echo = 0;
+    enum { FRAMES, SET_RANGE, ORBIT, FPS, OUT, VIDEO, FORCE, QUIET };
+    static const struct option_spec specs[] = {
+        {"--frames", "N", FRAMES}, {"--set-range", "SECTION.KEY=A:B", SET_RANGE}, {"--orbit", "DEGREES", ORBIT},
+        {"--fps", "F", FPS},       {"--out", "DIR", OUT},                         {"--video", "FILE", VIDEO},
+        {"--force", NULL, FORCE},  {"--quiet", NULL, QUIET},                      {NULL, NULL, 0},
+    };
     for (int i = 1; i < argc; i++) {
         int first = i;
-        enum option_status c = options_common(&o, "animate", argc, argv, &i, usage);
-        if (c == OPTION_CONSUMED) {
-            for (int k = first; k <= i && n_echo < (int)(sizeof echo / sizeof echo[0]); k++)
-                echo[n_echo++] = argv[k];
-            continue;
-        }
-        if (c != OPTION_NOT_COMMON)
-            return options_exit_code(c);
-        const char *arg = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        const char *v;
+        const struct option_spec *sp = option_next("animate", specs, common_option_specs, argc, argv, &i, &v, usage);
+        if (!sp)
+            return EXIT_USAGE;
         long n;
-        if (strcmp(arg, "--frames") == 0 && v) {
+        char *end;
+        switch (sp->id) {
+        case OPT_HELP:
+            usage(stdout);
+            return EXIT_OK;
+        case OPT_ARGUMENT:
+            return option_unexpected("animate", v, usage);
+        case FRAMES:
             if (option_parse_int(v, 1, ANIMATE_MAX_FRAMES, &n) != 0) {
                 fprintf(stderr, "bentray animate: --frames: expected 1 to %d, got '%s'\n", ANIMATE_MAX_FRAMES, v);
                 return EXIT_USAGE;
             }
             a.frames = (int)n;
-            i++;
-        } else if (strcmp(arg, "--set-range") == 0 && v) {
+            break;
+        case SET_RANGE:
             if (a.n_ranges == ANIMATE_MAX_RANGES) {
                 fprintf(stderr, "bentray animate: --set-range: at most %d\n", ANIMATE_MAX_RANGES);
                 return EXIT_USAGE;
             }
             if (parse_range(v, &a.ranges[a.n_ranges++]) != 0)
                 return EXIT_USAGE;
-            i++;
-        } else if (strcmp(arg, "--orbit") == 0 && v) {
-            char *end;
+            break;
+        case ORBIT:
             errno = 0;
             a.orbit_deg = strtod(v, &end);
             if (end == v || *end || errno || !(fabs(a.orbit_deg) <= 36000.0)) {
@@ -394,9 +401,8 @@ int cmd_animate(int argc, char **argv)
                 return EXIT_USAGE;
             }
             a.orbit = 1;
-            i++;
-        } else if (strcmp(arg, "--fps") == 0 && v) {
-            char *end;
+            break;
+        case FPS:
             errno = 0;
             fps = strtod(v, &end);
             if (end == v || *end || errno || !(fps > 0.0 && fps <= ANIMATE_MAX_FPS)) {
@@ -404,19 +410,25 @@ int cmd_animate(int argc, char **argv)
                         ANIMATE_MAX_FPS, v);
                 return EXIT_USAGE;
             }
-            i++;
-        } else if (strcmp(arg, "--out") == 0 && v) {
+            break;
+        case OUT:
             dir = v;
-            i++;
-        } else if (strcmp(arg, "--video") == 0 && v) {
+            break;
+        case VIDEO:
             video = v;
-            i++;
-        } else if (strcmp(arg, "--force") == 0) {
+            break;
+        case FORCE:
             force = 1;
-        } else if (strcmp(arg, "--quiet") == 0) {
+            break;
+        case QUIET:
             quiet = 1;
-        } else {
-            return option_unknown("animate", arg, usage);
+            break;
+        default:
+            if (options_common(&o, "animate", sp->id, v) != 0)
+                return EXIT_USAGE;
+            /* the command line's own options for render, echoed in each frame's command */
+            for (int k = first; k <= i && n_echo < (int)(sizeof echo / sizeof echo[0]); k++)
+                echo[n_echo++] = argv[k];
         }
     }
     if (!a.frames || !dir) {

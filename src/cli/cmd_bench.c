@@ -113,48 +113,60 @@ int cmd_bench(int argc, char **argv)
     long runs = 3;
     b.width = 800;
     b.height = 600;
+    enum { FORCE, QUICK, KIOSK, OUT, BACKEND, RUNS, SIZE, ONLY };
+    static const struct option_spec specs[] = {
+        {"--force", NULL, FORCE}, {"--quick", NULL, QUICK}, {"--kiosk", NULL, KIOSK}, {"--out", "DIR", OUT},
+        {"--backend", "NAME", BACKEND}, {"--runs", "N", RUNS}, {"--size", "WxH", SIZE}, {"--only", "S[,S...]", ONLY},
+        {NULL, NULL, 0},
+    };
     for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        int has_value = i + 1 < argc;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+        const char *v;
+        const struct option_spec *sp = option_next("bench", specs, NULL, argc, argv, &i, &v, usage);
+        if (!sp)
+            return EXIT_USAGE;
+        switch (sp->id) {
+        case OPT_HELP:
             usage(stdout);
             return EXIT_OK;
-        } else if (strcmp(a, "--force") == 0) {
+        case OPT_ARGUMENT:
+            return option_unexpected("bench", v, usage);
+        case FORCE:
             force = 1;
-        } else if (strcmp(a, "--quick") == 0) {
+            break;
+        case QUICK:
             b.quick = 1;
-        } else if (strcmp(a, "--kiosk") == 0) {
+            break;
+        case KIOSK:
             wanted[N_SECTIONS - 1] = any = kiosk_only = 1;   /* the kiosk's section is the last */
-        } else if (strcmp(a, "--out") == 0 && has_value) {
-            out = argv[++i];
-        } else if (strcmp(a, "--backend") == 0 && has_value) {
-            backend = argv[++i];
+            break;
+        case OUT:
+            out = v;
+            break;
+        case BACKEND:
+            backend = v;
             if (!option_backend_valid(backend)) {
                 fprintf(stderr, "bentray bench: --backend: expected egl, osmesa or auto, got '%s'\n", backend);
                 return EXIT_USAGE;
             }
-        } else if (strcmp(a, "--runs") == 0 && has_value) {
-            if (option_parse_int(argv[++i], 1, BENCH_MAX_RUNS, &runs) != 0) {
-                fprintf(stderr, "bentray bench: --runs: expected an integer from 1 to %d, got '%s'\n", BENCH_MAX_RUNS,
-                        argv[i]);
+            break;
+        case RUNS:
+            if (option_parse_int(v, 1, BENCH_MAX_RUNS, &runs) != 0) {
+                fprintf(stderr, "bentray bench: --runs: expected an integer from 1 to %d, got '%s'\n", BENCH_MAX_RUNS, v);
                 return EXIT_USAGE;
             }
-        } else if (strcmp(a, "--size") == 0 && has_value) {
-            if (option_parse_size(argv[++i], &b.width, &b.height) != 0 || b.width < 16 || b.height < 16) {
+            break;
+        case SIZE:
+            if (option_parse_size(v, &b.width, &b.height) != 0 || b.width < 16 || b.height < 16) {
                 fprintf(stderr, "bentray bench: --size: expected WxH, each from 16 to %d, W x H at most %ld pixels, "
-                        "got '%s'\n", SCENE_MAX_SIZE, SCENE_MAX_PIXELS, argv[i]);
+                        "got '%s'\n", SCENE_MAX_SIZE, SCENE_MAX_PIXELS, v);
                 return EXIT_USAGE;
             }
-        } else if (strcmp(a, "--only") == 0 && has_value) {
-            if (parse_only(argv[++i], wanted) != 0)
+            break;
+        case ONLY:
+            if (parse_only(v, wanted) != 0)
                 return EXIT_USAGE;
             any = 1;
-        } else if (strcmp(a, "--out") == 0 || strcmp(a, "--backend") == 0 || strcmp(a, "--runs") == 0 ||
-                   strcmp(a, "--size") == 0 || strcmp(a, "--only") == 0) {
-            fprintf(stderr, "bentray bench: %s needs a value\n", a);
-            return EXIT_USAGE;
-        } else {
-            return option_unknown("bench", a, usage);
+            break;
         }
     }
     if (!out && !kiosk_only) {

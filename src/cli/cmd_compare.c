@@ -1,5 +1,6 @@
 /* bentray compare: error metrics of one dump against a reference dump (docs/ERRORS.md). */
 #include "cli/commands.h"
+#include "cli/options.h"
 #include "results/compare.h"
 #include <stdio.h>
 #include <string.h>
@@ -34,22 +35,24 @@ static int load(const char *path, struct dump *d)
 static int parse(int argc, char **argv, const char *paths[2], int *json)
 {
     int n = 0;
+    enum { JSON };
+    static const struct option_spec specs[] = {{"--json", NULL, JSON}, {NULL, NULL, 0}};
     for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+        const char *v;
+        const struct option_spec *sp = option_next("compare", specs, NULL, argc, argv, &i, &v, usage);
+        if (!sp)
+            return -1;
+        if (sp->id == OPT_HELP) {
             usage(stdout);
             return 1;
-        } else if (strcmp(argv[i], "--json") == 0) {
+        } else if (sp->id == JSON) {
             *json = 1;
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            fprintf(stderr, "bentray compare: unknown option '%s'\n", argv[i]);
-            usage(stderr);
-            return -1;
         } else if (n == 2) {
-            fprintf(stderr, "bentray compare: unexpected third file '%s'\n", argv[i]);
+            fprintf(stderr, "bentray compare: unexpected third file '%s'\n", v);
             usage(stderr);
             return -1;
         } else {
-            paths[n++] = argv[i];
+            paths[n++] = v;
         }
     }
     if (n < 2) {

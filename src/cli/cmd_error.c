@@ -36,18 +36,28 @@ int cmd_error(int argc, char **argv)
 {
     struct common_options o = {.backend = "auto", .both_engines = 1};
     int json = 0, check = 0;
+    enum { JSON, CHECK };
+    static const struct option_spec specs[] = {{"--json", NULL, JSON}, {"--check", NULL, CHECK}, {NULL, NULL, 0}};
     for (int i = 1; i < argc; i++) {
-        enum option_status c = options_common(&o, "error", argc, argv, &i, usage);
-        if (c == OPTION_CONSUMED)
-            continue;
-        if (c != OPTION_NOT_COMMON)
-            return options_exit_code(c);
-        if (strcmp(argv[i], "--json") == 0) {
+        const char *v;
+        const struct option_spec *sp = option_next("error", specs, common_option_specs, argc, argv, &i, &v, usage);
+        if (!sp)
+            return EXIT_USAGE;
+        switch (sp->id) {
+        case OPT_HELP:
+            usage(stdout);
+            return EXIT_OK;
+        case OPT_ARGUMENT:
+            return option_unexpected("error", v, usage);
+        case JSON:
             json = 1;
-        } else if (strcmp(argv[i], "--check") == 0) {
+            break;
+        case CHECK:
             check = 1;
-        } else {
-            return option_unknown("error", argv[i], usage);
+            break;
+        default:
+            if (options_common(&o, "error", sp->id, v) != 0)
+                return EXIT_USAGE;
         }
     }
     static struct scene s;

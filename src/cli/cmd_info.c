@@ -52,18 +52,26 @@ static void print_caps(const struct gl_caps *c)
 int cmd_info(int argc, char **argv)
 {
     const char *backend = "all";
+    enum { BACKEND, SHADER_DIR };
+    static const struct option_spec specs[] = {
+        {"--backend", "B", BACKEND}, {"--shader-dir", "DIR", SHADER_DIR}, {NULL, NULL, 0}};
     for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+        const char *v;
+        const struct option_spec *sp = option_next("info", specs, NULL, argc, argv, &i, &v, usage);
+        if (!sp)
+            return EXIT_USAGE;
+        switch (sp->id) {
+        case OPT_HELP:
             usage(stdout);
             return EXIT_OK;
-        } else if (strcmp(argv[i], "--backend") == 0 && i + 1 < argc) {
-            backend = argv[++i];
-        } else if (strcmp(argv[i], "--shader-dir") == 0 && i + 1 < argc) {
-            shader_set_directory(argv[++i]);
-        } else {
-            fprintf(stderr, "bentray info: unknown option '%s'\n", argv[i]);
-            usage(stderr);
-            return EXIT_USAGE;
+        case OPT_ARGUMENT:
+            return option_unexpected("info", v, usage);
+        case BACKEND:
+            backend = v;
+            break;
+        case SHADER_DIR:
+            shader_set_directory(v);
+            break;
         }
     }
     static const char *const all[] = {"egl", "osmesa", NULL};

@@ -46,37 +46,47 @@ int cmd_kiosk(int argc, char **argv)
     const char *config = KIOSK_DEFAULT_CONFIG, *display = NULL, *out_dir = NULL, *backend = "auto";
     long frames = -1;
     int force = 0, check_inputs = 0;
+    enum { CONFIG, DISPLAY, BACKEND, OUT, FRAMES, FORCE, CHECK_INPUTS };
+    static const struct option_spec specs[] = {
+        {"--config", "FILE", CONFIG}, {"--display", "D", DISPLAY}, {"--backend", "B", BACKEND},
+        {"--out", "DIR", OUT},        {"--frames", "N", FRAMES},   {"--force", NULL, FORCE},
+        {"--check-inputs", NULL, CHECK_INPUTS}, {NULL, NULL, 0},
+    };
     for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        int has_value = i + 1 < argc;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+        const char *v;
+        const struct option_spec *sp = option_next("kiosk", specs, NULL, argc, argv, &i, &v, usage);
+        if (!sp)
+            return EXIT_USAGE;
+        switch (sp->id) {
+        case OPT_HELP:
             usage(stdout);
             return EXIT_OK;
-        } else if (strcmp(a, "--config") == 0 && has_value) {
-            config = argv[++i];
-        } else if (strcmp(a, "--display") == 0 && has_value) {
-            display = argv[++i];
-        } else if (strcmp(a, "--backend") == 0 && has_value) {
-            backend = argv[++i];
-        } else if (strcmp(a, "--out") == 0 && has_value) {
-            out_dir = argv[++i];
-        } else if (strcmp(a, "--frames") == 0 && has_value) {
-            if (option_parse_int(argv[++i], 0, 1000000, &frames) != 0) {
-                fprintf(stderr, "bentray kiosk: --frames: expected a whole number from 0 to 1000000, got '%s'\n",
-                        argv[i]);
+        case OPT_ARGUMENT:
+            return option_unexpected("kiosk", v, usage);
+        case CONFIG:
+            config = v;
+            break;
+        case DISPLAY:
+            display = v;
+            break;
+        case BACKEND:
+            backend = v;
+            break;
+        case OUT:
+            out_dir = v;
+            break;
+        case FRAMES:
+            if (option_parse_int(v, 0, 1000000, &frames) != 0) {
+                fprintf(stderr, "bentray kiosk: --frames: expected a whole number from 0 to 1000000, got '%s'\n", v);
                 return EXIT_USAGE;
             }
-        } else if (strcmp(a, "--force") == 0) {
+            break;
+        case FORCE:
             force = 1;
-        } else if (strcmp(a, "--check-inputs") == 0) {
+            break;
+        case CHECK_INPUTS:
             check_inputs = 1;
-        } else if (strncmp(a, "--", 2) == 0 && !has_value &&
-                   (strcmp(a, "--config") == 0 || strcmp(a, "--display") == 0 || strcmp(a, "--backend") == 0 ||
-                    strcmp(a, "--out") == 0 || strcmp(a, "--frames") == 0)) {
-            fprintf(stderr, "bentray kiosk: %s needs a value\n", a);
-            return EXIT_USAGE;
-        } else {
-            return option_unknown("kiosk", a, usage);
+            break;
         }
     }
     if (!option_backend_valid(backend)) {

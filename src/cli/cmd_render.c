@@ -174,33 +174,48 @@ int cmd_render(int argc, char **argv)
     struct common_options o = {.backend = "auto"};
     const char *out_path = NULL, *dump_path = NULL;
     int force = 0, quiet = 0, progress = 0, depth = 8;
+    enum { OUT, DUMP, FORCE, QUIET, DEPTH, PROGRESS };
+    static const struct option_spec specs[] = {
+        {"--out", "FILE", OUT},     {"--dump", "FILE", DUMP},   {"--force", NULL, FORCE},
+        {"--quiet", NULL, QUIET},   {"--depth", "8|16", DEPTH}, {"--progress", NULL, PROGRESS},
+        {NULL, NULL, 0},
+    };
     for (int i = 1; i < argc; i++) {
-        enum option_status c = options_common(&o, "render", argc, argv, &i, usage);
-        if (c == OPTION_CONSUMED)
-            continue;
-        if (c != OPTION_NOT_COMMON)
-            return options_exit_code(c);
-        if (strcmp(argv[i], "--out") == 0 && i + 1 < argc) {
-            out_path = argv[++i];
-        } else if (strcmp(argv[i], "--dump") == 0 && i + 1 < argc) {
-            dump_path = argv[++i];
-        } else if (strcmp(argv[i], "--force") == 0) {
+        const char *v;
+        const struct option_spec *sp = option_next("render", specs, common_option_specs, argc, argv, &i, &v, usage);
+        if (!sp)
+            return EXIT_USAGE;
+        switch (sp->id) {
+        case OPT_HELP:
+            usage(stdout);
+            return EXIT_OK;
+        case OPT_ARGUMENT:
+            return option_unexpected("render", v, usage);
+        case OUT:
+            out_path = v;
+            break;
+        case DUMP:
+            dump_path = v;
+            break;
+        case FORCE:
             force = 1;
-        } else if (strcmp(argv[i], "--quiet") == 0) {
+            break;
+        case QUIET:
             quiet = 1;
-        } else if (strcmp(argv[i], "--depth") == 0 && i + 1 < argc) {
-            const char *v = argv[++i];
+            break;
+        case DEPTH:
             if (strcmp(v, "8") && strcmp(v, "16")) {
                 fprintf(stderr, "bentray render: --depth: expected 8 or 16 bits a channel, got '%s'\n", v);
                 return EXIT_USAGE;
             }
             depth = atoi(v);
-        } else if (strcmp(argv[i], "--progress") == 0) {
+            break;
+        case PROGRESS:
             progress = 1;
-        } else {
-            fprintf(stderr, "bentray render: unknown option or missing value: '%s'\n", argv[i]);
-            usage(stderr);
-            return EXIT_USAGE;
+            break;
+        default:
+            if (options_common(&o, "render", sp->id, v) != 0)
+                return EXIT_USAGE;
         }
     }
     if (quiet && progress) {

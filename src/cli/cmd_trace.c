@@ -170,21 +170,31 @@ int cmd_trace(int argc, char **argv)
 {
     struct common_options o = {.backend = "auto"};
     long px = -1, py = -1;
+    enum { PIXEL };
+    static const struct option_spec specs[] = {{"--pixel", "I J", PIXEL}, {NULL, NULL, 0}};
     for (int i = 1; i < argc; i++) {
-        enum option_status c = options_common(&o, "trace", argc, argv, &i, usage);
-        if (c == OPTION_CONSUMED)
-            continue;
-        if (c != OPTION_NOT_COMMON)
-            return options_exit_code(c);
-        if (strcmp(argv[i], "--pixel") == 0) {
-            if (i + 2 >= argc || option_parse_int(argv[i + 1], 0, SCENE_MAX_SIZE - 1, &px) ||
-                option_parse_int(argv[i + 2], 0, SCENE_MAX_SIZE - 1, &py)) {
+        const char *v;
+        const struct option_spec *sp = option_next("trace", specs, common_option_specs, argc, argv, &i, &v, usage);
+        if (!sp)
+            return EXIT_USAGE;
+        switch (sp->id) {
+        case OPT_HELP:
+            usage(stdout);
+            return EXIT_OK;
+        case OPT_ARGUMENT:
+            return option_unexpected("trace", v, usage);
+        case PIXEL:
+            /* two values: I here, J the argument after it */
+            if (i + 1 >= argc || option_parse_int(v, 0, SCENE_MAX_SIZE - 1, &px) ||
+                option_parse_int(argv[i + 1], 0, SCENE_MAX_SIZE - 1, &py)) {
                 fprintf(stderr, "bentray trace: --pixel: expected two pixel indices I J\n");
                 return EXIT_USAGE;
             }
-            i += 2;
-        } else {
-            return option_unknown("trace", argv[i], usage);
+            i++;
+            break;
+        default:
+            if (options_common(&o, "trace", sp->id, v) != 0)
+                return EXIT_USAGE;
         }
     }
     if (px < 0) {

@@ -1,6 +1,7 @@
 #include "cli/options.h"
 #include "cli/commands.h"
 #include "gl/shader.h"
+#include "io/text_file.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -41,121 +42,176 @@ int option_parse_size(const char *text, int *w, int *h)
     return 0;
 }
 
-static const char *value_of(const char *cmd, int argc, char **argv, int *i)
+const struct option_spec common_option_specs[] = {
+    {"--scene", "FILE", OPT_SCENE},
+    {"--backend", "B", OPT_BACKEND},
+    {"--shader-dir", "DIR", OPT_SHADER_DIR},
+    {"--size", "WxH", OPT_SIZE},
+    {"--samples", "N", OPT_SAMPLES},
+    {"--precision", "P", OPT_PRECISION},
+    {"--no-mrt", NULL, OPT_NO_MRT},
+    {"--engine", "E", OPT_ENGINE},
+    {"--threads", "N", OPT_THREADS},
+    {"--rtol", "R", OPT_RTOL},
+    {"--set", "SECTION.KEY=V", OPT_SET},
+    {NULL, NULL, 0},
+};
+
+static const struct option_spec help_spec = {"--help", NULL, OPT_HELP};
+static const struct option_spec argument_spec = {"", NULL, OPT_ARGUMENT};
+
+static const struct option_spec *spec_find(const struct option_spec *table, const char *name)
 {
-    if (*i + 1 >= argc) {
-        fprintf(stderr, "bentray %s: option %s needs a value\n", cmd, argv[*i]);
+    for (; table && table->name; table++)
+        if (strcmp(table->name, name) == 0)
+            return table;
+    return NULL;
+}
+
+/* The known option nearest to name within two edits (and nearer than its length), or NULL. */
+static const char *spec_guess(const struct option_spec *own, const struct option_spec *common, const char *name)
+{
+    const char *best = NULL;
+    int best_d = 3;
+    const struct option_spec *tables[2] = {own, common};
+    for (int t = 0; t < 2; t++)
+        for (const struct option_spec *sp = tables[t]; sp && sp->name; sp++) {
+            int d = edit_distance(name, sp->name, 64);
+            if (d < best_d && (size_t)d < strlen(name)) {
+                best_d = d;
+                best = sp->name;
+            }
+        }
+    return best;
+}
+
+const struct option_spec *option_next(const char *cmd, const struct option_spec *own,
+                                      const struct option_spec *common, int argc, char **argv, int *i,
+                                      const char **value, usage_fn usage)
+{
+    const char *arg = argv[*i];
+    *value = NULL;
+    if (strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0)
+        return &help_spec;
+    if (arg[0] != '-' || arg[1] == '\0') {
+        *value = arg;
+        return &argument_spec;
+    }
+    const struct option_spec *sp = spec_find(own, arg);
+    if (!sp)
+        sp = spec_find(common, arg);
+    if (!sp) {
+        const char *guess = spec_guess(own, common, arg);
+        fprintf(stderr, "bentray %s: unknown option '%s'%s%s%s\n", cmd, arg, guess ? " (did you mean " : "",
+                guess ? guess : "", guess ? "?)" : "");
+        usage(stderr);
         return NULL;
     }
-    return argv[++*i];
+    if (!sp->value)
+        return sp;
+    const char *next = *i + 1 < argc ? argv[*i + 1] : NULL;
+    if (!next || (strncmp(next, "--", 2) == 0 && next[2] != '\0')) {
+        fprintf(stderr, "bentray %s: option %s needs a value (%s)%s%s%s\n", cmd, sp->name, sp->value,
+                next ? ", not the option '" : "", next ? next : "", next ? "'" : "");
+        return NULL;
+    }
+    *value = next;
+    ++*i;
+    return sp;
 }
 
-int options_exit_code(enum option_status status)
+int options_common(struct common_options *o, const char *cmd, int id, const char *v)
 {
-    return status == OPTION_HELP ? EXIT_OK : EXIT_USAGE;
-}
-
-int option_unknown(const char *cmd, const char *arg, usage_fn usage)
-{
-    fprintf(stderr, "bentray %s: unknown option or missing value: '%s'\n", cmd, arg);
-    usage(stderr);
-    return EXIT_USAGE;
-}
-
-enum option_status options_common(struct common_options *o, const char *cmd, int argc, char **argv, int *i,
-                                  usage_fn usage)
-{
-    const char *opt = argv[*i], *v;
-    if (strcmp(opt, "--help") == 0 || strcmp(opt, "-h") == 0) {
-        usage(stdout);
-        return OPTION_HELP;
-    } else if (strcmp(opt, "--scene") == 0) {
-        if (!(v = value_of(cmd, argc, argv, i)))
-            return OPTION_ERROR;
+    switch (id) {
+    case OPT_SCENE:
         o->scene_path = v;
-    } else if (strcmp(opt, "--backend") == 0) {
-        if (!(v = value_of(cmd, argc, argv, i)))
-            return OPTION_ERROR;
+        return 0;
+    case OPT_BACKEND:
         if (!option_backend_valid(v)) {
             fprintf(stderr, "bentray %s: --backend: unknown back-end '%s' (expected egl, osmesa or auto)\n", cmd, v);
-            return OPTION_ERROR;
+            return -1;
         }
         o->backend = v;
-    } else if (strcmp(opt, "--shader-dir") == 0) {
-        if (!(v = value_of(cmd, argc, argv, i)))
-            return OPTION_ERROR;
+        return 0;
+    case OPT_SHADER_DIR:
         o->shader_dir = v;
         shader_set_directory(v);
-    } else if (strcmp(opt, "--size") == 0) {
-        if (!(v = value_of(cmd, argc, argv, i)))
-            return OPTION_ERROR;
+        return 0;
+    case OPT_SIZE:
         if (option_parse_size(v, &o->width, &o->height) != 0) {
             fprintf(stderr, "bentray %s: --size: expected WxH with 1 <= W, H <= %d and W x H <= %ld pixels, got '%s'\n",
                     cmd, SCENE_MAX_SIZE, SCENE_MAX_PIXELS, v);
-            return OPTION_ERROR;
+            return -1;
         }
-    } else if (strcmp(opt, "--samples") == 0) {
+        return 0;
+    case OPT_SAMPLES: {
         long n;
-        if (!(v = value_of(cmd, argc, argv, i)))
-            return OPTION_ERROR;
         if (option_parse_int(v, 1, SCENE_MAX_SAMPLES, &n) != 0) {
             fprintf(stderr, "bentray %s: --samples: expected rays per pixel from 1 to %d, got '%s'\n", cmd,
                     SCENE_MAX_SAMPLES, v);
-            return OPTION_ERROR;
+            return -1;
         }
         o->samples = (int)n;
-    } else if (strcmp(opt, "--precision") == 0) {
-        if (!(v = value_of(cmd, argc, argv, i)))
-            return OPTION_ERROR;
+        return 0;
+    }
+    case OPT_PRECISION:
         if (strcmp(v, "fp32") && strcmp(v, "fp16") && strcmp(v, "auto")) {
             fprintf(stderr, "bentray %s: --precision: expected fp32, fp16 or auto, got '%s'\n", cmd, v);
-            return OPTION_ERROR;
+            return -1;
         }
         o->precision = v;
-    } else if (strcmp(opt, "--no-mrt") == 0) {
+        return 0;
+    case OPT_NO_MRT:
         o->no_mrt = 1;
-    } else if (strcmp(opt, "--engine") == 0) {
-        if (!(v = value_of(cmd, argc, argv, i)))
-            return OPTION_ERROR;
+        return 0;
+    case OPT_ENGINE:
         if (strcmp(v, "gpu") && strcmp(v, "cpu")) {
             fprintf(stderr, "bentray %s: --engine: expected gpu or cpu, got '%s'\n", cmd, v);
-            return OPTION_ERROR;
+            return -1;
         }
         o->engine = v;
-    } else if (strcmp(opt, "--threads") == 0) {
+        return 0;
+    case OPT_THREADS: {
         long n;
-        if (!(v = value_of(cmd, argc, argv, i)))
-            return OPTION_ERROR;
         if (option_parse_int(v, 0, CPU_MAX_THREADS, &n) != 0) {
             fprintf(stderr, "bentray %s: --threads: expected 0 (one per core) to %d, got '%s'\n", cmd,
                     CPU_MAX_THREADS, v);
-            return OPTION_ERROR;
+            return -1;
         }
         o->threads = (int)n;
-    } else if (strcmp(opt, "--rtol") == 0) {
-        if (!(v = value_of(cmd, argc, argv, i)))
-            return OPTION_ERROR;
+        return 0;
+    }
+    case OPT_RTOL: {
         char *end;
         errno = 0;
         double r = strtod(v, &end);
         if (errno || end == v || *end != '\0' || !(r >= OPTION_RTOL_MIN && r <= OPTION_RTOL_MAX)) {
             fprintf(stderr, "bentray %s: --rtol: expected a relative tolerance from %g to %g, got '%s'\n",
                     cmd, OPTION_RTOL_MIN, OPTION_RTOL_MAX, v);
-            return OPTION_ERROR;
+            return -1;
         }
         o->rtol = r;
-    } else if (strcmp(opt, "--set") == 0) {
-        if (!(v = value_of(cmd, argc, argv, i)))
-            return OPTION_ERROR;
+        return 0;
+    }
+    case OPT_SET:
         if (o->n_sets == OPTIONS_MAX_SETS) {
             fprintf(stderr, "bentray %s: --set: at most %d overrides\n", cmd, OPTIONS_MAX_SETS);
-            return OPTION_ERROR;
+            return -1;
         }
         o->sets[o->n_sets++] = v;
-    } else {
-        return OPTION_NOT_COMMON;
+        return 0;
+    default:
+        fprintf(stderr, "bentray %s: internal: option id %d has no meaning here\n", cmd, id);
+        return -1;
     }
-    return OPTION_CONSUMED;
+}
+
+/* An argument where the command takes none: says so, with the usage. */
+int option_unexpected(const char *cmd, const char *arg, usage_fn usage)
+{
+    fprintf(stderr, "bentray %s: unexpected argument '%s' (options begin with --)\n", cmd, arg);
+    usage(stderr);
+    return EXIT_USAGE;
 }
 
 int options_engine_cpu(const struct common_options *o)
@@ -183,7 +239,7 @@ static int check_engine_options(const struct common_options *o, const char *cmd)
         if (o->engine) {
             fprintf(stderr, "bentray %s: --engine: this command runs both engines; GPU and CPU options both "
                             "apply\n", cmd);
-            return OPTION_ERROR;
+            return -1;
         }
     } else if (options_engine_cpu(o)) {
         wrong = o->backend && strcmp(o->backend, "auto") ? "--backend"
@@ -193,13 +249,13 @@ static int check_engine_options(const struct common_options *o, const char *cmd)
                                                          : NULL;
         if (wrong) {
             fprintf(stderr, "bentray %s: %s applies to the GPU engine only, not to --engine cpu\n", cmd, wrong);
-            return OPTION_ERROR;
+            return -1;
         }
     } else {
         wrong = o->threads ? "--threads" : o->rtol > 0.0 ? "--rtol" : NULL;
         if (wrong) {
             fprintf(stderr, "bentray %s: %s applies to the CPU engine only (add --engine cpu)\n", cmd, wrong);
-            return OPTION_ERROR;
+            return -1;
         }
     }
     return 0;

@@ -35,17 +35,54 @@ int option_parse_size(const char *text, int *w, int *h);
 /* Parse a non-negative integer option fully; 0 ok. */
 int option_parse_int(const char *text, long min, long max, long *out);
 
-enum option_status { OPTION_ERROR = -1, OPTION_NOT_COMMON = 0, OPTION_CONSUMED = 1, OPTION_HELP = 2 };
 typedef void (*usage_fn)(FILE *out);
 
-/* Try to consume argv[*i] (and its value) as a common option or --help (usage printed on
- * stdout). OPTION_ERROR: bad value, the message names the option. */
-enum option_status options_common(struct common_options *o, const char *cmd, int argc, char **argv, int *i,
-                                  usage_fn usage);
-/* Exit code for OPTION_HELP (0) and OPTION_ERROR (2). */
-int options_exit_code(enum option_status status);
-/* Report an option the command does not know; returns EXIT_USAGE. */
-int option_unknown(const char *cmd, const char *arg, usage_fn usage);
+/* One option of a command, declared once in the command's table (as glmark2 declares a scene's
+ * options): its name, the word for its value in messages (NULL: a flag without value), and the
+ * command's own id for it. A table ends with an entry whose name is NULL. */
+struct option_spec {
+    const char *name;
+    const char *value;
+    int id;
+};
+
+/* Ids option_next gives besides a command's own (which must be >= 0): --help or -h, an argument
+ * that is no option (a file of bentray compare), and the common options of the commands that
+ * render a scene (common_option_specs, applied by options_common). */
+enum {
+    OPT_HELP = -100,
+    OPT_ARGUMENT,
+    OPT_SCENE,
+    OPT_BACKEND,
+    OPT_SHADER_DIR,
+    OPT_SIZE,
+    OPT_SAMPLES,
+    OPT_PRECISION,
+    OPT_NO_MRT,
+    OPT_ENGINE,
+    OPT_THREADS,
+    OPT_RTOL,
+    OPT_SET,
+};
+extern const struct option_spec common_option_specs[];
+
+/* The option at argv[*i], looked up in own and, when common is not NULL, in common: its spec,
+ * with *value its value (the next argument, which *i then passes; NULL for a flag). Every command
+ * reads its options through here, so each fails the same way: NULL after a message on stderr
+ * naming the command and the option, for an unknown option (with the nearest known one within two
+ * edits, and the usage) or one whose value is missing (the end of the line, or another option
+ * where its value should be). An argument that is not an option comes back as OPT_ARGUMENT with
+ * itself as the value ("-" alone is an argument: standard output). */
+const struct option_spec *option_next(const char *cmd, const struct option_spec *own,
+                                      const struct option_spec *common, int argc, char **argv, int *i,
+                                      const char **value, usage_fn usage);
+
+/* An argument where the command takes none (OPT_ARGUMENT): says so with the usage; EXIT_USAGE. */
+int option_unexpected(const char *cmd, const char *arg, usage_fn usage);
+
+/* Applies common option id with its value to o: 0, or -1 after a message that names the option
+ * and what it expects. */
+int options_common(struct common_options *o, const char *cmd, int id, const char *value);
 
 /* Load the scene and apply --size, --precision, --no-mrt and --set. Prints the error
  * (file:line or option) and returns EXIT_USAGE on bad input, 0 on success. */

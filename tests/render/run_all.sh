@@ -9,6 +9,19 @@ check "render help" 0 "--scene FILE" -- $BT render --help
 check "no command" 2 "usage" -- $BT
 check "unknown command" 2 "unknown command" -- $BT frobnicate
 check "unknown option" 2 "unknown option" -- $BT render --scene $S --frob
+# every command reads its options from one table through one parser (src/cli/options.c): the same
+# words for an unknown option, a missing value and a stray argument, whatever the command
+check "option guessed" 2 "^bentray render: unknown option '--scnee' \\(did you mean --scene\\?\\)" -- $BT render --scnee $S
+check "kiosk option guessed" 2 "^bentray kiosk: unknown option '--confg' \\(did you mean --config\\?\\)" -- $BT kiosk --confg x
+for cmd in "render --scene $S --out" "kiosk --config" "bench --out" "trace --scene" "error --scene" \
+           "animate --scene $S --frames"; do
+    set -- $cmd
+    check "$1: value missing at the end" 2 "^bentray $1: option ${@: -1} needs a value" -- $BT $cmd
+done
+check "value that is an option" 2 "^bentray render: option --out needs a value \\(FILE\\), not the option '--force'" -- \
+    $BT render --scene $S --out --force
+check "stray argument" 2 "^bentray render: unexpected argument 'extra.png'" -- $BT render --scene $S extra.png
+check "info stray argument" 2 "^bentray info: unexpected argument 'egl'" -- $BT info egl
 check "bad size" 2 "\-\-size" -- $BT render --scene $S --size 10by10
 check "bad backend" 2 "\-\-backend" -- $BT render --scene $S --backend vulkan
 check "bad precision" 2 "\-\-precision" -- $BT render --scene $S --precision fp8
