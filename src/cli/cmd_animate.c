@@ -364,20 +364,17 @@ int cmd_animate(int argc, char **argv)
         {"--fps", "F", FPS},       {"--out", "DIR", OUT},                         {"--video", "FILE", VIDEO},
         {"--force", NULL, FORCE},  {"--quiet", NULL, QUIET},                      {NULL, NULL, 0},
     };
-    for (int i = 1; i < argc; i++) {
-        int first = i;
-        const char *v;
-        const struct option_spec *sp = option_next("animate", specs, common_option_specs, argc, argv, &i, &v, usage);
-        if (!sp)
-            return EXIT_USAGE;
+    struct option_reader rd = {"animate", specs, common_option_specs, usage, argc, argv, 0, 0, 0};
+    const struct option_spec *sp;
+    const char *v;
+    int got;
+    for (;;) {
+        int first = rd.next > 0 ? rd.next : 1;
+        if ((got = option_read(&rd, &sp, &v)) <= 0)
+            break;
         long n;
         char *end;
         switch (sp->id) {
-        case OPT_HELP:
-            usage(stdout);
-            return EXIT_OK;
-        case OPT_ARGUMENT:
-            return option_unexpected("animate", v, usage);
         case FRAMES:
             if (option_parse_int(v, 1, ANIMATE_MAX_FRAMES, &n) != 0) {
                 fprintf(stderr, "bentray animate: --frames: expected 1 to %d, got '%s'\n", ANIMATE_MAX_FRAMES, v);
@@ -427,10 +424,12 @@ int cmd_animate(int argc, char **argv)
             if (options_common(&o, "animate", sp->id, v) != 0)
                 return EXIT_USAGE;
             /* the command line's own options for render, echoed in each frame's command */
-            for (int k = first; k <= i && n_echo < (int)(sizeof echo / sizeof echo[0]); k++)
+            for (int k = first; k < rd.next && n_echo < (int)(sizeof echo / sizeof echo[0]); k++)
                 echo[n_echo++] = argv[k];
         }
     }
+    if (got < 0)
+        return rd.exit_code;
     if (!a.frames || !dir) {
         fprintf(stderr, "bentray animate: %s is required\n", !a.frames ? "--frames N" : "--out DIR");
         return EXIT_USAGE;

@@ -119,17 +119,12 @@ int cmd_bench(int argc, char **argv)
         {"--backend", "NAME", BACKEND}, {"--runs", "N", RUNS}, {"--size", "WxH", SIZE}, {"--only", "S[,S...]", ONLY},
         {NULL, NULL, 0},
     };
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        const struct option_spec *sp = option_next("bench", specs, NULL, argc, argv, &i, &v, usage);
-        if (!sp)
-            return EXIT_USAGE;
+    struct option_reader rd = {"bench", specs, NULL, usage, argc, argv, 0, 0, 0};
+    const struct option_spec *sp;
+    const char *v;
+    int got;
+    while ((got = option_read(&rd, &sp, &v)) > 0) {
         switch (sp->id) {
-        case OPT_HELP:
-            usage(stdout);
-            return EXIT_OK;
-        case OPT_ARGUMENT:
-            return option_unexpected("bench", v, usage);
         case FORCE:
             force = 1;
             break;
@@ -169,6 +164,8 @@ int cmd_bench(int argc, char **argv)
             break;
         }
     }
+    if (got < 0)
+        return rd.exit_code;
     if (!out && !kiosk_only) {
         fprintf(stderr, "bentray bench: --out DIR is required\n");
         usage(stderr);

@@ -37,15 +37,12 @@ static int parse(int argc, char **argv, const char *paths[2], int *json)
     int n = 0;
     enum { JSON };
     static const struct option_spec specs[] = {{"--json", NULL, JSON}, {NULL, NULL, 0}};
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        const struct option_spec *sp = option_next("compare", specs, NULL, argc, argv, &i, &v, usage);
-        if (!sp)
-            return -1;
-        if (sp->id == OPT_HELP) {
-            usage(stdout);
-            return 1;
-        } else if (sp->id == JSON) {
+    struct option_reader rd = {"compare", specs, NULL, usage, argc, argv, 1, 0, 0};
+    const struct option_spec *sp;
+    const char *v;
+    int got;
+    while ((got = option_read(&rd, &sp, &v)) > 0) {
+        if (sp->id == JSON) {
             *json = 1;
         } else if (n == 2) {
             fprintf(stderr, "bentray compare: unexpected third file '%s'\n", v);
@@ -55,6 +52,8 @@ static int parse(int argc, char **argv, const char *paths[2], int *json)
             paths[n++] = v;
         }
     }
+    if (got < 0)
+        return rd.exit_code == EXIT_OK ? 1 : -1;
     if (n < 2) {
         fprintf(stderr, "bentray compare: expected two dumps, A (under test) and B (reference)\n");
         usage(stderr);

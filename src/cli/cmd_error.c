@@ -38,17 +38,12 @@ int cmd_error(int argc, char **argv)
     int json = 0, check = 0;
     enum { JSON, CHECK };
     static const struct option_spec specs[] = {{"--json", NULL, JSON}, {"--check", NULL, CHECK}, {NULL, NULL, 0}};
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        const struct option_spec *sp = option_next("error", specs, common_option_specs, argc, argv, &i, &v, usage);
-        if (!sp)
-            return EXIT_USAGE;
+    struct option_reader rd = {"error", specs, common_option_specs, usage, argc, argv, 0, 0, 0};
+    const struct option_spec *sp;
+    const char *v;
+    int got;
+    while ((got = option_read(&rd, &sp, &v)) > 0) {
         switch (sp->id) {
-        case OPT_HELP:
-            usage(stdout);
-            return EXIT_OK;
-        case OPT_ARGUMENT:
-            return option_unexpected("error", v, usage);
         case JSON:
             json = 1;
             break;
@@ -60,6 +55,8 @@ int cmd_error(int argc, char **argv)
                 return EXIT_USAGE;
         }
     }
+    if (got < 0)
+        return rd.exit_code;
     static struct scene s;
     int rc = options_load_scene(&o, "error", &s);
     if (rc)

@@ -55,17 +55,12 @@ int cmd_info(int argc, char **argv)
     enum { BACKEND, SHADER_DIR };
     static const struct option_spec specs[] = {
         {"--backend", "B", BACKEND}, {"--shader-dir", "DIR", SHADER_DIR}, {NULL, NULL, 0}};
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        const struct option_spec *sp = option_next("info", specs, NULL, argc, argv, &i, &v, usage);
-        if (!sp)
-            return EXIT_USAGE;
+    struct option_reader rd = {"info", specs, NULL, usage, argc, argv, 0, 0, 0};
+    const struct option_spec *sp;
+    const char *v;
+    int got;
+    while ((got = option_read(&rd, &sp, &v)) > 0) {
         switch (sp->id) {
-        case OPT_HELP:
-            usage(stdout);
-            return EXIT_OK;
-        case OPT_ARGUMENT:
-            return option_unexpected("info", v, usage);
         case BACKEND:
             backend = v;
             break;
@@ -74,6 +69,8 @@ int cmd_info(int argc, char **argv)
             break;
         }
     }
+    if (got < 0)
+        return rd.exit_code;
     static const char *const all[] = {"egl", "osmesa", NULL};
     const char *one[] = {backend, NULL};
     const char *const *list = strcmp(backend, "all") == 0 ? all : one;

@@ -52,17 +52,12 @@ int cmd_kiosk(int argc, char **argv)
         {"--out", "DIR", OUT},        {"--frames", "N", FRAMES},   {"--force", NULL, FORCE},
         {"--check-inputs", NULL, CHECK_INPUTS}, {NULL, NULL, 0},
     };
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        const struct option_spec *sp = option_next("kiosk", specs, NULL, argc, argv, &i, &v, usage);
-        if (!sp)
-            return EXIT_USAGE;
+    struct option_reader rd = {"kiosk", specs, NULL, usage, argc, argv, 0, 0, 0};
+    const struct option_spec *sp;
+    const char *v;
+    int got;
+    while ((got = option_read(&rd, &sp, &v)) > 0) {
         switch (sp->id) {
-        case OPT_HELP:
-            usage(stdout);
-            return EXIT_OK;
-        case OPT_ARGUMENT:
-            return option_unexpected("kiosk", v, usage);
         case CONFIG:
             config = v;
             break;
@@ -89,6 +84,8 @@ int cmd_kiosk(int argc, char **argv)
             break;
         }
     }
+    if (got < 0)
+        return rd.exit_code;
     if (!option_backend_valid(backend)) {
         fprintf(stderr, "bentray kiosk: --backend: unknown back-end '%s' (expected egl, osmesa or auto)\n", backend);
         return EXIT_USAGE;

@@ -180,17 +180,12 @@ int cmd_render(int argc, char **argv)
         {"--quiet", NULL, QUIET},   {"--depth", "8|16", DEPTH}, {"--progress", NULL, PROGRESS},
         {NULL, NULL, 0},
     };
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        const struct option_spec *sp = option_next("render", specs, common_option_specs, argc, argv, &i, &v, usage);
-        if (!sp)
-            return EXIT_USAGE;
+    struct option_reader rd = {"render", specs, common_option_specs, usage, argc, argv, 0, 0, 0};
+    const struct option_spec *sp;
+    const char *v;
+    int got;
+    while ((got = option_read(&rd, &sp, &v)) > 0) {
         switch (sp->id) {
-        case OPT_HELP:
-            usage(stdout);
-            return EXIT_OK;
-        case OPT_ARGUMENT:
-            return option_unexpected("render", v, usage);
         case OUT:
             out_path = v;
             break;
@@ -218,6 +213,8 @@ int cmd_render(int argc, char **argv)
                 return EXIT_USAGE;
         }
     }
+    if (got < 0)
+        return rd.exit_code;
     if (quiet && progress) {
         fprintf(stderr, "bentray render: --progress and --quiet contradict each other: give one\n");
         return EXIT_USAGE;

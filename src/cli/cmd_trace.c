@@ -172,31 +172,28 @@ int cmd_trace(int argc, char **argv)
     long px = -1, py = -1;
     enum { PIXEL };
     static const struct option_spec specs[] = {{"--pixel", "I J", PIXEL}, {NULL, NULL, 0}};
-    for (int i = 1; i < argc; i++) {
-        const char *v;
-        const struct option_spec *sp = option_next("trace", specs, common_option_specs, argc, argv, &i, &v, usage);
-        if (!sp)
-            return EXIT_USAGE;
+    struct option_reader rd = {"trace", specs, common_option_specs, usage, argc, argv, 0, 0, 0};
+    const struct option_spec *sp;
+    const char *v;
+    int got;
+    while ((got = option_read(&rd, &sp, &v)) > 0) {
         switch (sp->id) {
-        case OPT_HELP:
-            usage(stdout);
-            return EXIT_OK;
-        case OPT_ARGUMENT:
-            return option_unexpected("trace", v, usage);
         case PIXEL:
             /* two values: I here, J the argument after it */
-            if (i + 1 >= argc || option_parse_int(v, 0, SCENE_MAX_SIZE - 1, &px) ||
-                option_parse_int(argv[i + 1], 0, SCENE_MAX_SIZE - 1, &py)) {
+            if (rd.next >= argc || option_parse_int(v, 0, SCENE_MAX_SIZE - 1, &px) ||
+                option_parse_int(argv[rd.next], 0, SCENE_MAX_SIZE - 1, &py)) {
                 fprintf(stderr, "bentray trace: --pixel: expected two pixel indices I J\n");
                 return EXIT_USAGE;
             }
-            i++;
+            rd.next++;
             break;
         default:
             if (options_common(&o, "trace", sp->id, v) != 0)
                 return EXIT_USAGE;
         }
     }
+    if (got < 0)
+        return rd.exit_code;
     if (px < 0) {
         fprintf(stderr, "bentray trace: --pixel I J is required\n");
         return EXIT_USAGE;

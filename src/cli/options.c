@@ -57,7 +57,6 @@ const struct option_spec common_option_specs[] = {
     {NULL, NULL, 0},
 };
 
-static const struct option_spec help_spec = {"--help", NULL, OPT_HELP};
 static const struct option_spec argument_spec = {"", NULL, OPT_ARGUMENT};
 
 static const struct option_spec *spec_find(const struct option_spec *table, const char *name)
@@ -85,39 +84,56 @@ static const char *spec_guess(const struct option_spec *own, const struct option
     return best;
 }
 
-const struct option_spec *option_next(const char *cmd, const struct option_spec *own,
-                                      const struct option_spec *common, int argc, char **argv, int *i,
-                                      const char **value, usage_fn usage)
+static int read_fails(struct option_reader *r, int exit_code)
 {
-    const char *arg = argv[*i];
+    r->exit_code = exit_code;
+    return -1;
+}
+
+int option_read(struct option_reader *r, const struct option_spec **spec, const char **value)
+{
+    if (r->next < 1)
+        r->next = 1;
     *value = NULL;
-    if (strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0)
-        return &help_spec;
+    if (r->next >= r->argc)
+        return 0;
+    const char *arg = r->argv[r->next++];
+    if (strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0) {
+        r->usage(stdout);
+        return read_fails(r, EXIT_OK);
+    }
     if (arg[0] != '-' || arg[1] == '\0') {
+        if (!r->arguments) {
+            fprintf(stderr, "bentray %s: unexpected argument '%s' (options begin with --)\n", r->cmd, arg);
+            r->usage(stderr);
+            return read_fails(r, EXIT_USAGE);
+        }
+        *spec = &argument_spec;
         *value = arg;
-        return &argument_spec;
+        return 1;
     }
-    const struct option_spec *sp = spec_find(own, arg);
+    const struct option_spec *sp = spec_find(r->own, arg);
     if (!sp)
-        sp = spec_find(common, arg);
+        sp = spec_find(r->common, arg);
     if (!sp) {
-        const char *guess = spec_guess(own, common, arg);
-        fprintf(stderr, "bentray %s: unknown option '%s'%s%s%s\n", cmd, arg, guess ? " (did you mean " : "",
+        const char *guess = spec_guess(r->own, r->common, arg);
+        fprintf(stderr, "bentray %s: unknown option '%s'%s%s%s\n", r->cmd, arg, guess ? " (did you mean " : "",
                 guess ? guess : "", guess ? "?)" : "");
-        usage(stderr);
-        return NULL;
+        r->usage(stderr);
+        return read_fails(r, EXIT_USAGE);
     }
+    *spec = sp;
     if (!sp->value)
-        return sp;
-    const char *next = *i + 1 < argc ? argv[*i + 1] : NULL;
+        return 1;
+    const char *next = r->next < r->argc ? r->argv[r->next] : NULL;
     if (!next || (strncmp(next, "--", 2) == 0 && next[2] != '\0')) {
-        fprintf(stderr, "bentray %s: option %s needs a value (%s)%s%s%s\n", cmd, sp->name, sp->value,
+        fprintf(stderr, "bentray %s: option %s needs a value (%s)%s%s%s\n", r->cmd, sp->name, sp->value,
                 next ? ", not the option '" : "", next ? next : "", next ? "'" : "");
-        return NULL;
+        return read_fails(r, EXIT_USAGE);
     }
     *value = next;
-    ++*i;
-    return sp;
+    r->next++;
+    return 1;
 }
 
 int options_common(struct common_options *o, const char *cmd, int id, const char *v)
@@ -204,14 +220,6 @@ int options_common(struct common_options *o, const char *cmd, int id, const char
         fprintf(stderr, "bentray %s: internal: option id %d has no meaning here\n", cmd, id);
         return -1;
     }
-}
-
-/* An argument where the command takes none: says so, with the usage. */
-int option_unexpected(const char *cmd, const char *arg, usage_fn usage)
-{
-    fprintf(stderr, "bentray %s: unexpected argument '%s' (options begin with --)\n", cmd, arg);
-    usage(stderr);
-    return EXIT_USAGE;
 }
 
 int options_engine_cpu(const struct common_options *o)

@@ -46,12 +46,11 @@ struct option_spec {
     int id;
 };
 
-/* Ids option_next gives besides a command's own (which must be >= 0): --help or -h, an argument
- * that is no option (a file of bentray compare), and the common options of the commands that
+/* Ids option_read gives besides a command's own (which must be >= 0): an argument that is no
+ * option (a file of bentray compare), and the common options of the commands that
  * render a scene (common_option_specs, applied by options_common). */
 enum {
-    OPT_HELP = -100,
-    OPT_ARGUMENT,
+    OPT_ARGUMENT = -100,
     OPT_SCENE,
     OPT_BACKEND,
     OPT_SHADER_DIR,
@@ -66,19 +65,29 @@ enum {
 };
 extern const struct option_spec common_option_specs[];
 
-/* The option at argv[*i], looked up in own and, when common is not NULL, in common: its spec,
- * with *value its value (the next argument, which *i then passes; NULL for a flag). Every command
- * reads its options through here, so each fails the same way: NULL after a message on stderr
- * naming the command and the option, for an unknown option (with the nearest known one within two
- * edits, and the usage) or one whose value is missing (the end of the line, or another option
- * where its value should be). An argument that is not an option comes back as OPT_ARGUMENT with
- * itself as the value ("-" alone is an argument: standard output). */
-const struct option_spec *option_next(const char *cmd, const struct option_spec *own,
-                                      const struct option_spec *common, int argc, char **argv, int *i,
-                                      const char **value, usage_fn usage);
+/* A command's options being read, one by one, from its argument list: set cmd, own (its table),
+ * common (common_option_specs, or NULL), usage, argc and argv, and arguments to 1 if the command
+ * takes arguments that are not options (bentray compare's files). */
+struct option_reader {
+    const char *cmd;
+    const struct option_spec *own, *common;
+    usage_fn usage;
+    int argc;
+    char **argv;
+    int arguments;
+    int next;        /* the argument read next; 0: the first after the command's name */
+    int exit_code;   /* when option_read returned -1: EXIT_OK after --help, else EXIT_USAGE */
+};
 
-/* An argument where the command takes none (OPT_ARGUMENT): says so with the usage; EXIT_USAGE. */
-int option_unexpected(const char *cmd, const char *arg, usage_fn usage);
+/* The next option, looked up in own and then in common: 1 with its spec and *value (the argument
+ * after it, NULL for a flag), 0 at the end of the list, -1 when the command is to exit with
+ * r->exit_code. Every command reads its options through here, so each fails the same way, after a
+ * message on stderr naming the command and the option: an unknown option (with the nearest known
+ * one within two edits, and the usage), a value missing (the end of the line, or another option
+ * where the value should be), an argument where the command takes none. --help and -h print the
+ * usage on stdout (-1, EXIT_OK). With r->arguments, an argument that is not an option comes back
+ * as OPT_ARGUMENT with itself as the value ("-" alone is an argument: standard output). */
+int option_read(struct option_reader *r, const struct option_spec **spec, const char **value);
 
 /* Applies common option id with its value to o: 0, or -1 after a message that names the option
  * and what it expects. */
