@@ -112,9 +112,7 @@ int kiosk_state_apply(const struct kiosk_state *st, const struct scene *base, st
     for (int i = 0; i < 2; i++) {
         if (!maps[i]->key[0] || isnan(params[i]))
             continue;
-        char assignment[SCENE_NAME_LEN + 32];
-        snprintf(assignment, sizeof assignment, "%s=%.17g", maps[i]->key, params[i]);
-        if (scene_set(out, assignment, err) != 0)
+        if (scene_set_number(out, maps[i]->key, params[i], err) != 0)
             return -1;
     }
     return scene_validate(out, err);

@@ -292,6 +292,9 @@ int scene_load(struct scene *s, const char *path, struct conf_error *err);
 int scene_set(struct scene *s, const char *assignment, struct conf_error *err);
 /* The value of a numeric key of an unnamed section ("model.rho"); 0, or -1 where there is none. */
 int scene_get_number(const struct scene *s, const char *key, double *out);
+/* Sets such a key to value, checked as a number written in a file would be (finite, the key's
+ * range), without going through text: the kiosk's knobs. 0, or -1 with err (where: "key=value"). */
+int scene_set_number(struct scene *s, const char *key, double value, struct conf_error *err);
 /* [kiosk] as the file writes it: each mapped knob's key is a number of this scene, over a range the
  * key accepts that holds the scene's own value. scene_load runs it, before any --set: rendering
  * ignores the section, so an override that changes the model does not make it wrong. */

@@ -3,6 +3,7 @@
  * loader, --set and the tests cannot disagree about what a scene may say. */
 #include <ctype.h>
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -610,6 +611,10 @@ int scene_key_find(enum scene_section_kind section, const char *name)
 #define NUMBER_TEXT(x) NUMBER_TEXT_(x)
 #define NUMBER_TEXT_(x) #x
 
+#define TOO_LARGE_REASON                                                                                        \
+    "larger in magnitude than " NUMBER_TEXT(SCENE_MAX_ABS_VALUE) ", the most a scene number may be: the GPU "  \
+    "squares lengths in 32-bit floats"
+
 /* COUNT numbers as every configuration reads them (conf/conf_value.h), each within the most a
  * scene number may be. */
 static int parse_numbers(const char *text, double *out, int count, const char **reason)
@@ -618,8 +623,7 @@ static int parse_numbers(const char *text, double *out, int count, const char **
         return -1;
     for (int i = 0; i < count; i++)
         if (fabs(out[i]) > SCENE_MAX_ABS_VALUE) {
-            *reason = "larger in magnitude than " NUMBER_TEXT(SCENE_MAX_ABS_VALUE) ", the most a scene number "
-                      "may be: the GPU squares lengths in 32-bit floats";
+            *reason = TOO_LARGE_REASON;
             return -1;
         }
     return 0;
@@ -865,5 +869,52 @@ int scene_key_apply(struct scene *s, enum scene_section_kind section, int instan
         return 0;
     }
     store_value(k, target, &v);
+    return 0;
+}
+
+int scene_set_number(struct scene *s, const char *key, double value, struct conf_error *err)
+{
+    memset(err, 0, sizeof *err);
+    snprintf(err->where, sizeof err->where, "%.*s=%.17g", (int)sizeof err->where - 40, key, value);
+    char section[SCENE_NAME_LEN];
+    const char *dot = strchr(key, '.');
+    int kind = -1;
+    if (dot && (size_t)(dot - key) < sizeof section) {
+        memcpy(section, key, (size_t)(dot - key));
+        section[dot - key] = '\0';
+        kind = scene_section_find(section);
+    }
+    int first = kind >= 0 && !scene_section_named(kind) ? scene_key_find(kind, dot + 1) : -1;
+    const struct scene_key *k = first >= 0 ? applicable_key(s, kind, 0, first) : NULL;
+    if (!k || k->kind != KEY_NUMBER) {
+        snprintf(err->message, sizeof err->message, "'%s' is not a number of this scene (a key such as model.rho, "
+                 "as --set names it)", key);
+        return -1;
+    }
+    char label[SCENE_NAME_LEN + 16];
+    scene_section_label(s, kind, 0, label, sizeof label);
+    /* what parse_value checks of a number written in a file: finite, a normal double, within the
+     * most a scene number may be, within the key's range */
+    const char *why = !isfinite(value)                          ? "not a finite number"
+                      : fabs(value) > SCENE_MAX_ABS_VALUE          ? TOO_LARGE_REASON
+                      : value != 0.0 && fabs(value) < DBL_MIN      ? "too large or too small for a double"
+                                                                   : NULL;
+    if (why || !in_range(k, value)) {
+        char expected[160];
+        describe_expected(k, expected, sizeof expected);
+        snprintf(err->message, sizeof err->message, "key '%s' in %s: expected %s, got %.17g%s%s%s", dot + 1, label,
+                 expected, value, why ? " (" : "", why ? why : "", why ? ")" : "");
+        return -1;
+    }
+    union scene_key_value v = {.number = value};
+    char reason[SCENE_PATH_LEN + 160];
+    if (k->set) {
+        if (k->set(s, s, &v, reason, sizeof reason) != 0) {
+            snprintf(err->message, sizeof err->message, "key '%.64s' in %s: %.300s", dot + 1, label, reason);
+            return -1;
+        }
+        return 0;
+    }
+    store_value(k, s, &v);
     return 0;
 }

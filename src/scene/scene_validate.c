@@ -229,11 +229,9 @@ static int validate_knob(const struct scene *s, const char *knob, const struct k
     static struct scene trial;
     const double ends[2] = {m->min, m->max};
     for (int i = 0; i < 2; i++) {
-        char assignment[SCENE_NAME_LEN + 32];
         struct conf_error e;
         trial = *s;
-        snprintf(assignment, sizeof assignment, "%s=%.17g", m->key, ends[i]);
-        if (scene_set(&trial, assignment, &e) != 0)
+        if (scene_set_number(&trial, m->key, ends[i], &e) != 0)
             return invalid(s, err, "[kiosk] %s_%s = %g: %s", knob, i ? "max" : "min", ends[i], e.message);
         if (validate_knob_shadow(s, knob, m, &trial, i, ends[i], err) != 0)
             return -1;

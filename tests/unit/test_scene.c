@@ -924,6 +924,58 @@ static void test_validate(void **state)
 /* A ray's budget (docs/SCENES.md, [render]): fixed steps take it from segments or from max_path,
  * never both; adaptive steps always from max_path, with segments as the most a frame runs; a
  * budget beyond the segments a frame may run is refused. */
+/* scene_set_number (the kiosk's knobs) takes a number as --set takes its text: the same values
+ * stored, the same values refused in the same words, and only keys that are numbers. */
+static void test_set_number(void **state)
+{
+    (void)state;
+    static struct scene a, b;
+    struct conf_error ea, eb;
+    static const struct {
+        const char *key;
+        double value;
+    } cases[] = {
+        {"model.rho", 28.0},          {"model.rho", 0.1 + 0.2},       {"model.rho", -1.0},
+        {"model.rho", 1e300},         {"model.rho", 5e-320},          {"camera.fov", 179.5},
+        {"camera.fov", 0.0},          {"camera.fov", 180.0},          {"render.step", 1e-3},
+        {"render.bound_radius", 0.0}, {"model.sigma", 10.000000000000002},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        assert_int_equal(scene_load(&a, "assets/scenes/lorenz.scene", &ea), 0);
+        b = a;
+        char text[128];
+        snprintf(text, sizeof text, "%s=%.17g", cases[k].key, cases[k].value);
+        int ra = scene_set_number(&a, cases[k].key, cases[k].value, &ea);
+        int rb = scene_set(&b, text, &eb);
+        print_message("%s: %s%s\n", text, ra ? "refused: " : "set", ra ? ea.message : "");
+        assert_int_equal(ra, rb);
+        if (ra == 0) {
+            double x = NAN, y = NAN;
+            assert_int_equal(scene_get_number(&a, cases[k].key, &x), 0);
+            assert_int_equal(scene_get_number(&b, cases[k].key, &y), 0);
+            assert_memory_equal(&x, &y, sizeof x);
+            assert_memory_equal(&x, &cases[k].value, sizeof x);
+        } else {
+            /* the same reason; the quoted value differs only in its quotes */
+            const char *expected = strstr(eb.message, "expected");
+            assert_non_null(expected);
+            assert_non_null(strstr(ea.message, "expected"));
+            size_t n = (size_t)(strstr(expected, ", got") - expected);
+            assert_int_equal(strncmp(strstr(ea.message, "expected"), expected, n), 0);
+            const char *why_b = strstr(expected, " ("), *why_a = strstr(ea.message, " (");
+            assert_true((why_a == NULL) == (why_b == NULL));
+            if (why_b)
+                assert_string_equal(why_a, why_b);
+        }
+    }
+    assert_int_equal(scene_load(&a, "assets/scenes/lorenz.scene", &ea), 0);
+    assert_int_equal(scene_set_number(&a, "camera.position", 1.0, &ea), -1);
+    assert_non_null(strstr(ea.message, "not a number of this scene"));
+    assert_int_equal(scene_set_number(&a, "model.mass", 1.0, &ea), -1);   /* Lorenz has no mass */
+    assert_int_equal(scene_set_number(&a, "object.x.radius", 1.0, &ea), -1);
+    assert_int_equal(scene_set_number(&a, "nonsense", 1.0, &ea), -1);
+}
+
 static void test_budget(void **state)
 {
     struct scene s;
@@ -1031,6 +1083,7 @@ int main(void)
         cmocka_unit_test(test_set_rejects),
         cmocka_unit_test(test_validate),
         cmocka_unit_test(test_budget),
+        cmocka_unit_test(test_set_number),
         cmocka_unit_test(test_every_key_is_documented),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
