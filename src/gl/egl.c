@@ -12,7 +12,7 @@ struct egl_state {
     EGLDisplay display;
     EGLContext context;
     EGLSurface surface;
-    PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC create_window_surface;
+    PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC create_window_surface;   /* NULL where EGL lacks it */
     const char *who;
 };
 
@@ -54,8 +54,8 @@ struct gl_context *egl_open(const struct egl_platform *p, void *native_display, 
         (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
     PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC create_window_surface =
         (PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC)eglGetProcAddress("eglCreatePlatformWindowSurfaceEXT");
-    if (!get_platform_display || !create_window_surface) {
-        snprintf(err, errlen, "%s: EGL lacks eglGetPlatformDisplayEXT or eglCreatePlatformWindowSurfaceEXT", who);
+    if (!get_platform_display) {
+        snprintf(err, errlen, "%s: EGL lacks eglGetPlatformDisplayEXT", who);
         return NULL;
     }
     struct gl_context *ctx = calloc(1, sizeof *ctx);
@@ -133,6 +133,10 @@ static int make_current(struct gl_context *ctx, EGLConfig config, const char *on
 int egl_attach_window(struct gl_context *ctx, EGLConfig config, void *native_window, char *err, size_t errlen)
 {
     struct egl_state *egl = ctx->priv;
+    if (!egl->create_window_surface) {
+        snprintf(err, errlen, "%s: EGL lacks eglCreatePlatformWindowSurfaceEXT", egl->who);
+        return -1;
+    }
     egl->surface = egl->create_window_surface(egl->display, config, native_window, NULL);
     if (egl->surface == EGL_NO_SURFACE) {
         snprintf(err, errlen, "%s: cannot create an EGL window surface (EGL error 0x%x)", egl->who, eglGetError());
