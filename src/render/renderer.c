@@ -15,10 +15,6 @@ static double now_seconds(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* The variant of the scene as it is now: a knob may have switched the field off (flat space, not
- * integrated) or on, set the observer moving, or changed the effects between two frames. The
- * programs of every variant stay cached; only the black-body table is rebuilt when the tone
- * mapping changes. */
 static uint64_t fnv1a(uint64_t h, const void *bytes, size_t n)
 {
     const unsigned char *c = bytes;
@@ -39,6 +35,10 @@ static uint64_t assets_key(const struct scene *s)
     return h;
 }
 
+/* The variant of the scene as it is now: a knob may have switched the field off (flat space, not
+ * integrated) or on, set the observer moving, or changed the effects between two frames. The
+ * programs of every variant stay cached; only the black-body table is rebuilt when the tone
+ * mapping changes. */
 static int renderer_follow_scene(struct renderer *r, char *err, size_t errlen)
 {
     const struct scene *scene = r->scene;
