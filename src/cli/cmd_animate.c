@@ -121,8 +121,8 @@ static int parse_range(const char *arg, struct range *r)
     snprintf(key, 128, "%.*s", (int)(eq - arg), arg);
     r->key = key;
     r->kind = key_kind(key);
-    if (r->kind != KEY_NUMBER && r->kind != KEY_INTEGER && r->kind != KEY_VECTOR && r->kind != KEY_COLOR &&
-        r->kind != KEY_TEXCOORD) {
+    if (r->kind != CONF_NUMBER && r->kind != CONF_INTEGER && r->kind != CONF_VECTOR && r->kind != CONF_COLOR &&
+        r->kind != CONF_TEXCOORD) {
         fprintf(stderr, "bentray animate: --set-range %s: %s\n", arg,
                 r->kind < 0 ? "no such key (keys: docs/SCENES.md; objects and lights: object.NAME.key)"
                             : "only a number, vector or colour key can move between two values");
@@ -162,7 +162,7 @@ static void range_text(const struct range *r, double t, char *out, size_t len)
         double v = r->from[c] + t * (r->to[c] - r->from[c]);
         if (t >= 1.0)
             v = r->to[c];
-        if (r->kind == KEY_INTEGER)
+        if (r->kind == CONF_INTEGER)
             used += (size_t)snprintf(out + used, len - used, "%s%.0f", c ? " " : "", floor(v + 0.5));
         else {
             if (c && used + 1 < len)

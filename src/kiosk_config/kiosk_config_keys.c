@@ -1,6 +1,6 @@
 /* The table of kiosk configuration keys. A key is described once here (section, name, kind, range,
- * the input types it belongs to, where it is stored); kiosk_config_values.c parses and stores
- * values by this description, so the loader and the checks cannot disagree about a key. */
+ * the input types it belongs to, where it is stored); conf/conf_key.c parses and stores values by
+ * this description, so the loader and the checks cannot disagree about a key. */
 #include <ctype.h>
 #include <math.h>
 #include <stdio.h>
@@ -10,30 +10,30 @@
 
 /* ---- choices, and the names of enumerations ------------------------------------------------ */
 
-static const struct kiosk_choice switch_choices[] = {{"off", 0}, {"on", 1}, {NULL, 0}};
-static const struct kiosk_choice backend_choices[] = {
+static const struct conf_choice switch_choices[] = {{"off", 0}, {"on", 1}, {NULL, 0}};
+static const struct conf_choice backend_choices[] = {
     {"auto", KIOSK_BACKEND_AUTO}, {"kms", KIOSK_BACKEND_KMS}, {"x11", KIOSK_BACKEND_X11},
     {"headless", KIOSK_BACKEND_HEADLESS}, {NULL, 0}
 };
-static const struct kiosk_choice speed_curves[] = {
+static const struct conf_choice speed_curves[] = {
     {"linear", KIOSK_CURVE_LINEAR}, {"rapidity", KIOSK_CURVE_RAPIDITY}, {NULL, 0}
 };
-static const struct kiosk_choice mass_curves[] = {
+static const struct conf_choice mass_curves[] = {
     {"linear", KIOSK_CURVE_LINEAR}, {"log", KIOSK_CURVE_LOG}, {NULL, 0}
 };
 #define ACTION_CHOICE(id, name) {name, KIOSK_ACTION_##id},
-static const struct kiosk_choice action_choices[] = {KIOSK_ACTIONS(ACTION_CHOICE) {NULL, 0}};
+static const struct conf_choice action_choices[] = {KIOSK_ACTIONS(ACTION_CHOICE) {NULL, 0}};
 #undef ACTION_CHOICE
-static const struct kiosk_choice type_choices[] = {
+static const struct conf_choice type_choices[] = {
     {"powermate", KIOSK_INPUT_POWERMATE}, {"hid", KIOSK_INPUT_HID},
     {"gpio_encoder", KIOSK_INPUT_GPIO_ENCODER}, {"gpio_button", KIOSK_INPUT_GPIO_BUTTON},
     {"keyboard", KIOSK_INPUT_KEYBOARD}, {"script", KIOSK_INPUT_SCRIPT}, {NULL, 0}
 };
-static const struct kiosk_choice axis_mode_choices[] = {
+static const struct conf_choice axis_mode_choices[] = {
     {"relative", KIOSK_AXIS_RELATIVE}, {"absolute", KIOSK_AXIS_ABSOLUTE}, {NULL, 0}
 };
-static const struct kiosk_choice axis_size_choices[] = {{"1", 1}, {"2", 2}, {"4", 4}, {NULL, 0}};
-static const struct kiosk_choice counts_choices[] = {{"1", 1}, {"2", 2}, {"4", 4}, {NULL, 0}};
+static const struct conf_choice axis_size_choices[] = {{"1", 1}, {"2", 2}, {"4", 4}, {NULL, 0}};
+static const struct conf_choice counts_choices[] = {{"1", 1}, {"2", 2}, {"4", 4}, {NULL, 0}};
 
 _Static_assert(sizeof action_choices / sizeof action_choices[0] == KIOSK_ACTION_COUNT + 1,
                "one name per action");
@@ -133,8 +133,8 @@ int kiosk_name_ok(const char *name)
 #define SCRIPT FOR(KIOSK_INPUT_SCRIPT)
 
 #define SIZE_RANGE .lo = KIOSK_MIN_SIZE, .hi = KIOSK_MAX_SIZE
-#define SWITCH .kind = KK_CHOICE, .choices = switch_choices
-#define CHOOSE(list) .kind = KK_CHOICE, .choices = list
+#define SWITCH .kind = CONF_CHOICE, .choices = switch_choices
+#define CHOOSE(list) .kind = CONF_CHOICE, .choices = list
 /* GPIO line offsets: far above any real chip's line count, low enough to catch a pin's name typed
  * as a number */
 #define GPIO_LINE_MAX 1023
@@ -152,87 +152,87 @@ static const char speed_hint[] = "speeds are fractions of c: 0.99 at most (gamma
 
 /* The two knobs take the same keys with their own ranges and curves. */
 #define KNOB_KEYS(sec, knob, top, curves, hint_text)                                                 \
-    {sec, "input", KK_NAME, .offset = AT_CONFIG(knob.input)},                                        \
-    {sec, "min", KK_NUMBER, .lo = 0.0, .hi = top, .flags = CONF_BELOW_HI, .offset = AT_CONFIG(knob.min), \
+    {sec, "input", CONF_NAME, .offset = AT_CONFIG(knob.input)},                                        \
+    {sec, "min", CONF_NUMBER, .lo = 0.0, .hi = top, .flags = CONF_BELOW_HI, .offset = AT_CONFIG(knob.min), \
      .hint = hint_text},                                                                             \
-    {sec, "max", KK_NUMBER, .lo = 0.0, .hi = top, .flags = CONF_ABOVE_LO, .offset = AT_CONFIG(knob.max), \
+    {sec, "max", CONF_NUMBER, .lo = 0.0, .hi = top, .flags = CONF_ABOVE_LO, .offset = AT_CONFIG(knob.max), \
      .hint = hint_text},                                                                             \
-    {sec, "step", KK_NUMBER, .lo = 0.0, .hi = KNOB_STEP_MAX, .flags = CONF_ABOVE_LO,                   \
+    {sec, "step", CONF_NUMBER, .lo = 0.0, .hi = KNOB_STEP_MAX, .flags = CONF_ABOVE_LO,                   \
      .offset = AT_CONFIG(knob.step)},                                                                \
     {sec, "curve", CHOOSE(curves), .offset = AT_CONFIG(knob.curve)},                                 \
-    {sec, "start", KK_NUMBER, .lo = 0.0, .hi = top, .offset = AT_CONFIG(knob.start), .hint = hint_text}
+    {sec, "start", CONF_NUMBER, .lo = 0.0, .hi = top, .offset = AT_CONFIG(knob.start), .hint = hint_text}
 
-const struct kiosk_key kiosk_keys[] = {
-    {KSEC_KIOSK, "scenes", KK_SPECIAL, .set = kiosk_set_scenes},
-    {KSEC_KIOSK, "start_scene", KK_SPECIAL, .set = kiosk_set_start_scene},
-    {KSEC_KIOSK, "idle_seconds", KK_INT, .lo = 10, .hi = 86400, .offset = AT_CONFIG(kiosk.idle_seconds)},
-    {KSEC_KIOSK, "preview_width", KK_INT, SIZE_RANGE, .offset = AT_CONFIG(kiosk.preview_width)},
-    {KSEC_KIOSK, "preview_height", KK_INT, SIZE_RANGE, .offset = AT_CONFIG(kiosk.preview_height)},
-    {KSEC_KIOSK, "width", KK_INT, SIZE_RANGE, .offset = AT_CONFIG(kiosk.width)},
-    {KSEC_KIOSK, "height", KK_INT, SIZE_RANGE, .offset = AT_CONFIG(kiosk.height)},
-    {KSEC_KIOSK, "refine_frames", KK_INT, .lo = 1, .hi = 60, .offset = AT_CONFIG(kiosk.refine_frames)},
-    {KSEC_KIOSK, "image_memory", KK_INT, .lo = 1, .hi = 65536, .offset = AT_CONFIG(kiosk.image_memory)},
+const struct conf_key kiosk_keys[] = {
+    {KSEC_KIOSK, "scenes", CONF_SPECIAL, .set = kiosk_set_scenes},
+    {KSEC_KIOSK, "start_scene", CONF_SPECIAL, .set = kiosk_set_start_scene},
+    {KSEC_KIOSK, "idle_seconds", CONF_INTEGER, .lo = 10, .hi = 86400, .offset = AT_CONFIG(kiosk.idle_seconds)},
+    {KSEC_KIOSK, "preview_width", CONF_INTEGER, SIZE_RANGE, .offset = AT_CONFIG(kiosk.preview_width)},
+    {KSEC_KIOSK, "preview_height", CONF_INTEGER, SIZE_RANGE, .offset = AT_CONFIG(kiosk.preview_height)},
+    {KSEC_KIOSK, "width", CONF_INTEGER, SIZE_RANGE, .offset = AT_CONFIG(kiosk.width)},
+    {KSEC_KIOSK, "height", CONF_INTEGER, SIZE_RANGE, .offset = AT_CONFIG(kiosk.height)},
+    {KSEC_KIOSK, "refine_frames", CONF_INTEGER, .lo = 1, .hi = 60, .offset = AT_CONFIG(kiosk.refine_frames)},
+    {KSEC_KIOSK, "image_memory", CONF_INTEGER, .lo = 1, .hi = 65536, .offset = AT_CONFIG(kiosk.image_memory)},
     {KSEC_KIOSK, "hud", SWITCH, .offset = AT_CONFIG(kiosk.hud)},
-    {KSEC_KIOSK, "font", KK_FILE, .offset = AT_CONFIG(kiosk.font)},
-    {KSEC_KIOSK, "log", KK_SPECIAL, .set = kiosk_set_log},
-    {KSEC_KIOSK, "assets_root", KK_DIR, .offset = AT_CONFIG(kiosk.assets_root)},
+    {KSEC_KIOSK, "font", CONF_FILE, .offset = AT_CONFIG(kiosk.font)},
+    {KSEC_KIOSK, "log", CONF_SPECIAL, .set = kiosk_set_log},
+    {KSEC_KIOSK, "assets_root", CONF_DIR, .offset = AT_CONFIG(kiosk.assets_root)},
 
     {KSEC_DISPLAY, "backend", CHOOSE(backend_choices), .offset = AT_CONFIG(display.backend)},
-    {KSEC_DISPLAY, "drm_device", KK_SPECIAL, .set = kiosk_set_device},
-    {KSEC_DISPLAY, "connector", KK_WORD, .offset = AT_CONFIG(display.connector)},
-    {KSEC_DISPLAY, "mode", KK_SPECIAL, .set = kiosk_set_mode},
+    {KSEC_DISPLAY, "drm_device", CONF_SPECIAL, .set = kiosk_set_device},
+    {KSEC_DISPLAY, "connector", CONF_WORD, .offset = AT_CONFIG(display.connector)},
+    {KSEC_DISPLAY, "mode", CONF_SPECIAL, .set = kiosk_set_mode},
     {KSEC_DISPLAY, "vsync", SWITCH, .offset = AT_CONFIG(display.vsync)},
-    {KSEC_DISPLAY, "headless_out", KK_DIR, .offset = AT_CONFIG(display.headless_out)},
-    {KSEC_DISPLAY, "headless_frames", KK_INT, .lo = 0, .hi = HEADLESS_FRAMES_MAX,
+    {KSEC_DISPLAY, "headless_out", CONF_DIR, .offset = AT_CONFIG(display.headless_out)},
+    {KSEC_DISPLAY, "headless_frames", CONF_INTEGER, .lo = 0, .hi = HEADLESS_FRAMES_MAX,
      .offset = AT_CONFIG(display.headless_frames)},
 
     KNOB_KEYS(KSEC_SPEED, speed, KIOSK_SPEED_MAX, speed_curves, speed_hint),
     KNOB_KEYS(KSEC_MASS, mass, KIOSK_MASS_MAX, mass_curves, NULL),
 
     {KSEC_ATTRACT, "enabled", SWITCH, .offset = AT_CONFIG(attract.enabled)},
-    {KSEC_ATTRACT, "script", KK_FILE, .offset = AT_CONFIG(attract.script)},
+    {KSEC_ATTRACT, "script", CONF_FILE, .offset = AT_CONFIG(attract.script)},
 
     {KSEC_BUTTON, "action", CHOOSE(action_choices), .flags = CONF_REQUIRED, .offset = AT_BUTTON(action)},
-    {KSEC_BUTTON, "input", KK_NAME, .flags = CONF_REQUIRED, .offset = AT_BUTTON(input)},
-    {KSEC_BUTTON, "bit", KK_INT, .lo = 0, .hi = 7, .offset = AT_BUTTON(bit)},
+    {KSEC_BUTTON, "input", CONF_NAME, .flags = CONF_REQUIRED, .offset = AT_BUTTON(input)},
+    {KSEC_BUTTON, "bit", CONF_INTEGER, .lo = 0, .hi = 7, .offset = AT_BUTTON(bit)},
 
     {KSEC_INPUT, "type", CHOOSE(type_choices), .flags = CONF_REQUIRED, .offset = AT_INPUT(type),
      .set = kiosk_set_input_type},
     /* a name may have one entry per group of types: USB ids are optional for the PowerMate */
-    {KSEC_INPUT, "vid", KK_HEX, .applies = POWERMATE, .offset = AT_INPUT(vid)},
-    {KSEC_INPUT, "vid", KK_HEX, .applies = HID, .flags = CONF_REQUIRED, .offset = AT_INPUT(vid)},
-    {KSEC_INPUT, "pid", KK_HEX, .applies = POWERMATE, .offset = AT_INPUT(pid)},
-    {KSEC_INPUT, "pid", KK_HEX, .applies = HID, .flags = CONF_REQUIRED, .offset = AT_INPUT(pid)},
-    {KSEC_INPUT, "report_id", KK_INT, .lo = 0, .hi = 255, .applies = HID, .offset = AT_INPUT(report_id)},
-    {KSEC_INPUT, "report_length", KK_INT, .lo = 1, .hi = HID_REPORT_MAX, .applies = HID,
+    {KSEC_INPUT, "vid", CONF_HEX16, .applies = POWERMATE, .offset = AT_INPUT(vid)},
+    {KSEC_INPUT, "vid", CONF_HEX16, .applies = HID, .flags = CONF_REQUIRED, .offset = AT_INPUT(vid)},
+    {KSEC_INPUT, "pid", CONF_HEX16, .applies = POWERMATE, .offset = AT_INPUT(pid)},
+    {KSEC_INPUT, "pid", CONF_HEX16, .applies = HID, .flags = CONF_REQUIRED, .offset = AT_INPUT(pid)},
+    {KSEC_INPUT, "report_id", CONF_INTEGER, .lo = 0, .hi = 255, .applies = HID, .offset = AT_INPUT(report_id)},
+    {KSEC_INPUT, "report_length", CONF_INTEGER, .lo = 1, .hi = HID_REPORT_MAX, .applies = HID,
      .offset = AT_INPUT(report_length)},
-    {KSEC_INPUT, "axis_offset", KK_INT, .lo = 0, .hi = HID_REPORT_MAX - 1, .applies = HID,
+    {KSEC_INPUT, "axis_offset", CONF_INTEGER, .lo = 0, .hi = HID_REPORT_MAX - 1, .applies = HID,
      .offset = AT_INPUT(axis_offset)},
     {KSEC_INPUT, "axis_size", CHOOSE(axis_size_choices), .applies = HID, .offset = AT_INPUT(axis_size)},
     {KSEC_INPUT, "axis_signed", SWITCH, .applies = HID, .offset = AT_INPUT(axis_signed)},
     {KSEC_INPUT, "axis_mode", CHOOSE(axis_mode_choices), .applies = HID, .offset = AT_INPUT(axis_mode)},
-    {KSEC_INPUT, "axis_min", KK_INT64, AXIS_RANGE, .applies = HID, .offset = AT_INPUT(axis_min)},
-    {KSEC_INPUT, "axis_max", KK_INT64, AXIS_RANGE, .applies = HID, .offset = AT_INPUT(axis_max)},
-    {KSEC_INPUT, "button_offset", KK_INT, .lo = 0, .hi = HID_REPORT_MAX - 1, .applies = HID,
+    {KSEC_INPUT, "axis_min", CONF_INT64, AXIS_RANGE, .applies = HID, .offset = AT_INPUT(axis_min)},
+    {KSEC_INPUT, "axis_max", CONF_INT64, AXIS_RANGE, .applies = HID, .offset = AT_INPUT(axis_max)},
+    {KSEC_INPUT, "button_offset", CONF_INTEGER, .lo = 0, .hi = HID_REPORT_MAX - 1, .applies = HID,
      .offset = AT_INPUT(button_offset)},
-    {KSEC_INPUT, "buttons", KK_INT, .lo = 0, .hi = 8, .applies = HID, .offset = AT_INPUT(buttons)},
-    {KSEC_INPUT, "chip", KK_WORD, .applies = ENCODER | GPIO_BUTTON, .flags = CONF_REQUIRED,
+    {KSEC_INPUT, "buttons", CONF_INTEGER, .lo = 0, .hi = 8, .applies = HID, .offset = AT_INPUT(buttons)},
+    {KSEC_INPUT, "chip", CONF_WORD, .applies = ENCODER | GPIO_BUTTON, .flags = CONF_REQUIRED,
      .offset = AT_INPUT(chip)},
-    {KSEC_INPUT, "line_a", KK_INT, .lo = 0, .hi = GPIO_LINE_MAX, .applies = ENCODER,
+    {KSEC_INPUT, "line_a", CONF_INTEGER, .lo = 0, .hi = GPIO_LINE_MAX, .applies = ENCODER,
      .offset = AT_INPUT(line_a)},
-    {KSEC_INPUT, "line_b", KK_INT, .lo = 0, .hi = GPIO_LINE_MAX, .applies = ENCODER,
+    {KSEC_INPUT, "line_b", CONF_INTEGER, .lo = 0, .hi = GPIO_LINE_MAX, .applies = ENCODER,
      .offset = AT_INPUT(line_b)},
-    {KSEC_INPUT, "line_a_name", KK_WORD, .applies = ENCODER, .offset = AT_INPUT(line_a_name)},
-    {KSEC_INPUT, "line_b_name", KK_WORD, .applies = ENCODER, .offset = AT_INPUT(line_b_name)},
+    {KSEC_INPUT, "line_a_name", CONF_WORD, .applies = ENCODER, .offset = AT_INPUT(line_a_name)},
+    {KSEC_INPUT, "line_b_name", CONF_WORD, .applies = ENCODER, .offset = AT_INPUT(line_b_name)},
     {KSEC_INPUT, "counts_per_detent", CHOOSE(counts_choices), .applies = ENCODER,
      .offset = AT_INPUT(counts_per_detent)},
-    {KSEC_INPUT, "line", KK_INT, .lo = 0, .hi = GPIO_LINE_MAX, .applies = GPIO_BUTTON,
+    {KSEC_INPUT, "line", CONF_INTEGER, .lo = 0, .hi = GPIO_LINE_MAX, .applies = GPIO_BUTTON,
      .offset = AT_INPUT(line)},
-    {KSEC_INPUT, "line_name", KK_WORD, .applies = GPIO_BUTTON, .offset = AT_INPUT(line_name)},
+    {KSEC_INPUT, "line_name", CONF_WORD, .applies = GPIO_BUTTON, .offset = AT_INPUT(line_name)},
     {KSEC_INPUT, "active_low", SWITCH, .applies = GPIO_BUTTON, .offset = AT_INPUT(active_low)},
-    {KSEC_INPUT, "debounce_ms", KK_INT, .lo = 1, .hi = 200, .applies = GPIO_BUTTON,
+    {KSEC_INPUT, "debounce_ms", CONF_INTEGER, .lo = 1, .hi = 200, .applies = GPIO_BUTTON,
      .offset = AT_INPUT(debounce_ms)},
-    {KSEC_INPUT, "path", KK_FILE, .applies = SCRIPT, .flags = CONF_REQUIRED, .offset = AT_INPUT(path)},
+    {KSEC_INPUT, "path", CONF_FILE, .applies = SCRIPT, .flags = CONF_REQUIRED, .offset = AT_INPUT(path)},
 };
 
 const int kiosk_key_count = (int)(sizeof kiosk_keys / sizeof kiosk_keys[0]);
@@ -240,12 +240,62 @@ _Static_assert(sizeof kiosk_keys / sizeof kiosk_keys[0] <= KIOSK_KEY_TABLE_MAX,
                "raise KIOSK_KEY_TABLE_MAX");
 _Static_assert(KIOSK_INPUT_TYPE_COUNT <= 16, "type masks are unsigned bit sets");
 
+/* ---- what only the kiosk's configuration knows about its keys ------------------------------ */
+
+static void label(const void *owner, int section, int instance, char *buf, size_t len)
+{
+    kiosk_section_label(owner, (enum kiosk_section)section, instance, buf, len);
+}
+
+static void *target(void *owner, int section, int instance)
+{
+    struct kiosk_config *c = owner;
+    if (section == KSEC_BUTTON)
+        return &c->buttons[instance];
+    if (section == KSEC_INPUT)
+        return &c->inputs[instance];
+    return c;
+}
+
+static const char *type_word(int section)
+{
+    return section == KSEC_INPUT ? "input type" : NULL;
+}
+
+static int type_of(const void *owner, int section, int instance)
+{
+    (void)section;
+    return (int)((const struct kiosk_config *)owner)->inputs[instance].type;
+}
+
+static const char *type_name(int section, int t)
+{
+    (void)section;
+    return kiosk_input_type_name((enum kiosk_input_type)t);
+}
+
+static int resolve_path(const void *owner, const char *rel, char *out, size_t len)
+{
+    return kiosk_resolve_path(owner, rel, out, len);
+}
+
+const struct conf_key_table kiosk_key_table = {
+    .keys = kiosk_keys,
+    .count = sizeof kiosk_keys / sizeof kiosk_keys[0],
+    .name_len = KIOSK_NAME_LEN,
+    .path_len = KIOSK_PATH_LEN,
+    .relative_note = KIOSK_RELATIVE_NOTE,
+    .label = label,
+    .target = target,
+    .type_word = type_word,
+    .type_of = type_of,
+    .type_name = type_name,
+    .resolve_path = resolve_path,
+};
+
 int kiosk_key_find(enum kiosk_section section, const char *name)
 {
-    for (int i = 0; i < kiosk_key_count; i++)
-        if (kiosk_keys[i].section == section && strcmp(kiosk_keys[i].name, name) == 0)
-            return i;
-    return -1;
+    return conf_key_find(&kiosk_key_table, (int)section, name);
 }
 
 int kiosk_key_line(const struct kiosk_config *c, enum kiosk_section section, int instance,

@@ -1,11 +1,11 @@
 /* The key table of the kiosk configuration (src/kiosk_config/; src/kiosk/kiosk_images.c asks it
  * for a key's line): every key the file may hold, described once (section, name, kind, range, the
- * input types it belongs to, where it is stored), and the parsing of values, so that the loader,
+ * input types it belongs to, where it is stored), applied by conf/conf_key.h, so that the loader,
  * the checks and the tests cannot disagree about a key. */
 #ifndef BT_KIOSK_CONFIG_KEYS_H
 #define BT_KIOSK_CONFIG_KEYS_H
 #include <stddef.h>
-#include "conf/conf_value.h"
+#include "conf/conf_key.h"
 #include "kiosk_config/kiosk_config.h"
 
 /* No honest configuration comes near this; refusing earlier keeps a wrong path (a log, an image)
@@ -23,49 +23,15 @@ enum kiosk_section {
     KSEC_COUNT
 };
 
-enum kiosk_key_kind {
-    KK_INT,             /* an int in [lo, hi] */
-    KK_INT64,           /* an int64_t in [lo, hi] */
-    KK_NUMBER,          /* a finite double in [lo, hi], ends as flags say */
-    KK_CHOICE,          /* one of choices, stored as its int value */
-    KK_HEX,             /* 0x0000 .. 0xffff, for USB ids */
-    KK_NAME,            /* letters, digits, '_' and '-': a reference to a section */
-    KK_WORD,            /* any text without blanks: GPIO chips, line names, connectors */
-    KK_FILE,            /* a readable regular file, relative to the config's directory */
-    KK_DIR,             /* an existing directory, relative to the config's directory */
-    KK_SPECIAL          /* parsed and stored by set() */
-};
+/* flags of the table's keys: CONF_ABOVE_LO, CONF_BELOW_HI and CONF_REQUIRED (conf/conf_key.h: the
+ * section is incomplete without the key, for the input types it applies to) */
 
-/* flags: CONF_ABOVE_LO, CONF_BELOW_HI and CONF_REQUIRED (conf/conf_value.h: the section is
- * incomplete without the key, for the types it applies to) */
+/* Where relative paths start, for the message about a file that is not there. */
+#define KIOSK_RELATIVE_NOTE "relative paths start at the configuration file's directory"
 
-struct kiosk_choice {
-    const char *name;
-    int value;
-};
-
-/* KK_SPECIAL: parses and stores what a plain field cannot take. Other kinds: called after the value
- * is stored, for what follows from it (an input type's own defaults). target is the config, the
- * button or the input the section stands for. On failure writes why into reason (the caller adds
- * key and section). */
-typedef int (*kiosk_key_setter)(struct kiosk_config *c, void *target, const char *value,
-                                char *reason, size_t reason_len);
-
-struct kiosk_key {
-    enum kiosk_section section;
-    const char *name;
-    enum kiosk_key_kind kind;
-    double lo, hi;
-    unsigned flags;
-    const struct kiosk_choice *choices;  /* KK_CHOICE: ends with a NULL name */
-    unsigned applies;                    /* [input]: bits of kiosk_input_type; 0: every type */
-    size_t offset;                       /* field in the config, button or input */
-    kiosk_key_setter set;                /* KK_SPECIAL; otherwise optional, runs after storing */
-    const char *hint;                    /* added to a refused value's message */
-};
-
-extern const struct kiosk_key kiosk_keys[];
+extern const struct conf_key kiosk_keys[];
 extern const int kiosk_key_count;
+extern const struct conf_key_table kiosk_key_table;
 
 const char *kiosk_section_name(enum kiosk_section section);
 /* Section kind called NAME, -1 if there is none. */
@@ -94,10 +60,6 @@ const char *kiosk_key_missing(const struct kiosk_config *c, enum kiosk_section s
 int kiosk_name_ok(const char *name);
 /* REL against the config's directory (absolute paths are kept): 0, or -1 if it does not fit. */
 int kiosk_resolve_path(const struct kiosk_config *c, const char *rel, char *out, size_t out_len);
-/* PATH is a readable regular file (an existing directory): 0, or -1 with the reason, which quotes
- * the path. */
-int kiosk_check_file(const char *path, char *reason, size_t len);
-int kiosk_check_dir(const char *path, char *reason, size_t len);
 /* Whether PATH, with ".." and symbolic links resolved, lies inside the directory ROOT: 1 inside,
  * 0 outside (with both resolved paths in REASON), -1 when either cannot be resolved. */
 int kiosk_path_inside(const char *path, const char *root, char *reason, size_t len);
@@ -106,14 +68,14 @@ int kiosk_path_inside(const char *path, const char *root, char *reason, size_t l
 int kiosk_scene_find(const struct kiosk_config *c, const char *name);
 
 /* The table's setters (kiosk_config_values.c, kiosk_config_paths.c). */
-int kiosk_set_scenes(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len);
+int kiosk_set_scenes(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len);
 /* More scenes for the list, from a line that continues 'scenes'. */
 int kiosk_scenes_append(struct kiosk_config *c, const char *text, char *reason, size_t len);
-int kiosk_set_start_scene(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len);
-int kiosk_set_log(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len);
-int kiosk_set_device(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len);
-int kiosk_set_mode(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len);
-int kiosk_set_input_type(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len);
+int kiosk_set_start_scene(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len);
+int kiosk_set_log(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len);
+int kiosk_set_device(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len);
+int kiosk_set_mode(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len);
+int kiosk_set_input_type(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len);
 
 void kiosk_button_defaults(struct kiosk_button *b, const char *name);
 void kiosk_input_defaults(struct kiosk_input *in, const char *name);

@@ -10,7 +10,6 @@
 #include <sys/stat.h>
 #include "kiosk_config/kiosk_config_keys.h"
 
-#define RELATIVE_NOTE "relative paths start at the configuration file's directory"
 /* What a list entry may be separated by. */
 #define SCENE_SEPARATORS ", \t"
 
@@ -24,42 +23,6 @@ int kiosk_resolve_path(const struct kiosk_config *c, const char *rel, char *out,
     else
         n = snprintf(out, out_len, "%s/%s", c->dir, rel);
     return n < 0 || (size_t)n >= out_len ? -1 : 0;
-}
-
-/* A directory opens fine with fopen on Linux, so regular files are asked for explicitly. */
-int kiosk_check_file(const char *path, char *reason, size_t len)
-{
-    struct stat st;
-    FILE *f;
-    if (stat(path, &st) != 0) {
-        snprintf(reason, len, "cannot read \"%s\": %s (" RELATIVE_NOTE ")", path, strerror(errno));
-        return -1;
-    }
-    if (!S_ISREG(st.st_mode)) {
-        snprintf(reason, len, "\"%s\" is not a regular file", path);
-        return -1;
-    }
-    f = fopen(path, "rb");
-    if (!f) {
-        snprintf(reason, len, "cannot read \"%s\": %s", path, strerror(errno));
-        return -1;
-    }
-    fclose(f);
-    return 0;
-}
-
-int kiosk_check_dir(const char *path, char *reason, size_t len)
-{
-    struct stat st;
-    if (stat(path, &st) != 0) {
-        snprintf(reason, len, "no directory \"%s\": %s (" RELATIVE_NOTE ")", path, strerror(errno));
-        return -1;
-    }
-    if (!S_ISDIR(st.st_mode)) {
-        snprintf(reason, len, "\"%s\" is not a directory", path);
-        return -1;
-    }
-    return 0;
 }
 
 int kiosk_path_inside(const char *path, const char *root, char *reason, size_t len)
@@ -122,7 +85,7 @@ int kiosk_scenes_append(struct kiosk_config *c, const char *text, char *reason, 
                      KIOSK_PATH_LEN - 1);
             return -1;
         }
-        if (kiosk_check_file(path, why, sizeof why) != 0) {
+        if (conf_check_file(path, KIOSK_RELATIVE_NOTE, why, sizeof why) != 0) {
             snprintf(reason, len, "scene %d: %s", number, why);
             return -1;
         }
@@ -133,16 +96,20 @@ int kiosk_scenes_append(struct kiosk_config *c, const char *text, char *reason, 
     return 0;
 }
 
-int kiosk_set_scenes(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len)
+int kiosk_set_scenes(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len)
 {
+    struct kiosk_config *c = owner;
+    const char *value = v->text;
     (void)t;
     c->kiosk.n_scenes = 0;
     return kiosk_scenes_append(c, value, reason, len);
 }
 
 /* A log file need not exist yet, but the directory it goes into must. */
-int kiosk_set_log(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len)
+int kiosk_set_log(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len)
 {
+    struct kiosk_config *c = owner;
+    const char *value = v->text;
     char path[KIOSK_PATH_LEN], dir[KIOSK_PATH_LEN];
     struct stat st;
     const char *slash;
@@ -160,7 +127,7 @@ int kiosk_set_log(struct kiosk_config *c, void *t, const char *value, char *reas
         snprintf(dir, sizeof dir, ".");
     else
         snprintf(dir, sizeof dir, "%.*s", slash == path ? 1 : (int)(slash - path), path);
-    if (kiosk_check_dir(dir, reason, len) != 0)
+    if (conf_check_dir(dir, KIOSK_RELATIVE_NOTE, reason, len) != 0)
         return -1;
     if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
         snprintf(reason, len, "\"%s\" exists and is not a regular file", path);
@@ -172,8 +139,10 @@ int kiosk_set_log(struct kiosk_config *c, void *t, const char *value, char *reas
 
 /* Not looked for here: at boot the card may appear after the kiosk's configuration is read, and the
  * display code says so when it opens it. */
-int kiosk_set_device(struct kiosk_config *c, void *t, const char *value, char *reason, size_t len)
+int kiosk_set_device(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len)
 {
+    struct kiosk_config *c = owner;
+    const char *value = v->text;
     (void)t;
     if (value[0] != '/' || strlen(value) >= sizeof c->display.drm_device) {
         snprintf(reason, len, "expected an absolute device path such as /dev/dri/card0 (at most %d "

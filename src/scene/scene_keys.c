@@ -1,9 +1,9 @@
-/* The table of scene keys and the parsing of their values. A key is described once here (section,
- * name, type, range, the model or primitive types it belongs to, where it is stored), so the file
- * loader, --set and the tests cannot disagree about what a scene may say. */
+/* The table of scene keys and the setters of what a field copy cannot store. A key is described
+ * once here (section, name, type, range, the model or primitive types it belongs to, where it is
+ * stored) and applied by conf/conf_key.c, so the file loader, --set and the tests cannot disagree
+ * about what a scene may say. */
 #include <ctype.h>
 #include <errno.h>
-#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,21 +16,19 @@
 
 /* ---- names of enumerations, in enum order ------------------------------------------------- */
 
-static const char *const model_names[] = {
-    "flat", "lorenz", "rossler", "potential", "refraction", "schwarzschild", NULL
-};
-static const char *const primitive_names[] = {"sphere", "triangle", "disk", "rect", NULL};
-static const char *const method_names[] = {"euler", "rk4", "dopri5", "orbit_table", NULL};
-static const char *const step_control_names[] = {"fixed", "doubling", "embedded", NULL};
-static const char *const switch_names[] = {"off", "on", NULL};
-static const char *const precision_names[] = {"auto", "fp32", "fp16", NULL};
-static const char *const mrt_names[] = {"auto", "on", "off", NULL};
-static const char *const profile_names[] = {"yukawa", "polynomial", NULL};
-static const char *const sky_names[] = {"color", "cubemap", NULL};
-static const char *const effects_names[] = {"geometry", "doppler", "searchlight", NULL};
-static const char *const exposure_names[] = {"scene", "paper", NULL};
-static const char *const moving_names[] = {"rays", "polygons", NULL};
-static const char *const pipeline_names[] = {"auto", "multipass", "single", "fused", NULL};
+static const struct conf_choice model_names[] = {{"flat", 0}, {"lorenz", 1}, {"rossler", 2}, {"potential", 3}, {"refraction", 4}, {"schwarzschild", 5}, {NULL, 0}};
+static const struct conf_choice primitive_names[] = {{"sphere", 0}, {"triangle", 1}, {"disk", 2}, {"rect", 3}, {NULL, 0}};
+static const struct conf_choice method_names[] = {{"euler", 0}, {"rk4", 1}, {"dopri5", 2}, {"orbit_table", 3}, {NULL, 0}};
+static const struct conf_choice step_control_names[] = {{"fixed", 0}, {"doubling", 1}, {"embedded", 2}, {NULL, 0}};
+static const struct conf_choice switch_names[] = {{"off", 0}, {"on", 1}, {NULL, 0}};
+static const struct conf_choice precision_names[] = {{"auto", 0}, {"fp32", 1}, {"fp16", 2}, {NULL, 0}};
+static const struct conf_choice mrt_names[] = {{"auto", 0}, {"on", 1}, {"off", 2}, {NULL, 0}};
+static const struct conf_choice profile_names[] = {{"yukawa", 0}, {"polynomial", 1}, {NULL, 0}};
+static const struct conf_choice sky_names[] = {{"color", 0}, {"cubemap", 1}, {NULL, 0}};
+static const struct conf_choice effects_names[] = {{"geometry", 0}, {"doppler", 1}, {"searchlight", 2}, {NULL, 0}};
+static const struct conf_choice exposure_names[] = {{"scene", 0}, {"paper", 1}, {NULL, 0}};
+static const struct conf_choice moving_names[] = {{"rays", 0}, {"polygons", 1}, {NULL, 0}};
+static const struct conf_choice pipeline_names[] = {{"auto", 0}, {"multipass", 1}, {"single", 2}, {"fused", 3}, {NULL, 0}};
 
 _Static_assert(sizeof model_names / sizeof model_names[0] == MODEL_COUNT + 1,
                "one name per model type");
@@ -39,12 +37,12 @@ _Static_assert(sizeof primitive_names / sizeof primitive_names[0] == PRIM_COUNT 
 
 const char *scene_model_type_name(enum model_type type)
 {
-    return (unsigned)type < MODEL_COUNT ? model_names[type] : "?";
+    return (unsigned)type < MODEL_COUNT ? model_names[type].name : "?";
 }
 
 const char *scene_primitive_name(enum primitive_type type)
 {
-    return (unsigned)type < PRIM_COUNT ? primitive_names[type] : "?";
+    return (unsigned)type < PRIM_COUNT ? primitive_names[type].name : "?";
 }
 
 /* ---- sections ---------------------------------------------------------------------------- */
@@ -174,8 +172,9 @@ static int check_pixels(long width, long height, char *r, size_t n)
     return 0;
 }
 
-static int set_width(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
+static int set_width(void *owner, void *t, const union conf_parsed *v, char *r, size_t n)
 {
+    struct scene *s = owner;
     (void)t;
     if (check_pixels(v->integer, s->render.height, r, n) != 0)
         return -1;
@@ -183,8 +182,9 @@ static int set_width(struct scene *s, void *t, const union scene_key_value *v, c
     return 0;
 }
 
-static int set_height(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
+static int set_height(void *owner, void *t, const union conf_parsed *v, char *r, size_t n)
 {
+    struct scene *s = owner;
     (void)t;
     if (check_pixels(s->render.width, v->integer, r, n) != 0)
         return -1;
@@ -192,109 +192,19 @@ static int set_height(struct scene *s, void *t, const union scene_key_value *v, 
     return 0;
 }
 
-static int set_model_type(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
+static int set_frame_origin(void *owner, void *t, const union conf_parsed *v, char *r, size_t n)
 {
-    (void)t, (void)r, (void)n;
-    s->model.type = (enum model_type)v->choice;
-    return 0;
-}
-
-static int set_profile(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
-{
-    (void)t, (void)r, (void)n;
-    s->model.profile = (enum potential_profile)v->choice;
-    return 0;
-}
-
-static int set_method(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
-{
-    (void)t, (void)r, (void)n;
-    s->render.method = (enum integration_method)v->choice;
-    return 0;
-}
-
-static int set_step_control(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
-{
-    (void)t, (void)r, (void)n;
-    s->render.step_control = (enum step_control)v->choice;
-    return 0;
-}
-
-static int set_early_z(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
-{
-    (void)t, (void)r, (void)n;
-    s->render.early_z = v->choice;
-    return 0;
-}
-
-static int set_precision(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
-{
-    (void)t, (void)r, (void)n;
-    s->render.precision = (enum precision_choice)v->choice;
-    return 0;
-}
-
-static int set_mrt(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
-{
-    (void)t, (void)r, (void)n;
-    s->render.mrt = (enum mrt_choice)v->choice;
-    return 0;
-}
-
-static int set_effects(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
-{
-    (void)t, (void)r, (void)n;
-    s->observer.effects = (enum relativity_effects)v->choice;
-    return 0;
-}
-
-static int set_exposure(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
-{
-    (void)t, (void)r, (void)n;
-    s->observer.exposure = (enum searchlight_exposure)v->choice;
-    return 0;
-}
-
-static int set_pipeline(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
-{
-    (void)t, (void)r, (void)n;
-    s->render.pipeline = (enum pipeline_choice)v->choice;
-    return 0;
-}
-
-static int set_moving_objects(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
-{
-    (void)t, (void)r, (void)n;
-    s->render.moving_objects = (enum moving_objects_method)v->choice;
-    return 0;
-}
-
-static int set_frame_origin(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
-{
-    (void)s, (void)r, (void)n;
+    (void)owner, (void)r, (void)n;
     struct object *o = t;
-    o->frame_origin = v->vector;
+    o->frame_origin = v3(v->v[0], v->v[1], v->v[2]);
     o->frame_origin_given = 1;
     return 0;
 }
 
-static int set_sky_type(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
-{
-    (void)t, (void)r, (void)n;
-    s->sky.type = (enum sky_type)v->choice;
-    return 0;
-}
-
-static int set_object_type(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
-{
-    (void)s, (void)r, (void)n;
-    ((struct object *)t)->type = (enum primitive_type)v->choice;
-    return 0;
-}
-
 /* Several objects often wear the same image: each file is kept once so it is uploaded once. */
-static int set_texture(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
+static int set_texture(void *owner, void *t, const union conf_parsed *v, char *r, size_t n)
 {
+    struct scene *s = owner;
     struct object *o = t;
     char path[SCENE_PATH_LEN];
     if (scene_resolve_path(s, v->text, path, sizeof path) != 0) {
@@ -328,8 +238,9 @@ void scene_cubemap_face_path(const char *prefix, int face, char *out, size_t len
     snprintf(out, len, "%s_%s.png", prefix, scene_cubemap_faces[face]);
 }
 
-static int set_cubemap(struct scene *s, void *t, const union scene_key_value *v, char *r, size_t n)
+static int set_cubemap(void *owner, void *t, const union conf_parsed *v, char *r, size_t n)
 {
+    struct scene *s = owner;
     const char *const *faces = scene_cubemap_faces;
     char prefix[SCENE_PATH_LEN];
     (void)t;
@@ -383,7 +294,7 @@ static int set_cubemap(struct scene *s, void *t, const union scene_key_value *v,
 #define COLOR_RANGE .lo = 0.0, .hi = 1000.0
 /* 0 is "not a black body"; hotter than any star's surface is a typo */
 #define TEMPERATURE_RANGE .lo = 0.0, .hi = 1e6
-#define CHOICE(names, setter) .kind = KEY_CHOICE, .choices = names, .set = setter
+#define CHOICE(names, field) .kind = CONF_CHOICE, .choices = names, .offset = field
 
 #define FOR_MODEL(t) (1u << (t))
 #define ALL_MODELS_BUT_FLAT (((1u << MODEL_COUNT) - 1u) & ~FOR_MODEL(MODEL_FLAT))
@@ -391,191 +302,260 @@ static int set_cubemap(struct scene *s, void *t, const union scene_key_value *v,
 
 /* In the order of docs/SCENES.md, which documents each entry (a unit test checks every name is there).
  * Entries of one section stay together: --set and the loader search by section and name. */
-const struct scene_key scene_keys[] = {
-    {SECTION_SCENE, "name", KEY_TEXT, .lo = 1, .hi = SCENE_NAME_LEN - 1, .offset = AT_SCENE(name)},
-    {SECTION_SCENE, "description", KEY_TEXT, .lo = 0, .hi = sizeof(((struct scene *)0)->description) - 1,
+const struct conf_key scene_keys[] = {
+    {SECTION_SCENE, "name", CONF_TEXT, .lo = 1, .hi = SCENE_NAME_LEN - 1, .offset = AT_SCENE(name)},
+    {SECTION_SCENE, "description", CONF_TEXT, .lo = 0, .hi = sizeof(((struct scene *)0)->description) - 1,
      .offset = AT_SCENE(description)},
 
-    {SECTION_CAMERA, "position", KEY_VECTOR, ANY, .offset = AT_SCENE(camera.position)},
-    {SECTION_CAMERA, "look_at", KEY_VECTOR, ANY, .offset = AT_SCENE(camera.look_at)},
-    {SECTION_CAMERA, "up", KEY_VECTOR, ANY, .flags = KEY_NONZERO, .offset = AT_SCENE(camera.up)},
-    {SECTION_CAMERA, "fov", KEY_NUMBER, .lo = 0.0, .hi = 180.0, .flags = CONF_ABOVE_LO | CONF_BELOW_HI,
+    {SECTION_CAMERA, "position", CONF_VECTOR, ANY, .offset = AT_SCENE(camera.position)},
+    {SECTION_CAMERA, "look_at", CONF_VECTOR, ANY, .offset = AT_SCENE(camera.look_at)},
+    {SECTION_CAMERA, "up", CONF_VECTOR, ANY, .flags = CONF_NONZERO, .offset = AT_SCENE(camera.up)},
+    {SECTION_CAMERA, "fov", CONF_NUMBER, .lo = 0.0, .hi = 180.0, .flags = CONF_ABOVE_LO | CONF_BELOW_HI,
      .offset = AT_SCENE(camera.fov_deg)},
 
-    {SECTION_OBSERVER, "velocity", KEY_VECTOR, ANY, .offset = AT_SCENE(observer.velocity)},
-    {SECTION_OBSERVER, "effects", CHOICE(effects_names, set_effects)},
-    {SECTION_OBSERVER, "exposure", CHOICE(exposure_names, set_exposure)},
-    {SECTION_OBSERVER, "time", KEY_NUMBER, .lo = -1e9, .hi = 1e9, .offset = AT_SCENE(observer.time)},
+    {SECTION_OBSERVER, "velocity", CONF_VECTOR, ANY, .offset = AT_SCENE(observer.velocity)},
+    {SECTION_OBSERVER, "effects", CHOICE(effects_names, AT_SCENE(observer.effects))},
+    {SECTION_OBSERVER, "exposure", CHOICE(exposure_names, AT_SCENE(observer.exposure))},
+    {SECTION_OBSERVER, "time", CONF_NUMBER, .lo = -1e9, .hi = 1e9, .offset = AT_SCENE(observer.time)},
 
-    {SECTION_RENDER, "width", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .set = set_width},
-    {SECTION_RENDER, "height", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .set = set_height},
-    {SECTION_RENDER, "method", CHOICE(method_names, set_method)},
-    {SECTION_RENDER, "step", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .flags = CONF_ABOVE_LO,
+    {SECTION_RENDER, "width", CONF_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .set = set_width},
+    {SECTION_RENDER, "height", CONF_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .set = set_height},
+    {SECTION_RENDER, "method", CHOICE(method_names, AT_SCENE(render.method))},
+    {SECTION_RENDER, "step", CONF_NUMBER, .lo = 0.0, .hi = 1e6, .flags = CONF_ABOVE_LO,
      .offset = AT_SCENE(render.step_size)},
-    {SECTION_RENDER, "steps_per_segment", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_STEPS_PER_SEGMENT,
+    {SECTION_RENDER, "steps_per_segment", CONF_INTEGER, .lo = 1, .hi = SCENE_MAX_STEPS_PER_SEGMENT,
      .offset = AT_SCENE(render.steps_per_segment)},
-    {SECTION_RENDER, "segments", KEY_INTEGER, .lo = 0, .hi = SCENE_MAX_SEGMENTS,
+    {SECTION_RENDER, "segments", CONF_INTEGER, .lo = 0, .hi = SCENE_MAX_SEGMENTS,
      .offset = AT_SCENE(render.segments)},
-    {SECTION_RENDER, "max_path", KEY_NUMBER, .lo = 0.0, .hi = 1e9, .offset = AT_SCENE(render.max_path)},
-    {SECTION_RENDER, "unfinished_color", KEY_COLOR, COLOR_RANGE, .offset = AT_SCENE(render.unfinished_color)},
-    {SECTION_RENDER, "steps_per_pass", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_STEPS_PER_PASS,
+    {SECTION_RENDER, "max_path", CONF_NUMBER, .lo = 0.0, .hi = 1e9, .offset = AT_SCENE(render.max_path)},
+    {SECTION_RENDER, "unfinished_color", CONF_COLOR, COLOR_RANGE, .offset = AT_SCENE(render.unfinished_color)},
+    {SECTION_RENDER, "steps_per_pass", CONF_INTEGER, .lo = 1, .hi = SCENE_MAX_STEPS_PER_PASS,
      .offset = AT_SCENE(render.steps_per_pass)},
-    {SECTION_RENDER, "bound_radius", KEY_NUMBER, POSITIVE, .offset = AT_SCENE(render.bound_radius)},
-    {SECTION_RENDER, "bound_center", KEY_VECTOR, ANY, .offset = AT_SCENE(render.bound_center)},
-    {SECTION_RENDER, "precision", CHOICE(precision_names, set_precision)},
-    {SECTION_RENDER, "mrt", CHOICE(mrt_names, set_mrt)},
-    {SECTION_RENDER, "early_z", CHOICE(switch_names, set_early_z)},
-    {SECTION_RENDER, "termination_interval", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SEGMENTS,
+    {SECTION_RENDER, "bound_radius", CONF_NUMBER, POSITIVE, .offset = AT_SCENE(render.bound_radius)},
+    {SECTION_RENDER, "bound_center", CONF_VECTOR, ANY, .offset = AT_SCENE(render.bound_center)},
+    {SECTION_RENDER, "precision", CHOICE(precision_names, AT_SCENE(render.precision))},
+    {SECTION_RENDER, "mrt", CHOICE(mrt_names, AT_SCENE(render.mrt))},
+    {SECTION_RENDER, "early_z", CHOICE(switch_names, AT_SCENE(render.early_z))},
+    {SECTION_RENDER, "termination_interval", CONF_INTEGER, .lo = 1, .hi = SCENE_MAX_SEGMENTS,
      .offset = AT_SCENE(render.termination_interval)},
-    {SECTION_RENDER, "batch", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_BATCH, .offset = AT_SCENE(render.batch)},
-    {SECTION_RENDER, "step_control", CHOICE(step_control_names, set_step_control)},
-    {SECTION_RENDER, "tolerance", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .flags = CONF_ABOVE_LO,
+    {SECTION_RENDER, "batch", CONF_INTEGER, .lo = 1, .hi = SCENE_MAX_BATCH, .offset = AT_SCENE(render.batch)},
+    {SECTION_RENDER, "step_control", CHOICE(step_control_names, AT_SCENE(render.step_control))},
+    {SECTION_RENDER, "tolerance", CONF_NUMBER, .lo = 0.0, .hi = 1e6, .flags = CONF_ABOVE_LO,
      .offset = AT_SCENE(render.tolerance)},
-    {SECTION_RENDER, "grow_fraction", KEY_NUMBER, .lo = 0.0, .hi = 1.0, .flags = CONF_ABOVE_LO | CONF_BELOW_HI,
+    {SECTION_RENDER, "grow_fraction", CONF_NUMBER, .lo = 0.0, .hi = 1.0, .flags = CONF_ABOVE_LO | CONF_BELOW_HI,
      .offset = AT_SCENE(render.grow_fraction)},
-    {SECTION_RENDER, "step_min", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .offset = AT_SCENE(render.step_min)},
-    {SECTION_RENDER, "step_max", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .offset = AT_SCENE(render.step_max)},
-    {SECTION_RENDER, "moving_objects", CHOICE(moving_names, set_moving_objects)},
-    {SECTION_RENDER, "polygon_subdivision", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SUBDIVISION,
+    {SECTION_RENDER, "step_min", CONF_NUMBER, .lo = 0.0, .hi = 1e6, .offset = AT_SCENE(render.step_min)},
+    {SECTION_RENDER, "step_max", CONF_NUMBER, .lo = 0.0, .hi = 1e6, .offset = AT_SCENE(render.step_max)},
+    {SECTION_RENDER, "moving_objects", CHOICE(moving_names, AT_SCENE(render.moving_objects))},
+    {SECTION_RENDER, "polygon_subdivision", CONF_INTEGER, .lo = 1, .hi = SCENE_MAX_SUBDIVISION,
      .offset = AT_SCENE(render.polygon_subdivision)},
-    {SECTION_RENDER, "chord_tolerance", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .flags = CONF_ABOVE_LO,
+    {SECTION_RENDER, "chord_tolerance", CONF_NUMBER, .lo = 0.0, .hi = 1e6, .flags = CONF_ABOVE_LO,
      .offset = AT_SCENE(render.chord_tolerance)},
-    {SECTION_RENDER, "sky_alpha", KEY_NUMBER, .lo = 0.0, .hi = 1.0, .offset = AT_SCENE(render.sky_alpha)},
-    {SECTION_RENDER, "samples", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_SAMPLES, .offset = AT_SCENE(render.samples)},
-    {SECTION_RENDER, "max_chords", KEY_INTEGER, .lo = 1, .hi = SCENE_MAX_CHORDS,
+    {SECTION_RENDER, "sky_alpha", CONF_NUMBER, .lo = 0.0, .hi = 1.0, .offset = AT_SCENE(render.sky_alpha)},
+    {SECTION_RENDER, "samples", CONF_INTEGER, .lo = 1, .hi = SCENE_MAX_SAMPLES, .offset = AT_SCENE(render.samples)},
+    {SECTION_RENDER, "max_chords", CONF_INTEGER, .lo = 1, .hi = SCENE_MAX_CHORDS,
      .offset = AT_SCENE(render.max_chords)},
-    {SECTION_RENDER, "orbit_rows", KEY_INTEGER, .lo = 4, .hi = SCENE_MAX_ORBIT_ROWS,
+    {SECTION_RENDER, "orbit_rows", CONF_INTEGER, .lo = 4, .hi = SCENE_MAX_ORBIT_ROWS,
      .offset = AT_SCENE(render.orbit_rows)},
-    {SECTION_RENDER, "pipeline", CHOICE(pipeline_names, set_pipeline)},
-    {SECTION_RENDER, "orbit_columns", KEY_INTEGER, .lo = 4, .hi = SCENE_MAX_ORBIT_COLUMNS,
+    {SECTION_RENDER, "pipeline", CHOICE(pipeline_names, AT_SCENE(render.pipeline))},
+    {SECTION_RENDER, "orbit_columns", CONF_INTEGER, .lo = 4, .hi = SCENE_MAX_ORBIT_COLUMNS,
      .offset = AT_SCENE(render.orbit_columns)},
 
-    {SECTION_MODEL, "type", CHOICE(model_names, set_model_type)},
-    {SECTION_MODEL, "center", KEY_VECTOR, ANY, .applies = ALL_MODELS_BUT_FLAT,
+    {SECTION_MODEL, "type", CHOICE(model_names, AT_SCENE(model.type))},
+    {SECTION_MODEL, "center", CONF_VECTOR, ANY, .applies = ALL_MODELS_BUT_FLAT,
      .offset = AT_SCENE(model.center)},
-    {SECTION_MODEL, "sigma", KEY_NUMBER, ANY, .applies = FOR_MODEL(MODEL_LORENZ),
+    {SECTION_MODEL, "sigma", CONF_NUMBER, ANY, .applies = FOR_MODEL(MODEL_LORENZ),
      .offset = AT_SCENE(model.sigma)},
-    {SECTION_MODEL, "rho", KEY_NUMBER, ANY, .applies = FOR_MODEL(MODEL_LORENZ),
+    {SECTION_MODEL, "rho", CONF_NUMBER, ANY, .applies = FOR_MODEL(MODEL_LORENZ),
      .offset = AT_SCENE(model.rho)},
     /* the same name means Lorenz's beta or Roessler's second parameter, as in the papers */
-    {SECTION_MODEL, "beta", KEY_NUMBER, ANY, .applies = FOR_MODEL(MODEL_LORENZ),
+    {SECTION_MODEL, "beta", CONF_NUMBER, ANY, .applies = FOR_MODEL(MODEL_LORENZ),
      .offset = AT_SCENE(model.beta)},
-    {SECTION_MODEL, "beta", KEY_NUMBER, ANY, .applies = FOR_MODEL(MODEL_ROSSLER),
+    {SECTION_MODEL, "beta", CONF_NUMBER, ANY, .applies = FOR_MODEL(MODEL_ROSSLER),
      .offset = AT_SCENE(model.ross_b)},
-    {SECTION_MODEL, "alpha", KEY_NUMBER, ANY, .applies = FOR_MODEL(MODEL_ROSSLER),
+    {SECTION_MODEL, "alpha", CONF_NUMBER, ANY, .applies = FOR_MODEL(MODEL_ROSSLER),
      .offset = AT_SCENE(model.ross_a)},
-    {SECTION_MODEL, "gamma", KEY_NUMBER, ANY, .applies = FOR_MODEL(MODEL_ROSSLER),
+    {SECTION_MODEL, "gamma", CONF_NUMBER, ANY, .applies = FOR_MODEL(MODEL_ROSSLER),
      .offset = AT_SCENE(model.ross_c)},
-    {SECTION_MODEL, "scale", KEY_NUMBER, POSITIVE,
+    {SECTION_MODEL, "scale", CONF_NUMBER, POSITIVE,
      .applies = FOR_MODEL(MODEL_LORENZ) | FOR_MODEL(MODEL_ROSSLER),
      .offset = AT_SCENE(model.scale)},
-    {SECTION_MODEL, "strength", KEY_NUMBER, ANY,
+    {SECTION_MODEL, "strength", CONF_NUMBER, ANY,
      .applies = FOR_MODEL(MODEL_LORENZ) | FOR_MODEL(MODEL_ROSSLER) | FOR_MODEL(MODEL_POTENTIAL),
      .offset = AT_SCENE(model.strength)},
-    {SECTION_MODEL, "profile", CHOICE(profile_names, set_profile), .applies = FOR_MODEL(MODEL_POTENTIAL)},
-    {SECTION_MODEL, "zeta", KEY_NUMBER, ANY, .applies = FOR_MODEL(MODEL_POTENTIAL),
+    {SECTION_MODEL, "profile", CHOICE(profile_names, AT_SCENE(model.profile)), .applies = FOR_MODEL(MODEL_POTENTIAL)},
+    {SECTION_MODEL, "zeta", CONF_NUMBER, ANY, .applies = FOR_MODEL(MODEL_POTENTIAL),
      .offset = AT_SCENE(model.zeta)},
-    {SECTION_MODEL, "mu", KEY_NUMBER, NON_NEGATIVE, .applies = FOR_MODEL(MODEL_POTENTIAL),
+    {SECTION_MODEL, "mu", CONF_NUMBER, NON_NEGATIVE, .applies = FOR_MODEL(MODEL_POTENTIAL),
      .offset = AT_SCENE(model.mu)},
-    {SECTION_MODEL, "radius", KEY_NUMBER, POSITIVE, .applies = FOR_MODEL(MODEL_POTENTIAL),
+    {SECTION_MODEL, "radius", CONF_NUMBER, POSITIVE, .applies = FOR_MODEL(MODEL_POTENTIAL),
      .offset = AT_SCENE(model.radius)},
-    {SECTION_MODEL, "amplitude", KEY_NUMBER, ANY, .applies = FOR_MODEL(MODEL_REFRACTION),
+    {SECTION_MODEL, "amplitude", CONF_NUMBER, ANY, .applies = FOR_MODEL(MODEL_REFRACTION),
      .offset = AT_SCENE(model.amplitude)},
-    {SECTION_MODEL, "shell_radius", KEY_NUMBER, NON_NEGATIVE, .applies = FOR_MODEL(MODEL_REFRACTION),
+    {SECTION_MODEL, "shell_radius", CONF_NUMBER, NON_NEGATIVE, .applies = FOR_MODEL(MODEL_REFRACTION),
      .offset = AT_SCENE(model.shell_radius)},
-    {SECTION_MODEL, "shell_width", KEY_NUMBER, POSITIVE, .applies = FOR_MODEL(MODEL_REFRACTION),
+    {SECTION_MODEL, "shell_width", CONF_NUMBER, POSITIVE, .applies = FOR_MODEL(MODEL_REFRACTION),
      .offset = AT_SCENE(model.shell_width)},
-    {SECTION_MODEL, "noise_amplitude", KEY_NUMBER, ANY, .applies = FOR_MODEL(MODEL_REFRACTION),
+    {SECTION_MODEL, "noise_amplitude", CONF_NUMBER, ANY, .applies = FOR_MODEL(MODEL_REFRACTION),
      .offset = AT_SCENE(model.noise_amplitude)},
-    {SECTION_MODEL, "noise_frequency", KEY_NUMBER, NON_NEGATIVE, .applies = FOR_MODEL(MODEL_REFRACTION),
+    {SECTION_MODEL, "noise_frequency", CONF_NUMBER, NON_NEGATIVE, .applies = FOR_MODEL(MODEL_REFRACTION),
      .offset = AT_SCENE(model.noise_frequency)},
-    {SECTION_MODEL, "mass", KEY_NUMBER, NON_NEGATIVE, .applies = FOR_MODEL(MODEL_SCHWARZSCHILD),
+    {SECTION_MODEL, "mass", CONF_NUMBER, NON_NEGATIVE, .applies = FOR_MODEL(MODEL_SCHWARZSCHILD),
      .offset = AT_SCENE(model.mass)},
 
-    {SECTION_LIGHTING, "ambient", KEY_COLOR, COLOR_RANGE, .offset = AT_SCENE(ambient_light)},
+    {SECTION_LIGHTING, "ambient", CONF_COLOR, COLOR_RANGE, .offset = AT_SCENE(ambient_light)},
 
-    {SECTION_LIGHT, "position", KEY_VECTOR, ANY, .offset = AT_LIGHT(position)},
-    {SECTION_LIGHT, "color", KEY_COLOR, COLOR_RANGE, .offset = AT_LIGHT(color)},
-    {SECTION_LIGHT, "temperature", KEY_NUMBER, TEMPERATURE_RANGE, .offset = AT_LIGHT(temperature)},
+    {SECTION_LIGHT, "position", CONF_VECTOR, ANY, .offset = AT_LIGHT(position)},
+    {SECTION_LIGHT, "color", CONF_COLOR, COLOR_RANGE, .offset = AT_LIGHT(color)},
+    {SECTION_LIGHT, "temperature", CONF_NUMBER, TEMPERATURE_RANGE, .offset = AT_LIGHT(temperature)},
 
-    {SECTION_SKY, "type", CHOICE(sky_names, set_sky_type)},
-    {SECTION_SKY, "color", KEY_COLOR, COLOR_RANGE, .offset = AT_SCENE(sky.color)},
-    {SECTION_SKY, "cubemap", KEY_PATH, .set = set_cubemap},
-    {SECTION_SKY, "temperature", KEY_NUMBER, TEMPERATURE_RANGE, .offset = AT_SCENE(sky.temperature)},
-    {SECTION_SKY, "stars", KEY_INTEGER, .lo = 0, .hi = STAR_CATALOGUE_MAX, .offset = AT_SCENE(sky.stars)},
-    {SECTION_SKY, "star_seed", KEY_INTEGER, .lo = 0, .hi = 2147483647, .offset = AT_SCENE(sky.star_seed)},
-    {SECTION_SKY, "star_brightness", KEY_NUMBER, .lo = 0.0, .hi = 1e6, .offset = AT_SCENE(sky.star_brightness)},
-    {SECTION_SKY, "star_size", KEY_NUMBER, .lo = 0.3, .hi = 8.0, .offset = AT_SCENE(sky.star_size)},
-    {SECTION_SKY, "milky_way", KEY_NUMBER, .lo = 0.0, .hi = 100.0, .offset = AT_SCENE(sky.milky_way)},
-    {SECTION_SKY, "galactic_pole", KEY_VECTOR, ANY, .flags = KEY_NONZERO, .offset = AT_SCENE(sky.galactic_pole)},
-    {SECTION_SKY, "galactic_center", KEY_VECTOR, ANY, .flags = KEY_NONZERO, .offset = AT_SCENE(sky.galactic_center)},
+    {SECTION_SKY, "type", CHOICE(sky_names, AT_SCENE(sky.type))},
+    {SECTION_SKY, "color", CONF_COLOR, COLOR_RANGE, .offset = AT_SCENE(sky.color)},
+    {SECTION_SKY, "cubemap", CONF_PATH, .set = set_cubemap},
+    {SECTION_SKY, "temperature", CONF_NUMBER, TEMPERATURE_RANGE, .offset = AT_SCENE(sky.temperature)},
+    {SECTION_SKY, "stars", CONF_INTEGER, .lo = 0, .hi = STAR_CATALOGUE_MAX, .offset = AT_SCENE(sky.stars)},
+    {SECTION_SKY, "star_seed", CONF_INTEGER, .lo = 0, .hi = 2147483647, .offset = AT_SCENE(sky.star_seed)},
+    {SECTION_SKY, "star_brightness", CONF_NUMBER, .lo = 0.0, .hi = 1e6, .offset = AT_SCENE(sky.star_brightness)},
+    {SECTION_SKY, "star_size", CONF_NUMBER, .lo = 0.3, .hi = 8.0, .offset = AT_SCENE(sky.star_size)},
+    {SECTION_SKY, "milky_way", CONF_NUMBER, .lo = 0.0, .hi = 100.0, .offset = AT_SCENE(sky.milky_way)},
+    {SECTION_SKY, "galactic_pole", CONF_VECTOR, ANY, .flags = CONF_NONZERO, .offset = AT_SCENE(sky.galactic_pole)},
+    {SECTION_SKY, "galactic_center", CONF_VECTOR, ANY, .flags = CONF_NONZERO, .offset = AT_SCENE(sky.galactic_center)},
 
-    {SECTION_OBJECT, "type", CHOICE(primitive_names, set_object_type)},
-    {SECTION_OBJECT, "center", KEY_VECTOR, ANY,
+    {SECTION_OBJECT, "type", CHOICE(primitive_names, AT_OBJECT(type))},
+    {SECTION_OBJECT, "center", CONF_VECTOR, ANY,
      .applies = FOR_PRIM(PRIM_SPHERE) | FOR_PRIM(PRIM_DISK) | FOR_PRIM(PRIM_RECT),
      .offset = AT_OBJECT(center)},
-    {SECTION_OBJECT, "radius", KEY_NUMBER, POSITIVE, .applies = FOR_PRIM(PRIM_SPHERE) | FOR_PRIM(PRIM_DISK),
+    {SECTION_OBJECT, "radius", CONF_NUMBER, POSITIVE, .applies = FOR_PRIM(PRIM_SPHERE) | FOR_PRIM(PRIM_DISK),
      .offset = AT_OBJECT(radius)},
-    {SECTION_OBJECT, "pole", KEY_VECTOR, ANY, .flags = KEY_NONZERO, .applies = FOR_PRIM(PRIM_SPHERE),
+    {SECTION_OBJECT, "pole", CONF_VECTOR, ANY, .flags = CONF_NONZERO, .applies = FOR_PRIM(PRIM_SPHERE),
      .offset = AT_OBJECT(pole)},
-    {SECTION_OBJECT, "v0", KEY_VECTOR, ANY, .applies = FOR_PRIM(PRIM_TRIANGLE),
+    {SECTION_OBJECT, "v0", CONF_VECTOR, ANY, .applies = FOR_PRIM(PRIM_TRIANGLE),
      .offset = AT_OBJECT(vertex[0])},
-    {SECTION_OBJECT, "v1", KEY_VECTOR, ANY, .applies = FOR_PRIM(PRIM_TRIANGLE),
+    {SECTION_OBJECT, "v1", CONF_VECTOR, ANY, .applies = FOR_PRIM(PRIM_TRIANGLE),
      .offset = AT_OBJECT(vertex[1])},
-    {SECTION_OBJECT, "v2", KEY_VECTOR, ANY, .applies = FOR_PRIM(PRIM_TRIANGLE),
+    {SECTION_OBJECT, "v2", CONF_VECTOR, ANY, .applies = FOR_PRIM(PRIM_TRIANGLE),
      .offset = AT_OBJECT(vertex[2])},
-    {SECTION_OBJECT, "uv0", KEY_TEXCOORD, ANY, .applies = FOR_PRIM(PRIM_TRIANGLE),
+    {SECTION_OBJECT, "uv0", CONF_TEXCOORD, ANY, .applies = FOR_PRIM(PRIM_TRIANGLE),
      .offset = AT_OBJECT(uv[0])},
-    {SECTION_OBJECT, "uv1", KEY_TEXCOORD, ANY, .applies = FOR_PRIM(PRIM_TRIANGLE),
+    {SECTION_OBJECT, "uv1", CONF_TEXCOORD, ANY, .applies = FOR_PRIM(PRIM_TRIANGLE),
      .offset = AT_OBJECT(uv[1])},
-    {SECTION_OBJECT, "uv2", KEY_TEXCOORD, ANY, .applies = FOR_PRIM(PRIM_TRIANGLE),
+    {SECTION_OBJECT, "uv2", CONF_TEXCOORD, ANY, .applies = FOR_PRIM(PRIM_TRIANGLE),
      .offset = AT_OBJECT(uv[2])},
-    {SECTION_OBJECT, "normal", KEY_VECTOR, ANY, .flags = KEY_NONZERO, .applies = FOR_PRIM(PRIM_DISK),
+    {SECTION_OBJECT, "normal", CONF_VECTOR, ANY, .flags = CONF_NONZERO, .applies = FOR_PRIM(PRIM_DISK),
      .offset = AT_OBJECT(normal)},
-    {SECTION_OBJECT, "inner_radius", KEY_NUMBER, NON_NEGATIVE, .applies = FOR_PRIM(PRIM_DISK),
+    {SECTION_OBJECT, "inner_radius", CONF_NUMBER, NON_NEGATIVE, .applies = FOR_PRIM(PRIM_DISK),
      .offset = AT_OBJECT(inner_radius)},
-    {SECTION_OBJECT, "axis_u", KEY_VECTOR, ANY, .flags = KEY_NONZERO, .applies = FOR_PRIM(PRIM_RECT),
+    {SECTION_OBJECT, "axis_u", CONF_VECTOR, ANY, .flags = CONF_NONZERO, .applies = FOR_PRIM(PRIM_RECT),
      .offset = AT_OBJECT(axis_u)},
-    {SECTION_OBJECT, "axis_v", KEY_VECTOR, ANY, .flags = KEY_NONZERO, .applies = FOR_PRIM(PRIM_RECT),
+    {SECTION_OBJECT, "axis_v", CONF_VECTOR, ANY, .flags = CONF_NONZERO, .applies = FOR_PRIM(PRIM_RECT),
      .offset = AT_OBJECT(axis_v)},
-    {SECTION_OBJECT, "color", KEY_COLOR, COLOR_RANGE, .offset = AT_OBJECT(material.color)},
-    {SECTION_OBJECT, "emission", KEY_COLOR, COLOR_RANGE, .offset = AT_OBJECT(material.emission)},
-    {SECTION_OBJECT, "ambient", KEY_NUMBER, .lo = 0.0, .hi = 1000.0, .offset = AT_OBJECT(material.ambient)},
-    {SECTION_OBJECT, "diffuse", KEY_NUMBER, .lo = 0.0, .hi = 1000.0, .offset = AT_OBJECT(material.diffuse)},
-    {SECTION_OBJECT, "specular", KEY_NUMBER, .lo = 0.0, .hi = 1000.0, .offset = AT_OBJECT(material.specular)},
-    {SECTION_OBJECT, "shininess", KEY_NUMBER, .lo = 0.0, .hi = 10000.0,
+    {SECTION_OBJECT, "color", CONF_COLOR, COLOR_RANGE, .offset = AT_OBJECT(material.color)},
+    {SECTION_OBJECT, "emission", CONF_COLOR, COLOR_RANGE, .offset = AT_OBJECT(material.emission)},
+    {SECTION_OBJECT, "ambient", CONF_NUMBER, .lo = 0.0, .hi = 1000.0, .offset = AT_OBJECT(material.ambient)},
+    {SECTION_OBJECT, "diffuse", CONF_NUMBER, .lo = 0.0, .hi = 1000.0, .offset = AT_OBJECT(material.diffuse)},
+    {SECTION_OBJECT, "specular", CONF_NUMBER, .lo = 0.0, .hi = 1000.0, .offset = AT_OBJECT(material.specular)},
+    {SECTION_OBJECT, "shininess", CONF_NUMBER, .lo = 0.0, .hi = 10000.0,
      .offset = AT_OBJECT(material.shininess)},
-    {SECTION_OBJECT, "texture", KEY_PATH, .set = set_texture},
-    {SECTION_OBJECT, "checker", KEY_NUMBER, NON_NEGATIVE, .offset = AT_OBJECT(material.checker)},
-    {SECTION_OBJECT, "checker_color", KEY_COLOR, COLOR_RANGE, .offset = AT_OBJECT(material.checker_color)},
-    {SECTION_OBJECT, "temperature", KEY_NUMBER, TEMPERATURE_RANGE, .offset = AT_OBJECT(material.temperature)},
-    {SECTION_OBJECT, "clock_period", KEY_NUMBER, .lo = 0.0, .hi = 1e9, .offset = AT_OBJECT(material.clock_period)},
-    {SECTION_OBJECT, "velocity", KEY_VECTOR, ANY, .offset = AT_OBJECT(velocity)},
-    {SECTION_OBJECT, "frame_origin", KEY_VECTOR, ANY, .set = set_frame_origin},
+    {SECTION_OBJECT, "texture", CONF_PATH, .set = set_texture},
+    {SECTION_OBJECT, "checker", CONF_NUMBER, NON_NEGATIVE, .offset = AT_OBJECT(material.checker)},
+    {SECTION_OBJECT, "checker_color", CONF_COLOR, COLOR_RANGE, .offset = AT_OBJECT(material.checker_color)},
+    {SECTION_OBJECT, "temperature", CONF_NUMBER, TEMPERATURE_RANGE, .offset = AT_OBJECT(material.temperature)},
+    {SECTION_OBJECT, "clock_period", CONF_NUMBER, .lo = 0.0, .hi = 1e9, .offset = AT_OBJECT(material.clock_period)},
+    {SECTION_OBJECT, "velocity", CONF_VECTOR, ANY, .offset = AT_OBJECT(velocity)},
+    {SECTION_OBJECT, "frame_origin", CONF_VECTOR, ANY, .set = set_frame_origin},
 
-    {SECTION_QUALITY, "differing_percent", KEY_NUMBER, .lo = 0.0, .hi = 100.0,
+    {SECTION_QUALITY, "differing_percent", CONF_NUMBER, .lo = 0.0, .hi = 100.0,
      .offset = AT_SCENE(quality.differing_percent)},
-    {SECTION_QUALITY, "exit_p99", KEY_NUMBER, .lo = 0.0, .hi = 3.15, .offset = AT_SCENE(quality.exit_p99)},
-    {SECTION_QUALITY, "hit_p99", KEY_NUMBER, .lo = 0.0, .hi = 1000.0, .offset = AT_SCENE(quality.hit_p99)},
+    {SECTION_QUALITY, "exit_p99", CONF_NUMBER, .lo = 0.0, .hi = 3.15, .offset = AT_SCENE(quality.exit_p99)},
+    {SECTION_QUALITY, "hit_p99", CONF_NUMBER, .lo = 0.0, .hi = 1000.0, .offset = AT_SCENE(quality.hit_p99)},
 
-    {SECTION_KIOSK, "speed_key", KEY_TEXT, .lo = 1, .hi = SCENE_NAME_LEN - 1, .offset = AT_SCENE(kiosk.speed.key)},
-    {SECTION_KIOSK, "speed_min", KEY_NUMBER, ANY, .offset = AT_SCENE(kiosk.speed.min)},
-    {SECTION_KIOSK, "speed_max", KEY_NUMBER, ANY, .offset = AT_SCENE(kiosk.speed.max)},
-    {SECTION_KIOSK, "speed_steps", KEY_INTEGER, .lo = 1, .hi = SCENE_KIOSK_MAX_STEPS,
+    {SECTION_KIOSK, "speed_key", CONF_TEXT, .lo = 1, .hi = SCENE_NAME_LEN - 1, .offset = AT_SCENE(kiosk.speed.key)},
+    {SECTION_KIOSK, "speed_min", CONF_NUMBER, ANY, .offset = AT_SCENE(kiosk.speed.min)},
+    {SECTION_KIOSK, "speed_max", CONF_NUMBER, ANY, .offset = AT_SCENE(kiosk.speed.max)},
+    {SECTION_KIOSK, "speed_steps", CONF_INTEGER, .lo = 1, .hi = SCENE_KIOSK_MAX_STEPS,
      .offset = AT_SCENE(kiosk.speed.steps)},
-    {SECTION_KIOSK, "mass_key", KEY_TEXT, .lo = 1, .hi = SCENE_NAME_LEN - 1, .offset = AT_SCENE(kiosk.mass.key)},
-    {SECTION_KIOSK, "mass_min", KEY_NUMBER, ANY, .offset = AT_SCENE(kiosk.mass.min)},
-    {SECTION_KIOSK, "mass_max", KEY_NUMBER, ANY, .offset = AT_SCENE(kiosk.mass.max)},
-    {SECTION_KIOSK, "mass_steps", KEY_INTEGER, .lo = 1, .hi = SCENE_KIOSK_MAX_STEPS,
+    {SECTION_KIOSK, "mass_key", CONF_TEXT, .lo = 1, .hi = SCENE_NAME_LEN - 1, .offset = AT_SCENE(kiosk.mass.key)},
+    {SECTION_KIOSK, "mass_min", CONF_NUMBER, ANY, .offset = AT_SCENE(kiosk.mass.min)},
+    {SECTION_KIOSK, "mass_max", CONF_NUMBER, ANY, .offset = AT_SCENE(kiosk.mass.max)},
+    {SECTION_KIOSK, "mass_steps", CONF_INTEGER, .lo = 1, .hi = SCENE_KIOSK_MAX_STEPS,
      .offset = AT_SCENE(kiosk.mass.steps)},
 };
 
 const int scene_key_count = (int)(sizeof scene_keys / sizeof scene_keys[0]);
+/* choices are stored as int into enum fields */
+_Static_assert(sizeof(enum model_type) == sizeof(int) && sizeof(enum primitive_type) == sizeof(int) &&
+               sizeof(enum integration_method) == sizeof(int) && sizeof(enum step_control) == sizeof(int) &&
+               sizeof(enum precision_choice) == sizeof(int) && sizeof(enum mrt_choice) == sizeof(int) &&
+               sizeof(enum potential_profile) == sizeof(int) && sizeof(enum sky_type) == sizeof(int) &&
+               sizeof(enum relativity_effects) == sizeof(int) && sizeof(enum searchlight_exposure) == sizeof(int) &&
+               sizeof(enum moving_objects_method) == sizeof(int) && sizeof(enum pipeline_choice) == sizeof(int) &&
+               sizeof(((struct scene *)0)->render.early_z) == sizeof(int), "enums are stored as int");
 _Static_assert(sizeof scene_keys / sizeof scene_keys[0] <= SCENE_KEY_TABLE_MAX,
                "raise SCENE_KEY_TABLE_MAX");
 _Static_assert(MODEL_COUNT <= 16 && PRIM_COUNT <= 16, "type masks are unsigned bit sets");
 
-int scene_get_number(const struct scene *s, const char *key, double *out)
+/* ---- what only a scene knows about its keys -------------------------------------------------- */
+
+/* A limit's value as written in its #define, for messages that are string constants. */
+#define NUMBER_TEXT(x) NUMBER_TEXT_(x)
+#define NUMBER_TEXT_(x) #x
+
+static void label(const void *owner, int section, int instance, char *buf, size_t len)
+{
+    scene_section_label(owner, (enum scene_section_kind)section, instance, buf, len);
+}
+
+static void *target(void *owner, int section, int instance)
+{
+    struct scene *s = owner;
+    if (section == SECTION_OBJECT)
+        return &s->objects[instance];
+    if (section == SECTION_LIGHT)
+        return &s->lights[instance];
+    return s;
+}
+
+static const char *type_word(int section)
+{
+    return section == SECTION_MODEL ? "model" : section == SECTION_OBJECT ? "object type" : NULL;
+}
+
+static int type_of(const void *owner, int section, int instance)
+{
+    const struct scene *s = owner;
+    return section == SECTION_MODEL ? (int)s->model.type : (int)s->objects[instance].type;
+}
+
+static const char *type_name(int section, int t)
+{
+    return section == SECTION_MODEL ? scene_model_type_name((enum model_type)t)
+                                    : scene_primitive_name((enum primitive_type)t);
+}
+
+static int resolve_path(const void *owner, const char *rel, char *out, size_t len)
+{
+    return scene_resolve_path(owner, rel, out, len);
+}
+
+const struct conf_key_table scene_key_table = {
+    .keys = scene_keys,
+    .count = sizeof scene_keys / sizeof scene_keys[0],
+    .name_len = SCENE_NAME_LEN,
+    .path_len = SCENE_PATH_LEN,
+    .max_abs = SCENE_MAX_ABS_VALUE,
+    .max_abs_reason = "larger in magnitude than " NUMBER_TEXT(SCENE_MAX_ABS_VALUE) ", the most a scene number "
+                      "may be: the GPU squares lengths in 32-bit floats",
+    .relative_note = "relative paths start at the scene file's directory",
+    .label = label,
+    .target = target,
+    .type_word = type_word,
+    .type_of = type_of,
+    .type_name = type_name,
+    .resolve_path = resolve_path,
+};
+
+/* "model.rho" as SECTION_MODEL and "rho"; -1 when KEY names no section without instances. */
+static int split_key(const char *key, const char **name)
 {
     char section[SCENE_NAME_LEN];
     const char *dot = strchr(key, '.');
@@ -586,335 +566,43 @@ int scene_get_number(const struct scene *s, const char *key, double *out)
     int kind = scene_section_find(section);
     if (kind < 0 || scene_section_named(kind))
         return -1;
-    for (int i = 0; i < scene_key_count; i++) {
-        const struct scene_key *k = &scene_keys[i];
-        if ((int)k->section == kind && strcmp(k->name, dot + 1) == 0 && k->kind == KEY_NUMBER && !k->set &&
-            (k->applies == 0 || kind != SECTION_MODEL || (k->applies & (1u << s->model.type)))) {
-            memcpy(out, (const char *)s + k->offset, sizeof *out);
-            return 0;
-        }
-    }
-    return -1;
+    *name = dot + 1;
+    return kind;
+}
+
+int scene_get_number(const struct scene *s, const char *key, double *out)
+{
+    const char *name;
+    int section = split_key(key, &name);
+    const struct conf_key *k = section < 0 ? NULL : conf_key_for(&scene_key_table, s, section, 0, name);
+    if (!k || k->kind != CONF_NUMBER || k->set)
+        return -1;
+    memcpy(out, (const char *)s + k->offset, sizeof *out);
+    return 0;
 }
 
 int scene_key_find(enum scene_section_kind section, const char *name)
 {
-    for (int i = 0; i < scene_key_count; i++)
-        if (scene_keys[i].section == section && strcmp(scene_keys[i].name, name) == 0)
-            return i;
-    return -1;
-}
-
-/* ---- parsing values ------------------------------------------------------------------------ */
-
-/* A limit's value as written in its #define, for messages that are string constants. */
-#define NUMBER_TEXT(x) NUMBER_TEXT_(x)
-#define NUMBER_TEXT_(x) #x
-
-#define TOO_LARGE_REASON                                                                                        \
-    "larger in magnitude than " NUMBER_TEXT(SCENE_MAX_ABS_VALUE) ", the most a scene number may be: the GPU "  \
-    "squares lengths in 32-bit floats"
-
-/* COUNT numbers as every configuration reads them (conf/conf_value.h), each within the most a
- * scene number may be. */
-static int parse_numbers(const char *text, double *out, int count, const char **reason)
-{
-    if (conf_parse_numbers(text, out, count, reason) != 0)
-        return -1;
-    for (int i = 0; i < count; i++)
-        if (fabs(out[i]) > SCENE_MAX_ABS_VALUE) {
-            *reason = TOO_LARGE_REASON;
-            return -1;
-        }
-    return 0;
-}
-
-static int in_range(const struct scene_key *k, double x)
-{
-    return conf_in_range(x, k->lo, k->hi, k->flags);
-}
-
-static int parse_integer(const char *text, int *out)
-{
-    long long x;
-    if (conf_parse_integer(text, &x) != 0 || x < -2147483647LL || x > 2147483647LL)
-        return -1;
-    *out = (int)x;
-    return 0;
-}
-
-static int parse_value(const struct scene_key *k, const char *text, union scene_key_value *v,
-                       const char **reason)
-{
-    double x[3];
-    switch (k->kind) {
-    case KEY_NUMBER:
-        if (parse_numbers(text, x, 1, reason) != 0 || !in_range(k, x[0]))
-            return -1;
-        v->number = x[0];
-        return 0;
-    case KEY_INTEGER:
-        if (parse_integer(text, &v->integer) != 0 || !in_range(k, v->integer))
-            return -1;
-        return 0;
-    case KEY_VECTOR:
-        if (parse_numbers(text, x, 3, reason) != 0)
-            return -1;
-        if ((k->flags & KEY_NONZERO) && x[0] == 0.0 && x[1] == 0.0 && x[2] == 0.0)
-            return -1;
-        v->vector = v3(x[0], x[1], x[2]);
-        return 0;
-    case KEY_COLOR:
-        if (parse_numbers(text, x, 3, reason) != 0)
-            return -1;
-        for (int i = 0; i < 3; i++)
-            if (!in_range(k, x[i]))
-                return -1;
-        v->vector = v3(x[0], x[1], x[2]);
-        return 0;
-    case KEY_TEXCOORD:
-        if (parse_numbers(text, v->texcoord, 2, reason) != 0)
-            return -1;
-        return 0;
-    case KEY_CHOICE:
-        v->choice = conf_choice_find(k->choices, text);
-        return v->choice >= 0 ? 0 : -1;
-    case KEY_TEXT:
-        if (strlen(text) < (size_t)k->lo || strlen(text) > (size_t)k->hi)
-            return -1;
-        v->text = text;
-        return 0;
-    case KEY_PATH:
-        if (text[0] == '\0' || strlen(text) >= SCENE_PATH_LEN)
-            return -1;
-        v->text = text;
-        return 0;
-    }
-    return -1;
-}
-
-static void store_value(const struct scene_key *k, void *target, const union scene_key_value *v)
-{
-    char *field = (char *)target + k->offset;
-    switch (k->kind) {
-    case KEY_NUMBER:
-        memcpy(field, &v->number, sizeof v->number);
-        break;
-    case KEY_INTEGER:
-        memcpy(field, &v->integer, sizeof v->integer);
-        break;
-    case KEY_VECTOR:
-    case KEY_COLOR:
-        memcpy(field, &v->vector, sizeof v->vector);
-        break;
-    case KEY_TEXCOORD:
-        memcpy(field, v->texcoord, sizeof v->texcoord);
-        break;
-    case KEY_TEXT:
-        memcpy(field, v->text, strlen(v->text) + 1);
-        break;
-    case KEY_CHOICE:
-    case KEY_PATH:
-        break;  /* these always have a setter */
-    }
-}
-
-/* ---- messages ------------------------------------------------------------------------------ */
-
-static void describe_range(const struct scene_key *k, char *buf, size_t len)
-{
-    conf_describe_range(k->lo, k->hi, k->flags, buf, len);
-}
-
-static void describe_expected(const struct scene_key *k, char *buf, size_t len)
-{
-    char range[64];
-    describe_range(k, range, sizeof range);
-    switch (k->kind) {
-    case KEY_NUMBER:
-        snprintf(buf, len, "a number%s", range);
-        break;
-    case KEY_INTEGER:
-        snprintf(buf, len, "an integer%s", range);
-        break;
-    case KEY_VECTOR:
-        snprintf(buf, len, "3 numbers \"x y z\"%s", k->flags & KEY_NONZERO ? ", not all zero" : "");
-        break;
-    case KEY_COLOR:
-        snprintf(buf, len, "3 numbers \"r g b\", each%s", range);
-        break;
-    case KEY_TEXCOORD:
-        snprintf(buf, len, "2 numbers \"u v\"");
-        break;
-    case KEY_CHOICE:
-        conf_describe_choices(k->choices, buf, len);
-        break;
-    case KEY_TEXT:
-        if (k->lo > 0)
-            snprintf(buf, len, "text of %g to %g characters", k->lo, k->hi);
-        else
-            snprintf(buf, len, "text of at most %g characters", k->hi);
-        break;
-    case KEY_PATH:
-        snprintf(buf, len, "a file path of 1 to %d characters", SCENE_PATH_LEN - 1);
-        break;
-    }
-}
-
-/* A near miss of a real key is nearly always a typo; naming the key saves a trip to the docs. */
-static const char *closest_key(enum scene_section_kind section, const char *name)
-{
-    const char *best = NULL;
-    int best_d = 3;
-    for (int i = 0; i < scene_key_count; i++) {
-        if (scene_keys[i].section != section)
-            continue;
-        int d = edit_distance(name, scene_keys[i].name, SCENE_NAME_LEN);
-        if (d < best_d && (size_t)d < strlen(name)) {
-            best_d = d;
-            best = scene_keys[i].name;
-        }
-    }
-    return best;
-}
-
-/* "lorenz, rossler": the types that have key NAME, for a key used with the wrong type. */
-static void list_owners(enum scene_section_kind section, const char *name, char *buf, size_t len)
-{
-    unsigned mask = 0;
-    size_t used = 0;
-    int count = section == SECTION_MODEL ? MODEL_COUNT : PRIM_COUNT;
-    buf[0] = '\0';
-    for (int i = 0; i < scene_key_count; i++)
-        if (scene_keys[i].section == section && strcmp(scene_keys[i].name, name) == 0)
-            mask |= scene_keys[i].applies;
-    for (int t = 0; t < count && used < len; t++) {
-        if (!(mask & (1u << t)))
-            continue;
-        const char *type_name = section == SECTION_MODEL ? model_names[t] : primitive_names[t];
-        used += (size_t)snprintf(buf + used, len - used, "%s%s", used ? ", " : "", type_name);
-    }
-}
-
-/* The entry of NAME that fits the current model or primitive type, NULL if none does. */
-static const struct scene_key *applicable_key(const struct scene *s, enum scene_section_kind section,
-                                              int instance, int first)
-{
-    unsigned type_bit = 0;
-    if (section == SECTION_MODEL)
-        type_bit = 1u << s->model.type;
-    else if (section == SECTION_OBJECT)
-        type_bit = 1u << s->objects[instance].type;
-    for (int i = first; i < scene_key_count; i++) {
-        const struct scene_key *k = &scene_keys[i];
-        if (k->section != section || strcmp(k->name, scene_keys[first].name) != 0)
-            continue;
-        if (k->applies == 0 || (k->applies & type_bit))
-            return k;
-    }
-    return NULL;
+    return conf_key_find(&scene_key_table, (int)section, name);
 }
 
 int scene_key_apply(struct scene *s, enum scene_section_kind section, int instance,
                     const char *name, const char *value, char *msg, size_t msg_len)
 {
-    char label[SCENE_NAME_LEN + 16];
-    char expected[160];
-    char reason[SCENE_PATH_LEN + 160];
-    const char *why = NULL;
-    union scene_key_value v;
-    const struct scene_key *k;
-    void *target = s;
-    int first;
-
-    scene_section_label(s, section, instance, label, sizeof label);
-    first = scene_key_find(section, name);
-    if (first < 0) {
-        const char *guess = closest_key(section, name);
-        if (guess)
-            snprintf(msg, msg_len, "unknown key '%s' in %s (did you mean '%s'?)", name, label, guess);
-        else
-            snprintf(msg, msg_len, "unknown key '%s' in %s", name, label);
-        return -1;
-    }
-    k = applicable_key(s, section, instance, first);
-    if (!k) {
-        char owners[128];
-        list_owners(section, name, owners, sizeof owners);
-        if (section == SECTION_MODEL)
-            snprintf(msg, msg_len, "key '%s' does not apply to model '%s' (only to %s)", name,
-                     model_names[s->model.type], owners);
-        else
-            snprintf(msg, msg_len, "key '%s' in %s does not apply to object type '%s' (only to %s)",
-                     name, label, primitive_names[s->objects[instance].type], owners);
-        return -1;
-    }
-    if (parse_value(k, value, &v, &why) != 0) {
-        char quoted[CONF_QUOTE_MAX + 8];
-        describe_expected(k, expected, sizeof expected);
-        conf_quote(value, quoted, sizeof quoted);
-        snprintf(msg, msg_len, "key '%s' in %s: expected %s, got %s%s%s%s", name, label, expected, quoted,
-                 why ? " (" : "", why ? why : "", why ? ")" : "");
-        return -1;
-    }
-    if (section == SECTION_OBJECT)
-        target = &s->objects[instance];
-    else if (section == SECTION_LIGHT)
-        target = &s->lights[instance];
-    if (k->set) {
-        if (k->set(s, target, &v, reason, sizeof reason) != 0) {
-            snprintf(msg, msg_len, "key '%s' in %s: %s", name, label, reason);
-            return -1;
-        }
-        return 0;
-    }
-    store_value(k, target, &v);
-    return 0;
+    return conf_key_apply(&scene_key_table, s, (int)section, instance, name, value, msg, msg_len);
 }
 
 int scene_set_number(struct scene *s, const char *key, double value, struct conf_error *err)
 {
     memset(err, 0, sizeof *err);
     snprintf(err->where, sizeof err->where, "%.*s=%.17g", (int)sizeof err->where - 40, key, value);
-    char section[SCENE_NAME_LEN];
-    const char *dot = strchr(key, '.');
-    int kind = -1;
-    if (dot && (size_t)(dot - key) < sizeof section) {
-        memcpy(section, key, (size_t)(dot - key));
-        section[dot - key] = '\0';
-        kind = scene_section_find(section);
-    }
-    int first = kind >= 0 && !scene_section_named(kind) ? scene_key_find(kind, dot + 1) : -1;
-    const struct scene_key *k = first >= 0 ? applicable_key(s, kind, 0, first) : NULL;
-    if (!k || k->kind != KEY_NUMBER) {
+    const char *name = NULL;
+    int section = split_key(key, &name);
+    const struct conf_key *k = section < 0 ? NULL : conf_key_for(&scene_key_table, s, section, 0, name);
+    if (!k || k->kind != CONF_NUMBER) {
         snprintf(err->message, sizeof err->message, "'%s' is not a number of this scene (a key such as model.rho, "
                  "as --set names it)", key);
         return -1;
     }
-    char label[SCENE_NAME_LEN + 16];
-    scene_section_label(s, kind, 0, label, sizeof label);
-    /* what parse_value checks of a number written in a file: finite, a normal double, within the
-     * most a scene number may be, within the key's range */
-    const char *why = !isfinite(value)                          ? "not a finite number"
-                      : fabs(value) > SCENE_MAX_ABS_VALUE          ? TOO_LARGE_REASON
-                      : value != 0.0 && fabs(value) < DBL_MIN      ? "too large or too small for a double"
-                                                                   : NULL;
-    if (why || !in_range(k, value)) {
-        char expected[160];
-        describe_expected(k, expected, sizeof expected);
-        snprintf(err->message, sizeof err->message, "key '%s' in %s: expected %s, got %.17g%s%s%s", dot + 1, label,
-                 expected, value, why ? " (" : "", why ? why : "", why ? ")" : "");
-        return -1;
-    }
-    union scene_key_value v = {.number = value};
-    char reason[SCENE_PATH_LEN + 160];
-    if (k->set) {
-        if (k->set(s, s, &v, reason, sizeof reason) != 0) {
-            snprintf(err->message, sizeof err->message, "key '%.64s' in %s: %.300s", dot + 1, label, reason);
-            return -1;
-        }
-        return 0;
-    }
-    store_value(k, s, &v);
-    return 0;
+    return conf_key_apply_number(&scene_key_table, s, section, 0, name, value, err->message, sizeof err->message);
 }

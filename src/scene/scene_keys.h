@@ -1,9 +1,9 @@
-/* Private to src/scene: every key a scene may hold, described once in a table, and the parsing and
- * storing of values shared by the file loader and --set, so that both accept exactly the same text. */
+/* Private to src/scene: every key a scene may hold, described once in a table that conf/conf_key.h
+ * applies for the file loader and --set alike, so that both accept exactly the same text. */
 #ifndef BT_SCENE_KEYS_H
 #define BT_SCENE_KEYS_H
 #include <stddef.h>
-#include "conf/conf_value.h"
+#include "conf/conf_key.h"
 #include "scene/scene.h"
 
 /* No honest scene file comes near this; refusing earlier keeps a wrong path (a video, a disk image)
@@ -29,50 +29,11 @@ enum scene_section_kind {
     SECTION_COUNT
 };
 
-enum scene_key_kind {
-    KEY_NUMBER,         /* one double in [lo, hi] */
-    KEY_INTEGER,        /* one int in [lo, hi] */
-    KEY_VECTOR,         /* "x y z", any finite components */
-    KEY_COLOR,          /* "r g b", each component in [lo, hi] */
-    KEY_TEXCOORD,       /* "u v" */
-    KEY_CHOICE,         /* one of the names in choices; the index is the enum value */
-    KEY_TEXT,           /* lo..hi bytes, stored in a char array of hi + 1 */
-    KEY_PATH            /* a file relative to the scene file's directory, checked by the setter */
-};
-
-/* flags: CONF_ABOVE_LO, CONF_BELOW_HI (conf/conf_value.h), and the scene's own */
-#define KEY_NONZERO CONF_FLAGS_OWN  /* a vector that gives a direction: not all components zero */
-
-union scene_key_value {
-    double number;
-    int integer;
-    vec3d vector;
-    double texcoord[2];
-    int choice;
-    const char *text;
-};
-
-/* Stores a parsed value where a plain field copy is not enough (enums, files to check, shared
- * textures). target is the scene, the object or the light the section stands for. On failure the
- * setter writes why into reason. */
-typedef int (*scene_key_setter)(struct scene *s, void *target, const union scene_key_value *v,
-                                char *reason, size_t reason_len);
-
-struct scene_key {
-    enum scene_section_kind section;
-    const char *name;
-    enum scene_key_kind kind;
-    double lo, hi;
-    unsigned flags;
-    const char *const *choices;  /* KEY_CHOICE: NULL-terminated */
-    unsigned applies;            /* [model]: bits of model_type; [object]: bits of primitive_type;
-                                    0: every type */
-    size_t offset;               /* field in the scene, object or light, when set is NULL */
-    scene_key_setter set;
-};
-
-extern const struct scene_key scene_keys[];
+/* The table of every key a scene may hold (conf/conf_key.h), and what only a scene knows: its
+ * sections, the types of models and primitives, where relative paths start, the largest number. */
+extern const struct conf_key scene_keys[];
 extern const int scene_key_count;
+extern const struct conf_key_table scene_key_table;
 
 const char *scene_section_name(enum scene_section_kind section);
 /* Section kind called NAME, -1 if there is none. */

@@ -432,7 +432,7 @@ static const struct {
     {"integer_plus_sign", 3, "expected an integer from 0 to 100000, got \"+32\""},
     {"integer_range", 2, "from 1 to 8192"},
     {"bad_choice", 2, "one of euler, rk4, dopri5"},
-    {"empty_value", 2, "got \"\""},
+    {"empty_value", 2, "key 'fov' in [camera] has an empty value"},
     {"scene_name_too_long", 2, "1 to 63 characters"},
     {"long_line", 3, "characters long"},
     {"syntax_no_equals", 2, "syntax error"},
@@ -607,7 +607,7 @@ static void test_model_keys_follow_the_type(void **state)
     (void)state;
     assert_int_equal(load_text(&s, "[model]\ntype = schwarzschild\nrho = 28\n", &err), -1);
     assert_contains(err.where, ":3");
-    assert_contains(err.message, "key 'rho' does not apply to model 'schwarzschild'");
+    assert_contains(err.message, "key 'rho' in [model] does not apply to model 'schwarzschild'");
     assert_contains(err.message, "lorenz");
 
     /* 'beta' is Lorenz's beta or Roessler's b, by model type */
@@ -835,7 +835,7 @@ static void test_set_model_type_resets_nothing(void **state)
     assert_int_equal(scene_set(&s, "model.mass=0.5", &err), 0);
     assert_near(s.model.mass, 0.5, 0);
     assert_int_equal(scene_set(&s, "model.rho=31", &err), -1);
-    assert_contains(err.message, "key 'rho' does not apply to model 'schwarzschild'");
+    assert_contains(err.message, "key 'rho' in [model] does not apply to model 'schwarzschild'");
 }
 
 static void test_set_rejects(void **state)
