@@ -422,18 +422,48 @@ int conf_key_apply_number(const struct conf_key_table *table, void *owner, int s
     return 0;
 }
 
-const char *conf_key_missing(const struct conf_key_table *table, const void *owner, int section, int instance,
-                             int (*given)(const void *owner, int section, int instance, int key))
+/* "'type = sphere', 'triangle', 'disk' or 'rect'" */
+static void describe_types(const struct conf_key *type, char *buf, size_t len)
 {
+    size_t used = 0;
+    int n = 0;
+    while (type->choices[n].name)
+        n++;
+    buf[0] = '\0';
+    for (int i = 0; i < n && used < len; i++)
+        used += (size_t)snprintf(buf + used, len - used, "%s'%s%s'", i == 0 ? "" : i == n - 1 ? " or " : ", ",
+                                 i == 0 ? "type = " : "", type->choices[i].name);
+}
+
+int conf_key_check_required(const struct conf_key_table *table, const void *owner, int section, int instance,
+                            const int *key_line, char *msg, size_t msg_len)
+{
+    char label[160];
+    table->label(owner, section, instance, label, sizeof label);
+    int typed = table->type_word && table->type_word(section);
+    int type = conf_key_find(table, section, "type");
+    /* before its type is known, the keys a section needs are not */
+    if (typed && type >= 0 && (table->keys[type].flags & CONF_REQUIRED) && key_line[type] == 0) {
+        char types[256] = "";
+        if (table->keys[type].kind == CONF_CHOICE)
+            describe_types(&table->keys[type], types, sizeof types);
+        snprintf(msg, msg_len, "%s has no type%s%s", label, *types ? ": add " : "", types);
+        return -1;
+    }
     unsigned bit = type_bit(table, owner, section, instance);
     for (int i = 0; i < table->count; i++) {
         const struct conf_key *k = &table->keys[i];
-        if (k->section != section || !(k->flags & CONF_REQUIRED) || !applies_to(k, bit))
+        if (k->section != section || !(k->flags & CONF_REQUIRED) || !applies_to(k, bit) ||
+            key_line[conf_key_find(table, section, k->name)] != 0)
             continue;
-        if (!given(owner, section, instance, conf_key_find(table, section, k->name)))
-            return k->name;
+        if (typed)
+            snprintf(msg, msg_len, "%s of type '%s' needs '%s'", label,
+                     table->type_name(section, table->type_of(owner, section, instance)), k->name);
+        else
+            snprintf(msg, msg_len, "%s needs '%s'", label, k->name);
+        return -1;
     }
-    return NULL;
+    return 0;
 }
 
 /* ---- what a path names --------------------------------------------------------------------- */

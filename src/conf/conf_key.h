@@ -111,10 +111,12 @@ int conf_key_apply_number(const struct conf_key_table *table, void *owner, int s
                           const char *name, double value, char *msg, size_t msg_len);
 /* "a number from 0 to 1", "one of off, on", for messages and help. */
 void conf_key_expected(const struct conf_key_table *table, const struct conf_key *k, char *buf, size_t len);
-/* For a closed section: the first CONF_REQUIRED key of its type for which given(key index) is 0,
- * or NULL. */
-const char *conf_key_missing(const struct conf_key_table *table, const void *owner, int section, int instance,
-                             int (*given)(const void *owner, int section, int instance, int key));
+/* For a section that ended: 0 when every CONF_REQUIRED key of its type was given (key_line[k]:
+ * where key k, its index in the table, was set; 0 where not), else -1 with the message: "[input
+ * knob] has no type: add 'type = powermate', ... or 'script'" for a section with types, then
+ * "[input knob] of type 'hid' needs 'vid'", "[button b] needs 'action'". */
+int conf_key_check_required(const struct conf_key_table *table, const void *owner, int section, int instance,
+                            const int *key_line, char *msg, size_t msg_len);
 /* The name of choice VALUE among CHOICES, "?" if none has it. */
 const char *conf_choice_name(const struct conf_choice *choices, int value);
 

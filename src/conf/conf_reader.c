@@ -83,7 +83,9 @@ static int finish_section(struct reader *r)
     char msg[sizeof r->err->message];
     if (r->kind < 0)
         return 0;
-    if (r->schema->close(r->target, r->kind, r->instance, r->key_line, msg, sizeof msg) != 0)
+    if (conf_key_check_required(r->schema->keys, r->target, r->kind, r->instance, r->key_line, msg, sizeof msg) != 0)
+        return fail(r, r->header_line, "%s", msg);
+    if (r->schema->close && r->schema->close(r->target, r->kind, r->instance, r->key_line, msg, sizeof msg) != 0)
         return fail(r, r->header_line, "%s", msg);
     return 0;
 }
@@ -178,7 +180,7 @@ static char *continue_value(struct reader *r, char *line)
         }
     }
     if (r->schema->continuation(r->target, r->kind, r->instance, r->continuing, conf_trim(line), msg, sizeof msg) != 0) {
-        r->schema->label(r->target, r->kind, r->instance, label, sizeof label);
+        r->schema->keys->label(r->target, r->kind, r->instance, label, sizeof label);
         fail(r, r->line, "key '%s' in %s: %s", r->continuing, label, msg);
         return NULL;
     }
@@ -255,29 +257,32 @@ static int on_pair(void *user, const char *inih_section, const char *name, const
         fail(r, r->line, "missing key name before '='");
         return 0;
     }
-    int key = schema->key_find(r->kind, name);
+    const struct conf_key_table *keys = schema->keys;
+    int key = conf_key_find(keys, r->kind, name);
     if (key >= CONF_MAX_KEYS)
         key = -1;
     if (key >= 0) {
         char label[CONF_NAME_MAX + 16];
-        schema->label(r->target, r->kind, r->instance, label, sizeof label);
+        keys->label(r->target, r->kind, r->instance, label, sizeof label);
         if (r->key_line[key]) {
             fail(r, r->line, "key '%s' in %s is already set at line %d", name, label, r->key_line[key]);
             return 0;
         }
-        int type = schema->key_find(r->kind, "type");
-        if (schema->type_first(r->kind) && type >= 0 && type < CONF_MAX_KEYS && r->key_line[type] == 0 &&
+        int type = conf_key_find(keys, r->kind, "type");
+        if (keys->type_word && keys->type_word(r->kind) && type >= 0 && type < CONF_MAX_KEYS && r->key_line[type] == 0 &&
             strcmp(name, "type") != 0) {
             fail(r, r->line, "key '%s' in %s comes before 'type': set type first", name, label);
             return 0;
         }
     }
-    /* unknown keys too: the schema words the message (with its guess at what was meant) */
-    if (schema->pair(r->target, r->kind, r->instance, name, value, r->line, msg, sizeof msg) != 0 || key < 0) {
+    /* unknown keys too: one place words the message (with its guess at what was meant) */
+    if (conf_key_apply(keys, r->target, r->kind, r->instance, name, value, msg, sizeof msg) != 0 || key < 0) {
         fail(r, r->line, "%s", msg);
         return 0;
     }
     r->key_line[key] = r->line;
+    if (schema->applied)
+        schema->applied(r->target, r->kind, r->instance, key, r->line);
     if (schema->continues && schema->continues(r->kind, name)) {
         snprintf(r->continuing, sizeof r->continuing, "%s", name);
     }

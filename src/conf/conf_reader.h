@@ -11,15 +11,17 @@
  *   - lines: a NUL byte, a line too long for inih's buffer (refused, never cut), a key before any
  *     section, '=' without a key, anything that is neither a pair, a header nor a comment;
  *   - keys: a key given twice in one section, a key before the 'type' of a section whose type
- *     decides its other keys;
+ *     decides its other keys, the value itself (applied through the schema's key table,
+ *     conf/conf_key.h), a section that ends without its type or a key it requires;
  *   - continuation lines: a key whose value the schema lets go on takes the indented lines after
  *     it, one item each (a comment line leaves one out; a blank, unindented or '=' line ends it).
  * Indentation is otherwise only layout. */
 #ifndef BT_CONF_READER_H
 #define BT_CONF_READER_H
 #include <stddef.h>
+#include "conf/conf_key.h"
 
-/* Keys per section kind a schema may number (conf_schema.key_find); sections per file; bytes of
+/* Keys a schema's table may hold (conf_key_table.count); sections per file; bytes of
  * an instance name with its NUL (a schema keeps names no longer). */
 #define CONF_MAX_KEYS 256
 #define CONF_MAX_SECTIONS 256
@@ -41,22 +43,19 @@ struct conf_schema {
     const char *(*kind_list)(void);    /* "scene, camera, ...": the kinds, for messages */
     int (*name_ok)(const char *name);  /* an instance name the schema can keep */
     int name_max;                      /* its longest, for the message */
-    /* 1 where the section's 'type' decides its other keys and must come first */
-    int (*type_first)(int kind);
-    /* the key's index (< CONF_MAX_KEYS) among its kind's, -1 when the kind has no such key */
-    int (*key_find)(int kind, const char *key);
-    /* "[camera]", "[object earth]" */
-    void (*label)(const void *target, int kind, int instance, char *buf, size_t len);
+    /* every key of every section, applied by conf/conf_key.h: what a key's value sets, the types
+     * a key applies to (a section with types takes its 'type' first), the required keys */
+    const struct conf_key_table *keys;
     /* a section starts at line: its instance (index of a named kind's instances, else 0); -1 with
      * msg when the schema has no room for another */
     int (*open)(void *target, int kind, const char *name, int line, int *instance, char *msg, size_t msglen);
-    /* the section ended (next header or end of file): -1 with msg, told at its header's line.
-     * key_line[k]: where key k was set in it, 0 where not. */
+    /* NULL, or: the section ended (next header or end of file) with its required keys, checked
+     * first: -1 with msg, told at its header's line. key_line[k]: where key k (its index in the
+     * table) was set in it, 0 where not. */
     int (*close)(void *target, int kind, int instance, const int *key_line, char *msg, size_t msglen);
-    /* key = value in the section (unknown keys too, so that one place words the guess): 0, or -1
-     * with the whole message */
-    int (*pair)(void *target, int kind, int instance, const char *key, const char *value, int line, char *msg,
-                size_t msglen);
+    /* NULL, or: key (its index in the table) was set at line in the section: where it came from,
+     * for a message about it later */
+    void (*applied)(void *target, int kind, int instance, int key, int line);
     /* NULL, or 1 where the key's value goes on over indented lines, each handed to continuation
      * (-1 with msg, told as "key 'KEY' in LABEL: MSG") */
     int (*continues)(int kind, const char *key);

@@ -18,14 +18,6 @@ static_assert(KIOSK_KEY_TABLE_MAX <= CONF_MAX_KEYS && KIOSK_NAME_LEN <= CONF_NAM
 
 static const char *kind_name(int kind) { return kiosk_section_name((enum kiosk_section)kind); }
 static int kind_named(int kind) { return kiosk_section_named((enum kiosk_section)kind); }
-/* which keys an input takes depends on its type */
-static int type_first(int kind) { return kind == KSEC_INPUT; }
-static int key_find(int kind, const char *key) { return kiosk_key_find((enum kiosk_section)kind, key); }
-
-static void label(const void *target, int kind, int instance, char *buf, size_t len)
-{
-    kiosk_section_label(target, (enum kiosk_section)kind, instance, buf, len);
-}
 
 static int open_section(void *target, int kind, const char *name, int line, int *instance, char *msg, size_t msglen)
 {
@@ -50,38 +42,11 @@ static int open_section(void *target, int kind, const char *name, int line, int 
     return 0;
 }
 
-/* A button or input without its required keys cannot work; said at its header, where it starts. */
-static int close_section(void *target, int kind, int instance, const int *key_line, char *msg, size_t msglen)
-{
-    const struct kiosk_config *c = target;
-    enum kiosk_section section = (enum kiosk_section)kind;
-    char name[KIOSK_NAME_LEN + 16];
-    kiosk_section_label(c, section, instance, name, sizeof name);
-    if (section == KSEC_INPUT && key_line[kiosk_key_find(KSEC_INPUT, "type")] == 0) {
-        snprintf(msg, msglen, "%s has no type: add 'type = powermate', 'hid', 'gpio_encoder', 'gpio_button', "
-                              "'keyboard' or 'script'", name);
-        return -1;
-    }
-    const char *missing = kiosk_key_missing(c, section, instance);
-    if (missing && section == KSEC_INPUT)
-        snprintf(msg, msglen, "%s of type '%s' needs '%s'", name, kiosk_input_type_name(c->inputs[instance].type),
-                 missing);
-    else if (missing)
-        snprintf(msg, msglen, "%s needs '%s'", name, missing);
-    return missing ? -1 : 0;
-}
-
-static int set_pair(void *target, int kind, int instance, const char *key, const char *value, int line, char *msg,
-                    size_t msglen)
+/* Where each key was set: the checks after the file and the kiosk's messages point at it. */
+static void applied(void *target, int kind, int instance, int key, int line)
 {
     struct kiosk_config *c = target;
-    enum kiosk_section section = (enum kiosk_section)kind;
-    if (kiosk_key_apply(c, section, instance, key, value, msg, msglen) != 0)
-        return -1;
-    int k = kiosk_key_find(section, key);
-    if (k >= 0)
-        c->source.key[kiosk_slot(section, instance)][k] = line;
-    return 0;
+    c->source.key[kiosk_slot((enum kiosk_section)kind, instance)][key] = line;
 }
 
 /* A scene list longer than inih's line limit goes on over indented lines. */
@@ -106,12 +71,9 @@ static const struct conf_schema kiosk_schema = {
     .kind_list = kiosk_section_list,
     .name_ok = kiosk_name_ok,
     .name_max = KIOSK_NAME_LEN - 1,
-    .type_first = type_first,
-    .key_find = key_find,
-    .label = label,
+    .keys = &kiosk_key_table,
     .open = open_section,
-    .close = close_section,
-    .pair = set_pair,
+    .applied = applied,
     .continues = continues,
     .continuation = continuation,
 };

@@ -53,8 +53,6 @@ int kiosk_key_line(const struct kiosk_config *c, enum kiosk_section section, int
 /* Parse VALUE for key NAME of a section instance and store it: 0, or -1 with the whole message. */
 int kiosk_key_apply(struct kiosk_config *c, enum kiosk_section section, int instance,
                     const char *name, const char *value, char *msg, size_t msg_len);
-/* For a section that is closed: the first required key that was not given, or NULL. */
-const char *kiosk_key_missing(const struct kiosk_config *c, enum kiosk_section section, int instance);
 
 /* Section names: 1 to KIOSK_NAME_LEN - 1 of letters, digits, '_' and '-'. */
 int kiosk_name_ok(const char *name);

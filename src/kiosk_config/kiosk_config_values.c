@@ -23,17 +23,6 @@ int kiosk_key_apply(struct kiosk_config *c, enum kiosk_section section, int inst
     return conf_key_apply(&kiosk_key_table, c, (int)section, instance, name, value, msg, msg_len);
 }
 
-static int key_given(const void *owner, int section, int instance, int key)
-{
-    const struct kiosk_config *c = owner;
-    return key >= 0 && c->source.key[kiosk_slot((enum kiosk_section)section, instance)][key] != 0;
-}
-
-const char *kiosk_key_missing(const struct kiosk_config *c, enum kiosk_section section, int instance)
-{
-    return conf_key_missing(&kiosk_key_table, c, (int)section, instance, key_given);
-}
-
 /* ---- setters ------------------------------------------------------------------------------- */
 
 /* Resolved once the whole file is read, since [kiosk] scenes may come after it. */

@@ -50,24 +50,22 @@ const char *scene_primitive_name(enum primitive_type type)
 static const struct {
     const char *name;
     int named;
-    int type_first;
 } sections[SECTION_COUNT] = {
-    [SECTION_SCENE] = {"scene", 0, 0},
-    [SECTION_CAMERA] = {"camera", 0, 0},
-    [SECTION_OBSERVER] = {"observer", 0, 0},
-    [SECTION_RENDER] = {"render", 0, 0},
-    [SECTION_MODEL] = {"model", 0, 1},
-    [SECTION_LIGHTING] = {"lighting", 0, 0},
-    [SECTION_LIGHT] = {"light", 1, 0},
-    [SECTION_SKY] = {"sky", 0, 0},
-    [SECTION_OBJECT] = {"object", 1, 1},
-    [SECTION_QUALITY] = {"quality", 0, 0},
-    [SECTION_KIOSK] = {"kiosk", 0, 0},
+    [SECTION_SCENE] = {"scene", 0},
+    [SECTION_CAMERA] = {"camera", 0},
+    [SECTION_OBSERVER] = {"observer", 0},
+    [SECTION_RENDER] = {"render", 0},
+    [SECTION_MODEL] = {"model", 0},
+    [SECTION_LIGHTING] = {"lighting", 0},
+    [SECTION_LIGHT] = {"light", 1},
+    [SECTION_SKY] = {"sky", 0},
+    [SECTION_OBJECT] = {"object", 1},
+    [SECTION_QUALITY] = {"quality", 0},
+    [SECTION_KIOSK] = {"kiosk", 0},
 };
 
 const char *scene_section_name(enum scene_section_kind section) { return sections[section].name; }
 int scene_section_named(enum scene_section_kind section) { return sections[section].named; }
-int scene_section_type_first(enum scene_section_kind section) { return sections[section].type_first; }
 
 int scene_section_find(const char *name)
 {
@@ -421,7 +419,7 @@ const struct conf_key scene_keys[] = {
     {SECTION_SKY, "galactic_pole", CONF_VECTOR, ANY, .flags = CONF_NONZERO, .offset = AT_SCENE(sky.galactic_pole)},
     {SECTION_SKY, "galactic_center", CONF_VECTOR, ANY, .flags = CONF_NONZERO, .offset = AT_SCENE(sky.galactic_center)},
 
-    {SECTION_OBJECT, "type", CHOICE(primitive_names, AT_OBJECT(type))},
+    {SECTION_OBJECT, "type", CHOICE(primitive_names, AT_OBJECT(type)), .flags = CONF_REQUIRED},
     {SECTION_OBJECT, "center", CONF_VECTOR, ANY,
      .applies = FOR_PRIM(PRIM_SPHERE) | FOR_PRIM(PRIM_DISK) | FOR_PRIM(PRIM_RECT),
      .offset = AT_OBJECT(center)},

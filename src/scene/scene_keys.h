@@ -40,8 +40,6 @@ const char *scene_section_name(enum scene_section_kind section);
 int scene_section_find(const char *name);
 /* Sections that stand for one of several instances and carry a name: [light NAME], [object NAME]. */
 int scene_section_named(enum scene_section_kind section);
-/* Sections whose 'type' decides which other keys apply, so it has to come first in a file. */
-int scene_section_type_first(enum scene_section_kind section);
 /* "scene, camera, ..., object NAME", for messages. */
 const char *scene_section_list(void);
 /* "[camera]" or "[object earth]"; instance is the light or object index of named sections. */

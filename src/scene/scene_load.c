@@ -17,13 +17,6 @@ static_assert(SCENE_KEY_TABLE_MAX <= CONF_MAX_KEYS && SCENE_NAME_LEN <= CONF_NAM
 
 static const char *kind_name(int kind) { return scene_section_name((enum scene_section_kind)kind); }
 static int kind_named(int kind) { return scene_section_named((enum scene_section_kind)kind); }
-static int type_first(int kind) { return scene_section_type_first((enum scene_section_kind)kind); }
-static int key_find(int kind, const char *key) { return scene_key_find((enum scene_section_kind)kind, key); }
-
-static void label(const void *target, int kind, int instance, char *buf, size_t len)
-{
-    scene_section_label(target, (enum scene_section_kind)kind, instance, buf, len);
-}
 
 static int open_section(void *target, int kind, const char *name, int line, int *instance, char *msg, size_t msglen)
 {
@@ -48,35 +41,17 @@ static int open_section(void *target, int kind, const char *name, int line, int 
     return 0;
 }
 
-/* A typed section's keys are only known once its type is; a section that never got one is an
- * object nobody can draw. */
-static int close_section(void *target, int kind, int instance, const int *key_line, char *msg, size_t msglen)
-{
-    const struct scene *s = target;
-    if (kind == SECTION_OBJECT && key_line[scene_key_find(SECTION_OBJECT, "type")] == 0) {
-        snprintf(msg, msglen, "[object %s] has no type: add 'type = sphere', 'triangle', 'disk' or 'rect'",
-                 s->objects[instance].name);
-        return -1;
-    }
-    return 0;
-}
-
-static int set_pair(void *target, int kind, int instance, const char *key, const char *value, int line, char *msg,
-                    size_t msglen)
+/* Where each image came from, for a file that turns out unreadable only when it is decoded. */
+static void applied(void *target, int kind, int instance, int key, int line)
 {
     struct scene *s = target;
-    enum scene_section_kind section = (enum scene_section_kind)kind;
-    if (scene_key_apply(s, section, instance, key, value, msg, msglen) != 0)
-        return -1;
-    /* where each image came from, for a file that turns out unreadable only when it is decoded */
-    if (section == SECTION_OBJECT && strcmp(key, "texture") == 0) {
+    if (kind == SECTION_OBJECT && key == scene_key_find(SECTION_OBJECT, "texture")) {
         int t = s->objects[instance].material.texture;
         if (t >= 0 && s->texture_line[t] == 0)
             s->texture_line[t] = line;
     }
-    if (section == SECTION_SKY && strcmp(key, "cubemap") == 0)
+    if (kind == SECTION_SKY && key == scene_key_find(SECTION_SKY, "cubemap"))
         s->cubemap_line = line;
-    return 0;
 }
 
 static const struct conf_schema scene_schema = {
@@ -88,12 +63,9 @@ static const struct conf_schema scene_schema = {
     .kind_list = scene_section_list,
     .name_ok = scene_instance_name_ok,
     .name_max = SCENE_NAME_LEN - 1,
-    .type_first = type_first,
-    .key_find = key_find,
-    .label = label,
+    .keys = &scene_key_table,
     .open = open_section,
-    .close = close_section,
-    .pair = set_pair,
+    .applied = applied,
 };
 
 /* Directory and base name of the scene file: assets resolve against the first, the second names

@@ -1,12 +1,12 @@
 /* libFuzzer harness: the configuration reader that scene files and the kiosk configuration share
- * (conf/conf_reader.h), and the values both read alike (conf/conf_value.h), on a small schema of
- * the harness's own, so that what the reader settles for every file kind is fuzzed once, apart
- * from the two schemas (fuzz_scene.c, fuzz_kiosk_config.c).
+ * (conf/conf_reader.h), the keys' apply function (conf/conf_key.h) and the values both read alike
+ * (conf/conf_value.h), on a small schema of the harness's own, so that what they settle for every
+ * file kind is fuzzed once, apart from the two schemas (fuzz_scene.c, fuzz_kiosk_config.c).
  *
  * The schema: [shelf] (one, unnamed) with 'label' (text), 'books' (goes on over indented lines,
  * at most 8), 'width' (a number > 0 and < 100), 'count' (an integer from -5 to 5), 'colour' (three
- * numbers), 'finish' (one of matt, gloss); [box NAME] (up to 3) with 'type' first and 'size' (an
- * integer) required.
+ * numbers), 'finish' (one of matt, gloss); [box NAME] (up to 3) with 'type' (wood or card) first and
+ * 'size' (an integer) required.
  *
  * Beyond the sanitizers: every refusal names its place and says why (terminated, non-empty
  * strings); a number the value parser accepts is finite and not a denormal; an integer it accepts
@@ -27,21 +27,20 @@ int LLVMFuzzerInitialize(int *argc, char ***argv);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 enum { SHELF, BOX, KINDS };
-enum { LABEL, BOOKS, WIDTH, COUNT, COLOUR, FINISH, SHELF_KEYS };
-enum { TYPE, SIZE, BOX_KEYS };
 #define MAX_BOXES 3
 #define MAX_BOOKS 8
 
-static const char *const shelf_keys[SHELF_KEYS] = {"label", "books", "width", "count", "colour", "finish"};
-static const char *const box_keys[BOX_KEYS] = {"type", "size"};
-static const char *const finishes[] = {"matt", "gloss", NULL};
+struct box {
+    char name[CONF_NAME_MAX];
+    int type, size;
+};
 
 struct store {
     char label[32];
     int n_books, n_boxes, finish;
     double width, colour[3];
     long long count;
-    char boxes[MAX_BOXES][CONF_NAME_MAX];
+    struct box boxes[MAX_BOXES];
 };
 
 static struct store store;
@@ -51,16 +50,82 @@ static const char *kind_name(int kind) { return kind == SHELF ? "shelf" : "box";
 static int kind_named(int kind) { return kind == BOX; }
 static const char *kind_list(void) { return "shelf, box NAME"; }
 static int name_ok(const char *name) { return strspn(name, "abcdefghijklmnopqrstuvwxyz_-0123456789") == strlen(name); }
-static int type_first(int kind) { return kind == BOX; }
 
-static int key_find(int kind, const char *key)
+/* A number the value parser took: finite, zero or normal, and within the range it checked. */
+static void check_number(double x, double lo, double hi, unsigned flags)
 {
-    int n = kind == SHELF ? SHELF_KEYS : BOX_KEYS;
-    for (int k = 0; k < n; k++)
-        if (strcmp(key, kind == SHELF ? shelf_keys[k] : box_keys[k]) == 0)
-            return k;
-    return -1;
+    if (!isfinite(x) || (x != 0.0 && fabs(x) < DBL_MIN) || !conf_in_range(x, lo, hi, flags))
+        __builtin_trap();
 }
+
+static int add_book(struct store *s, char *msg, size_t msglen)
+{
+    if (s->n_books == MAX_BOOKS) {
+        snprintf(msg, msglen, "at most %d books", MAX_BOOKS);
+        return -1;
+    }
+    s->n_books++;
+    return 0;
+}
+
+static int set_books(void *owner, void *target, const union conf_parsed *v, char *reason, size_t len)
+{
+    (void)target, (void)v;
+    return add_book(owner, reason, len);
+}
+
+static int set_width(void *owner, void *target, const union conf_parsed *v, char *reason, size_t len)
+{
+    (void)target, (void)reason, (void)len;
+    check_number(v->number, 0.0, 100.0, CONF_ABOVE_LO | CONF_BELOW_HI);
+    ((struct store *)owner)->width = v->number;
+    return 0;
+}
+
+/* the integer parser on the text itself: what it took is decimal digits after an optional minus
+ * sign, then blanks at most */
+static int set_count(void *owner, void *target, const union conf_parsed *v, char *reason, size_t len)
+{
+    const char *value = v->text;
+    long long n;
+    (void)target;
+    if (conf_parse_integer(value, &n) != 0 || !conf_in_range((double)n, -5.0, 5.0, 0)) {
+        snprintf(reason, len, "expected an integer from -5 to 5");
+        return -1;
+    }
+    size_t d = value[0] == '-';
+    if (!isdigit((unsigned char)value[d]))
+        __builtin_trap();
+    d += strspn(value + d, "0123456789");
+    if (value[d + strspn(value + d, " \t\r\n\v\f")] != '\0')
+        __builtin_trap();
+    ((struct store *)owner)->count = n;
+    return 0;
+}
+
+static int set_colour(void *owner, void *target, const union conf_parsed *v, char *reason, size_t len)
+{
+    (void)target, (void)reason, (void)len;
+    for (int i = 0; i < 3; i++) {
+        check_number(v->v[i], -INFINITY, INFINITY, 0);
+        ((struct store *)owner)->colour[i] = v->v[i];
+    }
+    return 0;
+}
+
+static const struct conf_choice finishes[] = {{"matt", 0}, {"gloss", 1}, {NULL, 0}};
+static const struct conf_choice box_types[] = {{"wood", 0}, {"card", 1}, {NULL, 0}};
+
+static const struct conf_key keys[] = {
+    {SHELF, "label", CONF_TEXT, .lo = 0, .hi = 31, .offset = offsetof(struct store, label)},
+    {SHELF, "books", CONF_SPECIAL, .set = set_books},
+    {SHELF, "width", CONF_NUMBER, .lo = 0.0, .hi = 100.0, .flags = CONF_ABOVE_LO | CONF_BELOW_HI, .set = set_width},
+    {SHELF, "count", CONF_SPECIAL, .set = set_count},
+    {SHELF, "colour", CONF_VECTOR, .lo = -INFINITY, .hi = INFINITY, .set = set_colour},
+    {SHELF, "finish", CONF_CHOICE, .choices = finishes, .offset = offsetof(struct store, finish)},
+    {BOX, "type", CONF_CHOICE, .choices = box_types, .flags = CONF_REQUIRED, .offset = offsetof(struct box, type)},
+    {BOX, "size", CONF_INTEGER, .lo = -1e9, .hi = 1e9, .flags = CONF_REQUIRED, .offset = offsetof(struct box, size)},
+};
 
 static void label(const void *target, int kind, int instance, char *buf, size_t len)
 {
@@ -68,8 +133,30 @@ static void label(const void *target, int kind, int instance, char *buf, size_t 
     if (kind == SHELF)
         snprintf(buf, len, "[shelf]");
     else
-        snprintf(buf, len, "[box %s]", s->boxes[instance]);
+        snprintf(buf, len, "[box %s]", s->boxes[instance].name);
 }
+
+static void *key_target(void *owner, int kind, int instance)
+{
+    struct store *s = owner;
+    return kind == BOX ? (void *)&s->boxes[instance] : owner;
+}
+static const char *type_word(int kind) { return kind == BOX ? "box type" : NULL; }
+static int type_of(const void *owner, int kind, int instance)
+{
+    (void)kind;
+    return ((const struct store *)owner)->boxes[instance].type;
+}
+static const char *type_name(int kind, int t)
+{
+    (void)kind;
+    return conf_choice_name(box_types, t);
+}
+
+static const struct conf_key_table key_table = {
+    .keys = keys, .count = sizeof keys / sizeof keys[0], .name_len = CONF_NAME_MAX, .path_len = 256,
+    .label = label, .target = key_target, .type_word = type_word, .type_of = type_of, .type_name = type_name,
+};
 
 static int open_section(void *target, int kind, const char *name, int line, int *instance, char *msg, size_t msglen)
 {
@@ -82,96 +169,7 @@ static int open_section(void *target, int kind, const char *name, int line, int 
             return -1;
         }
         *instance = s->n_boxes++;
-        snprintf(s->boxes[*instance], sizeof s->boxes[*instance], "%s", name);
-    }
-    return 0;
-}
-
-static int close_section(void *target, int kind, int instance, const int *key_line, char *msg, size_t msglen)
-{
-    (void)target;
-    if (kind == BOX && key_line[SIZE] == 0) {
-        snprintf(msg, msglen, "box %d needs 'size'", instance);
-        return -1;
-    }
-    return 0;
-}
-
-/* A number the value parser took: finite, zero or normal, and within the range it checked. */
-static void check_number(double x, double lo, double hi, unsigned flags)
-{
-    if (!isfinite(x) || (x != 0.0 && fabs(x) < DBL_MIN) || !conf_in_range(x, lo, hi, flags))
-        __builtin_trap();
-}
-
-static int refused(char *msg, size_t msglen, const char *key, const char *value, const char *why)
-{
-    char quoted[CONF_QUOTE_MAX + 8];
-    conf_quote(value, quoted, sizeof quoted);
-    snprintf(msg, msglen, "key '%s': got %s%s%s%s", key, quoted, why ? " (" : "", why ? why : "", why ? ")" : "");
-    return -1;
-}
-
-static int set_pair(void *target, int kind, int instance, const char *key, const char *value, int line, char *msg,
-                    size_t msglen)
-{
-    struct store *s = target;
-    const char *why = NULL;
-    double x[3];
-    long long n;
-    (void)instance;
-    (void)line;
-    int k = key_find(kind, key);
-    if (k < 0) {
-        snprintf(msg, msglen, "unknown key '%s'", key);
-        return -1;
-    }
-    if (kind == BOX) {
-        if (k == SIZE && conf_parse_integer(value, &n) != 0)
-            return refused(msg, msglen, key, value, NULL);
-        return 0;
-    }
-    switch (k) {
-    case LABEL:
-        snprintf(s->label, sizeof s->label, "%s", value);
-        return 0;
-    case BOOKS:
-        s->n_books += *value != '\0';
-        return 0;
-    case WIDTH:
-        if (conf_parse_numbers(value, x, 1, &why) != 0 || !conf_in_range(x[0], 0.0, 100.0, CONF_ABOVE_LO | CONF_BELOW_HI))
-            return refused(msg, msglen, key, value, why);
-        check_number(x[0], 0.0, 100.0, CONF_ABOVE_LO | CONF_BELOW_HI);
-        s->width = x[0];
-        return 0;
-    case COUNT: {
-        if (conf_parse_integer(value, &n) != 0 || !conf_in_range((double)n, -5.0, 5.0, 0))
-            return refused(msg, msglen, key, value, NULL);
-        /* what it took: decimal digits after an optional minus sign, then blanks at most */
-        size_t d = value[0] == '-';
-        if (!isdigit((unsigned char)value[d]))
-            __builtin_trap();
-        d += strspn(value + d, "0123456789");
-        if (value[d + strspn(value + d, " \t\r\n\v\f")] != '\0')
-            __builtin_trap();
-        s->count = n;
-        return 0;
-    }
-    case COLOUR:
-        if (conf_parse_numbers(value, s->colour, 3, &why) != 0)
-            return refused(msg, msglen, key, value, why);
-        for (int i = 0; i < 3; i++)
-            check_number(s->colour[i], -INFINITY, INFINITY, 0);
-        return 0;
-    case FINISH:
-        s->finish = conf_choice_find(finishes, value);
-        if (s->finish < 0) {
-            char expected[64];
-            conf_describe_choices(finishes, expected, sizeof expected);
-            snprintf(msg, msglen, "key 'finish': expected %s", expected);
-            return -1;
-        }
-        return 0;
+        snprintf(s->boxes[*instance].name, sizeof s->boxes[*instance].name, "%s", name);
     }
     return 0;
 }
@@ -181,17 +179,8 @@ static int continues(int kind, const char *key) { return kind == SHELF && strcmp
 static int continuation(void *target, int kind, int instance, const char *key, const char *item, char *msg,
                         size_t msglen)
 {
-    struct store *s = target;
-    (void)kind;
-    (void)instance;
-    (void)key;
-    (void)item;
-    if (s->n_books == MAX_BOOKS) {
-        snprintf(msg, msglen, "at most %d books", MAX_BOOKS);
-        return -1;
-    }
-    s->n_books++;
-    return 0;
+    (void)kind, (void)instance, (void)key, (void)item;
+    return add_book(target, msg, msglen);
 }
 
 static const struct conf_schema schema = {
@@ -203,12 +192,8 @@ static const struct conf_schema schema = {
     .kind_list = kind_list,
     .name_ok = name_ok,
     .name_max = CONF_NAME_MAX - 1,
-    .type_first = type_first,
-    .key_find = key_find,
-    .label = label,
+    .keys = &key_table,
     .open = open_section,
-    .close = close_section,
-    .pair = set_pair,
     .continues = continues,
     .continuation = continuation,
 };

@@ -249,25 +249,21 @@ static void test_keys_and_types(void **state)
     assert_int_equal(conf_key_find(&table, SEC_ROOM, "watts"), -1);
 }
 
-static int given_none(const void *owner, int section, int instance, int key)
-{
-    (void)owner, (void)section, (void)instance, (void)key;
-    return 0;
-}
-
-static int given_type(const void *owner, int section, int instance, int key)
-{
-    (void)owner, (void)section, (void)instance;
-    return key == conf_key_find(&table, SEC_LAMP, "type");
-}
-
 static void test_required_and_numbers(void **state)
 {
     (void)state;
-    assert_string_equal(conf_key_missing(&table, &room, SEC_LAMP, 0, given_none), "type");
-    assert_null(conf_key_missing(&table, &room, SEC_LAMP, 0, given_type));  /* a bulb needs no watts */
-    assert_string_equal(conf_key_missing(&table, &room, SEC_LAMP, 1, given_type), "watts");
     char msg[512];
+    int key_line[16] = {0};
+    assert_int_equal(conf_key_check_required(&table, &room, SEC_LAMP, 0, key_line, msg, sizeof msg), -1);
+    assert_string_equal(msg, "[lamp desk] has no type: add 'type = bulb', 'led' or 'arc'");
+    key_line[conf_key_find(&table, SEC_LAMP, "type")] = 3;
+    /* a bulb needs no watts, a LED does */
+    assert_int_equal(conf_key_check_required(&table, &room, SEC_LAMP, 0, key_line, msg, sizeof msg), 0);
+    assert_int_equal(conf_key_check_required(&table, &room, SEC_LAMP, 1, key_line, msg, sizeof msg), -1);
+    assert_string_equal(msg, "[lamp hall] of type 'led' needs 'watts'");
+    key_line[conf_key_find(&table, SEC_LAMP, "watts")] = 4;
+    assert_int_equal(conf_key_check_required(&table, &room, SEC_LAMP, 1, key_line, msg, sizeof msg), 0);
+    assert_int_equal(conf_key_check_required(&table, &room, SEC_ROOM, 0, key_line, msg, sizeof msg), 0);
     assert_int_equal(conf_key_apply_number(&table, &room, SEC_LAMP, 0, "watts", 40.0, msg, sizeof msg), 0);
     assert_true(room.lamps[0].watts == 40.0);
     assert_int_equal(conf_key_apply_number(&table, &room, SEC_LAMP, 0, "watts", NAN, msg, sizeof msg), -1);

@@ -17,13 +17,18 @@
 /* [shelf] (one, unnamed): label, books (goes on over indented lines); [box NAME] (up to 3, 'type'
  * first, 'size' required). */
 enum { SHELF, BOX, KINDS };
+enum { WOOD, CARD };
 #define MAX_BOXES 3
 #define MAX_BOOKS 8
+struct box {
+    char name[CONF_NAME_MAX];
+    int type, size, size_line;
+};
 struct store {
     char label[32];
     char books[MAX_BOOKS][32];
     int n_books;
-    struct { char name[CONF_NAME_MAX], type[16]; int size, size_line; } boxes[MAX_BOXES];
+    struct box boxes[MAX_BOXES];
     int n_boxes, opened, closed;
 };
 
@@ -31,16 +36,30 @@ static const char *kind_name(int kind) { return kind == SHELF ? "shelf" : "box";
 static int kind_named(int kind) { return kind == BOX; }
 static const char *kind_list(void) { return "shelf, box NAME"; }
 static int name_ok(const char *name) { return strspn(name, "abcdefghijklmnopqrstuvwxyz_-0123456789") == strlen(name); }
-static int type_first(int kind) { return kind == BOX; }
 
-static int key_find(int kind, const char *key)
+static int add_book(struct store *s, const char *item, char *msg, size_t msglen)
 {
-    static const char *const shelf[] = {"label", "books"}, *const box[] = {"type", "size"};
-    for (int k = 0; k < 2; k++)
-        if (strcmp(key, kind == SHELF ? shelf[k] : box[k]) == 0)
-            return k;
-    return -1;
+    if (s->n_books == MAX_BOOKS) {
+        snprintf(msg, msglen, "at most %d books", MAX_BOOKS);
+        return -1;
+    }
+    snprintf(s->books[s->n_books++], sizeof s->books[0], "%s", item);
+    return 0;
 }
+
+static int set_books(void *owner, void *target, const union conf_parsed *v, char *reason, size_t len)
+{
+    (void)target;
+    return add_book(owner, v->text, reason, len);
+}
+
+static const struct conf_choice box_types[] = {{"wood", WOOD}, {"card", CARD}, {NULL, 0}};
+static const struct conf_key keys[] = {
+    {SHELF, "label", CONF_TEXT, .lo = 0, .hi = 31, .offset = offsetof(struct store, label)},
+    {SHELF, "books", CONF_SPECIAL, .set = set_books},
+    {BOX, "type", CONF_CHOICE, .choices = box_types, .flags = CONF_REQUIRED, .offset = offsetof(struct box, type)},
+    {BOX, "size", CONF_INTEGER, .lo = 0, .hi = 1000, .flags = CONF_REQUIRED, .offset = offsetof(struct box, size)},
+};
 
 static void label(const void *target, int kind, int instance, char *buf, size_t len)
 {
@@ -50,6 +69,28 @@ static void label(const void *target, int kind, int instance, char *buf, size_t 
     else
         snprintf(buf, len, "[box %s]", s->boxes[instance].name);
 }
+
+static void *key_target(void *owner, int kind, int instance)
+{
+    struct store *s = owner;
+    return kind == BOX ? (void *)&s->boxes[instance] : owner;
+}
+static const char *type_word(int kind) { return kind == BOX ? "box type" : NULL; }
+static int type_of(const void *owner, int kind, int instance)
+{
+    (void)kind;
+    return ((const struct store *)owner)->boxes[instance].type;
+}
+static const char *type_name(int kind, int t)
+{
+    (void)kind;
+    return conf_choice_name(box_types, t);
+}
+
+static const struct conf_key_table key_table = {
+    .keys = keys, .count = sizeof keys / sizeof keys[0], .name_len = CONF_NAME_MAX, .path_len = 256,
+    .label = label, .target = key_target, .type_word = type_word, .type_of = type_of, .type_name = type_name,
+};
 
 static int open_section(void *target, int kind, const char *name, int line, int *instance, char *msg, size_t msglen)
 {
@@ -63,42 +104,30 @@ static int open_section(void *target, int kind, const char *name, int line, int 
             return -1;
         }
         *instance = s->n_boxes++;
+        memset(&s->boxes[*instance], 0, sizeof s->boxes[*instance]);
         snprintf(s->boxes[*instance].name, sizeof s->boxes[*instance].name, "%s", name);
     }
     return 0;
 }
 
+/* after the required keys: a box of card holds at most 10 */
 static int close_section(void *target, int kind, int instance, const int *key_line, char *msg, size_t msglen)
 {
     struct store *s = target;
+    (void)key_line;
     s->closed++;
-    if (kind == BOX && key_line[1] == 0) {
-        snprintf(msg, msglen, "[box %s] needs 'size'", s->boxes[instance].name);
+    if (kind == BOX && s->boxes[instance].type == CARD && s->boxes[instance].size > 10) {
+        snprintf(msg, msglen, "[box %s] of card holds at most 10", s->boxes[instance].name);
         return -1;
     }
     return 0;
 }
 
-static int set_pair(void *target, int kind, int instance, const char *key, const char *value, int line, char *msg,
-                    size_t msglen)
+static void applied(void *target, int kind, int instance, int key, int line)
 {
     struct store *s = target;
-    int k = key_find(kind, key);
-    if (k < 0) {
-        snprintf(msg, msglen, "unknown key '%s'", key);
-        return -1;
-    }
-    if (kind == SHELF && k == 0)
-        snprintf(s->label, sizeof s->label, "%s", value);
-    else if (kind == BOX && k == 0)
-        snprintf(s->boxes[instance].type, sizeof s->boxes[instance].type, "%s", value);
-    else if (kind == BOX) {
-        s->boxes[instance].size = atoi(value);
+    if (kind == BOX && key == 3)
         s->boxes[instance].size_line = line;
-    } else if (*value) {
-        snprintf(s->books[s->n_books++], sizeof s->books[0], "%s", value);
-    }
-    return 0;
 }
 
 static int continues(int kind, const char *key) { return kind == SHELF && strcmp(key, "books") == 0; }
@@ -106,23 +135,17 @@ static int continues(int kind, const char *key) { return kind == SHELF && strcmp
 static int continuation(void *target, int kind, int instance, const char *key, const char *item, char *msg,
                         size_t msglen)
 {
-    struct store *s = target;
     (void)kind;
     (void)instance;
     (void)key;
-    if (s->n_books == MAX_BOOKS) {
-        snprintf(msg, msglen, "at most %d books", MAX_BOOKS);
-        return -1;
-    }
-    snprintf(s->books[s->n_books++], sizeof s->books[0], "%s", item);
-    return 0;
+    return add_book(target, item, msg, msglen);
 }
 
 static const struct conf_schema schema = {
     .what = "store file", .max_bytes = 4096, .long_line_hint = ": split the list",
     .n_kinds = KINDS, .kind_name = kind_name, .kind_named = kind_named, .kind_list = kind_list,
-    .name_ok = name_ok, .name_max = CONF_NAME_MAX - 1, .type_first = type_first, .key_find = key_find,
-    .label = label, .open = open_section, .close = close_section, .pair = set_pair,
+    .name_ok = name_ok, .name_max = CONF_NAME_MAX - 1, .keys = &key_table,
+    .open = open_section, .close = close_section, .applied = applied,
     .continues = continues, .continuation = continuation,
 };
 
@@ -167,7 +190,7 @@ static void test_reads_a_file(void **state)
     assert_string_equal(s.books[2], "Dialogo");
     assert_int_equal(s.n_boxes, 1);
     assert_string_equal(s.boxes[0].name, "b-1");
-    assert_string_equal(s.boxes[0].type, "wood");
+    assert_int_equal(s.boxes[0].type, WOOD);
     assert_int_equal(s.boxes[0].size, 3);
     assert_int_equal(s.boxes[0].size_line, 11);
     /* every section opened is closed, the last one at the end of the file */
@@ -193,14 +216,19 @@ static const struct {
     {"unnamed kind with one", "[shelf top]\n", 1, "section [shelf] takes no name, got \"top\""},
     {"bad name", "[box B!]\n", 1, "bad box name \"B!\""},
     {"section twice", "[shelf]\n[shelf]\n", 2, "section [shelf] appears twice (lines 1 and 2): merge them"},
-    {"named section twice", "[box a]\ntype=x\nsize=1\n[box a]\n", 4, "appears twice (lines 1 and 4): give each its own name"},
-    {"schema has no room", "[box a]\ntype=x\nsize=1\n[box b]\ntype=x\nsize=1\n[box c]\ntype=x\nsize=1\n[box d]\n", 10,
+    {"named section twice", "[box a]\ntype=wood\nsize=1\n[box a]\n", 4, "appears twice (lines 1 and 4): give each its own name"},
+    {"schema has no room", "[box a]\ntype=wood\nsize=1\n[box b]\ntype=wood\nsize=1\n[box c]\ntype=wood\nsize=1\n[box d]\n", 10,
      "too many boxes"},
     {"key twice", "[shelf]\nlabel = a\nlabel = b\n", 3, "key 'label' in [shelf] is already set at line 2"},
-    {"key before type", "[box a]\nsize = 1\ntype = x\n", 2, "key 'size' in [box a] comes before 'type': set type first"},
+    {"key before type", "[box a]\nsize = 1\ntype = wood\n", 2, "key 'size' in [box a] comes before 'type': set type first"},
     {"unknown key", "[shelf]\ncolour = red\n", 2, "unknown key 'colour'"},
-    {"close at its header", "[box a]\ntype = x\n\n[shelf]\n", 1, "[box a] needs 'size'"},
-    {"close at the end", "[shelf]\n[box a]\ntype = x\n", 2, "[box a] needs 'size'"},
+    {"close at its header", "[box a]\ntype = wood\n\n[shelf]\n", 1, "[box a] of type 'wood' needs 'size'"},
+    {"close at the end", "[shelf]\n[box a]\ntype = wood\n", 2, "[box a] of type 'wood' needs 'size'"},
+    {"no type", "[box a]\n[shelf]\n", 1, "[box a] has no type: add 'type = wood' or 'card'"},
+    {"type first, then the rest", "[box a]\n", 1, "has no type"},
+    {"the schema's close after them", "[box a]\ntype = card\nsize = 11\n", 1, "[box a] of card holds at most 10"},
+    {"a value the table refuses", "[box a]\ntype = card\nsize = big\n", 3,
+     "key 'size' in [box a]: expected an integer from 0 to 1000, got \"big\""},
     {"continuation refused", "[shelf]\nbooks = 1\n 2\n 3\n 4\n 5\n 6\n 7\n 8\n 9\n", 10,
      "key 'books' in [shelf]: at most 8 books"},
     {"continuation ends at '='", "[shelf]\nbooks = 1\n label = x\n label = y\n", 4, "already set at line 3"},
