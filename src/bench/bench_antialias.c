@@ -19,10 +19,12 @@ static const int aa_counts[] = {1, 2, 4, 9, 16};
 static int time_samples(struct bench *b, const struct scene *s, int runs, double *median, unsigned char **rgba,
                         char *err, size_t errlen)
 {
-    int bad;
-    struct renderer *r = renderer_create(b->ctx, s, err, errlen, &bad);
-    if (!r)
+    struct error e;
+    struct renderer *r = renderer_create(b->ctx, s, &e);
+    if (!r) {
+        snprintf(err, errlen, "%s", e.message);
         return -1;
+    }
     double times[64];
     runs = runs < 1 ? 1 : runs < 64 ? runs : 64;
     int rc = 0;

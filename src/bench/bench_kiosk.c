@@ -66,7 +66,7 @@ static int time_scene(struct kiosk_view *v, const struct kiosk_config *c, struct
 int bench_kiosk(struct bench *b, char *err, size_t errlen)
 {
     static struct kiosk_config c;
-    struct conf_error e;
+    struct error e;
     if (kiosk_config_load(&c, KIOSK_CONFIG, &e) != 0 || kiosk_config_check(&c, &e) != 0) {
         snprintf(err, errlen, "%s: %s", e.where, e.message);
         return -1;

@@ -184,7 +184,7 @@ static int measure_scene(struct bench *b, int k, struct pareto_point *pts, struc
             continue;
         }
         apply_config(&s, &configs[c]);
-        struct conf_error e;
+        struct error e;
         if (scene_validate(&s, &e) != 0) {
             snprintf(err, errlen, "internal: configuration %s of %s: %s", configs[c].name, ps->title, e.message);
             cpu_image_free(&ref);

@@ -43,7 +43,7 @@ void bench_apply_accel(struct scene *s, enum bench_accel a)
 int bench_load_scene(struct scene *s, const char *name, int w, int h, char *err, size_t errlen)
 {
     char path[256];
-    struct conf_error e;
+    struct error e;
     snprintf(path, sizeof path, "assets/scenes/%s.scene", name);
     if (scene_load(s, path, &e) != 0) {
         snprintf(err, errlen, "%s: %s", e.where, e.message);

@@ -22,10 +22,12 @@ static const struct {
 static int time_stars(struct bench *b, const struct scene *s, int runs, double *gpu, double *stars, char *err,
                       size_t errlen)
 {
-    int bad;
-    struct renderer *r = renderer_create(b->ctx, s, err, errlen, &bad);
-    if (!r)
+    struct error e;
+    struct renderer *r = renderer_create(b->ctx, s, &e);
+    if (!r) {
+        snprintf(err, errlen, "%s", e.message);
         return -1;
+    }
     double g[64], t[64];
     runs = runs < 1 ? 1 : runs < 64 ? runs : 64;
     int rc = 0;

@@ -33,10 +33,12 @@ static int by_value(const void *a, const void *b)
 int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_timing *t, struct dump *d, char *err,
                size_t errlen)
 {
-    int bad;
-    struct renderer *r = renderer_create(b->ctx, s, err, errlen, &bad);
-    if (!r)
+    struct error e;
+    struct renderer *r = renderer_create(b->ctx, s, &e);
+    if (!r) {
+        snprintf(err, errlen, "%s", e.message);
         return -1;
+    }
     double times[64];
     runs = runs < 1 ? 1 : runs < 64 ? runs : 64;
     /* the frame as a display draws it, the image alone; the dump's state is traced after the timed run */

@@ -208,7 +208,7 @@ static int frame_scene(const struct animation *a, const struct scene *base, int 
 {
     *s = *base;
     *n_sets = frame_sets(a, base, k, sets);
-    struct conf_error err;
+    struct error err;
     for (int i = 0; i < *n_sets; i++)
         if (scene_set(s, sets[i], &err) != 0) {
             fprintf(stderr, "bentray animate: frame %d: %s: error: %s\n", k + 1, err.where, err.message);
@@ -494,18 +494,19 @@ int cmd_animate(int argc, char **argv)
         frame_path(dir, k, a.frames, path, sizeof path);
         struct measured m;
         char err[2048];
-        int bad = 0, failed;
+        struct error e;
+        int failed;
         if (options_engine_cpu(&o)) {
             struct cpu_render_options opt;
             options_cpu(&o, &s, &opt);
             opt.progress = PROGRESS_NONE;
-            failed = measure_cpu(&s, &opt, &m, err, sizeof err);
+            failed = measure_cpu(&s, &opt, &m, &e);
         } else {
-            failed = measure_gpu(&s, o.backend, 0, PROGRESS_NONE, 0, &m, err, sizeof err, &bad);
+            failed = measure_gpu(&s, o.backend, 0, PROGRESS_NONE, 0, &m, &e);
         }
         if (failed) {
-            fprintf(stderr, "bentray animate: frame %d: %s\n", k + 1, err);
-            return bad ? EXIT_USAGE : EXIT_RUNTIME;
+            fprintf(stderr, "bentray animate: frame %d: %s\n", k + 1, e.message);
+            return e.status == ERROR_INPUT ? EXIT_USAGE : EXIT_RUNTIME;
         }
         if (png_write_rgba8(path, m.dump.width, m.dump.height, m.rgba, force, err, sizeof err) != 0) {
             fprintf(stderr, "bentray animate: frame %d: %s\n", k + 1, err);

@@ -70,13 +70,13 @@ int cmd_error(int argc, char **argv)
     options_cpu(&o, &s, &cpu_opt);
     struct measured gpu, cpu;
     char err[2048];
-    int bad_input = 0;
-    if (measure_gpu(&s, o.backend, 1, PROGRESS_AUTO, 0, &gpu, err, sizeof err, &bad_input) != 0) {
-        fprintf(stderr, "bentray error: GPU engine: %s\n", err);
-        return bad_input ? EXIT_USAGE : EXIT_RUNTIME;
+    struct error e;
+    if (measure_gpu(&s, o.backend, 1, PROGRESS_AUTO, 0, &gpu, &e) != 0) {
+        fprintf(stderr, "bentray error: GPU engine: %s\n", e.message);
+        return e.status == ERROR_INPUT ? EXIT_USAGE : EXIT_RUNTIME;
     }
-    if (measure_cpu(&s, &cpu_opt, &cpu, err, sizeof err) != 0) {
-        fprintf(stderr, "bentray error: CPU reference: %s\n", err);
+    if (measure_cpu(&s, &cpu_opt, &cpu, &e) != 0) {
+        fprintf(stderr, "bentray error: CPU reference: %s\n", e.message);
         measured_free(&gpu);
         return EXIT_RUNTIME;
     }

@@ -91,7 +91,7 @@ int cmd_kiosk(int argc, char **argv)
         return EXIT_USAGE;
     }
     static struct kiosk_config c;
-    struct conf_error e;
+    struct error e;
     if (kiosk_config_load(&c, config, &e) != 0) {
         fprintf(stderr, "bentray kiosk: %s: %s\n", e.where, e.message);
         return EXIT_USAGE;

@@ -136,20 +136,19 @@ static void warn_meaningless(const struct measured *m, const struct scene *s)
 static int render_with(const struct common_options *o, const struct scene *s, int need_state,
                        enum progress_mode progress, int hdr, struct measured *m)
 {
-    char err[2048];
-    int bad_input = 0;
+    struct error e;
     if (options_engine_cpu(o)) {
         struct cpu_render_options opt;
         options_cpu(o, s, &opt);
         opt.progress = progress;
         opt.hdr = hdr;
-        if (measure_cpu(s, &opt, m, err, sizeof err) == 0)
+        if (measure_cpu(s, &opt, m, &e) == 0)
             return EXIT_OK;
-    } else if (measure_gpu(s, o->backend, need_state, progress, hdr, m, err, sizeof err, &bad_input) == 0) {
+    } else if (measure_gpu(s, o->backend, need_state, progress, hdr, m, &e) == 0) {
         return EXIT_OK;
     }
-    fprintf(stderr, "bentray render: %s\n", err);
-    return bad_input ? EXIT_USAGE : EXIT_RUNTIME;
+    fprintf(stderr, "bentray render: %s\n", e.message);
+    return e.status == ERROR_INPUT ? EXIT_USAGE : EXIT_RUNTIME;
 }
 
 /* The image's name when --out is not given: the scene's name with every character outside

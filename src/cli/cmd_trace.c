@@ -103,13 +103,14 @@ static void print_json(const struct scene *s, long px, long py, const char *engi
 static int trace_gpu(const struct common_options *o, const struct scene *s, long px, long py, struct polyline *pl)
 {
     char err[2048];
-    int bad_input, rc = EXIT_RUNTIME;
+    int rc = EXIT_RUNTIME;
     struct gl_context *ctx = gl_context_create(o->backend, err, sizeof err);
     if (!ctx) {
         fprintf(stderr, "bentray trace: %s\n", err);
         return EXIT_RUNTIME;
     }
-    struct renderer *r = renderer_create(ctx, s, err, sizeof err, &bad_input);
+    struct error e;
+    struct renderer *r = renderer_create(ctx, s, &e);
     struct render_result res = {0};
     if (s->render.pipeline == PIPELINE_SINGLE)
         fprintf(stderr, "bentray trace: note: the polyline needs the end of every segment, so trace runs the "
@@ -126,7 +127,8 @@ static int trace_gpu(const struct common_options *o, const struct scene *s, long
             rc = EXIT_OK;
         }
     } else if (!r) {
-        rc = bad_input ? EXIT_USAGE : EXIT_RUNTIME;
+        rc = e.status == ERROR_INPUT ? EXIT_USAGE : EXIT_RUNTIME;
+        snprintf(err, sizeof err, "%s", e.message);
     }
     if (rc != EXIT_OK)
         fprintf(stderr, "bentray trace: %s\n", err);

@@ -24,20 +24,19 @@ static long count_nonfinite(const struct render_result *res)
     return nonfinite;
 }
 
-int measure_gpu(const struct scene *s, const char *backend, int need_state, enum progress_mode progress, int hdr, struct measured *m, char *err,
-                size_t errlen, int *bad_input)
+int measure_gpu(const struct scene *s, const char *backend, int need_state, enum progress_mode progress, int hdr,
+                struct measured *m, struct error *e)
 {
     memset(m, 0, sizeof *m);
     struct render_result res;
     struct frame_info info;
-    if (render_frame(s, &(struct frame_request){backend, need_state ? RENDER_READ_STATE : RENDER_READ_OUTCOMES, progress, hdr}, &res, &info, err, errlen, bad_input) != 0)
+    if (render_frame(s, &(struct frame_request){backend, need_state ? RENDER_READ_STATE : RENDER_READ_OUTCOMES, progress, hdr}, &res, &info, e) != 0)
         return -1;
     snprintf(m->engine, sizeof m->engine, "gpu %s", info.path_name);
     snprintf(m->device, sizeof m->device, "%.120s on %s", info.renderer, info.backend);
     if (result_to_dump(&res, s, m->engine, &m->dump) != 0) {
         render_result_free(&res);
-        snprintf(err, errlen, "out of memory");
-        return -1;
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory");
     }
     m->rgba = res.rgba;
     m->color = res.color;
@@ -57,13 +56,15 @@ int measure_gpu(const struct scene *s, const char *backend, int need_state, enum
     return 0;
 }
 
-int measure_cpu(const struct scene *s, const struct cpu_render_options *o, struct measured *m, char *err,
-                size_t errlen)
+int measure_cpu(const struct scene *s, const struct cpu_render_options *o, struct measured *m, struct error *e)
 {
     memset(m, 0, sizeof *m);
+    error_clear(e);
     struct cpu_image img;
-    if (cpu_render(s, o, &img, err, errlen) != 0)
+    if (cpu_render(s, o, &img, e->message, sizeof e->message) != 0) {
+        e->status = ERROR_RUNTIME;
         return -1;
+    }
     m->dump = img.dump;
     m->rgba = img.rgba;
     m->color = img.color;

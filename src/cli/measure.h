@@ -18,14 +18,13 @@ struct measured {
     long nonfinite;         /* GPU: non-finite values in the ray state (should be 0) */
 };
 
-/* 0, or -1 with err; *bad_input tells a user error (exit 2) from a runtime failure (1). */
+/* 0, or -1 with e (its status tells a user error, exit 2, from a runtime failure, 1). */
 /* need_state: the dump's every field; else its outcomes and colours only (what a summary counts:
  * a single-pass frame then runs once, not twice). progress: whether a long render reports its
  * rows and samples on stderr (io/progress.h). */
-int measure_gpu(const struct scene *s, const char *backend, int need_state, enum progress_mode progress, int hdr, struct measured *m, char *err,
-                size_t errlen, int *bad_input);
-int measure_cpu(const struct scene *s, const struct cpu_render_options *o, struct measured *m, char *err,
-                size_t errlen);
+int measure_gpu(const struct scene *s, const char *backend, int need_state, enum progress_mode progress, int hdr,
+                struct measured *m, struct error *e);
+int measure_cpu(const struct scene *s, const struct cpu_render_options *o, struct measured *m, struct error *e);
 void measured_free(struct measured *m);
 
 #endif

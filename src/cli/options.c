@@ -271,7 +271,7 @@ static int check_engine_options(const struct common_options *o, const char *cmd)
 
 int options_load_scene(const struct common_options *o, const char *cmd, struct scene *s)
 {
-    struct conf_error err;
+    struct error err;
     if (check_engine_options(o, cmd) != 0)
         return EXIT_USAGE;
     if (!o->scene_path) {
@@ -279,12 +279,12 @@ int options_load_scene(const struct common_options *o, const char *cmd, struct s
         return EXIT_USAGE;
     }
     if (scene_load(s, o->scene_path, &err) != 0) {
-        fprintf(stderr, "%s: error: %s\n", err.where, err.message);
+        error_print(&err, NULL, stderr);
         return EXIT_USAGE;
     }
     for (int k = 0; k < o->n_sets; k++)
         if (scene_set(s, o->sets[k], &err) != 0) {
-            fprintf(stderr, "%s: error: %s\n", err.where, err.message);
+            error_print(&err, NULL, stderr);
             return EXIT_USAGE;
         }
     if (o->width) {
@@ -300,7 +300,7 @@ int options_load_scene(const struct common_options *o, const char *cmd, struct s
     if (o->no_mrt)
         s->render.mrt = MRT_OFF;
     if (scene_validate(s, &err) != 0) {
-        fprintf(stderr, "%s: error: %s\n", err.where, err.message);
+        error_print(&err, NULL, stderr);
         return EXIT_USAGE;
     }
     return 0;

@@ -1,14 +1,13 @@
 /* Applying a value to a key as its table's table describes it, and the message when that cannot
  * be done: what is wrong, what was expected, the value as written. */
 #include <ctype.h>
-#include <errno.h>
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include "conf/conf_key.h"
+#include "conf/conf_path.h"
 #include "io/text_file.h"
 
 /* A near miss of a real name within this many edits is nearly always a typo. */
@@ -461,46 +460,6 @@ int conf_key_check_required(const struct conf_key_table *table, const void *owne
                      table->type_name(section, table->type_of(owner, section, instance)), k->name);
         else
             snprintf(msg, msg_len, "%s needs '%s'", label, k->name);
-        return -1;
-    }
-    return 0;
-}
-
-/* ---- what a path names --------------------------------------------------------------------- */
-
-/* A directory opens fine with fopen on Linux, so regular files are asked for explicitly. */
-int conf_check_file(const char *path, const char *note, char *reason, size_t len)
-{
-    struct stat st;
-    FILE *f;
-    if (stat(path, &st) != 0) {
-        snprintf(reason, len, "cannot read \"%s\": %s%s%s%s", path, strerror(errno), note ? " (" : "",
-                 note ? note : "", note ? ")" : "");
-        return -1;
-    }
-    if (!S_ISREG(st.st_mode)) {
-        snprintf(reason, len, "\"%s\" is not a regular file", path);
-        return -1;
-    }
-    f = fopen(path, "rb");
-    if (!f) {
-        snprintf(reason, len, "cannot read \"%s\": %s", path, strerror(errno));
-        return -1;
-    }
-    fclose(f);
-    return 0;
-}
-
-int conf_check_dir(const char *path, const char *note, char *reason, size_t len)
-{
-    struct stat st;
-    if (stat(path, &st) != 0) {
-        snprintf(reason, len, "no directory \"%s\": %s%s%s%s", path, strerror(errno), note ? " (" : "",
-                 note ? note : "", note ? ")" : "");
-        return -1;
-    }
-    if (!S_ISDIR(st.st_mode)) {
-        snprintf(reason, len, "\"%s\" is not a directory", path);
         return -1;
     }
     return 0;

@@ -120,9 +120,4 @@ int conf_key_check_required(const struct conf_key_table *table, const void *owne
 /* The name of choice VALUE among CHOICES, "?" if none has it. */
 const char *conf_choice_name(const struct conf_choice *choices, int value);
 
-/* PATH is a readable regular file (an existing directory): 0, or -1 with the reason, which quotes
- * the path and, when it does not exist, adds NOTE (where relative paths start; NULL: nothing). */
-int conf_check_file(const char *path, const char *note, char *reason, size_t len);
-int conf_check_dir(const char *path, const char *note, char *reason, size_t len);
-
 #endif

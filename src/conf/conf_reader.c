@@ -20,7 +20,7 @@ struct reader {
     const struct conf_schema *schema;
     void *target;
     const char *path;
-    struct conf_error *err;
+    struct error *err;
     const char *text;
     size_t len, pos;
     int line;                    /* line last handed to inih */
@@ -45,6 +45,7 @@ static int fail(struct reader *r, int line, const char *fmt, ...)
         return -1;
     r->failed = 1;
     r->error_line = line;
+    r->err->status = ERROR_INPUT;
     snprintf(r->err->where, sizeof r->err->where, "%s:%d", r->path, line);
     va_start(ap, fmt);
     vsnprintf(r->err->message, sizeof r->err->message, fmt, ap);
@@ -289,19 +290,20 @@ static int on_pair(void *user, const char *inih_section, const char *name, const
     return 1;
 }
 
-int conf_read(const char *path, const struct conf_schema *schema, void *target, struct conf_error *err)
+int conf_read(const char *path, const struct conf_schema *schema, void *target, struct error *err)
 {
     size_t len;
     memset(err, 0, sizeof *err);
     snprintf(err->where, sizeof err->where, "%s", path);
     char *text = text_file_read(path, schema->max_bytes, schema->what, &len, err->message, sizeof err->message);
-    if (!text)
+    if (!text) {
+        err->status = ERROR_INPUT;      /* a file that is not there, not a file, or too large */
         return -1;
+    }
     struct reader *r = calloc(1, sizeof *r);
     if (!r) {
         free(text);
-        snprintf(err->message, sizeof err->message, "out of memory");
-        return -1;
+        return error_set(err, ERROR_RUNTIME, path, "out of memory");
     }
     r->schema = schema;
     r->target = target;

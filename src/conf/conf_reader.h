@@ -20,6 +20,7 @@
 #define BT_CONF_READER_H
 #include <stddef.h>
 #include "conf/conf_key.h"
+#include "io/error.h"
 
 /* Keys a schema's table may hold (conf_key_table.count); sections per file; bytes of
  * an instance name with its NUL (a schema keeps names no longer). */
@@ -27,11 +28,8 @@
 #define CONF_MAX_SECTIONS 256
 #define CONF_NAME_MAX 64
 
-/* where: "FILE:LINE", or FILE alone for a problem with the whole file. */
-struct conf_error {
-    char where[600];
-    char message[512];
-};
+/* Errors are the one error type (io/error.h): where is "FILE:LINE", or FILE alone for a problem with
+ * the whole file; status is ERROR_INPUT. */
 
 struct conf_schema {
     const char *what;                  /* "scene file": names the file in messages */
@@ -64,7 +62,7 @@ struct conf_schema {
 };
 
 /* Reads path into target by schema: 0, or -1 with the first error in err. */
-int conf_read(const char *path, const struct conf_schema *schema, void *target, struct conf_error *err);
+int conf_read(const char *path, const struct conf_schema *schema, void *target, struct error *err);
 
 /* p without its leading and trailing white space (cut in place). */
 char *conf_trim(char *p);

@@ -213,7 +213,7 @@ static void notice(struct kiosk *k, const char *what, const char *why)
 static int take_state(struct kiosk *k, const struct kiosk_state *proposed)
 {
     static struct scene trial;
-    struct conf_error serr;
+    struct error serr;
     if (kiosk_state_apply(proposed, &k->scenes[proposed->scene], &trial, &serr) == 0) {
         k->state = *proposed;
         return 1;
@@ -467,9 +467,9 @@ static int preflight(struct kiosk *k, char *err, size_t errlen)
         return -1;
     }
     for (int i = 0; i < c->kiosk.n_scenes; i++) {
-        struct conf_error serr;
+        struct error serr;
         if (scene_load(&k->scenes[i], c->kiosk.scenes[i], &serr) != 0) {
-            snprintf(err, errlen, "%s: %s", serr.where, serr.message);
+            snprintf(err, errlen, "%.600s: %.1024s", serr.where, serr.message);
             return -1;
         }
         if (k->scenes[i].render.samples > 1 && k->log)
@@ -485,7 +485,7 @@ static int preflight(struct kiosk *k, char *err, size_t errlen)
         kiosk_state_reset(&start, c);
         start.scene = i;
         if (kiosk_state_apply(&start, &k->scenes[i], &trial, &serr) != 0) {
-            snprintf(err, errlen, "%s: the knobs' start values (speed %g c, mass %g) do not fit %s: %s", c->path,
+            snprintf(err, errlen, "%s: the knobs' start values (speed %g c, mass %g) do not fit %s: %.512s", c->path,
                      c->speed.start, c->mass.start, c->kiosk.scenes[i], serr.message);
             return -1;
         }

@@ -97,7 +97,7 @@ void kiosk_state_action(struct kiosk_state *st, const struct kiosk_config *c, co
 }
 
 int kiosk_state_apply(const struct kiosk_state *st, const struct scene *base, struct scene *out,
-                      struct conf_error *err)
+                      struct error *err)
 {
     *out = *base;
     vec3d view = v3_normalize(v3_sub(base->camera.look_at, base->camera.position));

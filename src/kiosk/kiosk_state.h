@@ -51,6 +51,6 @@ void kiosk_state_action(struct kiosk_state *st, const struct kiosk_config *c, co
  * hole keeps its model. A knob the scene maps to one of its keys ([kiosk]) sets that key instead.
  * 0, or -1 with the reason (the mass puts the camera inside the horizon). */
 int kiosk_state_apply(const struct kiosk_state *st, const struct scene *base, struct scene *out,
-                      struct conf_error *err);
+                      struct error *err);
 
 #endif

@@ -35,7 +35,7 @@ int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *b
     renderer_destroy(v->renderer);
     v->renderer = NULL;
     v->scene_index = -1;
-    struct conf_error serr;
+    struct error serr;
     if (base) {
         v->base = *base;
     } else if (scene_load(&v->base, v->cfg->kiosk.scenes[scene_index], &serr) != 0) {
@@ -45,10 +45,12 @@ int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *b
     v->base.render.width = v->cfg->kiosk.width;
     v->base.render.height = v->cfg->kiosk.height;
     v->live = v->base;
-    int bad = 0;
-    v->renderer = renderer_create(v->gl, &v->live, err, errlen, &bad);
-    if (!v->renderer)
+    struct error e;
+    v->renderer = renderer_create(v->gl, &v->live, &e);
+    if (!v->renderer) {
+        snprintf(err, errlen, "%s", e.message);
         return -1;
+    }
     v->scene_index = scene_index;
     return 0;
 }
@@ -146,7 +148,7 @@ static int preview_tile(struct kiosk_view *v, char *err, size_t errlen)
 
 int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char *err, size_t errlen)
 {
-    struct conf_error serr;
+    struct error serr;
     if (kiosk_state_apply(st, &v->base, &v->full, &serr) != 0) {
         snprintf(err, errlen, "%s: %s", serr.where, serr.message);
         return -1;

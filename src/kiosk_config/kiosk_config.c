@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "conf/conf_path.h"
 #include "conf/conf_reader.h"
 #include "kiosk_config/kiosk_config.h"
 #include "kiosk_config/kiosk_config_keys.h"
@@ -79,9 +80,10 @@ static const struct conf_schema kiosk_schema = {
 };
 
 __attribute__((format(printf, 4, 5)))
-static int fail(struct conf_error *err, const char *path, int line, const char *fmt, ...)
+static int fail(struct error *err, const char *path, int line, const char *fmt, ...)
 {
     va_list ap;
+    err->status = ERROR_INPUT;
     snprintf(err->where, sizeof err->where, "%s:%d", path, line);
     va_start(ap, fmt);
     vsnprintf(err->message, sizeof err->message, fmt, ap);
@@ -89,20 +91,9 @@ static int fail(struct conf_error *err, const char *path, int line, const char *
     return -1;
 }
 
-static void set_dir(struct kiosk_config *c, const char *path)
-{
-    const char *slash = strrchr(path, '/');
-    if (!slash)
-        snprintf(c->dir, sizeof c->dir, ".");
-    else if (slash == path)
-        snprintf(c->dir, sizeof c->dir, "/");
-    else
-        snprintf(c->dir, sizeof c->dir, "%.*s", (int)(slash - path), path);
-}
-
 /* What can only be settled once the whole file is read: start_scene may come before scenes, and a
  * knob's start follows its min unless given. */
-static int finish_file(struct kiosk_config *c, struct conf_error *err)
+static int finish_file(struct kiosk_config *c, struct error *err)
 {
     const char *want = c->kiosk.start_scene_name;
     int line = kiosk_key_line(c, KSEC_KIOSK, 0, "start_scene");
@@ -132,20 +123,19 @@ static int finish_file(struct kiosk_config *c, struct conf_error *err)
     return 0;
 }
 
-int kiosk_config_load(struct kiosk_config *c, const char *path, struct conf_error *err)
+int kiosk_config_load(struct kiosk_config *c, const char *path, struct error *err)
 {
     size_t path_len = strlen(path);
 
     memset(err, 0, sizeof *err);
     kiosk_config_defaults(c);
     if (path_len >= sizeof c->path) {
-        snprintf(err->where, sizeof err->where, "%.64s...", path);
-        snprintf(err->message, sizeof err->message, "the path is longer than %d characters",
-                 KIOSK_PATH_LEN - 1);
-        return -1;
+        char where[80];
+        snprintf(where, sizeof where, "%.64s...", path);
+        return error_set(err, ERROR_INPUT, where, "the path is longer than %d characters", KIOSK_PATH_LEN - 1);
     }
     memcpy(c->path, path, path_len + 1);
-    set_dir(c, path);
+    conf_path_dir(path, c->dir, sizeof c->dir);
 
     if (conf_read(path, &kiosk_schema, c, err) != 0)
         return -1;

@@ -104,10 +104,10 @@ struct kiosk_config {
 void kiosk_config_defaults(struct kiosk_config *c);
 /* Defaults, then the file at PATH. 0, or -1 with the first error in ERR. Values are checked one
  * by one here; call kiosk_config_check() for what involves several keys. */
-int kiosk_config_load(struct kiosk_config *c, const char *path, struct conf_error *err);
+int kiosk_config_load(struct kiosk_config *c, const char *path, struct error *err);
 /* Checks across keys and sections: references between sections, one knob's range and start,
  * frame sizes, an input's settings against its type and its use. 0, or -1 with ERR. */
-int kiosk_config_check(const struct kiosk_config *c, struct conf_error *err);
+int kiosk_config_check(const struct kiosk_config *c, struct error *err);
 
 /* The input called NAME, NULL if there is none. */
 const struct kiosk_input *kiosk_config_input(const struct kiosk_config *c, const char *name);

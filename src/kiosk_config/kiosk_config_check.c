@@ -12,10 +12,11 @@
 #define NO_BIT (-1)
 
 __attribute__((format(printf, 4, 5)))
-static int bad(const struct kiosk_config *c, struct conf_error *err, int line, const char *fmt, ...)
+static int bad(const struct kiosk_config *c, struct error *err, int line, const char *fmt, ...)
 {
     va_list ap;
     const char *file = c->path[0] ? c->path : "kiosk configuration";
+    err->status = ERROR_INPUT;
     if (line > 0)
         snprintf(err->where, sizeof err->where, "%s:%d", file, line);
     else
@@ -36,7 +37,7 @@ static int line_of(const struct kiosk_config *c, enum kiosk_section section, int
 /* A message about KEY of a section instance, at the key's line: "key 'KEY' in [LABEL]" and FMT,
  * which starts with ": " or " applies ...". */
 __attribute__((format(printf, 6, 7)))
-static int bad_key(const struct kiosk_config *c, struct conf_error *err, enum kiosk_section section,
+static int bad_key(const struct kiosk_config *c, struct error *err, enum kiosk_section section,
                    int instance, const char *key, const char *fmt, ...)
 {
     char label[KIOSK_NAME_LEN + 16], detail[sizeof err->message];
@@ -63,7 +64,7 @@ static int size_ok(int w, int h)
     return w >= KIOSK_MIN_SIZE && w <= KIOSK_MAX_SIZE && h >= KIOSK_MIN_SIZE && h <= KIOSK_MAX_SIZE;
 }
 
-static int check_kiosk(const struct kiosk_config *c, struct conf_error *err)
+static int check_kiosk(const struct kiosk_config *c, struct error *err)
 {
     const struct kiosk_main *k = &c->kiosk;
     char reason[3 * KIOSK_PATH_LEN];
@@ -103,7 +104,7 @@ static int check_kiosk(const struct kiosk_config *c, struct conf_error *err)
     return 0;
 }
 
-static int check_display(const struct kiosk_config *c, struct conf_error *err)
+static int check_display(const struct kiosk_config *c, struct error *err)
 {
     const struct kiosk_display *d = &c->display;
     /* the keys of one backend given for another would be ignored, and whoever set them would
@@ -152,7 +153,7 @@ static void list_inputs(const struct kiosk_config *c, char *buf, size_t len)
 
 /* The input a knob or button names, or NULL with the message. */
 static const struct kiosk_input *find_referenced(const struct kiosk_config *c,
-                                                 struct conf_error *err,
+                                                 struct error *err,
                                                  enum kiosk_section section, int instance, const char *name)
 {
     char label[KIOSK_NAME_LEN + 16], names[KIOSK_MAX_INPUTS * (KIOSK_NAME_LEN + 2)];
@@ -182,7 +183,7 @@ static double curve_span(const struct kiosk_knob *k)
     return k->max - k->min;
 }
 
-static int check_knob(const struct kiosk_config *c, struct conf_error *err,
+static int check_knob(const struct kiosk_config *c, struct error *err,
                       enum kiosk_section section)
 {
     const struct kiosk_knob *k = section == KSEC_SPEED ? &c->speed : &c->mass;
@@ -222,7 +223,7 @@ static int same_press(const struct kiosk_button *a, const struct kiosk_button *b
     return in->type == KIOSK_INPUT_POWERMATE || in->type == KIOSK_INPUT_GPIO_BUTTON;
 }
 
-static int check_button(const struct kiosk_config *c, struct conf_error *err, int i)
+static int check_button(const struct kiosk_config *c, struct error *err, int i)
 {
     const struct kiosk_button *b = &c->buttons[i];
     const struct kiosk_input *in = find_referenced(c, err, KSEC_BUTTON, i, b->input);
@@ -256,7 +257,7 @@ static int check_button(const struct kiosk_config *c, struct conf_error *err, in
 
 /* ---- inputs -------------------------------------------------------------------------------- */
 
-static int check_hid(const struct kiosk_config *c, struct conf_error *err, int i)
+static int check_hid(const struct kiosk_config *c, struct error *err, int i)
 {
     const struct kiosk_input *in = &c->inputs[i];
     int first = in->report_id ? 1 : 0;   /* numbered reports start with their id byte */
@@ -284,7 +285,7 @@ static int check_hid(const struct kiosk_config *c, struct conf_error *err, int i
     return 0;
 }
 
-static int check_gpio_encoder(const struct kiosk_config *c, struct conf_error *err, int i)
+static int check_gpio_encoder(const struct kiosk_config *c, struct error *err, int i)
 {
     const struct kiosk_input *in = &c->inputs[i];
     int offsets = (in->line_a >= 0) + (in->line_b >= 0);
@@ -306,7 +307,7 @@ static int check_gpio_encoder(const struct kiosk_config *c, struct conf_error *e
     return 0;
 }
 
-static int check_gpio_button(const struct kiosk_config *c, struct conf_error *err, int i)
+static int check_gpio_button(const struct kiosk_config *c, struct error *err, int i)
 {
     const struct kiosk_input *in = &c->inputs[i];
     if (in->line >= 0 && in->line_name[0])
@@ -339,7 +340,7 @@ static int shares_line(const struct kiosk_input *a, const struct kiosk_input *b)
     return 0;
 }
 
-static int check_input(const struct kiosk_config *c, struct conf_error *err, int i)
+static int check_input(const struct kiosk_config *c, struct error *err, int i)
 {
     const struct kiosk_input *in = &c->inputs[i];
     int rc = 0;
@@ -358,7 +359,7 @@ static int check_input(const struct kiosk_config *c, struct conf_error *err, int
     return 0;
 }
 
-int kiosk_config_check(const struct kiosk_config *c, struct conf_error *err)
+int kiosk_config_check(const struct kiosk_config *c, struct error *err)
 {
     memset(err, 0, sizeof *err);
     if (check_kiosk(c, err) != 0 || check_display(c, err) != 0)

@@ -9,20 +9,14 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "kiosk_config/kiosk_config_keys.h"
+#include "conf/conf_path.h"
 
 /* What a list entry may be separated by. */
 #define SCENE_SEPARATORS ", \t"
 
 int kiosk_resolve_path(const struct kiosk_config *c, const char *rel, char *out, size_t out_len)
 {
-    int n;
-    if (rel[0] == '/' || c->dir[0] == '\0' || strcmp(c->dir, ".") == 0)
-        n = snprintf(out, out_len, "%s", rel);
-    else if (strcmp(c->dir, "/") == 0)
-        n = snprintf(out, out_len, "/%s", rel);
-    else
-        n = snprintf(out, out_len, "%s/%s", c->dir, rel);
-    return n < 0 || (size_t)n >= out_len ? -1 : 0;
+    return conf_path_join(c->dir, rel, out, out_len);
 }
 
 int kiosk_path_inside(const char *path, const char *root, char *reason, size_t len)

@@ -122,14 +122,16 @@ int frame_run_samples(struct renderer *r, const struct scene *s, struct render_r
 }
 
 int render_frame(const struct scene *s, const struct frame_request *req, struct render_result *out,
-                 struct frame_info *info, char *err, size_t errlen, int *bad_input)
+                 struct frame_info *info, struct error *e)
 {
-    *bad_input = 0;
-    struct gl_context *ctx = gl_context_create(req->backend, err, errlen);
-    if (!ctx)
+    error_clear(e);
+    struct gl_context *ctx = gl_context_create(req->backend, e->message, sizeof e->message);
+    if (!ctx) {
+        e->status = ERROR_RUNTIME;
         return -1;
+    }
     int rc = -1;
-    struct renderer *r = renderer_create(ctx, s, err, errlen, bad_input);
+    struct renderer *r = renderer_create(ctx, s, e);
     if (r) {
         if (info) {
             snprintf(info->backend, sizeof info->backend, "%s", ctx->backend);
@@ -138,7 +140,9 @@ int render_frame(const struct scene *s, const struct frame_request *req, struct 
             snprintf(info->renderer, sizeof info->renderer, "%s", renderer_caps(r)->renderer);
         }
         renderer_set_hdr(r, req->hdr);
-        rc = frame_run_samples(r, s, out, req->with_state, req->progress, err, errlen);
+        rc = frame_run_samples(r, s, out, req->with_state, req->progress, e->message, sizeof e->message);
+        if (rc != 0)
+            e->status = ERROR_RUNTIME;
         if (info) {
             snprintf(info->pipeline, sizeof info->pipeline, "%s", renderer_pipeline(r));
             snprintf(info->pipeline_why, sizeof info->pipeline_why, "%s", renderer_pipeline_why(r));

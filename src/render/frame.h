@@ -23,9 +23,9 @@ struct frame_request {
     int hdr;                      /* also the unclamped colour (render_result.color) */
 };
 
-/* Returns 0, or -1 with err; *bad_input tells a user error (exit 2) from a runtime failure (1). */
+/* Returns 0, or -1 with e (its status tells a user error, exit 2, from a runtime failure, 1). */
 int render_frame(const struct scene *s, const struct frame_request *req, struct render_result *out,
-                 struct frame_info *info, char *err, size_t errlen, int *bad_input);
+                 struct frame_info *info, struct error *e);
 /* The whole image of s on renderer r with every sample of every pixel (render.samples,
  * scene/pixel_samples.h), each a whole frame, averaged in linear light into out->rgba; seconds and
  * passes summed over them. The ray state, when asked for, is the pixels' centres': sample 0 where

@@ -70,38 +70,31 @@ static int renderer_follow_scene(struct renderer *r, char *err, size_t errlen)
     return observer_lut_load(r, err, errlen);
 }
 
-struct renderer *renderer_create(const struct gl_context *ctx, const struct scene *scene, char *err,
-                                 size_t errlen, int *bad_input)
+/* The checks of renderer_create: 0, or -1 with the message in err and *bad_input set when the
+ * failure is the user's request (a forced path missing, a size beyond this GPU). */
+static int renderer_open(struct renderer *r, const struct gl_context *ctx, const struct scene *scene, char *err,
+                         size_t errlen, int *bad_input)
 {
-    *bad_input = 0;
-    struct renderer *r = calloc(1, sizeof *r);
-    if (!r) {
-        snprintf(err, errlen, "out of memory");
-        return NULL;
-    }
     r->scene = scene;
     r->assets_key = assets_key(scene);
     /* until a caller says it reads only the image, every run keeps its outcomes readable */
     r->reads = RENDER_READ_OUTCOMES;
     if (gl_caps_probe(&r->caps, ctx, err, errlen) != 0) {
         quad_release();              /* the probe takes its share of the pass quad even when it fails */
-        free(r);
-        return NULL;
+        return -1;
     }
     if (render_path_choose(&r->caps, scene->render.precision, scene->render.mrt, &r->path, err, errlen) != 0) {
         /* a forced path that this GPU lacks is the user's request; no path at all is the machine's */
         *bad_input = scene->render.precision != PRECISION_AUTO || scene->render.mrt == MRT_ON;
         quad_release();
-        free(r);
-        return NULL;
+        return -1;
     }
     if (scene->render.width > r->caps.max_texture_size || scene->render.height > r->caps.max_texture_size) {
         snprintf(err, errlen, "image size %dx%d exceeds this GPU's texture limit %d", scene->render.width,
                  scene->render.height, r->caps.max_texture_size);
         *bad_input = 1;
         quad_release();
-        free(r);
-        return NULL;
+        return -1;
     }
     if (scene->render.method == METHOD_ORBIT_TABLE && !r->path.fp32) {
         if (scene->render.precision == PRECISION_FP16) {
@@ -109,8 +102,7 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
                      "fp16 asks for 16-bit ones: use render.method = rk4 or precision auto");
             *bad_input = 1;
             quad_release();
-            free(r);
-            return NULL;
+            return -1;
         }
         /* a GPU without them draws the scene integrated, and says so */
         size_t used = strlen(r->path.description);
@@ -125,24 +117,39 @@ struct renderer *renderer_create(const struct gl_context *ctx, const struct scen
                  scene->render.orbit_rows, r->caps.max_texture_size);
         *bad_input = 1;
         quad_release();
-        free(r);
-        return NULL;
+        return -1;
     }
     program_cache_init(&r->programs, &r->caps.shader, r->path.mrt);
-    if (renderer_follow_scene(r, err, errlen) != 0) {
-        renderer_destroy(r);
-        return NULL;
-    }
+    r->programs_ready = 1;
+    if (renderer_follow_scene(r, err, errlen) != 0)
+        return -1;
     struct object_batch all;
     char why[200];
     if ((scene->render.pipeline == PIPELINE_SINGLE && frame_batch(r, &all, err, errlen) != 0) ||
         (scene->render.pipeline == PIPELINE_FUSED && segment_fused_choose(r, why, sizeof why, err, errlen) < 0)) {
         *bad_input = 1;      /* asked for, and refused before any work */
-        renderer_destroy(r);
+        return -1;
+    }
+    if (textures_load(r, err, errlen, bad_input) != 0 || polygons_load(r, err, errlen) != 0)
+        return -1;
+    return 0;
+}
+
+struct renderer *renderer_create(const struct gl_context *ctx, const struct scene *scene, struct error *e)
+{
+    int bad_input = 0;
+    error_clear(e);
+    struct renderer *r = calloc(1, sizeof *r);
+    if (!r) {
+        error_set(e, ERROR_RUNTIME, NULL, "out of memory");
         return NULL;
     }
-    if (textures_load(r, err, errlen, bad_input) != 0 || polygons_load(r, err, errlen) != 0) {
-        renderer_destroy(r);
+    if (renderer_open(r, ctx, scene, e->message, sizeof e->message, &bad_input) != 0) {
+        e->status = bad_input ? ERROR_INPUT : ERROR_RUNTIME;
+        if (r->programs_ready)
+            renderer_destroy(r);
+        else
+            free(r);
         return NULL;
     }
     return r;

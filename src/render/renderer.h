@@ -7,6 +7,7 @@
 #ifndef BT_RENDERER_H
 #define BT_RENDERER_H
 #include "gl/caps.h"
+#include "io/error.h"
 #include "gl/context.h"
 #include "gl/gl_api.h"
 #include "render/path.h"
@@ -29,9 +30,9 @@ struct render_result {
 };
 
 /* Probes the context, picks the render path the scene asks for, loads textures and sky.
- * NULL with err; *bad_input is set when the failure is the user's request (forced path missing). */
-struct renderer *renderer_create(const struct gl_context *ctx, const struct scene *scene, char *err,
-                                 size_t errlen, int *bad_input);
+ * NULL with e: ERROR_INPUT when the failure is the user's request (a forced path this GPU lacks,
+ * a size beyond its limits, a texture that cannot be decoded), ERROR_RUNTIME otherwise. */
+struct renderer *renderer_create(const struct gl_context *ctx, const struct scene *scene, struct error *e);
 const struct render_path *renderer_path(const struct renderer *r);
 const struct gl_caps *renderer_caps(const struct renderer *r);
 

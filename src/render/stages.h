@@ -23,6 +23,7 @@ struct renderer {
     struct gl_caps caps;
     struct render_path path;
     struct program_cache programs;
+    int programs_ready;           /* program_cache_init ran: renderer_destroy tears the renderer down */
     struct raystate rs;
     int have_state;
     GLuint textures[SCENE_MAX_TEXTURES];

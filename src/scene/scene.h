@@ -280,25 +280,24 @@ int scene_has_black_body(const struct scene *s);
 /* 1 when any object moves. */
 int scene_has_moving_objects(const struct scene *s);
 
-/* Error from loading or overriding a scene: where and what. */
-/* Errors are struct conf_error (conf/conf_reader.h): where ("file:line" or "--set model.mass=x")
- * and the message, as for every configuration file. */
+/* Errors from loading or overriding a scene are the one error type (io/error.h): where ("file:line"
+ * or "--set model.mass=x"), the message, and status ERROR_INPUT, as for every configuration file. */
 
 /* Defaults for every field (flat space, one sphere-free empty scene). */
 void scene_defaults(struct scene *s);
 /* Parse FILE into s (defaults first). 0 ok, -1 with err filled. */
-int scene_load(struct scene *s, const char *path, struct conf_error *err);
+int scene_load(struct scene *s, const char *path, struct error *err);
 /* Apply one "section.key=value" override (sections of objects: object.NAME.key). */
-int scene_set(struct scene *s, const char *assignment, struct conf_error *err);
+int scene_set(struct scene *s, const char *assignment, struct error *err);
 /* The value of a numeric key of an unnamed section ("model.rho"); 0, or -1 where there is none. */
 int scene_get_number(const struct scene *s, const char *key, double *out);
 /* Sets such a key to value, checked as a number written in a file would be (finite, the key's
  * range), without going through text: the kiosk's knobs. 0, or -1 with err (where: "key=value"). */
-int scene_set_number(struct scene *s, const char *key, double value, struct conf_error *err);
+int scene_set_number(struct scene *s, const char *key, double value, struct error *err);
 /* [kiosk] as the file writes it: each mapped knob's key is a number of this scene, over a range the
  * key accepts that holds the scene's own value. scene_load runs it, before any --set: rendering
  * ignores the section, so an override that changes the model does not make it wrong. */
-int scene_kiosk_validate(const struct scene *s, struct conf_error *err);
+int scene_kiosk_validate(const struct scene *s, struct error *err);
 /* Angular diameter, degrees, of the black hole's shadow as the static observer at the camera sees
  * it (the rays that fall through the horizon: b < 3 sqrt(3) M); 0 where nothing casts one (no mass,
  * not Schwarzschild), 360 with the camera at or inside the horizon. */
@@ -307,6 +306,6 @@ double scene_shadow_diameter_deg(const struct scene *s);
  * down to three significant digits (as messages print it). */
 double scene_mass_for_shadow(const struct scene *s, double diameter_deg);
 /* Cross-field checks after all overrides (e.g. camera not inside the horizon). */
-int scene_validate(const struct scene *s, struct conf_error *err);
+int scene_validate(const struct scene *s, struct error *err);
 
 #endif

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "scene/scene_keys.h"
+#include "conf/conf_path.h"
 #include "io/png_header.h"
 #include "io/text_file.h"
 #include "physics/star_catalogue.h"
@@ -111,12 +112,7 @@ int scene_instance_name_ok(const char *name)
 
 int scene_resolve_path(const struct scene *s, const char *rel, char *out, size_t out_len)
 {
-    int n;
-    if (rel[0] == '/' || s->dir[0] == '\0' || strcmp(s->dir, ".") == 0)
-        n = snprintf(out, out_len, "%s", rel);
-    else
-        n = snprintf(out, out_len, "%s/%s", s->dir, rel);
-    return n < 0 || (size_t)n >= out_len ? -1 : 0;
+    return conf_path_join(s->dir, rel, out, out_len);
 }
 
 /* A directory opens fine with fopen on Linux, so regular files are asked for explicitly. */
@@ -590,7 +586,7 @@ int scene_key_apply(struct scene *s, enum scene_section_kind section, int instan
     return conf_key_apply(&scene_key_table, s, (int)section, instance, name, value, msg, msg_len);
 }
 
-int scene_set_number(struct scene *s, const char *key, double value, struct conf_error *err)
+int scene_set_number(struct scene *s, const char *key, double value, struct error *err)
 {
     memset(err, 0, sizeof *err);
     snprintf(err->where, sizeof err->where, "%.*s=%.17g", (int)sizeof err->where - 40, key, value);
@@ -600,7 +596,12 @@ int scene_set_number(struct scene *s, const char *key, double value, struct conf
     if (!k || k->kind != CONF_NUMBER) {
         snprintf(err->message, sizeof err->message, "'%s' is not a number of this scene (a key such as model.rho, "
                  "as --set names it)", key);
+        err->status = ERROR_INPUT;
         return -1;
     }
-    return conf_key_apply_number(&scene_key_table, s, section, 0, name, value, err->message, sizeof err->message);
+    if (conf_key_apply_number(&scene_key_table, s, section, 0, name, value, err->message, sizeof err->message) != 0) {
+        err->status = ERROR_INPUT;
+        return -1;
+    }
+    return 0;
 }

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "conf/conf_path.h"
 #include "conf/conf_reader.h"
 #include "scene/scene.h"
 #include "scene/scene_keys.h"
@@ -77,30 +78,23 @@ static void split_path(struct scene *s, const char *path)
     const char *dot = strrchr(base, '.');
     size_t base_len = dot && dot != base ? (size_t)(dot - base) : strlen(base);
 
-    if (!slash)
-        snprintf(s->dir, sizeof s->dir, ".");
-    else if (slash == path)
-        snprintf(s->dir, sizeof s->dir, "/");
-    else
-        snprintf(s->dir, sizeof s->dir, "%.*s", (int)(slash - path), path);
+    conf_path_dir(path, s->dir, sizeof s->dir);
     if (base_len >= sizeof s->name)
         base_len = sizeof s->name - 1;
     if (base_len > 0)
         snprintf(s->name, sizeof s->name, "%.*s", (int)base_len, base);
 }
 
-int scene_load(struct scene *s, const char *path, struct conf_error *err)
+int scene_load(struct scene *s, const char *path, struct error *err)
 {
     size_t path_len = strlen(path);
 
     memset(err, 0, sizeof *err);
     scene_defaults(s);
     if (path_len >= sizeof s->path) {
-        memcpy(err->where, path, 64);
-        strcpy(err->where + 64, "...");
-        snprintf(err->message, sizeof err->message, "the path is longer than %d characters",
-                 SCENE_PATH_LEN - 1);
-        return -1;
+        char where[80];
+        snprintf(where, sizeof where, "%.64s...", path);
+        return error_set(err, ERROR_INPUT, where, "the path is longer than %d characters", SCENE_PATH_LEN - 1);
     }
     memcpy(s->path, path, path_len + 1);
     split_path(s, path);
@@ -128,16 +122,17 @@ static int find_instance(const struct scene *s, enum scene_section_kind kind, co
 }
 
 __attribute__((format(printf, 2, 3)))
-static int set_fail(struct conf_error *err, const char *fmt, ...)
+static int set_fail(struct error *err, const char *fmt, ...)
 {
     va_list ap;
+    err->status = ERROR_INPUT;
     va_start(ap, fmt);
     vsnprintf(err->message, sizeof err->message, fmt, ap);
     va_end(ap);
     return -1;
 }
 
-int scene_set(struct scene *s, const char *assignment, struct conf_error *err)
+int scene_set(struct scene *s, const char *assignment, struct error *err)
 {
     char path[128], *section, *key, *name = NULL, *dot;
     char *value;
@@ -180,6 +175,8 @@ int scene_set(struct scene *s, const char *assignment, struct conf_error *err)
     rc = scene_key_apply(s, (enum scene_section_kind)kind, instance, key, conf_trim(value), err->message,
                          sizeof err->message);
     free(value);
+    if (rc != 0)
+        err->status = ERROR_INPUT;
     /* An override of a fixed step's budget replaces the file's other way of giving it (a file
      * that gives both is refused by scene_validate). */
     struct render_settings *r = &s->render;

@@ -12,9 +12,10 @@
 #define CAMERA_UP_MIN_SINE 1e-6
 
 __attribute__((format(printf, 3, 4)))
-static int invalid(const struct scene *s, struct conf_error *err, const char *fmt, ...)
+static int invalid(const struct scene *s, struct error *err, const char *fmt, ...)
 {
     va_list ap;
+    err->status = ERROR_INPUT;
     snprintf(err->where, sizeof err->where, "%s", s->path[0] ? s->path : "scene");
     va_start(ap, fmt);
     vsnprintf(err->message, sizeof err->message, fmt, ap);
@@ -22,7 +23,7 @@ static int invalid(const struct scene *s, struct conf_error *err, const char *fm
     return -1;
 }
 
-static int validate_camera(const struct scene *s, struct conf_error *err)
+static int validate_camera(const struct scene *s, struct error *err)
 {
     const struct camera *c = &s->camera;
     vec3d view = v3_sub(c->look_at, c->position);
@@ -50,7 +51,7 @@ static int validate_camera(const struct scene *s, struct conf_error *err)
     return 0;
 }
 
-static int validate_render(const struct scene *s, struct conf_error *err)
+static int validate_render(const struct scene *s, struct error *err)
 {
     const struct render_settings *r = &s->render;
     /* the keys check each side as it is set; this catches scenes changed in code */
@@ -94,7 +95,7 @@ static int validate_render(const struct scene *s, struct conf_error *err)
     return 0;
 }
 
-static int validate_objects(const struct scene *s, struct conf_error *err)
+static int validate_objects(const struct scene *s, struct error *err)
 {
     for (int i = 0; i < s->n_objects; i++) {
         const struct object *o = &s->objects[i];
@@ -125,7 +126,7 @@ static int validate_objects(const struct scene *s, struct conf_error *err)
     return 0;
 }
 
-static int validate_observer(const struct scene *s, struct conf_error *err)
+static int validate_observer(const struct scene *s, struct error *err)
 {
     double speed = v3_len(s->observer.velocity);
     if (!(speed <= BETA_MAX))
@@ -184,7 +185,7 @@ double scene_mass_for_shadow(const struct scene *s, double diameter_deg)
  * widens, so the ends bound it), a black hole's shadow fills at most SCENE_KIOSK_SHADOW_MAX_FRACTION
  * of the view's height. */
 static int validate_knob_shadow(const struct scene *s, const char *knob, const struct knob_mapping *m,
-                                const struct scene *trial, int at_max, double value, struct conf_error *err)
+                                const struct scene *trial, int at_max, double value, struct error *err)
 {
     double across = scene_shadow_diameter_deg(trial);
     double limit = SCENE_KIOSK_SHADOW_MAX_FRACTION * trial->camera.fov_deg;
@@ -205,7 +206,7 @@ static int validate_knob_shadow(const struct scene *s, const char *knob, const s
 /* [kiosk]: a knob mapped to a key names a number this scene has, over a range that the key takes
  * at both ends. */
 static int validate_knob(const struct scene *s, const char *knob, const struct knob_mapping *m,
-                         struct conf_error *err)
+                         struct error *err)
 {
     if (m->key[0] == '\0') {
         if (m->steps || m->min != 0.0 || m->max != 0.0)
@@ -229,7 +230,7 @@ static int validate_knob(const struct scene *s, const char *knob, const struct k
     static struct scene trial;
     const double ends[2] = {m->min, m->max};
     for (int i = 0; i < 2; i++) {
-        struct conf_error e;
+        struct error e;
         trial = *s;
         if (scene_set_number(&trial, m->key, ends[i], &e) != 0)
             return invalid(s, err, "[kiosk] %s_%s = %g: %s", knob, i ? "max" : "min", ends[i], e.message);
@@ -239,13 +240,13 @@ static int validate_knob(const struct scene *s, const char *knob, const struct k
     return 0;
 }
 
-int scene_kiosk_validate(const struct scene *s, struct conf_error *err)
+int scene_kiosk_validate(const struct scene *s, struct error *err)
 {
     memset(err, 0, sizeof *err);
     return validate_knob(s, "speed", &s->kiosk.speed, err) || validate_knob(s, "mass", &s->kiosk.mass, err) ? -1 : 0;
 }
 
-int scene_validate(const struct scene *s, struct conf_error *err)
+int scene_validate(const struct scene *s, struct error *err)
 {
     memset(err, 0, sizeof *err);
     if (validate_camera(s, err) || validate_observer(s, err) || validate_render(s, err) ||

@@ -131,19 +131,19 @@ static int report_variation(FILE *f, struct scene *s, enum variation v, const st
                             const struct measured *ref, char *device, size_t device_len, int size_given)
 {
     char err[2048];
-    int bad;
+    struct error e;
     struct measured m;
     int rc;
     if (v == VAR_CPU_LOOSE) {
         struct cpu_render_options loose = *ref_opt;
         loose.ref.rtol = 1e-6;
         loose.ref.atol = 1e-6 * s->render.bound_radius;
-        rc = measure_cpu(s, &loose, &m, err, sizeof err);
+        rc = measure_cpu(s, &loose, &m, &e);
     } else {
-        rc = measure_gpu(s, "auto", 1, PROGRESS_NONE, 0, &m, err, sizeof err, &bad);
+        rc = measure_gpu(s, "auto", 1, PROGRESS_NONE, 0, &m, &e);
     }
     if (rc != 0) {
-        fprintf(stderr, "%s (%s): %s\n", s->path, variation_names[v], err);
+        fprintf(stderr, "%s (%s): %s\n", s->path, variation_names[v], e.message);
         return -1;
     }
     if (v == VAR_DEFAULT)
@@ -164,10 +164,9 @@ static int report_scene(FILE *f, const char *path, int width, int height, char *
                         size_t device_len)
 {
     static struct scene base, s;
-    struct conf_error serr;
-    char err[2048];
+    struct error serr;
     if (scene_load(&base, path, &serr) != 0) {
-        fprintf(stderr, "%s: error: %s\n", serr.where, serr.message);
+        error_print(&serr, NULL, stderr);
         return -1;
     }
     if (width) {
@@ -178,8 +177,9 @@ static int report_scene(FILE *f, const char *path, int width, int height, char *
     ref_options_default(&ref_opt.ref, &base);
     fprintf(stderr, "accuracy: %s: reference\n", base.name);
     struct measured ref;
-    if (measure_cpu(&base, &ref_opt, &ref, err, sizeof err) != 0) {
-        fprintf(stderr, "%s: CPU reference: %s\n", path, err);
+    struct error e;
+    if (measure_cpu(&base, &ref_opt, &ref, &e) != 0) {
+        fprintf(stderr, "%s: CPU reference: %s\n", path, e.message);
         return -1;
     }
     snprintf(cpu_device, device_len, "%s", ref.device);
@@ -191,7 +191,7 @@ static int report_scene(FILE *f, const char *path, int width, int height, char *
         if (!vary(&s, v))
             continue;
         fprintf(stderr, "accuracy: %s: %s\n", base.name, variation_names[v]);
-        struct conf_error verr;
+        struct error verr;
         if (scene_validate(&s, &verr) != 0) {
             fprintf(stderr, "%s (%s): %s\n", path, variation_names[v], verr.message);
             rc = -1;

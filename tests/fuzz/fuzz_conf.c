@@ -44,7 +44,7 @@ struct store {
 };
 
 static struct store store;
-static struct conf_error err;
+static struct error err;
 
 static const char *kind_name(int kind) { return kind == SHELF ? "shelf" : "box"; }
 static int kind_named(int kind) { return kind == BOX; }

@@ -35,9 +35,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 /* ---- the harness ------------------------------------------------------------------------------ */
 
 static struct kiosk_config config;  /* about 45 KB: not on the stack */
-static struct conf_error err;
+static struct error err;
 
-static void check_refusal(const struct conf_error *e)
+static void check_refusal(const struct error *e)
 {
     if (memchr(e->where, '\0', sizeof e->where) == NULL ||
         memchr(e->message, '\0', sizeof e->message) == NULL || e->message[0] == '\0')

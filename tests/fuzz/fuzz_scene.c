@@ -29,10 +29,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 /* ---- the harness ------------------------------------------------------------------------------ */
 
 static struct scene scene;          /* tens of KB: not on the stack */
-static struct conf_error err;
+static struct error err;
 
 /* A refusal names its place and its reason, each a terminated string. */
-static void check_refusal(const struct conf_error *e)
+static void check_refusal(const struct error *e)
 {
     if (memchr(e->where, '\0', sizeof e->where) == NULL ||
         memchr(e->message, '\0', sizeof e->message) == NULL || e->message[0] == '\0')

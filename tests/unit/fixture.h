@@ -12,7 +12,7 @@ static inline void fixture_load_scene(struct scene *s, const char *name, int wid
                                       const char *const *sets)
 {
     char path[256];
-    struct conf_error err;
+    struct error err;
     snprintf(path, sizeof path, "assets/scenes/%s.scene", name);
     if (scene_load(s, path, &err) != 0)
         fail_msg("%s: %s", err.where, err.message);

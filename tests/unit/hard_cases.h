@@ -44,7 +44,7 @@ static inline void hc_load(struct scene *s, const char *name, int width, int hei
 
 static inline void hc_validate(const struct scene *s)
 {
-    struct conf_error err;
+    struct error err;
     if (scene_validate(s, &err) != 0)
         fail_msg("%s: %s", err.where, err.message);
 }
@@ -77,10 +77,10 @@ struct hc_gpu {
 static inline void hc_gpu_render_hook(const struct scene *s, struct hc_gpu *g, segment_hook hook, void *arg)
 {
     char err[2048];
-    int bad;
-    struct renderer *r = renderer_create(hc_context(), s, err, sizeof err, &bad);
+    struct error gl_err;
+    struct renderer *r = renderer_create(hc_context(), s, &gl_err);
     if (!r)
-        fail_msg("renderer: %s", err);
+        fail_msg("renderer: %s", gl_err.message);
     if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, hook, arg, err, sizeof err) != 0 ||
         renderer_read(r, &g->res, 1, err, sizeof err) != 0)
         fail_msg("render: %s", err);

@@ -328,10 +328,10 @@ static void test_frame_colour_is_exact(void **state)
         hc_gpu_render(&s, &both);
         char err[2048], what[200];
         case_label(what, sizeof what, cases[k].scene, cases[k].sets, cases[k].no_objects ? "(no objects)" : "");
-        int bad;
-        struct renderer *r = renderer_create(hc_context(), &s, err, sizeof err, &bad);
+        struct error gl_err;
+        struct renderer *r = renderer_create(hc_context(), &s, &gl_err);
         if (!r)
-            fail_msg("renderer: %s", err);
+            fail_msg("renderer: %s", gl_err.message);
         renderer_set_reads(r, RENDER_READ_IMAGE);
         struct hc_gpu colour;
         struct render_result image;

@@ -85,10 +85,9 @@ static void test_linear_average(void **state)
 static unsigned char *gpu_image(const struct scene *s)
 {
     struct render_result res;
-    char err[2048];
-    int bad;
-    if (render_frame(s, &(struct frame_request){.backend = "egl"}, &res, NULL, err, sizeof err, &bad) != 0)
-        fail_msg("render: %s", err);
+    struct error gl_err;
+    if (render_frame(s, &(struct frame_request){.backend = "egl"}, &res, NULL, &gl_err) != 0)
+        fail_msg("render: %s", gl_err.message);
     unsigned char *rgba = res.rgba;
     res.rgba = NULL;
     render_result_free(&res);
@@ -155,11 +154,10 @@ static void test_dump_follows_centre(void **state)
     static struct scene s;
     hc_load(&s, "schwarzschild", 48, 36, NULL);
     struct render_result one, four;
-    char err[2048];
-    int bad;
-    assert_int_equal(render_frame(&s, &(struct frame_request){.backend = "egl", .with_state = RENDER_READ_STATE}, &one, NULL, err, sizeof err, &bad), 0);
+    struct error gl_err;
+    assert_int_equal(render_frame(&s, &(struct frame_request){.backend = "egl", .with_state = RENDER_READ_STATE}, &one, NULL, &gl_err), 0);
     s.render.samples = 4;
-    assert_int_equal(render_frame(&s, &(struct frame_request){.backend = "egl", .with_state = RENDER_READ_STATE}, &four, NULL, err, sizeof err, &bad), 0);
+    assert_int_equal(render_frame(&s, &(struct frame_request){.backend = "egl", .with_state = RENDER_READ_STATE}, &four, NULL, &gl_err), 0);
     size_t n = (size_t)48 * 36 * 4;
     assert_memory_equal(one.position, four.position, n * sizeof(float));
     assert_memory_equal(one.velocity, four.velocity, n * sizeof(float));
@@ -173,10 +171,10 @@ static void test_dump_follows_centre(void **state)
 static unsigned char *shifted_image(const struct scene *s, double dx, double dy)
 {
     char err[2048];
-    int bad;
-    struct renderer *r = renderer_create(hc_context(), s, err, sizeof err, &bad);
+    struct error gl_err;
+    struct renderer *r = renderer_create(hc_context(), s, &gl_err);
     if (!r)
-        fail_msg("renderer: %s", err);
+        fail_msg("renderer: %s", gl_err.message);
     renderer_set_subpixel(r, dx, dy);
     struct render_result res;
     if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, err, sizeof err) != 0 ||

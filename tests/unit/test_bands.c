@@ -11,11 +11,10 @@
 
 static struct renderer *make_renderer(const struct scene *s)
 {
-    char err[2048];
-    int bad;
-    struct renderer *r = renderer_create(hc_context(), s, err, sizeof err, &bad);
+    struct error gl_err;
+    struct renderer *r = renderer_create(hc_context(), s, &gl_err);
     if (!r)
-        fail_msg("renderer: %s", err);
+        fail_msg("renderer: %s", gl_err.message);
     return r;
 }
 

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "conf/conf_key.h"
+#include "conf/conf_path.h"
 #include "kiosk_config/kiosk_config.h"
 #include "kiosk_config/kiosk_config_keys.h"
 #include "scene/scene_keys.h"
@@ -277,6 +278,30 @@ static void test_required_and_numbers(void **state)
     assert_true(room.lamps[0].watts == 40.0);
 }
 
+/* Relative paths start at the directory of the file that names them, for both file kinds. */
+static void test_paths(void **state)
+{
+    (void)state;
+    char dir[64], out[16];
+    conf_path_dir("exhibit/scenes/a.scene", dir, sizeof dir);
+    assert_string_equal(dir, "exhibit/scenes");
+    conf_path_dir("a.scene", dir, sizeof dir);
+    assert_string_equal(dir, ".");
+    conf_path_dir("/a.scene", dir, sizeof dir);
+    assert_string_equal(dir, "/");
+    assert_int_equal(conf_path_join("/", "sky.png", out, sizeof out), 0);
+    assert_string_equal(out, "/sky.png");
+    assert_int_equal(conf_path_join(".", "sky.png", out, sizeof out), 0);
+    assert_string_equal(out, "sky.png");
+    assert_int_equal(conf_path_join("d", "/abs.png", out, sizeof out), 0);
+    assert_string_equal(out, "/abs.png");
+    assert_int_equal(conf_path_join("d", "sky.png", out, sizeof out), 0);
+    assert_string_equal(out, "d/sky.png");
+    /* 15 bytes and the NUL fit, 16 do not */
+    assert_int_equal(conf_path_join("dd", "abcdefghijkl", out, sizeof out), 0);
+    assert_int_equal(conf_path_join("dd", "abcdefghijklm", out, sizeof out), -1);
+}
+
 /* A scene and the kiosk's configuration word the same mistakes alike: they share the function. */
 static void test_scene_and_kiosk_word_alike(void **state)
 {
@@ -308,6 +333,7 @@ int main(void)
         cmocka_unit_test_setup(test_refusals, setup),
         cmocka_unit_test_setup(test_keys_and_types, setup),
         cmocka_unit_test_setup(test_required_and_numbers, setup),
+        cmocka_unit_test(test_paths),
         cmocka_unit_test(test_scene_and_kiosk_word_alike),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -152,7 +152,7 @@ static const struct conf_schema schema = {
 static char path[64];
 
 /* Writes len bytes of text to a file of its own and reads it. */
-static int read_text(const char *text, size_t len, struct store *s, struct conf_error *err)
+static int read_text(const char *text, size_t len, struct store *s, struct error *err)
 {
     snprintf(path, sizeof path, "/tmp/bt_conf_XXXXXX");
     int fd = mkstemp(path);
@@ -180,7 +180,7 @@ static void test_reads_a_file(void **state)
                                "type = wood\n"
                                "    size = 3\n";
     struct store s;
-    struct conf_error err;
+    struct error err;
     if (read_text(text, sizeof text - 1, &s, &err) != 0)
         fail_msg("%s: %s", err.where, err.message);
     assert_string_equal(s.label, "front");
@@ -240,7 +240,7 @@ static void test_errors_name_their_line(void **state)
     (void)state;
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         struct store s;
-        struct conf_error err;
+        struct error err;
         /* the NUL case's length counts past its NUL */
         size_t len = strcmp(bad[i].what, "NUL byte") == 0 ? 20 : strlen(bad[i].text);
         int rc = read_text(bad[i].text, len, &s, &err);
@@ -262,7 +262,7 @@ static void test_long_lines_are_refused_not_cut(void **state)
     memset(text + n, 'x', 1000);
     text[n + 1000] = '\n';
     struct store s;
-    struct conf_error err;
+    struct error err;
     assert_int_equal(read_text(text, (size_t)n + 1001, &s, &err), -1);
     print_message("%s: %s\n", err.where, err.message);
     assert_non_null(strstr(err.where, ":2"));
@@ -274,7 +274,7 @@ static void test_whole_file_problems(void **state)
 {
     (void)state;
     struct store s;
-    struct conf_error err;
+    struct error err;
     char big[5000];
     memset(big, ';', sizeof big);
     assert_int_equal(read_text(big, sizeof big, &s, &err), -1);

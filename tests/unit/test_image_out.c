@@ -88,11 +88,10 @@ static void test_writers(void **state)
 
 static void gpu_frame(const struct scene *s, struct render_result *res)
 {
-    char err[2048];
-    int bad;
+    struct error gl_err;
     struct frame_request req = {.backend = "egl", .hdr = 1};
-    if (render_frame(s, &req, res, NULL, err, sizeof err, &bad) != 0)
-        fail_msg("render: %s", err);
+    if (render_frame(s, &req, res, NULL, &gl_err) != 0)
+        fail_msg("render: %s", gl_err.message);
 }
 
 /* The float colour is the 8-bit image before it was clamped and rounded: the same where it lies in

@@ -73,7 +73,7 @@ static void check_near(double a, double b, const char *what, int line)
 /* Loads and checks TEXT; any error fails the test with where and message. */
 static void load_good(struct kiosk_config *c, const char *name, const char *text)
 {
-    struct conf_error err;
+    struct error err;
     char path[256];
     write_conf(path, name, text);
     if (kiosk_config_load(c, path, &err) != 0)
@@ -87,7 +87,7 @@ static void load_good(struct kiosk_config *c, const char *name, const char *text
 static void test_example_loads(void **state)
 {
     static struct kiosk_config c;
-    struct conf_error err;
+    struct error err;
     const struct kiosk_input *in;
     (void)state;
 
@@ -208,7 +208,7 @@ static void test_example_names_every_key(void **state)
 static void test_defaults(void **state)
 {
     static struct kiosk_config c;
-    struct conf_error err;
+    struct error err;
     (void)state;
 
     kiosk_config_defaults(&c);
@@ -498,7 +498,7 @@ static void test_bad_files(void **state)
     make_fixture_files();
     for (size_t i = 0; i < sizeof bad_cases / sizeof bad_cases[0]; i++) {
         const struct bad_case *b = &bad_cases[i];
-        struct conf_error err;
+        struct error err;
         char path[256], where[300];
         int rc;
 
@@ -530,7 +530,7 @@ static void test_bad_files(void **state)
 static void test_oversized_file(void **state)
 {
     static struct kiosk_config c;
-    struct conf_error err;
+    struct error err;
     size_t len = KIOSK_MAX_FILE_BYTES + 1;
     char *text = malloc(len);
     char path[256];
@@ -564,7 +564,7 @@ static void test_oversized_file(void **state)
 static void test_missing_file(void **state)
 {
     static struct kiosk_config c;
-    struct conf_error err;
+    struct error err;
     (void)state;
     assert_int_equal(kiosk_config_load(&c, DIR "/no_such.conf", &err), -1);
     assert_string_equal(err.where, DIR "/no_such.conf");
@@ -575,7 +575,7 @@ static void test_missing_file(void **state)
 static void test_long_line(void **state)
 {
     static struct kiosk_config c;
-    struct conf_error err;
+    struct error err;
     char text[512], path[256];
     (void)state;
     snprintf(text, sizeof text, "[display]\nconnector = %0250d\n", 0);
@@ -591,7 +591,7 @@ static void test_too_many_scenes(void **state)
 {
     static struct kiosk_config c;
     static char text[8192];
-    struct conf_error err;
+    struct error err;
     char path[256];
     size_t used;
     (void)state;

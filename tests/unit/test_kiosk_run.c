@@ -30,7 +30,7 @@ static int width, height;
 /* Runs the kiosk of config_path until it has written n frames; reads them into out. */
 static void run_config(const char *config_path, int n, unsigned char **out)
 {
-    struct conf_error e;
+    struct error e;
     if (kiosk_config_load(&config, config_path, &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     snprintf(out_dir, sizeof out_dir, "/tmp/bt_kiosk_XXXXXX");
@@ -80,7 +80,7 @@ static int free_frames(void **state)
 static unsigned char *expected_image(const struct kiosk_state *st, int preview)
 {
     static struct scene base, s;
-    struct conf_error e;
+    struct error e;
     if (scene_load(&base, config.kiosk.scenes[st->scene], &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     base.render.width = config.kiosk.width;
@@ -94,10 +94,9 @@ static unsigned char *expected_image(const struct kiosk_state *st, int preview)
     }
     struct render_result res;
     struct frame_info info;
-    char err[512];
-    int bad;
-    if (render_frame(&s, &(struct frame_request){.backend = "egl"}, &res, &info, err, sizeof err, &bad) != 0)
-        fail_msg("%s", err);
+    struct error gl_err;
+    if (render_frame(&s, &(struct frame_request){.backend = "egl"}, &res, &info, &gl_err) != 0)
+        fail_msg("%s", gl_err.message);
     unsigned char *rgba = res.rgba;
     res.rgba = NULL;
     render_result_free(&res);
@@ -132,7 +131,7 @@ static void check_frame(int frame, const struct kiosk_state *st, const char *wha
 static void turn_mass(struct kiosk_state *st, long counts)
 {
     static struct scene s;
-    struct conf_error e;
+    struct error e;
     if (scene_load(&s, config.kiosk.scenes[st->scene], &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     if (s.kiosk.mass.key[0])
@@ -156,7 +155,7 @@ static void test_refined_frames_are_the_scenes_images(void **state)
     check_frame(4, &st, "next scene");
     /* the effects button goes on from the scene's own (starflight: searchlight) to the next */
     static struct scene shown;
-    struct conf_error e;
+    struct error e;
     if (scene_load(&shown, config.kiosk.scenes[st.scene], &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     assert_int_equal(kiosk_state_effects(&st, &shown), shown.observer.effects);

@@ -79,7 +79,7 @@ static void test_memory_does_not_grow(void **state)
             cwd, cwd, dir);
     fclose(f);
     static struct kiosk_config c;
-    struct conf_error e;
+    struct error e;
     if (kiosk_config_load(&c, path, &e) != 0 || kiosk_config_check(&c, &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     long after[SOAK_RUNS];

@@ -16,7 +16,7 @@ static struct kiosk_config config;
 
 static void load_example(void)
 {
-    struct conf_error e;
+    struct error e;
     if (kiosk_config_load(&config, "kiosk/kiosk.conf", &e) != 0 || kiosk_config_check(&config, &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
 }
@@ -104,7 +104,7 @@ static void test_apply(void **state)
     hc_load(&base, "schwarzschild", 16, 12, NULL);
     base.kiosk.mass.key[0] = '\0';                 /* a black hole without [kiosk]: the knob sets its mass */
     struct kiosk_state st = {.speed = 0.6, .mass = 0.5, .effects = EFFECTS_GEOMETRY};
-    struct conf_error e;
+    struct error e;
     assert_int_equal(kiosk_state_apply(&st, &base, &out, &e), 0);
     vec3d view = v3_normalize(v3_sub(base.camera.look_at, base.camera.position));
     assert_true(fabs(v3_len(out.observer.velocity) - 0.6) <= 1e-12);
@@ -201,16 +201,16 @@ static void test_renderer_follows_the_scene(void **state)
         {.speed = 0.8, .mass = 0.3, .effects = EFFECTS_SEARCHLIGHT},
         {.speed = 0.0, .mass = 0.12, .effects = EFFECTS_GEOMETRY},
     };
-    struct conf_error e;
+    struct error e;
     char err[2048];
-    int bad;
-    struct renderer *r = renderer_create(hc_context(), &live, err, sizeof err, &bad);
+    struct error gl_err;
+    struct renderer *r = renderer_create(hc_context(), &live, &gl_err);
     for (size_t k = 0; k < sizeof states / sizeof states[0]; k++) {
         if (kiosk_state_apply(&states[k], &base, &live, &e) != 0)
             fail_msg("%s", e.message);
         if (k == 0) {
             renderer_destroy(r);
-            r = renderer_create(hc_context(), &live, err, sizeof err, &bad);
+            r = renderer_create(hc_context(), &live, &gl_err);
             assert_non_null(r);
         }
         struct render_result a;
@@ -245,7 +245,7 @@ static void test_knobs_mapped_to_scene_keys(void **state)
     (void)state;
     load_example();
     static struct scene lorenz, out;
-    struct conf_error e;
+    struct error e;
     if (scene_load(&lorenz, "assets/scenes/lorenz.scene", &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     assert_string_equal(lorenz.kiosk.mass.key, "model.rho");

@@ -42,7 +42,7 @@ static void test_tiled_preview(void **state)
 {
     (void)state;
     static struct kiosk_config c;
-    struct conf_error e;
+    struct error e;
     if (kiosk_config_load(&c, "kiosk/kiosk.conf", &e) != 0 || kiosk_config_check(&c, &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     c.kiosk.preview_width = 32;
@@ -55,7 +55,7 @@ static void test_tiled_preview(void **state)
             scene = i;
     assert_true(scene >= 0);
     static struct scene base;
-    struct conf_error se;
+    struct error se;
     assert_int_equal(scene_load(&base, c.kiosk.scenes[scene], &se), 0);
     base.render.max_path *= 400.0;
     assert_int_equal(scene_validate(&base, &se), 0);
@@ -85,9 +85,9 @@ static void test_tiled_preview(void **state)
     static struct scene preview;
     preview = v.live;
     struct render_result res;
-    int bad;
-    if (render_frame(&preview, &(struct frame_request){.backend = "egl"}, &res, NULL, err, sizeof err, &bad) != 0)
-        fail_msg("%s", err);
+    struct error gl_err;
+    if (render_frame(&preview, &(struct frame_request){.backend = "egl"}, &res, NULL, &gl_err) != 0)
+        fail_msg("%s", gl_err.message);
     /* render_result rows run top-down, GL's bottom-up */
     for (int y = 0; y < 18; y++)
         assert_memory_equal(tiled + (size_t)y * 32 * 4, res.rgba + (size_t)(17 - y) * 32 * 4, 32 * 4);

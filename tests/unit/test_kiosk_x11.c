@@ -144,7 +144,7 @@ static void write_kiosk_files(void)
              headless_events);
     write_file(config_path, text);
 
-    struct conf_error e;
+    struct error e;
     if (kiosk_config_load(&headless_config, config_path, &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     if (kiosk_config_check(&headless_config, &e) != 0)
@@ -450,7 +450,7 @@ static void test_window_shows_the_hud(void **state)
     kiosk_state_reset(&st, &headless_config);
     st.speed = knob_turn(&headless_config.speed, st.speed, TURN_COUNTS);
     static struct scene base, drawn;
-    struct conf_error e;
+    struct error e;
     if (scene_load(&base, headless_config.kiosk.scenes[st.scene], &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     base.render.width = FRAME_WIDTH;
@@ -459,10 +459,9 @@ static void test_window_shows_the_hud(void **state)
         fail_msg("%s: %s", e.where, e.message);
     struct render_result res;
     struct frame_info info;
-    char err[512];
-    int bad;
-    if (render_frame(&drawn, &(struct frame_request){.backend = "egl"}, &res, &info, err, sizeof err, &bad) != 0)
-        fail_msg("%s", err);
+    struct error gl_err;
+    if (render_frame(&drawn, &(struct frame_request){.backend = "egl"}, &res, &info, &gl_err) != 0)
+        fail_msg("%s", gl_err.message);
     /* the settled window; where it did not settle, the headless frame, so that what is wrong with
      * the HUD itself is still said */
     unsigned char *picture = malloc((size_t)FRAME_WIDTH * FRAME_HEIGHT * 3);

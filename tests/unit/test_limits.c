@@ -98,7 +98,7 @@ static void test_size_option(void **state)
 static void test_pixels_in_scene_file(void **state)
 {
     struct scene s;
-    struct conf_error err;
+    struct error err;
     (void)state;
     assert_int_equal(scene_load(&s, scene_file("edge.scene", "[render]\nwidth = 8192\nheight = 1024\n"), &err), 0);
     assert_int_equal((long)s.render.width * s.render.height, SCENE_MAX_PIXELS);
@@ -118,7 +118,7 @@ static void test_pixels_in_scene_file(void **state)
 static void test_pixels_by_set_and_validate(void **state)
 {
     struct scene s;
-    struct conf_error err;
+    struct error err;
     (void)state;
     assert_int_equal(scene_load(&s, scene_file("small.scene", "[render]\nwidth = 64\nheight = 48\n"), &err), 0);
     assert_int_equal(scene_set(&s, "render.width=8192", &err), 0);
@@ -145,7 +145,7 @@ static void test_pixels_by_set_and_validate(void **state)
 static void test_number_magnitude(void **state)
 {
     struct scene s;
-    struct conf_error err;
+    struct error err;
     (void)state;
     assert_int_equal(scene_load(&s, scene_file("edge.scene", "[light a]\nposition = 1e18 -1e18 0\n"), &err), 0);
     const char *path = scene_file("far.scene", "[camera]\nfov = 40\n[light a]\nposition = 0 1.0001e18 0\n");
@@ -167,7 +167,7 @@ static void test_number_magnitude(void **state)
 static void test_texture_size_from_header(void **state)
 {
     struct scene s;
-    struct conf_error err;
+    struct error err;
     (void)state;
     png_header("big.png", 100000, 100000);
     png_header("edge.png", SCENE_MAX_TEXTURE_SIZE, SCENE_MAX_TEXTURE_SIZE);
@@ -192,7 +192,7 @@ static void test_cubemap_faces(void **state)
 {
     static const char *const faces[6] = {"px", "nx", "py", "ny", "pz", "nz"};
     struct scene s;
-    struct conf_error err;
+    struct error err;
     char name[32];
     (void)state;
     for (int i = 0; i < 6; i++) {

@@ -339,20 +339,20 @@ static void test_needs_fp32(void **state)
     static const char *const sets[] = {"render.method=orbit_table", "render.precision=fp16", NULL};
     hc_load(&s, "schwarzschild", 16, 12, sets);
     char err[512];
-    int bad = 0;
-    struct renderer *r = renderer_create(hc_context(), &s, err, sizeof err, &bad);
-    print_message("fp16 forced: %s\n", r ? "(accepted)" : err);
+    struct error gl_err;
+    struct renderer *r = renderer_create(hc_context(), &s, &gl_err);
+    print_message("fp16 forced: %s\n", r ? "(accepted)" : gl_err.message);
     assert_null(r);
-    assert_int_equal(bad, 1);
-    assert_non_null(strstr(err, "orbit_table"));
+    assert_int_equal(gl_err.status, ERROR_INPUT);
+    assert_non_null(strstr(gl_err.message, "orbit_table"));
     s.render.precision = PRECISION_AUTO;
     setenv("BT_FAULT", "float_render", 1);
     struct gl_context *ctx = gl_context_create("egl", err, sizeof err);
     assert_non_null(ctx);
-    r = renderer_create(ctx, &s, err, sizeof err, &bad);
+    r = renderer_create(ctx, &s, &gl_err);
     unsetenv("BT_FAULT");
     if (!r)
-        fail_msg("fp16 only: %s", err);
+        fail_msg("fp16 only: %s", gl_err.message);
     const char *how = renderer_path(r)->description;
     print_message("fp16 only: %s\n", how);
     assert_non_null(strstr(how, "integrated with rk4"));

@@ -70,7 +70,7 @@ static void test_scene_file_states_quality(void **state)
     fputs("[quality]\ndiffering_percent = 0.25\nexit_p99 = 2e-3\n", f);
     fclose(f);
     static struct scene s;
-    struct conf_error e;
+    struct error e;
     assert_int_equal(scene_load(&s, path, &e), 0);
     assert_true(quality_stated(&s.quality));
     assert_true(s.quality.differing_percent == 0.25);

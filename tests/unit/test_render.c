@@ -31,11 +31,10 @@ static void load(struct scene *s, const char *name, const char *const *sets)
 static void render(const struct scene *s, const char *backend, struct render_result *res, struct dump *d,
                    char *path_name)
 {
-    char err[2048];
-    int bad;
+    struct error gl_err;
     struct frame_info info;
-    if (render_frame(s, &(struct frame_request){.backend = backend, .with_state = RENDER_READ_STATE}, res, &info, err, sizeof err, &bad) != 0)
-        fail_msg("%s on %s: %s", s->name, backend, err);
+    if (render_frame(s, &(struct frame_request){.backend = backend, .with_state = RENDER_READ_STATE}, res, &info, &gl_err) != 0)
+        fail_msg("%s on %s: %s", s->name, backend, gl_err.message);
     assert_int_equal(result_to_dump(res, s, info.path_name, d), 0);
     if (path_name)
         strcpy(path_name, info.path_name);

@@ -38,7 +38,7 @@ static void temp_scene(char path[64], const char *text)
     write_file(path, text, strlen(text));
 }
 
-static int load_text(struct scene *s, const char *text, struct conf_error *err)
+static int load_text(struct scene *s, const char *text, struct error *err)
 {
     char path[64];
     int rc;
@@ -108,7 +108,7 @@ static void assert_contains(const char *text, const char *part)
 static void test_defaults(void **state)
 {
     struct scene s;
-    struct conf_error err;
+    struct error err;
     (void)state;
     scene_defaults(&s);
     assert_vec(s.camera.position, 0, 0, 10);
@@ -231,7 +231,7 @@ static void test_good_scene_round_trip(void **state)
     static const char *const faces[6] = {"px", "nx", "py", "ny", "pz", "nz"};
     struct scene_dir d;
     struct scene s;
-    struct conf_error err;
+    struct error err;
     char expect[256];
     const char *path;
     (void)state;
@@ -335,7 +335,7 @@ static void test_name_and_dir_from_path(void **state)
 {
     struct scene_dir d;
     struct scene s;
-    struct conf_error err;
+    struct error err;
     (void)state;
     make_dir(&d);
     const char *path = dir_file(&d, "black.hole.scene", "[camera]\nfov = 30\n");
@@ -358,7 +358,7 @@ static void test_name_and_dir_from_path(void **state)
 static void test_missing_file(void **state)
 {
     struct scene s;
-    struct conf_error err;
+    struct error err;
     (void)state;
     assert_int_equal(scene_load(&s, "/nonexistent/dir/x.scene", &err), -1);
     assert_string_equal(err.where, "/nonexistent/dir/x.scene");
@@ -378,7 +378,7 @@ static void test_layout(void **state)
         "type = sphere\r\n"
         "    radius = 3\r\n";
     struct scene s;
-    struct conf_error err;
+    struct error err;
     (void)state;
     if (load_text(&s, text, &err) != 0)
         fail_msg("%s: %s", err.where, err.message);
@@ -473,7 +473,7 @@ static void test_bad_fixtures(void **state)
     (void)state;
     for (size_t i = 0; i < sizeof bad_scenes / sizeof bad_scenes[0]; i++) {
         struct scene s;
-        struct conf_error err;
+        struct error err;
         char path[256], where[300];
         snprintf(path, sizeof path, "%s/%s.scene", BAD_DIR, bad_scenes[i].file);
         int rc = scene_load(&s, path, &err);
@@ -545,7 +545,7 @@ static void test_shipped_black_holes_bound_the_mass_knob(void **state)
     static const char *const scenes[] = {"schwarzschild", "blackhole_flight", "demo", "neutron_star"};
     for (size_t i = 0; i < sizeof scenes / sizeof scenes[0]; i++) {
         static struct scene s;
-        struct conf_error e;
+        struct error e;
         char path[128];
         snprintf(path, sizeof path, "assets/scenes/%s.scene", scenes[i]);
         if (scene_load(&s, path, &e) != 0)
@@ -589,7 +589,7 @@ static void test_every_fixture_is_in_the_table(void **state)
 static void test_duplicate_objects(void **state)
 {
     struct scene s;
-    struct conf_error err;
+    struct error err;
     (void)state;
     assert_int_equal(load_text(&s, "[object a]\ntype = sphere\n[object b]\ntype = disk\n"
                                "[object a]\ntype = rect\n", &err), -1);
@@ -603,7 +603,7 @@ static void test_duplicate_objects(void **state)
 static void test_model_keys_follow_the_type(void **state)
 {
     struct scene s;
-    struct conf_error err;
+    struct error err;
     (void)state;
     assert_int_equal(load_text(&s, "[model]\ntype = schwarzschild\nrho = 28\n", &err), -1);
     assert_contains(err.where, ":3");
@@ -637,7 +637,7 @@ static void test_textures(void **state)
 {
     struct scene_dir d;
     struct scene s;
-    struct conf_error err;
+    struct error err;
     char text[2048];
     size_t used = 0;
     (void)state;
@@ -681,7 +681,7 @@ static void test_cubemap_names_missing_face(void **state)
     static const char *const faces[5] = {"px", "nx", "py", "pz", "nz"};
     struct scene_dir d;
     struct scene s;
-    struct conf_error err;
+    struct error err;
     (void)state;
     make_dir(&d);
     for (int i = 0; i < 5; i++) {
@@ -713,7 +713,7 @@ static char *objects_text(int count)
 static void test_limits(void **state)
 {
     struct scene s;
-    struct conf_error err;
+    struct error err;
     char *text;
     char line[512];
     (void)state;
@@ -772,7 +772,7 @@ static void test_nul_byte(void **state)
     static const char text[] = "[camera]\nfov = 4\0005\n";
     char path[64];
     struct scene s;
-    struct conf_error err;
+    struct error err;
     (void)state;
     temp_scene(path, "");
     write_file(path, text, sizeof text - 1);
@@ -786,7 +786,7 @@ static void test_nul_byte(void **state)
 
 static void load_good(struct scene *s)
 {
-    struct conf_error err;
+    struct error err;
     if (load_text(s, "[object earth]\ntype = sphere\nradius = 2\n[light sun]\ncolor = 1 1 1\n", &err))
         fail_msg("%s: %s", err.where, err.message);
 }
@@ -794,7 +794,7 @@ static void load_good(struct scene *s)
 static void test_set_overrides(void **state)
 {
     struct scene s;
-    struct conf_error err;
+    struct error err;
     (void)state;
     load_good(&s);
     assert_int_equal(scene_set(&s, "camera.fov=75", &err), 0);
@@ -821,7 +821,7 @@ static void test_set_overrides(void **state)
 static void test_set_model_type_resets_nothing(void **state)
 {
     struct scene s;
-    struct conf_error err;
+    struct error err;
     (void)state;
     load_good(&s);
     assert_int_equal(scene_set(&s, "model.mass=3", &err), -1);
@@ -866,7 +866,7 @@ static void test_set_rejects(void **state)
         {"sky.cubemap=nowhere", "nowhere_px.png"},
     };
     struct scene s, before;
-    struct conf_error err;
+    struct error err;
     (void)state;
     load_good(&s);
     before = s;
@@ -888,7 +888,7 @@ static void test_set_rejects(void **state)
 static void test_validate(void **state)
 {
     struct scene s;
-    struct conf_error err;
+    struct error err;
     (void)state;
     load_good(&s);
     assert_int_equal(scene_validate(&s, &err), 0);
@@ -930,7 +930,7 @@ static void test_set_number(void **state)
 {
     (void)state;
     static struct scene a, b;
-    struct conf_error ea, eb;
+    struct error ea, eb;
     static const struct {
         const char *key;
         double value;
@@ -979,7 +979,7 @@ static void test_set_number(void **state)
 static void test_budget(void **state)
 {
     struct scene s;
-    struct conf_error err;
+    struct error err;
     (void)state;
     assert_int_equal(load_text(&s, "[render]\nstep = 0.5\nsteps_per_segment = 2\nsteps_per_pass = 2\n"
                                    "bound_radius = 20\n[model]\ntype = lorenz\n", &err), 0);

@@ -37,10 +37,9 @@ static double measure(const char *exposure, double beta, int engine_cpu)
         cpu_image_free(&cpu);
     } else {
         struct render_result res;
-        char err[2048];
-        int bad;
-        if (render_frame(&s, &(struct frame_request){.backend = "egl"}, &res, NULL, err, sizeof err, &bad) != 0)
-            fail_msg("render: %s", err);
+        struct error gl_err;
+        if (render_frame(&s, &(struct frame_request){.backend = "egl"}, &res, NULL, &gl_err) != 0)
+            fail_msg("render: %s", gl_err.message);
         mean = centre_mean(res.rgba, 80, 60);
         render_result_free(&res);
     }

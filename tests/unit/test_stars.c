@@ -154,7 +154,7 @@ static void star_scene(struct scene *s, int width, int height, vec3d velocity)
         "model.type=flat", "camera.position=0 0 0", "camera.look_at=0 0 -1", "camera.fov=60",
         "sky.color=0 0 0", "sky.stars=400", "sky.star_seed=11", "sky.star_size=0.8",
         "sky.star_brightness=0.01", "render.bound_radius=10", NULL};
-    struct conf_error err;
+    struct error err;
     for (int i = 0; sets[i]; i++)
         if (scene_set(s, sets[i], &err) != 0)
             fail_msg("%s: %s", err.where, err.message);
@@ -244,9 +244,9 @@ static void stars_on_both_engines(vec3d velocity)
     star_scene(&s, 240, 180, velocity);
     struct render_result g;
     char err[2048];
-    int bad;
-    if (render_frame(&s, &(struct frame_request){.backend = "egl", .hdr = 1}, &g, NULL, err, sizeof err, &bad) != 0)
-        fail_msg("render: %s", err);
+    struct error gl_err;
+    if (render_frame(&s, &(struct frame_request){.backend = "egl", .hdr = 1}, &g, NULL, &gl_err) != 0)
+        fail_msg("render: %s", gl_err.message);
     int on_gpu = check_stars(&s, g.color, "gpu");
     struct cpu_image cpu;
     struct cpu_render_options o = {.threads = 0, .hdr = 1};
@@ -321,7 +321,7 @@ static void test_lensed_star(void **state)
     const char *const fixed[] = {"model.type=schwarzschild", "model.mass=1", "camera.position=0 0 0",
                                  "render.method=orbit_table", "render.bound_radius=1e7", "sky.color=0 0 0",
                                  "sky.stars=1", "sky.star_size=0.8", NULL};
-    struct conf_error err;
+    struct error err;
     for (int i = 0; fixed[i]; i++)
         if (scene_set(&s, fixed[i], &err) != 0)
             fail_msg("%s: %s", err.where, err.message);
@@ -338,9 +338,9 @@ static void test_lensed_star(void **state)
 
     struct render_result g;
     char msg[2048];
-    int bad;
-    if (render_frame(&s, &(struct frame_request){.backend = "egl", .hdr = 1}, &g, NULL, msg, sizeof msg, &bad) != 0)
-        fail_msg("render: %s", msg);
+    struct error gl_err;
+    if (render_frame(&s, &(struct frame_request){.backend = "egl", .hdr = 1}, &g, NULL, &gl_err) != 0)
+        fail_msg("render: %s", gl_err.message);
     struct cpu_image cpu;
     struct cpu_render_options o = {.threads = 0, .hdr = 1};
     ref_options_default(&o.ref, &s);

@@ -1,0 +1,26 @@
+/* Filling and printing the one error type. */
+#include <stdarg.h>
+#include <string.h>
+#include "io/error.h"
+
+int error_set(struct error *e, enum error_status status, const char *where, const char *fmt, ...)
+{
+    va_list ap;
+    e->status = status;
+    snprintf(e->where, sizeof e->where, "%s", where ? where : "");
+    va_start(ap, fmt);
+    vsnprintf(e->message, sizeof e->message, fmt, ap);
+    va_end(ap);
+    return -1;
+}
+
+void error_clear(struct error *e)
+{
+    memset(e, 0, sizeof *e);
+}
+
+void error_print(const struct error *e, const char *program, FILE *out)
+{
+    fprintf(out, "%s%s%s%serror: %s\n", program ? program : "", program ? ": " : "", e->where,
+            e->where[0] ? ": " : "", e->message);
+}

@@ -1,0 +1,75 @@
+/* The one error type (io/error.h): filled and printed the same way by every module, and the status
+ * that decides the exit code set by the readers of what users write (scenes, --set, the kiosk's
+ * configuration) to ERROR_INPUT, and by a machine's failure to ERROR_RUNTIME. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <setjmp.h>
+#include <cmocka.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "io/error.h"
+#include "kiosk_config/kiosk_config.h"
+#include "scene/scene.h"
+
+static void test_set_and_print(void **state)
+{
+    (void)state;
+    struct error e;
+    error_clear(&e);
+    assert_int_equal(e.status, ERROR_NONE);
+    assert_int_equal(error_set(&e, ERROR_INPUT, "a.scene:3", "key '%s' in [%s]", "fov", "camera"), -1);
+    assert_int_equal(e.status, ERROR_INPUT);
+    assert_string_equal(e.where, "a.scene:3");
+    assert_string_equal(e.message, "key 'fov' in [camera]");
+    char text[256] = "";
+    FILE *f = fmemopen(text, sizeof text, "w");
+    assert_non_null(f);
+    error_print(&e, "bentray render", f);
+    error_set(&e, ERROR_RUNTIME, NULL, "no GPU");
+    error_print(&e, NULL, f);
+    fclose(f);
+    assert_string_equal(text, "bentray render: a.scene:3: error: key 'fov' in [camera]\nerror: no GPU\n");
+}
+
+/* Each reader of what a user writes says the failure is the user's. */
+static void test_readers_set_input_status(void **state)
+{
+    (void)state;
+    static struct scene s;
+    static struct kiosk_config c;
+    struct error e;
+    assert_int_equal(scene_load(&s, "tests/scenes_bad/bad_choice.scene", &e), -1);
+    assert_int_equal(e.status, ERROR_INPUT);
+    assert_non_null(strstr(e.where, "bad_choice.scene:"));
+    assert_int_equal(scene_load(&s, "tests/scenes_bad/camera_in_horizon.scene", &e), 0);
+    assert_int_equal(scene_validate(&s, &e), -1);
+    assert_int_equal(e.status, ERROR_INPUT);  /* a whole-scene check */
+    assert_int_equal(scene_load(&s, "tests/scenes_bad/no-such-file.scene", &e), -1);
+    assert_int_equal(e.status, ERROR_INPUT);
+    assert_int_equal(scene_load(&s, "assets/scenes/schwarzschild.scene", &e), 0);
+    assert_int_equal(e.status, ERROR_NONE);
+    assert_int_equal(scene_set(&s, "model.mass=heavy", &e), -1);
+    assert_int_equal(e.status, ERROR_INPUT);
+    assert_string_equal(e.where, "--set model.mass=heavy");
+    assert_int_equal(scene_set(&s, "camera", &e), -1);
+    assert_int_equal(e.status, ERROR_INPUT);
+    assert_int_equal(scene_set_number(&s, "model.mass", -1.0, &e), -1);
+    assert_int_equal(e.status, ERROR_INPUT);
+    assert_int_equal(scene_set_number(&s, "model.mass", 2.0, &e), 0);
+    assert_int_equal(e.status, ERROR_NONE);
+    assert_int_equal(kiosk_config_load(&c, "tests/scenes_bad/bad_choice.scene", &e), -1);
+    assert_int_equal(e.status, ERROR_INPUT);
+    assert_int_equal(kiosk_config_load(&c, "kiosk/kiosk.conf", &e), 0);
+    assert_int_equal(e.status, ERROR_NONE);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_set_and_print),
+        cmocka_unit_test(test_readers_set_input_status),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
