@@ -79,7 +79,7 @@ $(BUILD)/gen/shaders_embedded.o: $(BUILD)/gen/shaders_embedded.c
 	$(CC) $(CFLAGS) -c -o $@ $<
 
 # Generated assets (checkerboards, star field, test sky) come from the project's own tool.
-$(BUILD)/tools/gen_assets: src/tools/gen_assets.c src/io/png_io.c
+$(BUILD)/tools/gen_assets: src/tools/gen_assets.c src/io/png_io.c src/io/output_file.c src/io/text_file.c src/io/error.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) $(PKG_CFLAGS) -o $@ $^ $(PKG_LIBS) -lm
 assets: $(BUILD)/tools/gen_assets

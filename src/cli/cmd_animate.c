@@ -332,16 +332,17 @@ static int make_video(const char *dir, int frames, double fps, const char *video
     int status = 0;
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
         ;
-    char err[1024];
+    struct error fe;
+    error_clear(&fe);
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
         unlink(tmp);
         fprintf(stderr, "bentray animate: --video: ffmpeg failed (%s %d); the frames are in %s\n",
                 WIFEXITED(status) ? "exit" : "signal", WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status), dir);
         return EXIT_RUNTIME;
     }
-    if (output_check(video, force, err, sizeof err) != 0 || rename(tmp, video) != 0) {
+    if (output_check(video, force, &fe) != 0 || rename(tmp, video) != 0) {
         unlink(tmp);
-        fprintf(stderr, "bentray animate: --video %s: %s\n", video, err[0] ? err : strerror(errno));
+        fprintf(stderr, "bentray animate: --video %s: %s\n", video, fe.message[0] ? fe.message : strerror(errno));
         return EXIT_RUNTIME;
     }
     return EXIT_OK;
@@ -475,16 +476,17 @@ int cmd_animate(int argc, char **argv)
         fprintf(stderr, "bentray animate: --out %s: not a directory\n", dir);
         return EXIT_USAGE;
     }
-    char path[4200], why[1024];
+    char path[4200];
+    struct error why;
     for (int k = 0; k < a.frames; k++) {
         frame_path(dir, k, a.frames, path, sizeof path);
-        if (output_check(path, force, why, sizeof why) != 0) {
-            fprintf(stderr, "bentray animate: --out: %s\n", why);
+        if (output_check(path, force, &why) != 0) {
+            fprintf(stderr, "bentray animate: --out: %s\n", why.message);
             return EXIT_USAGE;
         }
     }
-    if (video && output_check(video, force, why, sizeof why) != 0) {
-        fprintf(stderr, "bentray animate: --video: %s\n", why);
+    if (video && output_check(video, force, &why) != 0) {
+        fprintf(stderr, "bentray animate: --video: %s\n", why.message);
         return EXIT_USAGE;
     }
     struct progress p;
@@ -493,7 +495,6 @@ int cmd_animate(int argc, char **argv)
         frame_scene(&a, &base, k, &s, sets, &n_sets);
         frame_path(dir, k, a.frames, path, sizeof path);
         struct measured m;
-        char err[2048];
         struct error e;
         int failed;
         if (options_engine_cpu(&o)) {
@@ -508,8 +509,8 @@ int cmd_animate(int argc, char **argv)
             fprintf(stderr, "bentray animate: frame %d: %s\n", k + 1, e.message);
             return e.status == ERROR_INPUT ? EXIT_USAGE : EXIT_RUNTIME;
         }
-        if (png_write_rgba8(path, m.dump.width, m.dump.height, m.rgba, force, err, sizeof err) != 0) {
-            fprintf(stderr, "bentray animate: frame %d: %s\n", k + 1, err);
+        if (png_write_rgba8(path, m.dump.width, m.dump.height, m.rgba, force, &e) != 0) {
+            fprintf(stderr, "bentray animate: frame %d: %s\n", k + 1, e.message);
             measured_free(&m);
             return EXIT_RUNTIME;
         }

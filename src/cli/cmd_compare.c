@@ -17,12 +17,13 @@ static void usage(FILE *out)
  * for a bad dump, EXIT_RUNTIME where the machine has too little memory for a good one. */
 static int load(const char *path, struct dump *d)
 {
-    char err[512];
-    int rc = dump_read(path, d, err, sizeof err);
+    struct error e;
+    int rc = dump_read(path, d, &e);
     if (rc != 0) {
-        fprintf(stderr, "bentray compare: %s\n", err);
+        fprintf(stderr, "bentray compare: %s\n", e.message);
         return rc == DUMP_READ_NO_MEMORY ? EXIT_RUNTIME : EXIT_USAGE;
     }
+    char err[512];
     if (compare_dump_check(d, err, sizeof err) != 0) {
         fprintf(stderr, "bentray compare: %s: %s\n", path, err);
         dump_free(d);

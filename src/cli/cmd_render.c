@@ -220,9 +220,9 @@ int cmd_render(int argc, char **argv)
     }
     /* a name that promises another format than the one written would be a lie on the disk */
     enum image_format format = IMAGE_PNG8;
-    char why[1024];
-    if (image_format_of(out_path ? out_path : "x.png", depth, &format, why, sizeof why) != 0) {
-        fprintf(stderr, "bentray render: --out %s: %s\n", out_path, why);
+    struct error why;
+    if (image_format_of(out_path ? out_path : "x.png", depth, &format, &why) != 0) {
+        fprintf(stderr, "bentray render: --out %s: %s\n", out_path, why.message);
         return EXIT_USAGE;
     }
     int to_stdout = out_path && strcmp(out_path, "-") == 0;
@@ -243,8 +243,8 @@ int cmd_render(int argc, char **argv)
     /* refuse before the work, not after: a long render must not end in "file exists" */
     const char *outputs[2] = {to_stdout ? NULL : out_path, dump_path};
     for (int k = 0; k < 2; k++) {
-        if (outputs[k] && output_check(outputs[k], force, why, sizeof why) != 0) {
-            fprintf(stderr, "bentray render: %s: %s\n", k ? "--dump" : "--out", why);
+        if (outputs[k] && output_check(outputs[k], force, &why) != 0) {
+            fprintf(stderr, "bentray render: %s: %s\n", k ? "--dump" : "--out", why.message);
             return EXIT_USAGE;
         }
     }
@@ -254,15 +254,15 @@ int cmd_render(int argc, char **argv)
         return EXIT_USAGE;
     }
     struct measured r = {0};
-    char err[2048];
+    struct error err;
     rc = render_with(&o, &s, dump_path != NULL, quiet ? PROGRESS_NONE : progress ? PROGRESS_ALWAYS : PROGRESS_AUTO,
                      image_format_float(format), &r);
     if (rc == EXIT_OK &&
-        image_write(out_path, format, r.dump.width, r.dump.height, r.rgba, r.color, force, err, sizeof err) != 0) {
-        fprintf(stderr, "bentray render: --out: %s\n", err);
+        image_write(out_path, format, r.dump.width, r.dump.height, r.rgba, r.color, force, &err) != 0) {
+        fprintf(stderr, "bentray render: --out: %s\n", err.message);
         rc = EXIT_RUNTIME;
-    } else if (rc == EXIT_OK && dump_path && dump_write(dump_path, &r.dump, force, err, sizeof err) != 0) {
-        fprintf(stderr, "bentray render: --dump: %s\n", err);
+    } else if (rc == EXIT_OK && dump_path && dump_write(dump_path, &r.dump, force, &err) != 0) {
+        fprintf(stderr, "bentray render: --dump: %s\n", err.message);
         rc = EXIT_RUNTIME;
     }
     if (rc == EXIT_OK) {

@@ -1,4 +1,5 @@
 /* Filling and printing the one error type. */
+#include <errno.h>
 #include <stdarg.h>
 #include <string.h>
 #include "io/error.h"
@@ -23,4 +24,15 @@ void error_print(const struct error *e, const char *program, FILE *out)
 {
     fprintf(out, "%s%s%s%serror: %s\n", program ? program : "", program ? ": " : "", e->where,
             e->where[0] ? ": " : "", e->message);
+}
+
+enum error_status error_status_of_errno(int errnum)
+{
+    switch (errnum) {
+    case 0: case EACCES: case EPERM: case ENOENT: case ENOTDIR: case EISDIR: case ENXIO: case EROFS:
+    case ENAMETOOLONG: case ELOOP:
+        return ERROR_INPUT;
+    default:
+        return ERROR_RUNTIME;
+    }
 }

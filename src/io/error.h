@@ -23,6 +23,12 @@ struct error {
  * `return error_set(e, ERROR_INPUT, path, "...", ...);`. WHERE may be NULL for none. */
 __attribute__((format(printf, 4, 5)))
 int error_set(struct error *e, enum error_status status, const char *where, const char *fmt, ...);
+/* Whose failure it is when a path the user named cannot be checked, opened or read (errno of
+ * stat, access or open; 0 where it is there but not a regular file): the user's where the path
+ * itself is refused (missing, not a regular file, not readable or writable, a read-only file
+ * system, too long, a loop of links, a device without its driver), else the machine's (no
+ * memory, an I/O error, a full disk, too many open files). */
+enum error_status error_status_of_errno(int errnum);
 /* Clears E: no status, no place, no message. */
 void error_clear(struct error *e);
 /* "PROGRAM: WHERE: error: MESSAGE" (the parts that are there) on OUT. */

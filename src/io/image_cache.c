@@ -27,13 +27,13 @@ static const struct kept_image *find(const char *path)
 }
 
 /* Decodes path once, at the largest size a scene may use; each reader applies its own limit. */
-static const struct kept_image *keep(const char *path, int max_size, char *err, size_t errlen)
+static const struct kept_image *keep(const char *path, int max_size, struct error *e)
 {
     if (cache.count == cache.capacity) {
         size_t capacity = cache.capacity ? 2 * cache.capacity : 16;
         struct kept_image *grown = realloc(cache.images, capacity * sizeof *grown);
         if (!grown) {
-            snprintf(err, errlen, "out of memory keeping %s", path);
+            error_set(e, ERROR_RUNTIME, NULL, "out of memory keeping %s", path);
             return NULL;
         }
         cache.images = grown;
@@ -41,10 +41,10 @@ static const struct kept_image *keep(const char *path, int max_size, char *err, 
     }
     struct kept_image im = {.path = strdup(path)};
     if (!im.path) {
-        snprintf(err, errlen, "out of memory keeping %s", path);
+        error_set(e, ERROR_RUNTIME, NULL, "out of memory keeping %s", path);
         return NULL;
     }
-    if (png_read_rgba8(path, max_size, &im.width, &im.height, &im.rgba, err, errlen) != 0) {
+    if (png_read_rgba8(path, max_size, &im.width, &im.height, &im.rgba, e) != 0) {
         free(im.path);
         return NULL;
     }
@@ -53,24 +53,22 @@ static const struct kept_image *keep(const char *path, int max_size, char *err, 
 }
 
 int image_read(const char *path, int max_size, int *width, int *height, const unsigned char **rgba, int *owned,
-               char *err, size_t errlen)
+               struct error *e)
 {
     if (!cache.on) {
         unsigned char *pixels;
-        if (png_read_rgba8(path, max_size, width, height, &pixels, err, errlen) != 0)
+        if (png_read_rgba8(path, max_size, width, height, &pixels, e) != 0)
             return -1;
         *rgba = pixels;
         *owned = 1;
         return 0;
     }
     const struct kept_image *im = find(path);
-    if (!im && !(im = keep(path, max_size, err, errlen)))
+    if (!im && !(im = keep(path, max_size, e)))
         return -1;
-    if (im->width > max_size || im->height > max_size) {
-        snprintf(err, errlen, "image is %d x %d, larger than the limit of %d pixels a side", im->width, im->height,
-                 max_size);
-        return -1;
-    }
+    if (im->width > max_size || im->height > max_size)
+        return error_set(e, ERROR_INPUT, NULL, "image is %d x %d, larger than the limit of %d pixels a side",
+                         im->width, im->height, max_size);
     *width = im->width;
     *height = im->height;
     *rgba = im->rgba;

@@ -7,12 +7,15 @@
 #define BT_IMAGE_CACHE_H
 #include <stddef.h>
 
+#include "io/error.h"
+
 void image_cache_keep(int on);
 /* The image at path as RGBA8, top row first, under png_read_rgba8's rules (an image wider or
  * taller than max_size is refused). *rgba belongs to the cache while it keeps images (*owned 0),
- * else to the caller (*owned 1: free()). 0, or -1 with a message. */
+ * else to the caller (*owned 1: free()). 0, or -1 with the message in *e (png_read_rgba8's
+ * statuses; a kept image larger than max_size: ERROR_INPUT). */
 int image_read(const char *path, int max_size, int *width, int *height, const unsigned char **rgba, int *owned,
-               char *err, size_t errlen);
+               struct error *e);
 /* Frees every kept image and stops keeping them. */
 void image_cache_release(void);
 

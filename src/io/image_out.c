@@ -6,20 +6,11 @@
 
 #include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 #include <unistd.h>
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 static int has_extension(const char *path, const char *ext)
 {
@@ -27,7 +18,7 @@ static int has_extension(const char *path, const char *ext)
     return n > e && strcasecmp(path + n - e, ext) == 0;
 }
 
-int image_format_of(const char *path, int depth, enum image_format *format, char *err, size_t errlen)
+int image_format_of(const char *path, int depth, enum image_format *format, struct error *e)
 {
     int to_stdout = strcmp(path, "-") == 0;
     if (to_stdout || has_extension(path, ".png")) {
@@ -35,28 +26,23 @@ int image_format_of(const char *path, int depth, enum image_format *format, char
         return 0;
     }
     if (has_extension(path, ".pfm")) {
-        if (depth == 16) {
-            set_err(err, errlen, "--depth 16 is for PNG; a PFM image holds 32-bit floats");
-            return -1;
-        }
+        if (depth == 16)
+            return error_set(e, ERROR_INPUT, NULL, "--depth 16 is for PNG; a PFM image holds 32-bit floats");
         *format = IMAGE_PFM;
         return 0;
     }
-    set_err(err, errlen, "bentray writes PNG (.png, 8 or 16 bits a channel: --depth) and PFM (.pfm, linear "
-                         "floats) images: give the file one of these extensions, or - for a PNG on standard "
-                         "output");
-    return -1;
+    return error_set(e, ERROR_INPUT, NULL, "bentray writes PNG (.png, 8 or 16 bits a channel: --depth) and PFM "
+                                           "(.pfm, linear floats) images: give the file one of these extensions, "
+                                           "or - for a PNG on standard output");
 }
 
 /* PFM (Portable Float Map): "PF", width and height, -1 for little-endian, then RGB float32 rows
  * from the bottom up, in linear light (the sRGB-encoded colour decoded, brighter than white kept). */
-static int write_pfm(FILE *fp, int width, int height, const float *color, char *err, size_t errlen)
+static int write_pfm(FILE *fp, int width, int height, const float *color, struct error *e)
 {
     float *row = malloc((size_t)width * 3 * sizeof(float));
-    if (!row) {
-        set_err(err, errlen, "out of memory writing a PFM image");
-        return -1;
-    }
+    if (!row)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory writing a PFM image");
     int ok = fprintf(fp, "PF\n%d %d\n-1.0\n", width, height) > 0;
     for (int y = height - 1; y >= 0 && ok; y--) {
         const float *src = color + (size_t)y * width * 4;
@@ -74,50 +60,50 @@ static int write_pfm(FILE *fp, int width, int height, const float *color, char *
     }
     free(row);
     if (!ok)
-        set_err(err, errlen, "%s", strerror(errno ? errno : EIO));
+        error_set(e, ERROR_RUNTIME, NULL, "%s", strerror(errno ? errno : EIO));
     return ok ? 0 : -1;
 }
 
 /* The encoded image into fp. */
 static int write_to(FILE *fp, enum image_format format, int width, int height, const unsigned char *rgba8,
-                    const float *color, char *err, size_t errlen)
+                    const float *color, struct error *e)
 {
     if (format == IMAGE_PNG16)
-        return png_write_rgba16_stream(fp, width, height, color, err, errlen);
+        return png_write_rgba16_stream(fp, width, height, color, e);
     if (format == IMAGE_PFM)
-        return write_pfm(fp, width, height, color, err, errlen);
-    return png_write_rgba8_stream(fp, width, height, rgba8, err, errlen);
+        return write_pfm(fp, width, height, color, e);
+    return png_write_rgba8_stream(fp, width, height, rgba8, e);
 }
 
 int image_write(const char *path, enum image_format format, int width, int height, const unsigned char *rgba8,
-                const float *color, int overwrite, char *err, size_t errlen)
+                const float *color, int overwrite, struct error *e)
 {
-    if (format != IMAGE_PNG8 && !color) {
-        set_err(err, errlen, "cannot write %s: no float colour was rendered", path);
-        return -1;
-    }
+    error_clear(e);
+    if (format != IMAGE_PNG8 && !color)
+        return error_set(e, ERROR_RUNTIME, NULL, "cannot write %s: no float colour was rendered", path);
     if (strcmp(path, "-") == 0) {
         errno = 0;
-        if (write_to(stdout, format, width, height, rgba8, color, err, errlen) != 0 || fflush(stdout) != 0) {
-            if (!*err)
-                set_err(err, errlen, "standard output: %s", strerror(errno ? errno : EIO));
+        if (write_to(stdout, format, width, height, rgba8, color, e) != 0 || fflush(stdout) != 0) {
+            if (e->message[0] == '\0')
+                error_set(e, ERROR_RUNTIME, NULL, "standard output: %s", strerror(errno ? errno : EIO));
             return -1;
         }
         return 0;
     }
     if (format == IMAGE_PNG8)
-        return png_write_rgba8(path, width, height, rgba8, overwrite, err, errlen);
+        return png_write_rgba8(path, width, height, rgba8, overwrite, e);
     struct output_file o;
-    if (output_open(&o, path, overwrite, err, errlen) != 0)
+    if (output_open(&o, path, overwrite, e) != 0)
         return -1;
-    char why[512] = "";
+    struct error why;
+    error_clear(&why);
     errno = 0;
-    if (write_to(o.fp, format, width, height, rgba8, color, why, sizeof why) != 0) {
-        set_err(err, errlen, "cannot write %s: %s", path, why);
+    if (write_to(o.fp, format, width, height, rgba8, color, &why) != 0) {
+        error_set(e, ERROR_RUNTIME, NULL, "cannot write %s: %s", path, why.message);
         output_abort(&o);
         return -1;
     }
-    return output_commit(&o, err, errlen);
+    return output_commit(&o, e);
 }
 
 int image_format_float(enum image_format format)

@@ -10,15 +10,18 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "io/error.h"
+
 enum image_format { IMAGE_PNG8, IMAGE_PNG16, IMAGE_PFM };
 
-/* The format for PATH and --depth (8 or 16). 0, or -1 with why in err. */
-int image_format_of(const char *path, int depth, enum image_format *format, char *err, size_t errlen);
+/* The format for PATH and --depth (8 or 16). 0, or -1 with why in *e (ERROR_INPUT). */
+int image_format_of(const char *path, int depth, enum image_format *format, struct error *e);
 /* Whether the format is written from the float colour. */
 int image_format_float(enum image_format format);
 /* rgba8: RGBA8 rows top-down; color: RGBA floats (sRGB-encoded colour, alpha), needed for PNG16 and
- * PFM. 0, or -1 with a message in err. */
+ * PFM. 0, or -1 with the message in *e: ERROR_INPUT for a refused path (output_check's rules),
+ * ERROR_RUNTIME for a write that failed. */
 int image_write(const char *path, enum image_format format, int width, int height, const unsigned char *rgba8,
-                const float *color, int overwrite, char *err, size_t errlen);
+                const float *color, int overwrite, struct error *e);
 
 #endif

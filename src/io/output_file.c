@@ -73,49 +73,43 @@ static const char *kind_of(mode_t m)
          : S_ISFIFO(m) ? "a FIFO" : S_ISSOCK(m) ? "a socket" : "not a regular file";
 }
 
-static void exists_err(char *err, size_t errlen, const char *path)
+static int exists_err(struct error *e, const char *path)
 {
-    snprintf(err, errlen, "refusing to replace existing file %s (use --force to overwrite it)", path);
+    return error_set(e, ERROR_INPUT, NULL, "refusing to replace existing file %s (use --force to overwrite it)",
+                     path);
 }
 
-int output_check(const char *path, int overwrite, char *err, size_t errlen)
+int output_check(const char *path, int overwrite, struct error *e)
 {
-    if (!path || !*path) {
-        snprintf(err, errlen, "an empty file name");
-        return -1;
-    }
+    if (!path || !*path)
+        return error_set(e, ERROR_INPUT, NULL, "an empty file name");
     struct stat st;
     if (lstat(path, &st) == 0) {
-        if (!S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode)) {
-            snprintf(err, errlen, "%s is %s: bentray replaces only regular files", path, kind_of(st.st_mode));
-            return -1;
-        }
-        if (!overwrite) {
-            exists_err(err, errlen, path);
-            return -1;
-        }
+        if (!S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode))
+            return error_set(e, ERROR_INPUT, NULL, "%s is %s: bentray replaces only regular files", path,
+                             kind_of(st.st_mode));
+        if (!overwrite)
+            return exists_err(e, path);
         return 0;
     }
-    if (errno != ENOENT) {
-        snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
-        return -1;
-    }
+    int en = errno;
+    if (en != ENOENT)
+        return error_set(e, error_status_of_errno(en), NULL, "cannot write %s: %s", path, strerror(en));
     char *copy = strdup(path);
-    if (!copy) {
-        snprintf(err, errlen, "cannot write %s: out of memory", path);
-        return -1;
-    }
+    if (!copy)
+        return error_set(e, ERROR_RUNTIME, NULL, "cannot write %s: out of memory", path);
     const char *dir = dirname(copy);
     int rc = 0;
     if (stat(dir, &st) != 0) {
-        snprintf(err, errlen, "cannot write %s: directory %s: %s", path, dir, strerror(errno));
-        rc = -1;
+        en = errno;
+        rc = error_set(e, error_status_of_errno(en), NULL, "cannot write %s: directory %s: %s", path, dir,
+                       strerror(en));
     } else if (!S_ISDIR(st.st_mode)) {
-        snprintf(err, errlen, "cannot write %s: %s is not a directory", path, dir);
-        rc = -1;
+        rc = error_set(e, ERROR_INPUT, NULL, "cannot write %s: %s is not a directory", path, dir);
     } else if (access(dir, W_OK | X_OK) != 0) {
-        snprintf(err, errlen, "cannot write %s: directory %s: %s", path, dir, strerror(errno));
-        rc = -1;
+        en = errno;
+        rc = error_set(e, error_status_of_errno(en), NULL, "cannot write %s: directory %s: %s", path, dir,
+                       strerror(en));
     }
     free(copy);
     return rc;
@@ -176,21 +170,20 @@ static int open_temp(const char *path, char *tmp, size_t tmplen)
     return -1;
 }
 
-int output_open(struct output_file *o, const char *path, int overwrite, char *err, size_t errlen)
+int output_open(struct output_file *o, const char *path, int overwrite, struct error *e)
 {
     memset(o, 0, sizeof *o);
-    if (output_check(path, overwrite, err, errlen) != 0)
+    if (output_check(path, overwrite, e) != 0)
         return -1;
     size_t tmplen = strlen(path) + 48;
     o->tmp = malloc(tmplen);
-    if (!o->tmp) {
-        snprintf(err, errlen, "cannot write %s: out of memory", path);
-        return -1;
-    }
+    if (!o->tmp)
+        return error_set(e, ERROR_RUNTIME, NULL, "cannot write %s: out of memory", path);
     guard(o->tmp);
     int fd = open_temp(path, o->tmp, tmplen);
     if (fd < 0) {
-        snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        int en = errno;
+        error_set(e, error_status_of_errno(en), NULL, "cannot write %s: %s", path, strerror(en));
         unguard();
         free(o->tmp);
         o->tmp = NULL;
@@ -198,7 +191,7 @@ int output_open(struct output_file *o, const char *path, int overwrite, char *er
     }
     o->fp = fdopen(fd, "wb");
     if (!o->fp) {
-        snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        error_set(e, ERROR_RUNTIME, NULL, "cannot write %s: %s", path, strerror(errno));
         close(fd);
         unlink(o->tmp);
         unguard();
@@ -227,7 +220,7 @@ void output_abort(struct output_file *o)
  * when the name exists, which closes the gap between the earlier check and the rename; file
  * systems without hard links fall back to check-then-rename. With overwrite, what is there now
  * must still be a regular file or a link. */
-static int move_into_place(const char *tmp, const char *path, int overwrite, char *err, size_t errlen)
+static int move_into_place(const char *tmp, const char *path, int overwrite, struct error *e)
 {
     struct stat st;
     if (!overwrite) {
@@ -235,44 +228,36 @@ static int move_into_place(const char *tmp, const char *path, int overwrite, cha
             unlink(tmp);
             return 0;
         }
-        int e = errno;
-        if (e == EEXIST) {
-            exists_err(err, errlen, path);
-            return -1;
-        }
-        if (e != EPERM && e != ENOTSUP && e != EOPNOTSUPP && e != ENOSYS && e != EMLINK) {
-            snprintf(err, errlen, "cannot write %s: %s", path, strerror(e));
-            return -1;
-        }
-        if (lstat(path, &st) == 0) {
-            exists_err(err, errlen, path);
-            return -1;
-        }
+        int en = errno;
+        if (en == EEXIST)
+            return exists_err(e, path);
+        if (en != EPERM && en != ENOTSUP && en != EOPNOTSUPP && en != ENOSYS && en != EMLINK)
+            return error_set(e, ERROR_RUNTIME, NULL, "cannot write %s: %s", path, strerror(en));
+        if (lstat(path, &st) == 0)
+            return exists_err(e, path);
     } else if (lstat(path, &st) == 0 && !S_ISREG(st.st_mode) && !S_ISLNK(st.st_mode)) {
-        snprintf(err, errlen, "%s is %s: bentray replaces only regular files", path, kind_of(st.st_mode));
-        return -1;
+        return error_set(e, ERROR_INPUT, NULL, "%s is %s: bentray replaces only regular files", path,
+                         kind_of(st.st_mode));
     }
-    if (rename(tmp, path) != 0) {
-        snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
-        return -1;
-    }
+    if (rename(tmp, path) != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "cannot write %s: %s", path, strerror(errno));
     return 0;
 }
 
-int output_commit(struct output_file *o, char *err, size_t errlen)
+int output_commit(struct output_file *o, struct error *e)
 {
     int ok = 1;
     /* a full disk often shows only at flush or close time, so both are checked */
     if (ferror(o->fp) || fflush(o->fp) != 0 || fsync(fileno(o->fp)) != 0) {
-        snprintf(err, errlen, "cannot write %s: %s", o->path, strerror(errno ? errno : EIO));
+        error_set(e, ERROR_RUNTIME, NULL, "cannot write %s: %s", o->path, strerror(errno ? errno : EIO));
         ok = 0;
     }
     if (fclose(o->fp) != 0 && ok) {
-        snprintf(err, errlen, "cannot write %s: %s", o->path, strerror(errno));
+        error_set(e, ERROR_RUNTIME, NULL, "cannot write %s: %s", o->path, strerror(errno));
         ok = 0;
     }
     o->fp = NULL;
-    if (ok && move_into_place(o->tmp, o->path, o->overwrite, err, errlen) != 0)
+    if (ok && move_into_place(o->tmp, o->path, o->overwrite, e) != 0)
         ok = 0;
     if (!ok)
         unlink(o->tmp);

@@ -13,7 +13,6 @@
 #include <math.h>
 #include <fcntl.h>
 #include <png.h>
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,39 +20,26 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    if (!err || errlen == 0)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
-
 int png_write_rgba8(const char *path, int width, int height, const unsigned char *rgba_top_down,
-                    int overwrite, char *err, size_t errlen)
+                    int overwrite, struct error *e)
 {
     if (!path || !*path || !rgba_top_down || width <= 0 || height <= 0 ||
-        width > INT32_MAX / 4) {
-        set_err(err, errlen, "cannot write %s: invalid image (%d x %d)", path ? path : "(null)",
-                width, height);
-        return -1;
-    }
+        width > INT32_MAX / 4)
+        return error_set(e, ERROR_RUNTIME, NULL, "cannot write %s: invalid image (%d x %d)",
+                         path ? path : "(null)", width, height);
     struct output_file o;
-    if (output_open(&o, path, overwrite, err, errlen) != 0)
+    if (output_open(&o, path, overwrite, e) != 0)
         return -1;
-    char why[512];
-    if (png_write_rgba8_stream(o.fp, width, height, rgba_top_down, why, sizeof why) != 0) {
-        set_err(err, errlen, "cannot write %s: %s", path, why);
+    struct error why;
+    if (png_write_rgba8_stream(o.fp, width, height, rgba_top_down, &why) != 0) {
+        error_set(e, why.status, NULL, "cannot write %s: %s", path, why.message);
         output_abort(&o);
         return -1;
     }
-    return output_commit(&o, err, errlen);
+    return output_commit(&o, e);
 }
 
-int png_write_rgba8_stream(FILE *fp, int width, int height, const unsigned char *rgba_top_down, char *err,
-                           size_t errlen)
+int png_write_rgba8_stream(FILE *fp, int width, int height, const unsigned char *rgba_top_down, struct error *e)
 {
     png_image image;
     memset(&image, 0, sizeof image);
@@ -64,7 +50,7 @@ int png_write_rgba8_stream(FILE *fp, int width, int height, const unsigned char 
     errno = 0;
     int ok = png_image_write_to_stdio(&image, fp, 0, rgba_top_down, 0, NULL) != 0;
     if (!ok)
-        set_err(err, errlen, "%s%s%s", image.message, errno ? ": " : "", errno ? strerror(errno) : "");
+        error_set(e, ERROR_RUNTIME, NULL, "%s%s%s", image.message, errno ? ": " : "", errno ? strerror(errno) : "");
     png_image_free(&image);
     return ok ? 0 : -1;
 }
@@ -79,12 +65,16 @@ struct png_ctx {
     png_bytep *rows;
     png_uint_32 width, height;
     char msg[200];
+    enum error_status status;   /* whose failure msg is, for a reader (a damaged file: ERROR_INPUT) */
 };
 
 static void on_png_error(png_structp png, png_const_charp msg)
 {
     struct png_ctx *ctx = png_get_error_ptr(png);
     snprintf(ctx->msg, sizeof ctx->msg, "%s", msg);
+    /* libpng's own allocations fail with "Out of memory", "Insufficient memory ...": the machine's */
+    if (strstr(msg, "memory"))
+        ctx->status = ERROR_RUNTIME;
     png_longjmp(png, 1);
 }
 
@@ -100,8 +90,11 @@ static void on_png_warning(png_structp png, png_const_charp msg)
 static void read_data(png_structp png, png_bytep data, size_t length)
 {
     struct png_ctx *ctx = png_get_io_ptr(png);
-    if (fread(data, 1, length, ctx->fp) != length)
+    if (fread(data, 1, length, ctx->fp) != length) {
+        if (!feof(ctx->fp))
+            ctx->status = ERROR_RUNTIME;   /* an I/O error, not the file's content */
         png_error(png, feof(ctx->fp) ? "the file is truncated" : strerror(errno));
+    }
 }
 
 /* Kept apart from png_read_rgba8 so that everything changed after setjmp lives in *ctx, outside
@@ -151,6 +144,7 @@ static int read_image(struct png_ctx *ctx)
     ctx->rows = malloc(sizeof *ctx->rows * ctx->height);
     if (!ctx->pixels || !ctx->rows) {
         snprintf(ctx->msg, sizeof ctx->msg, "out of memory");
+        ctx->status = ERROR_RUNTIME;
         return -1;
     }
     for (png_uint_32 y = 0; y < ctx->height; y++)
@@ -161,26 +155,24 @@ static int read_image(struct png_ctx *ctx)
 }
 
 int png_read_rgba8(const char *path, int max_size, int *width, int *height,
-                   unsigned char **rgba_top_down, char *err, size_t errlen)
+                   unsigned char **rgba_top_down, struct error *e)
 {
-    if (!path || !width || !height || !rgba_top_down || max_size <= 0) {
-        set_err(err, errlen, "cannot read %s: invalid arguments", path ? path : "(null)");
-        return -1;
-    }
+    if (!path || !width || !height || !rgba_top_down || max_size <= 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "cannot read %s: invalid arguments", path ? path : "(null)");
     struct png_ctx ctx;
     memset(&ctx, 0, sizeof ctx);
     ctx.max_size = max_size;
+    ctx.status = ERROR_INPUT;
 
     char why[256];
+    errno = 0;
     ctx.fp = regular_file_open(path, "image", why, sizeof why);
-    if (!ctx.fp) {
-        set_err(err, errlen, "%s: %s", path, why);
-        return -1;
-    }
+    if (!ctx.fp)
+        return error_set(e, error_status_of_errno(errno), NULL, "%s: %s", path, why);
     /* Checking the signature ourselves gives a plain message instead of libpng's. */
     unsigned char sig[8];
     if (fread(sig, 1, sizeof sig, ctx.fp) != sizeof sig || png_sig_cmp(sig, 0, sizeof sig) != 0) {
-        set_err(err, errlen, "cannot read %s: not a PNG file", path);
+        error_set(e, ERROR_INPUT, NULL, "cannot read %s: not a PNG file", path);
         fclose(ctx.fp);
         return -1;
     }
@@ -188,7 +180,7 @@ int png_read_rgba8(const char *path, int max_size, int *width, int *height,
     if (ctx.png)
         ctx.info = png_create_info_struct(ctx.png);
     if (!ctx.png || !ctx.info) {
-        set_err(err, errlen, "cannot read %s: out of memory", path);
+        error_set(e, ERROR_RUNTIME, NULL, "cannot read %s: out of memory", path);
         png_destroy_read_struct(ctx.png ? &ctx.png : NULL, NULL, NULL);
         fclose(ctx.fp);
         return -1;
@@ -201,7 +193,7 @@ int png_read_rgba8(const char *path, int max_size, int *width, int *height,
     free(ctx.rows);
     if (rc != 0) {
         free(ctx.pixels);
-        set_err(err, errlen, "cannot read %s: %s", path, ctx.msg);
+        error_set(e, ctx.status, NULL, "cannot read %s: %s", path, ctx.msg);
         return -1;
     }
     *width = (int)ctx.width;
@@ -240,7 +232,7 @@ static int write_rows16(struct png_ctx *ctx, int width, int height, const float 
     return 0;
 }
 
-int png_write_rgba16_stream(FILE *fp, int width, int height, const float *color, char *err, size_t errlen)
+int png_write_rgba16_stream(FILE *fp, int width, int height, const float *color, struct error *e)
 {
     struct png_ctx ctx;
     memset(&ctx, 0, sizeof ctx);
@@ -250,9 +242,9 @@ int png_write_rgba16_stream(FILE *fp, int width, int height, const float *color,
     ctx.info = ctx.png ? png_create_info_struct(ctx.png) : NULL;
     int rc = -1;
     if (!row || !ctx.png || !ctx.info)
-        set_err(err, errlen, "out of memory writing a 16-bit PNG");
+        error_set(e, ERROR_RUNTIME, NULL, "out of memory writing a 16-bit PNG");
     else if ((rc = write_rows16(&ctx, width, height, color, row)) != 0)
-        set_err(err, errlen, "%s%s%s", ctx.msg, errno ? ": " : "", errno ? strerror(errno) : "");
+        error_set(e, ERROR_RUNTIME, NULL, "%s%s%s", ctx.msg, errno ? ": " : "", errno ? strerror(errno) : "");
     png_destroy_write_struct(&ctx.png, ctx.info ? &ctx.info : NULL);
     free(row);
     return rc;

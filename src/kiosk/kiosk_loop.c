@@ -192,8 +192,12 @@ static int write_frame(struct kiosk *k, char *err, size_t errlen)
         return -1;
     }
     int rc = compositor_read_screen(s, rgba, err, errlen);
-    if (rc == 0)
-        rc = png_write_rgba8(path, s->width, s->height, rgba, k->opt->force, err, errlen);
+    if (rc == 0) {
+        struct error fe;
+        rc = png_write_rgba8(path, s->width, s->height, rgba, k->opt->force, &fe);
+        if (rc != 0)
+            snprintf(err, errlen, "%s", fe.message);
+    }
     free(rgba);
     if (rc == 0)
         k->frames_written++;
@@ -434,22 +438,23 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
 /* Every image a scene shows (its textures, the six faces of its sky), decoded now and kept for the
  * whole run (io/image_cache.h): a file changed or cut short on disk later does not reach the
  * kiosk, and a scene change reads no file. A file that does not decode is named with the scene
- * file's line of the key that named it. */
+ * file's line of the key that named it (the image's message cut at 399 characters, to
+ * leave room for the scene file's name). */
 static int keep_scene_images(const struct scene *s, char *err, size_t errlen)
 {
     int w, h, owned;
     const unsigned char *rgba;
-    char msg[400];
+    struct error fe;
     for (int i = 0; i < s->n_textures; i++)
-        if (image_read(s->textures[i], SCENE_MAX_TEXTURE_SIZE, &w, &h, &rgba, &owned, msg, sizeof msg) != 0) {
-            snprintf(err, errlen, "%s:%d: texture: %s", s->path, s->texture_line[i], msg);
+        if (image_read(s->textures[i], SCENE_MAX_TEXTURE_SIZE, &w, &h, &rgba, &owned, &fe) != 0) {
+            snprintf(err, errlen, "%s:%d: texture: %.399s", s->path, s->texture_line[i], fe.message);
             return -1;
         }
     for (int f = 0; s->sky.type == SKY_CUBEMAP && f < SCENE_CUBEMAP_FACES; f++) {
         char path[SCENE_PATH_LEN + 16];
         scene_cubemap_face_path(s->sky.cubemap, f, path, sizeof path);
-        if (image_read(path, SCENE_MAX_TEXTURE_SIZE, &w, &h, &rgba, &owned, msg, sizeof msg) != 0) {
-            snprintf(err, errlen, "%s:%d: cubemap: %s", s->path, s->cubemap_line, msg);
+        if (image_read(path, SCENE_MAX_TEXTURE_SIZE, &w, &h, &rgba, &owned, &fe) != 0) {
+            snprintf(err, errlen, "%s:%d: cubemap: %.399s", s->path, s->cubemap_line, fe.message);
             return -1;
         }
     }
@@ -559,9 +564,10 @@ static int headless_preflight(const struct kiosk *k, char *err, size_t errlen)
             continue;
         char path[KIOSK_PATH_LEN + 300];
         snprintf(path, sizeof path, "%s/%s", d->headless_out, e->d_name);
-        char why[600];
-        if (output_check(path, k->opt->force, why, sizeof why) != 0) {
-            snprintf(err, errlen, "[display] headless_out: %s: a frame of an earlier run", why);
+        struct error why;
+        if (output_check(path, k->opt->force, &why) != 0) {
+            /* the reason cut at 599 characters, to leave room for the rest */
+            snprintf(err, errlen, "[display] headless_out: %.599s: a frame of an earlier run", why.message);
             rc = -1;
         }
     }

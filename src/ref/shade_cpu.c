@@ -10,10 +10,13 @@
 int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *err, size_t errlen)
 {
     *mat = (struct cpu_materials){.scene = s};
+    struct error fe;
     for (int i = 0; i < s->n_textures; i++) {
         struct cpu_texture *t = &mat->textures[i];
-        if (png_read_rgba8(s->textures[i], SCENE_MAX_TEXTURE_SIZE, &t->width, &t->height, &t->rgba, err, errlen) != 0)
+        if (png_read_rgba8(s->textures[i], SCENE_MAX_TEXTURE_SIZE, &t->width, &t->height, &t->rgba, &fe) != 0) {
+            snprintf(err, errlen, "%s", fe.message);
             return -1;
+        }
     }
     if (s->sky.type == SKY_CUBEMAP) {
         mat->has_sky_cubemap = 1;
@@ -21,8 +24,10 @@ int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *e
             char path[SCENE_PATH_LEN + 16];
             scene_cubemap_face_path(s->sky.cubemap, f, path, sizeof path);
             struct cpu_texture *t = &mat->sky[f];
-            if (png_read_rgba8(path, SCENE_MAX_TEXTURE_SIZE, &t->width, &t->height, &t->rgba, err, errlen) != 0)
+            if (png_read_rgba8(path, SCENE_MAX_TEXTURE_SIZE, &t->width, &t->height, &t->rgba, &fe) != 0) {
+                snprintf(err, errlen, "%s", fe.message);
                 return -1;
+            }
         }
     }
     if (doppler_colour(s)) {

@@ -11,12 +11,12 @@ static int upload(GLenum target, const struct scene *s, const char *key, int lin
 {
     int w, h, owned = 0;
     const unsigned char *rgba = NULL;
-    char msg[400];
-    if (image_read(path, max_size, &w, &h, &rgba, &owned, msg, sizeof msg) != 0) {
+    struct error fe;
+    if (image_read(path, max_size, &w, &h, &rgba, &owned, &fe) != 0) {
         if (line > 0)
-            snprintf(err, errlen, "%s:%d: %s: %s", s->path, line, key, msg);
+            snprintf(err, errlen, "%s:%d: %s: %s", s->path, line, key, fe.message);
         else
-            snprintf(err, errlen, "%s: %s: %s", s->path, key, msg);
+            snprintf(err, errlen, "%s: %s: %s", s->path, key, fe.message);
         *bad_input = 1;
         return -1;
     }

@@ -71,10 +71,10 @@ static void decode(const unsigned char *p, struct dump_record *r)
     memcpy(r->rgba, p + 48, 4);
 }
 
-int dump_write(const char *path, const struct dump *d, int overwrite, char *err, size_t errlen)
+int dump_write(const char *path, const struct dump *d, int overwrite, struct error *e)
 {
     struct output_file o;
-    if (output_open(&o, path, overwrite, err, errlen) != 0)
+    if (output_open(&o, path, overwrite, e) != 0)
         return -1;
     FILE *f = o.fp;
     unsigned char header[DUMP_HEADER_SIZE] = {0}, rec[DUMP_RECORD_SIZE];
@@ -99,38 +99,36 @@ int dump_write(const char *path, const struct dump *d, int overwrite, char *err,
     }
     if (!ok) {
         /* the old file, if any, is untouched: only the temporary goes */
-        snprintf(err, errlen, "cannot write %s: %s", path, strerror(errno));
+        error_set(e, ERROR_RUNTIME, NULL, "cannot write %s: %s", path, strerror(errno));
         output_abort(&o);
         return -1;
     }
-    return output_commit(&o, err, errlen);
+    return output_commit(&o, e);
 }
 
-int dump_read(const char *path, struct dump *d, char *err, size_t errlen)
+int dump_read(const char *path, struct dump *d, struct error *e)
 {
     memset(d, 0, sizeof *d);
     char why[256];
+    errno = 0;
     FILE *f = regular_file_open(path, "dump", why, sizeof why);
-    if (!f) {
-        snprintf(err, errlen, "%s: %s", path, why);
-        return -1;
-    }
+    if (!f)
+        return error_set(e, error_status_of_errno(errno), NULL, "%s: %s", path, why);
     unsigned char header[DUMP_HEADER_SIZE], rec[DUMP_RECORD_SIZE];
     if (fread(header, sizeof header, 1, f) != 1 || memcmp(header, DUMP_MAGIC, 8) != 0) {
         fclose(f);
-        snprintf(err, errlen, "%s is not a bentray dump (bad header)", path);
-        return -1;
+        return error_set(e, ERROR_INPUT, NULL, "%s is not a bentray dump (bad header)", path);
     }
     uint32_t version = get_u32(header + 8), w = get_u32(header + 12), h = get_u32(header + 16);
     uint32_t rsize = get_u32(header + 20), n_objects = get_u32(header + 56);
     if (version != DUMP_VERSION || rsize != DUMP_RECORD_SIZE || w < 1 || h < 1 || w > DUMP_MAX_SIDE ||
         h > DUMP_MAX_SIDE || (unsigned long)w * h > (unsigned long)DUMP_MAX_PIXELS || n_objects > DUMP_MAX_OBJECTS) {
         fclose(f);
-        snprintf(err, errlen, "%s: unsupported dump (version %u, %ux%u, record %u bytes, %u objects; expected "
-                              "version %d, sides 1..%d and at most %ld pixels, record %d bytes, at most %d objects)",
-                 path, version, w, h, rsize, n_objects, DUMP_VERSION, DUMP_MAX_SIDE, DUMP_MAX_PIXELS,
-                 DUMP_RECORD_SIZE, DUMP_MAX_OBJECTS);
-        return -1;
+        return error_set(e, ERROR_INPUT, NULL,
+                         "%s: unsupported dump (version %u, %ux%u, record %u bytes, %u objects; expected "
+                         "version %d, sides 1..%d and at most %ld pixels, record %d bytes, at most %d objects)",
+                         path, version, w, h, rsize, n_objects, DUMP_VERSION, DUMP_MAX_SIDE, DUMP_MAX_PIXELS,
+                         DUMP_RECORD_SIZE, DUMP_MAX_OBJECTS);
     }
     d->width = (int)w;
     d->height = (int)h;
@@ -143,8 +141,7 @@ int dump_read(const char *path, struct dump *d, char *err, size_t errlen)
         unsigned char size[4];
         if (fread(size, sizeof size, 1, f) != 1) {
             fclose(f);
-            snprintf(err, errlen, "%s is truncated in its object table", path);
-            return -1;
+            return error_set(e, ERROR_INPUT, NULL, "%s is truncated in its object table", path);
         }
         d->object_size[i] = get_f32(size);
     }
@@ -154,28 +151,25 @@ int dump_read(const char *path, struct dump *d, char *err, size_t errlen)
     long here = ftell(f);
     if (here < 0 || fseek(f, 0, SEEK_END) != 0) {
         fclose(f);
-        snprintf(err, errlen, "cannot seek in %s: %s", path, strerror(errno));
-        return -1;
+        return error_set(e, ERROR_RUNTIME, NULL, "cannot seek in %s: %s", path, strerror(errno));
     }
     long size = ftell(f);
     if (size < here || (unsigned long)(size - here) / DUMP_RECORD_SIZE < n || fseek(f, here, SEEK_SET) != 0) {
         fclose(f);
-        snprintf(err, errlen, "%s is truncated: %ld of %zu records", path,
-                 size < here ? 0L : (size - here) / DUMP_RECORD_SIZE, n);
-        return -1;
+        return error_set(e, ERROR_INPUT, NULL, "%s is truncated: %ld of %zu records", path,
+                         size < here ? 0L : (size - here) / DUMP_RECORD_SIZE, n);
     }
     d->records = malloc(n * sizeof *d->records);
     if (!d->records) {
         fclose(f);
-        snprintf(err, errlen, "out of memory reading %s (%zu records)", path, n);
+        error_set(e, ERROR_RUNTIME, NULL, "out of memory reading %s (%zu records)", path, n);
         return DUMP_READ_NO_MEMORY;
     }
     for (size_t i = 0; i < n; i++) {
         if (fread(rec, sizeof rec, 1, f) != 1) {
             fclose(f);
             dump_free(d);
-            snprintf(err, errlen, "%s is truncated: %zu of %zu records", path, i, n);
-            return -1;
+            return error_set(e, ERROR_INPUT, NULL, "%s is truncated: %zu of %zu records", path, i, n);
         }
         decode(rec, &d->records[i]);
     }
@@ -183,8 +177,7 @@ int dump_read(const char *path, struct dump *d, char *err, size_t errlen)
     fclose(f);
     if (extra) {
         dump_free(d);
-        snprintf(err, errlen, "%s has data after its last record", path);
-        return -1;
+        return error_set(e, ERROR_INPUT, NULL, "%s has data after its last record", path);
     }
     return 0;
 }

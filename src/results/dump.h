@@ -5,6 +5,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "io/error.h"
+
 #define DUMP_MAGIC "BTDUMP\0\0"
 #define DUMP_VERSION 2
 #define DUMP_HEADER_SIZE 96
@@ -39,11 +41,16 @@ struct dump {
 };
 
 const char *dump_outcome_name(int32_t outcome);   /* "sky", "captured", ..., "object" */
-int dump_write(const char *path, const struct dump *d, int overwrite, char *err, size_t errlen);
+/* 0, or -1 with the message in *e: ERROR_INPUT for a refused path (output_check's rules),
+ * ERROR_RUNTIME for a write that failed. */
+int dump_write(const char *path, const struct dump *d, int overwrite, struct error *e);
 /* DUMP_READ_NO_MEMORY: the dump is well formed, but its records do not fit in memory (a failure
- * of this machine, not of the input) */
+ * of this machine, not of the input; ERROR_RUNTIME in *e) */
 #define DUMP_READ_NO_MEMORY (-2)
-int dump_read(const char *path, struct dump *d, char *err, size_t errlen);
+/* 0, DUMP_READ_NO_MEMORY, or -1 with the message in *e: ERROR_INPUT for a file that is missing,
+ * unreadable, not a dump, unsupported, truncated or followed by more data, ERROR_RUNTIME for a
+ * failure of the machine. */
+int dump_read(const char *path, struct dump *d, struct error *e);
 void dump_free(struct dump *d);
 
 #endif

@@ -146,14 +146,15 @@ static int ensure_dir(const char *path)
 
 static int save(const char *dir, const char *name, int w, int h, const unsigned char *px)
 {
-    char path[4096], err[512];
+    char path[4096];
+    struct error err;
     int n = snprintf(path, sizeof path, "%s/%s", dir, name);
     if (n < 0 || (size_t)n >= sizeof path) {
         fprintf(stderr, "gen_assets: path too long: %s/%s\n", dir, name);
         return -1;
     }
-    if (png_write_rgba8(path, w, h, px, 1, err, sizeof err) != 0) {
-        fprintf(stderr, "gen_assets: %s\n", err);
+    if (png_write_rgba8(path, w, h, px, 1, &err) != 0) {
+        fprintf(stderr, "gen_assets: %s\n", err.message);
         return -1;
     }
     printf("%s\n", path);

@@ -3,7 +3,8 @@
  * The input is a dump file: dump_read(). What it accepts must be what the format allows (sides 1 to
  * DUMP_MAX_SIDE, at most DUMP_MAX_OBJECTS objects, terminated names) and every record must be there
  * to read (the sanitizer sees each one read); it must then survive dump_write() and a second
- * dump_read() unchanged, bit for bit (the writer is what the engines use). A refusal must say why.
+ * dump_read() unchanged, bit for bit (the writer is what the engines use). A refusal must say why,
+ * as the input's fault (ERROR_INPUT), or the machine's where the records do not fit in memory.
  *
  * dump_read() takes a path: the input goes to one temporary file per process, made at start in
  * $BT_FUZZ_TMPDIR (else $TMPDIR, else /tmp), rewritten for every input and removed at exit, and so
@@ -33,9 +34,11 @@ static void copy_remove(void)
 
 /* ---- the harness ------------------------------------------------------------------------------ */
 
-static void check_message(const char *msg, size_t cap)
+static void check_refusal(const struct error *e, int rc)
 {
-    if (memchr(msg, '\0', cap) == NULL || msg[0] == '\0')
+    if (memchr(e->message, '\0', sizeof e->message) == NULL || e->message[0] == '\0')
+        __builtin_trap();
+    if (e->status != (rc == DUMP_READ_NO_MEMORY ? ERROR_RUNTIME : ERROR_INPUT))
         __builtin_trap();
 }
 
@@ -98,11 +101,12 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     struct dump d, again;
-    char msg[1024];
+    static struct error err;
 
     tmp_write(data, size);
-    if (dump_read(tmp_path, &d, msg, sizeof msg) != 0) {
-        check_message(msg, sizeof msg);
+    int rc = dump_read(tmp_path, &d, &err);
+    if (rc != 0) {
+        check_refusal(&err, rc);
         if (d.records != NULL)      /* refused: nothing left to free */
             __builtin_trap();
         return 0;
@@ -117,11 +121,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         __builtin_trap();
     fuzz_dump_sink = touch(&d);
 
-    if (dump_write(copy_path, &d, 1, msg, sizeof msg) != 0) {
-        fprintf(stderr, "fuzz: dump_write: %s\n", msg);
+    if (dump_write(copy_path, &d, 1, &err) != 0) {
+        fprintf(stderr, "fuzz: dump_write: %s\n", err.message);
         abort();
     }
-    if (dump_read(copy_path, &again, msg, sizeof msg) != 0 || !same_dump(&d, &again))
+    if (dump_read(copy_path, &again, &err) != 0 || !same_dump(&d, &again))
         __builtin_trap();
     dump_free(&again);
     dump_free(&d);

@@ -360,7 +360,8 @@ static void test_print(void **state)
 static void test_file_round_trip(void **state)
 {
     (void)state;
-    char dir[] = "/tmp/bentray_compare_XXXXXX", path[64], err[256];
+    char dir[] = "/tmp/bentray_compare_XXXXXX", path[64];
+    struct error err;
     assert_non_null(mkdtemp(dir));
     snprintf(path, sizeof path, "%s/t.dump", dir);
     struct dump d = make_dump(3, 2, 3, "cpu dopri5 rtol 1e-10");
@@ -372,9 +373,9 @@ static void test_file_round_trip(void **state)
         d.records[i].steps = 1000u * i;
         d.records[i].depth = 0.5f + i;
     }
-    assert_int_equal(dump_write(path, &d, 0, err, sizeof err), 0);
+    assert_int_equal(dump_write(path, &d, 0, &err), 0);
     struct dump e;
-    assert_int_equal(dump_read(path, &e, err, sizeof err), 0);
+    assert_int_equal(dump_read(path, &e, &err), 0);
     assert_int_equal(e.width, 3);
     assert_int_equal(e.height, 2);
     assert_string_equal(e.engine, d.engine);

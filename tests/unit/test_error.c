@@ -6,6 +6,7 @@
 #include <stdint.h>
 #include <setjmp.h>
 #include <cmocka.h>
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -34,6 +35,19 @@ static void test_set_and_print(void **state)
 }
 
 /* Each reader of what a user writes says the failure is the user's. */
+/* A path the user named and the system refused is the user's to fix (exit code 2); a failure of the
+ * machine under it is not (exit code 1). */
+static void test_status_of_errno(void **state)
+{
+    (void)state;
+    static const int input[] = {0, ENOENT, EACCES, EPERM, ENOTDIR, EISDIR, EROFS, ENAMETOOLONG, ELOOP, ENXIO};
+    static const int runtime[] = {ENOMEM, EIO, ENOSPC, EMFILE, EDQUOT, EFBIG};
+    for (size_t k = 0; k < sizeof input / sizeof input[0]; k++)
+        assert_int_equal(error_status_of_errno(input[k]), ERROR_INPUT);
+    for (size_t k = 0; k < sizeof runtime / sizeof runtime[0]; k++)
+        assert_int_equal(error_status_of_errno(runtime[k]), ERROR_RUNTIME);
+}
+
 static void test_readers_set_input_status(void **state)
 {
     (void)state;
@@ -70,6 +84,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_set_and_print),
         cmocka_unit_test(test_readers_set_input_status),
+        cmocka_unit_test(test_status_of_errno),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

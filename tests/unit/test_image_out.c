@@ -45,11 +45,12 @@ static void test_writers(void **state)
     const float color[2 * 2 * 4] = {0.0f, 0.5f, 1.0f, 1.0f, 0.25f, 2.0f, -1.0f, 0.5f,
                                     0.75f, 0.1f, 0.9f, 0.0f, 1.0f, 1.0f, 1.0f, 1.0f};
     unsigned char rgba8[16] = {0};
-    char dir[] = "/tmp/bentray-image-XXXXXX", png[64], pfm[64], err[512];
+    char dir[] = "/tmp/bentray-image-XXXXXX", png[64], pfm[64];
+    struct error e;
     assert_non_null(mkdtemp(dir));
     snprintf(png, sizeof png, "%s/a.png", dir);
     snprintf(pfm, sizeof pfm, "%s/a.pfm", dir);
-    assert_int_equal(image_write(png, IMAGE_PNG16, 2, 2, rgba8, color, 0, err, sizeof err), 0);
+    assert_int_equal(image_write(png, IMAGE_PNG16, 2, 2, rgba8, color, 0, &e), 0);
     int w, h;
     uint16_t *v = read_png16(png, &w, &h);
     assert_int_equal(w, 2);
@@ -59,7 +60,7 @@ static void test_writers(void **state)
         assert_int_equal(v[i], lrint(c * 65535.0));
     }
     free(v);
-    assert_int_equal(image_write(pfm, IMAGE_PFM, 2, 2, rgba8, color, 0, err, sizeof err), 0);
+    assert_int_equal(image_write(pfm, IMAGE_PFM, 2, 2, rgba8, color, 0, &e), 0);
     FILE *f = fopen(pfm, "rb");
     char header[16];
     assert_int_equal(fread(header, 1, 12, f), 12);
@@ -73,16 +74,29 @@ static void test_writers(void **state)
     /* the top row: 0, 0.5, 1 and 0.25, 2 (brighter than white, kept), -1 (cut to 0) */
     assert_true(px[6] == 0.0f && fabs(px[7] - srgb_to_linear(0.5)) < 1e-6 && fabs(px[8] - 1.0) < 1e-6);
     assert_true(px[10] > 4.0f && px[11] == 0.0f);
+    /* an existing file without overwrite: the user's error, the file kept */
+    assert_int_equal(image_write(pfm, IMAGE_PFM, 2, 2, rgba8, color, 0, &e), -1);
+    assert_non_null(strstr(e.message, "refusing to replace existing file"));
+    assert_non_null(strstr(e.message, pfm));
+    assert_int_equal(e.status, ERROR_INPUT);
     unlink(png);
     unlink(pfm);
     rmdir(dir);
-    assert_int_equal(image_write(png, IMAGE_PFM, 2, 2, rgba8, NULL, 0, err, sizeof err), -1);
+    /* into a directory that is not there: the user's error too */
+    assert_int_equal(image_write(pfm, IMAGE_PFM, 2, 2, rgba8, color, 0, &e), -1);
+    assert_non_null(strstr(e.message, "No such file"));
+    assert_int_equal(e.status, ERROR_INPUT);
+    assert_int_equal(image_write(png, IMAGE_PFM, 2, 2, rgba8, NULL, 0, &e), -1);
+    assert_non_null(strstr(e.message, "no float colour"));
     enum image_format fmt;
-    assert_int_equal(image_format_of("x.jpg", 8, &fmt, err, sizeof err), -1);
-    assert_int_equal(image_format_of("x.PFM", 8, &fmt, err, sizeof err), 0);
+    assert_int_equal(image_format_of("x.jpg", 8, &fmt, &e), -1);
+    assert_non_null(strstr(e.message, "bentray writes PNG"));
+    assert_int_equal(e.status, ERROR_INPUT);
+    assert_int_equal(image_format_of("x.PFM", 8, &fmt, &e), 0);
     assert_int_equal(fmt, IMAGE_PFM);
-    assert_int_equal(image_format_of("x.pfm", 16, &fmt, err, sizeof err), -1);
-    assert_int_equal(image_format_of("-", 16, &fmt, err, sizeof err), 0);
+    assert_int_equal(image_format_of("x.pfm", 16, &fmt, &e), -1);
+    assert_int_equal(e.status, ERROR_INPUT);
+    assert_int_equal(image_format_of("-", 16, &fmt, &e), 0);
     assert_int_equal(fmt, IMAGE_PNG16);
 }
 

@@ -51,8 +51,8 @@ static void run_config(const char *config_path, int n, unsigned char **out)
     for (int i = 0; i < n; i++) {
         char path[128];
         snprintf(path, sizeof path, "%s/frame_%04d.png", out_dir, i + 1);
-        char err[256];
-        assert_int_equal(png_read_rgba8(path, 4096, &width, &height, &out[i], err, sizeof err), 0);
+        struct error err;
+        assert_int_equal(png_read_rgba8(path, 4096, &width, &height, &out[i], &err), 0);
         assert_int_equal(width, config.kiosk.width);
         assert_int_equal(height, config.kiosk.height);
         unlink(path);

@@ -199,11 +199,12 @@ static void run_headless_kiosk(void)
     print_file(log_path, "headless log: ");
     unlink(log_path);
     assert_int_equal(rc, 0);
-    char frame_path[192], err[256];
+    char frame_path[192];
+    struct error err;
     snprintf(frame_path, sizeof frame_path, "%s/frame_0001.png", frames_dir);
     int w = 0, h = 0;
-    if (png_read_rgba8(frame_path, 4096, &w, &h, &headless_frame, err, sizeof err) != 0)
-        fail_msg("%s", err);
+    if (png_read_rgba8(frame_path, 4096, &w, &h, &headless_frame, &err) != 0)
+        fail_msg("%s", err.message);
     unlink(frame_path);
     assert_int_equal(w, FRAME_WIDTH);
     assert_int_equal(h, FRAME_HEIGHT);
@@ -366,16 +367,17 @@ static void keep_pictures(void)
         memcpy(rgba + i * 4, window_pixels + i * 3, 3);
         rgba[i * 4 + 3] = 255;
     }
-    char window_png[160], headless_png[160], err[256];
+    char window_png[160], headless_png[160];
+    struct error err;
     snprintf(window_png, sizeof window_png, "%s/window.png", work_dir);
     snprintf(headless_png, sizeof headless_png, "%s/headless.png", work_dir);
-    if (png_write_rgba8(window_png, FRAME_WIDTH, FRAME_HEIGHT, rgba, 1, err, sizeof err) == 0 &&
-        png_write_rgba8(headless_png, FRAME_WIDTH, FRAME_HEIGHT, headless_frame, 1, err, sizeof err) == 0) {
+    if (png_write_rgba8(window_png, FRAME_WIDTH, FRAME_HEIGHT, rgba, 1, &err) == 0 &&
+        png_write_rgba8(headless_png, FRAME_WIDTH, FRAME_HEIGHT, headless_frame, 1, &err) == 0) {
         keep_work_dir = 1;
         print_message("kept for comparison: %s and %s (the kiosk's files stay in %s)\n", window_png, headless_png,
                       work_dir);
     } else {
-        print_message("%s\n", err);
+        print_message("%s\n", err.message);
     }
     free(rgba);
 }

@@ -243,18 +243,20 @@ static const char *dump_header(const char *name, uint32_t width, uint32_t height
 static void test_dump_header_limits(void **state)
 {
     struct dump d;
-    char err[512];
+    struct error e;
     (void)state;
     /* both sides allowed, their product not: refused on the header alone */
-    assert_int_equal(dump_read(dump_header("square.dump", 4096, 4096), &d, err, sizeof err), -1);
-    assert_contains(err, "unsupported dump");
-    assert_contains(err, "8388608 pixels");
+    assert_int_equal(dump_read(dump_header("square.dump", 4096, 4096), &d, &e), -1);
+    assert_contains(e.message, "unsupported dump");
+    assert_contains(e.message, "8388608 pixels");
+    assert_int_equal(e.status, ERROR_INPUT);
     assert_null(d.records);
-    assert_int_equal(dump_read(dump_header("side.dump", 8193, 1), &d, err, sizeof err), -1);
-    assert_contains(err, "unsupported dump");
+    assert_int_equal(dump_read(dump_header("side.dump", 8193, 1), &d, &e), -1);
+    assert_contains(e.message, "unsupported dump");
     /* within the limits but without its records: refused before the records are allocated */
-    assert_int_equal(dump_read(dump_header("short.dump", 8192, 1024), &d, err, sizeof err), -1);
-    assert_contains(err, "truncated: 0 of 8388608 records");
+    assert_int_equal(dump_read(dump_header("short.dump", 8192, 1024), &d, &e), -1);
+    assert_contains(e.message, "truncated: 0 of 8388608 records");
+    assert_int_equal(e.status, ERROR_INPUT);
     assert_null(d.records);
 }
 

@@ -104,10 +104,10 @@ static void write_bytes(const char *path, const unsigned char *buf, size_t len)
 /* Reads PATH and checks it holds exactly W x H pixels PX. */
 static void assert_png_equals(const char *path, int w, int h, const unsigned char *px)
 {
-    char err[256] = "";
+    struct error e;
     int rw = 0, rh = 0;
     unsigned char *got = NULL;
-    assert_int_equal(png_read_rgba8(path, 4096, &rw, &rh, &got, err, sizeof err), 0);
+    assert_int_equal(png_read_rgba8(path, 4096, &rw, &rh, &got, &e), 0);
     assert_int_equal(rw, w);
     assert_int_equal(rh, h);
     assert_memory_equal(got, px, (size_t)w * h * 4);
@@ -117,11 +117,12 @@ static void assert_png_equals(const char *path, int w, int h, const unsigned cha
 static void test_round_trip(void **state)
 {
     (void)state;
-    char path[256], err[256] = "";
+    char path[256];
+    struct error e;
     path_in_tmp(path, sizeof path, "round.png");
     const int w = 37, h = 23; /* odd sizes catch row-stride mistakes */
     unsigned char *px = make_pattern(w, h, 1);
-    assert_int_equal(png_write_rgba8(path, w, h, px, 0, err, sizeof err), 0);
+    assert_int_equal(png_write_rgba8(path, w, h, px, 0, &e), 0);
     assert_png_equals(path, w, h, px);
     free(px);
     unlink(path);
@@ -131,16 +132,18 @@ static void test_round_trip(void **state)
 static void test_refuses_overwrite(void **state)
 {
     (void)state;
-    char path[256], err[256] = "";
+    char path[256];
+    struct error e;
     path_in_tmp(path, sizeof path, "keep.png");
     unsigned char *a = make_pattern(16, 8, 1), *b = make_pattern(16, 8, 2);
-    assert_int_equal(png_write_rgba8(path, 16, 8, a, 0, err, sizeof err), 0);
+    assert_int_equal(png_write_rgba8(path, 16, 8, a, 0, &e), 0);
     size_t len_before, len_after;
     unsigned char *before = read_bytes(path, &len_before);
 
-    assert_int_equal(png_write_rgba8(path, 16, 8, b, 0, err, sizeof err), -1);
-    assert_non_null(strstr(err, path));
-    assert_non_null(strstr(err, "--force"));
+    assert_int_equal(png_write_rgba8(path, 16, 8, b, 0, &e), -1);
+    assert_non_null(strstr(e.message, path));
+    assert_non_null(strstr(e.message, "--force"));
+    assert_int_equal(e.status, ERROR_INPUT);   /* the user's: the file is there */
 
     unsigned char *after = read_bytes(path, &len_after);
     assert_int_equal(len_after, len_before);
@@ -157,11 +160,12 @@ static void test_refuses_overwrite(void **state)
 static void test_overwrite_with_flag(void **state)
 {
     (void)state;
-    char path[256], err[256] = "";
+    char path[256];
+    struct error e;
     path_in_tmp(path, sizeof path, "replace.png");
     unsigned char *a = make_pattern(16, 8, 1), *b = make_pattern(20, 10, 2);
-    assert_int_equal(png_write_rgba8(path, 16, 8, a, 0, err, sizeof err), 0);
-    assert_int_equal(png_write_rgba8(path, 20, 10, b, 1, err, sizeof err), 0);
+    assert_int_equal(png_write_rgba8(path, 16, 8, a, 0, &e), 0);
+    assert_int_equal(png_write_rgba8(path, 20, 10, b, 1, &e), 0);
     assert_png_equals(path, 20, 10, b);
     assert_int_equal(count_entries(), 1);
     free(a);
@@ -172,11 +176,12 @@ static void test_overwrite_with_flag(void **state)
 static void test_truncated_and_corrupt(void **state)
 {
     (void)state;
-    char path[256], cut[256], err[256];
+    char path[256], cut[256];
+    struct error e;
     path_in_tmp(path, sizeof path, "whole.png");
     path_in_tmp(cut, sizeof cut, "cut.png");
     unsigned char *px = make_pattern(64, 64, 3);
-    assert_int_equal(png_write_rgba8(path, 64, 64, px, 0, err, sizeof err), 0);
+    assert_int_equal(png_write_rgba8(path, 64, 64, px, 0, &e), 0);
     size_t len;
     unsigned char *whole = read_bytes(path, &len);
     assert_true(len > 100);
@@ -187,10 +192,11 @@ static void test_truncated_and_corrupt(void **state)
         write_bytes(cut, whole, cuts[k]);
         int w = -7, h = -7;
         unsigned char *got = (unsigned char *)&w;
-        err[0] = '\0';
-        assert_int_equal(png_read_rgba8(cut, 4096, &w, &h, &got, err, sizeof err), -1);
-        assert_non_null(strstr(err, cut));
-        assert_non_null(strstr(err, cuts[k] < 8 ? "not a PNG" : "truncated"));
+        error_clear(&e);
+        assert_int_equal(png_read_rgba8(cut, 4096, &w, &h, &got, &e), -1);
+        assert_non_null(strstr(e.message, cut));
+        assert_non_null(strstr(e.message, cuts[k] < 8 ? "not a PNG" : "truncated"));
+        assert_int_equal(e.status, ERROR_INPUT);
         /* outputs untouched on failure */
         assert_int_equal(w, -7);
         assert_ptr_equal(got, (unsigned char *)&w);
@@ -204,8 +210,9 @@ static void test_truncated_and_corrupt(void **state)
     write_bytes(cut, bad, len);
     int w, h;
     unsigned char *got = NULL;
-    assert_int_equal(png_read_rgba8(cut, 4096, &w, &h, &got, err, sizeof err), -1);
+    assert_int_equal(png_read_rgba8(cut, 4096, &w, &h, &got, &e), -1);
     assert_null(got);
+    assert_int_equal(e.status, ERROR_INPUT);
 
     free(bad);
     free(whole);
@@ -217,41 +224,51 @@ static void test_truncated_and_corrupt(void **state)
 static void test_not_png(void **state)
 {
     (void)state;
-    char path[256], err[256] = "";
+    char path[256];
+    struct error e;
     path_in_tmp(path, sizeof path, "scene.txt");
     const char text[] = "[camera]\nposition = 0 0 10\nlook_at = 0 0 0\n";
     write_bytes(path, (const unsigned char *)text, sizeof text - 1);
     int w, h;
     unsigned char *got = NULL;
-    assert_int_equal(png_read_rgba8(path, 4096, &w, &h, &got, err, sizeof err), -1);
+    assert_int_equal(png_read_rgba8(path, 4096, &w, &h, &got, &e), -1);
     assert_null(got);
-    assert_non_null(strstr(err, path));
-    assert_non_null(strstr(err, "not a PNG"));
+    assert_non_null(strstr(e.message, path));
+    assert_non_null(strstr(e.message, "not a PNG"));
+    assert_int_equal(e.status, ERROR_INPUT);   /* the user's file, not the machine */
     unlink(path);
 
     path_in_tmp(path, sizeof path, "absent.png");
-    assert_int_equal(png_read_rgba8(path, 4096, &w, &h, &got, err, sizeof err), -1);
-    assert_non_null(strstr(err, "No such file"));
+    assert_int_equal(png_read_rgba8(path, 4096, &w, &h, &got, &e), -1);
+    assert_non_null(strstr(e.message, "No such file"));
+    assert_int_equal(e.status, ERROR_INPUT);
+
+    /* a directory where the image should be */
+    assert_int_equal(png_read_rgba8(tmpdir, 4096, &w, &h, &got, &e), -1);
+    assert_non_null(strstr(e.message, "directory"));
+    assert_int_equal(e.status, ERROR_INPUT);
 }
 
 static void test_max_size(void **state)
 {
     (void)state;
-    char path[256], err[256] = "";
+    char path[256];
+    struct error e;
     path_in_tmp(path, sizeof path, "big.png");
     unsigned char *px = make_pattern(64, 32, 4);
-    assert_int_equal(png_write_rgba8(path, 64, 32, px, 0, err, sizeof err), 0);
+    assert_int_equal(png_write_rgba8(path, 64, 32, px, 0, &e), 0);
 
     int w, h;
     unsigned char *got = NULL;
-    assert_int_equal(png_read_rgba8(path, 63, &w, &h, &got, err, sizeof err), -1);
+    assert_int_equal(png_read_rgba8(path, 63, &w, &h, &got, &e), -1);
     assert_null(got);
-    assert_non_null(strstr(err, path));
-    assert_non_null(strstr(err, "63"));
-    assert_non_null(strstr(err, "64 x 32"));
+    assert_non_null(strstr(e.message, path));
+    assert_non_null(strstr(e.message, "63"));
+    assert_non_null(strstr(e.message, "64 x 32"));
+    assert_int_equal(e.status, ERROR_INPUT);
 
     /* The limit applies to each side, and is inclusive. */
-    assert_int_equal(png_read_rgba8(path, 64, &w, &h, &got, err, sizeof err), 0);
+    assert_int_equal(png_read_rgba8(path, 64, &w, &h, &got, &e), 0);
     assert_int_equal(w, 64);
     assert_int_equal(h, 32);
     free(got);
@@ -262,15 +279,17 @@ static void test_max_size(void **state)
 static void test_missing_directory(void **state)
 {
     (void)state;
-    char path[256], err[512] = "", want[600];
+    char path[256], want[600];
+    struct error e;
     path_in_tmp(path, sizeof path, "no/such/dir/out.png");
     unsigned char *px = make_pattern(4, 4, 5);
-    assert_int_equal(png_write_rgba8(path, 4, 4, px, 1, err, sizeof err), -1);
+    assert_int_equal(png_write_rgba8(path, 4, 4, px, 1, &e), -1);
     /* the message names the directory that is missing */
     char dir[256];
     snprintf(dir, sizeof dir, "%.*s", (int)(strrchr(path, '/') - path), path);
     snprintf(want, sizeof want, "cannot write %s: directory %s: No such file or directory", path, dir);
-    assert_string_equal(err, want);
+    assert_string_equal(e.message, want);
+    assert_int_equal(e.status, ERROR_INPUT);
     assert_int_equal(count_entries(), 0);
     free(px);
 }
@@ -296,32 +315,34 @@ static void write_format(const char *path, int w, int h, png_uint_32 format, con
 static void test_image_cache(void **state)
 {
     (void)state;
-    char path[256], err[256] = "";
+    char path[256];
+    struct error e;
     path_in_tmp(path, sizeof path, "kept.png");
     unsigned char *px = make_pattern(20, 10, 2), *other = make_pattern(20, 10, 3);
-    assert_int_equal(png_write_rgba8(path, 20, 10, px, 0, err, sizeof err), 0);
+    assert_int_equal(png_write_rgba8(path, 20, 10, px, 0, &e), 0);
     int w, h, owned;
     const unsigned char *got;
     image_cache_keep(1);
-    assert_int_equal(image_read(path, 4096, &w, &h, &got, &owned, err, sizeof err), 0);
+    assert_int_equal(image_read(path, 4096, &w, &h, &got, &owned, &e), 0);
     assert_int_equal(owned, 0);
     assert_memory_equal(got, px, 20 * 10 * 4);
     /* cut short on disk: still the kept pixels */
     assert_int_equal(truncate(path, 40), 0);
-    assert_int_equal(image_read(path, 4096, &w, &h, &got, &owned, err, sizeof err), 0);
+    assert_int_equal(image_read(path, 4096, &w, &h, &got, &owned, &e), 0);
     assert_int_equal(w, 20);
     assert_int_equal(h, 10);
     assert_memory_equal(got, px, 20 * 10 * 4);
-    assert_int_equal(image_read(path, 19, &w, &h, &got, &owned, err, sizeof err), -1);
-    assert_non_null(strstr(err, "20 x 10"));
+    assert_int_equal(image_read(path, 19, &w, &h, &got, &owned, &e), -1);
+    assert_non_null(strstr(e.message, "20 x 10"));
+    assert_int_equal(e.status, ERROR_INPUT);
     /* removed, then another image under the same name: still the first */
     unlink(path);
-    assert_int_equal(png_write_rgba8(path, 20, 10, other, 0, err, sizeof err), 0);
-    assert_int_equal(image_read(path, 4096, &w, &h, &got, &owned, err, sizeof err), 0);
+    assert_int_equal(png_write_rgba8(path, 20, 10, other, 0, &e), 0);
+    assert_int_equal(image_read(path, 4096, &w, &h, &got, &owned, &e), 0);
     assert_memory_equal(got, px, 20 * 10 * 4);
     /* not kept: the file as it is now, owned by the caller */
     image_cache_release();
-    assert_int_equal(image_read(path, 4096, &w, &h, &got, &owned, err, sizeof err), 0);
+    assert_int_equal(image_read(path, 4096, &w, &h, &got, &owned, &e), 0);
     assert_int_equal(owned, 1);
     assert_memory_equal(got, other, 20 * 10 * 4);
     free((void *)got);

@@ -126,14 +126,15 @@ static void test_golden(void **state)
         static struct scene s;
         struct render_result r;
         struct dump d;
-        char path[256], err[256];
+        char path[256];
+        struct error err;
         int w, h;
         unsigned char *golden;
         load(&s, scenes[k], NULL);
         render(&s, "egl", &r, &d, NULL);
         snprintf(path, sizeof path, "tests/golden/%s.png", scenes[k]);
-        if (png_read_rgba8(path, 4096, &w, &h, &golden, err, sizeof err) != 0)
-            fail_msg("%s", err);
+        if (png_read_rgba8(path, 4096, &w, &h, &golden, &err) != 0)
+            fail_msg("%s", err.message);
         assert_int_equal(w, TEST_WIDTH);
         assert_int_equal(h, TEST_HEIGHT);
         double sum = 0;
