@@ -143,6 +143,82 @@ void consider(bool found, float t, vec3 normal, vec3 surface, float slot, inout 
     best.surface = closer ? surface : best.surface;
 }
 
+#if defined(SINGLE_PASS) && defined(ORBIT_HITS)
+// The single pass on exact orbits tests an object against a chord only where the two can meet.
+// Every chord of a ray joins two points of its orbit, which lies in the plane of e1 and e2 through
+// the mass, at angles phi_a < phi_b about the mass (phi from e1 towards e2) less than half a turn
+// apart: the chord stays in that plane, inside the wedge between the two angles. An object's
+// bounding ball cuts the plane in a disc; where the ball misses the plane, or the disc lies
+// outside the wedge (the disc is seen from the mass within +- asin(radius / distance) of its
+// centre's angle), no chord of that wedge can meet the object, and its test is skipped: the hits
+// are the ones the full tests find (tests/unit/test_orbit_render.c). The balls are taken a little
+// larger (CULL_MARGIN of their distance from the mass) than the objects, and the angles wider
+// (CULL_ANGLE_MARGIN), than a float rounding of the chords' points could move them.
+const float CULL_TURN = 6.28318530717959;
+const float CULL_MARGIN = 1e-4;
+const float CULL_ANGLE_MARGIN = 1e-4;
+float cull_start[BATCH_SIZE];   // per object: where its wedge starts, in [0, 2 pi)
+float cull_width[BATCH_SIZE];   // its width (beyond a turn: every angle); < 0: misses the plane
+float cull_phi_a;               // the chord being tested spans phi_a .. phi_b (set by the caller)
+float cull_phi_b;
+float cull_wedge_start;
+float cull_wedge_width;
+
+// The wedge of the ball (centre, radius) about the mass in the orbit's plane.
+void cull_wedge(orbit_ray ray, vec3 centre, float radius)
+{
+    vec3 from_mass = centre - u_model_center;
+    float distance = length(from_mass);
+    float r = radius + CULL_MARGIN * (distance + radius);
+    vec3 normal = cross(ray.e1, ray.e2);
+    float off_plane = dot(normal, from_mass);
+    float x = dot(ray.e1, from_mass);
+    float y = dot(ray.e2, from_mass);
+    float in_plane = sqrt(max(r * r - off_plane * off_plane, 0.0));
+    float rho = sqrt(x * x + y * y);
+    float half_width = asin(min(in_plane / max(rho, 1e-30), 1.0)) + CULL_ANGLE_MARGIN;
+    cull_wedge_start = mod(atan(y, x) - half_width, CULL_TURN);
+    cull_wedge_width = abs(off_plane) > r ? -1.0 : rho <= in_plane ? 2.0 * CULL_TURN : 2.0 * half_width;
+}
+
+// Whether the chord phi_a .. phi_b can meet object `slot`.
+bool cull_meets(int slot)
+{
+    float span = cull_phi_b - cull_phi_a;
+    float from_start = mod(cull_phi_a - cull_start[slot], CULL_TURN);
+    bool overlaps = from_start <= cull_width[slot] || from_start + span >= CULL_TURN;
+    return span >= 0.5 * CULL_TURN || (cull_width[slot] >= 0.0 && overlaps);
+}
+
+// Each object's wedge for this ray: its bounding ball's (BATCH_TESTS, each test replaced by it).
+void cull_prepare(orbit_ray ray)
+{
+#undef TEST_SPHERE
+#undef TEST_DISK
+#undef TEST_RECT
+#undef TEST_TRIANGLE
+#define CULL_KEEP(n) cull_start[n] = cull_wedge_start; cull_width[n] = cull_wedge_width;
+#define TEST_SPHERE(n) { vec4 g0 = GEOMETRY(n, 0); cull_wedge(ray, g0.xyz, g0.w); CULL_KEEP(n) }
+#define TEST_DISK(n) { vec4 g0 = GEOMETRY(n, 0); cull_wedge(ray, g0.xyz, g0.w); CULL_KEEP(n) }
+#define TEST_RECT(n) { vec4 g0 = GEOMETRY(n, 0); vec3 g1 = GEOMETRY(n, 1).xyz, g2 = GEOMETRY(n, 2).xyz; \
+                       cull_wedge(ray, g0.xyz, max(length(g1 + g2), length(g1 - g2))); CULL_KEEP(n) }
+#define TEST_TRIANGLE(n) { vec3 v0 = GEOMETRY(n, 0).xyz, v1 = GEOMETRY(n, 1).xyz, v2 = GEOMETRY(n, 2).xyz; \
+                           vec3 c = (v0 + v1 + v2) / 3.0; \
+                           cull_wedge(ray, c, max(length(v0 - c), max(length(v1 - c), length(v2 - c)))); \
+                           CULL_KEEP(n) }
+    BATCH_TESTS
+#undef TEST_SPHERE
+#undef TEST_DISK
+#undef TEST_RECT
+#undef TEST_TRIANGLE
+#undef CULL_KEEP
+}
+#define TEST_SPHERE(slot) if (cull_meets(slot)) TEST_SPHERE_FULL(slot)
+#define TEST_DISK(slot) if (cull_meets(slot)) TEST_DISK_FULL(slot)
+#define TEST_RECT(slot) if (cull_meets(slot)) TEST_RECT_FULL(slot)
+#define TEST_TRIANGLE(slot) if (cull_meets(slot)) TEST_TRIANGLE_FULL(slot)
+#endif
+
 // Every object of the batch against chord a -> b of segment `segment`: best keeps the closest hit
 // (a closer one replaces it, in scene order, exactly as one pass per object would).
 void intersect_chord(vec3 a, vec3 b, float segment, inout candidate best)
@@ -278,7 +354,15 @@ void orbit_refine_hit(orbit_ray ray, float s_a, float s_b, float segment, inout 
         vec3 m = orbit_point(ray, q, s_m);
         candidate first = candidate(none, 0.0, no_slot, vec3(0.0), vec3(0.0));
         candidate second = candidate(none, 0.0, no_slot, vec3(0.0), vec3(0.0));
+#if defined(SINGLE_PASS) && defined(ORBIT_HITS)
+        cull_phi_a = lo * ray.phi_end;
+        cull_phi_b = s_m * ray.phi_end;
+#endif
         intersect_chord(a, m, segment, first);
+#if defined(SINGLE_PASS) && defined(ORBIT_HITS)
+        cull_phi_a = s_m * ray.phi_end;
+        cull_phi_b = hi * ray.phi_end;
+#endif
         intersect_chord(m, b, segment, second);
         bool in_first = first.slot >= 0.0;
         bool in_second = !in_first && second.slot >= 0.0;

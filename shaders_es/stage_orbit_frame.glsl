@@ -35,6 +35,7 @@ void main()
 void main()
 {
     orbit_ray ray = orbit_ray_of();
+    cull_prepare(ray);
     vec3 a = u_camera_position;
     vec3 hit_a = a;
     vec3 hit_b = a;
@@ -81,6 +82,8 @@ void main()
         s = s1;
         b = p1;
         steps = k + 1.0;
+        cull_phi_a = s_a * ray.phi_end;
+        cull_phi_b = s * ray.phi_end;
         intersect_chord(a, b, k, best);
         hit_a = a;
         hit_b = b;
@@ -105,6 +108,8 @@ void main()
         leaves = true;
         b = orbit_chord_point(ray, q, s, leaves);
         steps = leave_k + 1.0;
+        cull_phi_a = leave_s * ray.phi_end;
+        cull_phi_b = s * ray.phi_end;
         intersect_chord(leave_a, b, leave_k, best);
         hit_a = leave_a;
         hit_b = b;

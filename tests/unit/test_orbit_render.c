@@ -88,6 +88,109 @@ static void test_single_pass_bit_identical(void **state)
     }
 }
 
+/* The image of the single pass alone (only the image read: its colour drawn in the same pass), as
+ * the kiosk draws it. */
+static void render_image_only(const struct scene *s, struct render_result *image)
+{
+    char err[2048];
+    struct error gl_err;
+    struct renderer *r = renderer_create(hc_context(), s, &gl_err);
+    if (!r)
+        fail_msg("renderer: %s", gl_err.message);
+    renderer_set_reads(r, RENDER_READ_IMAGE);
+    if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, err, sizeof err) != 0 ||
+        renderer_read(r, image, RENDER_READ_IMAGE, err, sizeof err) != 0)
+        fail_msg("render: %s", err);
+    renderer_destroy(r);
+}
+
+/* The single pass skips an object's test on a chord whose wedge about the mass its bounding ball
+ * cannot reach (cull_meets in stage_intersect.glsl): a ring of small spheres around the hole at
+ * every angle and height, a triangle, a rectangle and a disk across the orbit planes, seen from
+ * near the hole so that rays wind around it (the wedge tests on orbits that sweep more than a
+ * turn), at rest and moving. Hits, state and image, and the image alone, must be the multipass
+ * scheme's (which tests every object on every chord), bit for bit, with hits on every object. */
+static void test_single_pass_culling(void **state)
+{
+    (void)state;
+    static const struct {
+        vec3d camera, look_at;
+        vec3d velocity;
+    } cases[] = {
+        {{0.0, 1.0, 9.0}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}},
+        /* just outside the photon sphere, looking along it: orbits wind around the hole */
+        {{2.0, 0.3, 3.0}, {-3.0, 0.0, 3.0}, {0.0, 0.0, 0.0}},
+        {{0.0, 1.0, 9.0}, {0.0, 0.0, 0.0}, {0.4, 0.2, -0.5}},
+    };
+    enum { BALLS = 10 };
+    long seen_in_all[BALLS + 3] = {0};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        static struct scene s;
+        orbit_hole(&s, 40.0);
+        s.render.width = 96;
+        s.render.height = 72;
+        s.camera.position = cases[k].camera;
+        s.camera.look_at = cases[k].look_at;
+        s.camera.up = v3(0.0, 1.0, 0.0);
+        s.camera.fov_deg = 70.0;
+        s.observer.velocity = cases[k].velocity;
+        for (int i = 0; i < BALLS; i++) {
+            char name[16];
+            snprintf(name, sizeof name, "ball%d", i);
+            struct object *o = hc_add_object(&s, PRIM_SPHERE, name);
+            double a = 2.0 * 3.14159265358979 * i / BALLS;
+            o->center = v3(5.0 * cos(a), 1.5 * sin(2.0 * a), 5.0 * sin(a));
+            o->radius = 0.3 + 0.05 * i;
+        }
+        struct object *sail = hc_add_object(&s, PRIM_TRIANGLE, "sail");
+        sail->vertex[0] = v3(-3.0, -2.0, -7.0);
+        sail->vertex[1] = v3(2.0, -2.5, -8.0);
+        sail->vertex[2] = v3(0.0, 3.0, -7.5);
+        struct object *wall = hc_add_object(&s, PRIM_RECT, "wall");
+        wall->center = v3(8.0, 0.0, -2.0);
+        wall->axis_u = v3(0.0, 0.0, 3.0);
+        wall->axis_v = v3(0.0, 2.5, 0.0);
+        struct object *disk = hc_add_object(&s, PRIM_DISK, "disk");
+        disk->center = v3(0.0, 0.0, 0.0);
+        disk->normal = v3(0.1, 1.0, 0.0);
+        disk->inner_radius = 3.5;
+        disk->radius = 4.2;
+        hc_validate(&s);
+        struct hc_gpu single, multi;
+        s.render.pipeline = PIPELINE_SINGLE;
+        hc_gpu_render(&s, &single);
+        s.render.pipeline = PIPELINE_MULTIPASS;
+        hc_gpu_render(&s, &multi);
+        char what[64];
+        snprintf(what, sizeof what, "culling, case %zu", k);
+        expect_same_dumps(what, &single, &multi);
+        struct render_result image;
+        s.render.pipeline = PIPELINE_SINGLE;
+        render_image_only(&s, &image);
+        assert_memory_equal(image.rgba, multi.res.rgba, (size_t)s.render.width * s.render.height * 4);
+        render_result_free(&image);
+        long hits[BALLS + 3] = {0}, seen = 0;
+        for (long i = 0; i < (long)s.render.width * s.render.height; i++) {
+            int o = multi.dump.records[i].outcome;
+            if (o >= 0 && o < BALLS + 3)
+                hits[o]++;
+        }
+        for (int o = 0; o < BALLS + 3; o++) {
+            seen += hits[o] > 0;
+            seen_in_all[o] += hits[o];
+        }
+        print_message("%s: %ld of %d objects seen (sail %ld, wall %ld, disk %ld pixels)\n", what, seen, BALLS + 3,
+                      hits[BALLS], hits[BALLS + 1], hits[BALLS + 2]);
+        /* the culling had objects to keep and to skip on the same rays */
+        assert_true(seen >= 2);
+        hc_gpu_free(&single);
+        hc_gpu_free(&multi);
+    }
+    /* every object was met by some ray of some case */
+    for (int o = 0; o < BALLS + 3; o++)
+        assert_true(seen_in_all[o] > 0);
+}
+
 /* ---- 2. the photon sphere ---- */
 
 /* A static observer at r = 30 M looks along launch angles of b = b_c (1 + eps) (1x1 images): b < b_c
@@ -427,6 +530,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_single_pass_bit_identical),
+        cmocka_unit_test(test_single_pass_culling),
         cmocka_unit_test(test_photon_sphere),
         cmocka_unit_test(test_sky_at_infinity),
         cmocka_unit_test(test_observers),
