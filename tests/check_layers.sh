@@ -6,7 +6,8 @@
 cd "$(dirname "$0")/.." || exit 1
 allowed() {
     case $1 in
-        io | physics | gl) echo "" ;;
+        io | physics) echo "" ;;
+        gl) echo "io" ;;
         conf) echo "io" ;;
         scene) echo "io physics conf" ;;
         results) echo "io physics scene" ;;

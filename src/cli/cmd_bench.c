@@ -185,9 +185,10 @@ int cmd_bench(int argc, char **argv)
     if (prepared != EXIT_OK)
         return prepared;
     char err[2048];
-    b.ctx = gl_context_create(backend, err, sizeof err);
+    struct error ge;
+    b.ctx = gl_context_create(backend, &ge);
     if (!b.ctx) {
-        fprintf(stderr, "bentray bench: %s\n", err);
+        fprintf(stderr, "bentray bench: %s\n", ge.message);
         return EXIT_RUNTIME;
     }
     snprintf(b.backend, sizeof b.backend, "%s", b.ctx->backend);

@@ -80,20 +80,20 @@ int cmd_info(int argc, char **argv)
     }
     int failures = 0, shown = 0;
     for (int i = 0; list[i]; i++) {
-        char err[1024];
+        struct error e;
         if (list == all && !gl_backend_built(list[i])) {
             printf("back-end:        %s (not built in)\n\n", list[i]);
             continue;
         }
-        struct gl_context *ctx = gl_context_create(list[i], err, sizeof err);
+        struct gl_context *ctx = gl_context_create(list[i], &e);
         if (!ctx) {
-            printf("back-end:        %s: unavailable: %s\n\n", list[i], err);
+            printf("back-end:        %s: unavailable: %s\n\n", list[i], e.message);
             failures++;
             continue;
         }
         struct gl_caps caps;
-        if (gl_caps_probe(&caps, ctx, err, sizeof err) != 0) {
-            printf("back-end:        %s: probe failed: %s\n\n", list[i], err);
+        if (gl_caps_probe(&caps, ctx, &e) != 0) {
+            printf("back-end:        %s: probe failed: %s\n\n", list[i], e.message);
             failures++;
         } else {
             print_caps(&caps);

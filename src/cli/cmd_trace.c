@@ -104,12 +104,12 @@ static int trace_gpu(const struct common_options *o, const struct scene *s, long
 {
     char err[2048];
     int rc = EXIT_RUNTIME;
-    struct gl_context *ctx = gl_context_create(o->backend, err, sizeof err);
+    struct error e;
+    struct gl_context *ctx = gl_context_create(o->backend, &e);
     if (!ctx) {
-        fprintf(stderr, "bentray trace: %s\n", err);
+        fprintf(stderr, "bentray trace: %s\n", e.message);
         return EXIT_RUNTIME;
     }
-    struct error e;
     struct renderer *r = renderer_create(ctx, s, &e);
     struct render_result res = {0};
     if (s->render.pipeline == PIPELINE_SINGLE)

@@ -84,9 +84,12 @@ struct screen *screen_open_offscreen(struct gl_context *gl, int width, int heigh
 
 struct screen *screen_open_headless(int width, int height, const char *gl_backend, char *err, size_t errlen)
 {
-    struct gl_context *gl = gl_context_create(gl_backend, err, errlen);
-    if (!gl)
+    struct error ge;
+    struct gl_context *gl = gl_context_create(gl_backend, &ge);
+    if (!gl) {
+        snprintf(err, errlen, "%s", ge.message);
         return NULL;
+    }
     struct screen *s = offscreen(gl, 1, width, height, err, errlen);
     if (!s)
         gl_context_destroy(gl);

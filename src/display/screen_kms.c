@@ -354,8 +354,11 @@ static int kms_present(struct screen *s, char *err, size_t errlen)
     /* A flip that timed out last time may have completed since: its buffer is needed back. */
     if (k->flip_bo && wait_flip(k, err, errlen) != 0)
         return -1;
-    if (egl_swap(s->gl, err, errlen) != 0)
+    struct error ge;
+    if (egl_swap(s->gl, &ge) != 0) {
+        snprintf(err, errlen, "%s", ge.message);
         return -1;
+    }
     struct gbm_bo *bo = gbm_surface_lock_front_buffer(k->surface);
     if (!bo) {
         say(err, errlen, "%s: no front buffer after the swap (gbm_surface_lock_front_buffer)", k->path);
@@ -502,15 +505,22 @@ static int init_egl_gbm(struct screen *s, struct kms *k, char *err, size_t errle
                                             "EGL_MESA_platform_gbm", "install Mesa's EGL (libegl-mesa0)"};
     char version_label[48];
     snprintf(version_label, sizeof version_label, "GBM, %.32s", k->path);
-    s->gl = egl_open(&gbm, k->gbm, k->path, version_label, err, errlen);
-    if (!s->gl)
+    struct error ge;
+    s->gl = egl_open(&gbm, k->gbm, k->path, version_label, &ge);
+    if (!s->gl) {
+        snprintf(err, errlen, "%s", ge.message);
         return -1;
+    }
     EGLConfig config;
     if (config_for_format(egl_display(s->gl), GBM_FORMAT_XRGB8888, &config) != 0) {
         say(err, errlen, "%s: no EGL config renders XRGB8888 for scan-out", k->path);
         return -1;
     }
-    return egl_attach_window(s->gl, config, k->surface, err, errlen);
+    if (egl_attach_window(s->gl, config, k->surface, &ge) != 0) {
+        snprintf(err, errlen, "%s", ge.message);
+        return -1;
+    }
+    return 0;
 }
 
 struct screen *screen_open_kms(const struct kiosk_display *d, char *err, size_t errlen)

@@ -114,7 +114,12 @@ static int x11_events(struct screen *s, double now, struct input_event *out, int
 
 static int x11_present(struct screen *s, char *err, size_t errlen)
 {
-    return egl_swap(s->gl, err, errlen);
+    struct error ge;
+    if (egl_swap(s->gl, &ge) != 0) {
+        snprintf(err, errlen, "%s", ge.message);
+        return -1;
+    }
+    return 0;
 }
 
 /* The window in the visual of the EGL config, an ES2 context current on it. The window is made
@@ -202,8 +207,11 @@ static int attach_window(struct screen *s, struct x11_window *w, int vsync, char
     exhibit_window(w->dpy, w->window, width, height);
     XSetWMProtocols(w->dpy, w->window, &w->wm_delete_window, 1);
     XMapWindow(w->dpy, w->window);
-    if (egl_attach_window(s->gl, config, &w->window, err, errlen) != 0)
+    struct error ge;
+    if (egl_attach_window(s->gl, config, &w->window, &ge) != 0) {
+        snprintf(err, errlen, "%s", ge.message);
         return -1;
+    }
     /* Advisory: a server without vertical blank (Xvfb) may refuse it, and frames still show. */
     eglSwapInterval(display, vsync ? 1 : 0);
     return 0;
@@ -244,7 +252,10 @@ struct screen *screen_open_x11(const struct kiosk_display *d, int width, int hei
     w->wm_delete_window = XInternAtom(w->dpy, "WM_DELETE_WINDOW", False);
     static const struct egl_platform x11 = {EGL_PLATFORM_X11_KHR, "X11", "the X display", "EGL_KHR_platform_x11",
                                             "EGL_EXT_platform_x11", "install Mesa's EGL (libegl-mesa0)"};
-    s->gl = egl_open(&x11, w->dpy, "x11", "X11", err, errlen);
+    struct error ge;
+    s->gl = egl_open(&x11, w->dpy, "x11", "X11", &ge);
+    if (!s->gl)
+        snprintf(err, errlen, "%s", ge.message);
     if (!s->gl || attach_window(s, w, d->vsync, err, errlen) != 0) {
         x11_close(s);
         return NULL;

@@ -199,8 +199,8 @@ static void probe_mrt(struct gl_caps *c, const struct float_format *f)
     }
     struct shader_target t = c->shader;
     t.draw_buffers_ext = c->is_es;
-    char err[1024];
-    GLuint prog = shader_program_build(&t, "#define PROBE_MRT 1\n", vs, fs, err, sizeof err);
+    struct error err;
+    GLuint prog = shader_program_build(&t, "#define PROBE_MRT 1\n", vs, fs, &err);
     if (!prog) {
         snprintf(c->mrt_why, sizeof c->mrt_why, "a shader writing gl_FragData[1] does not compile");
         return;
@@ -303,7 +303,7 @@ static void probe_query(struct gl_caps *c, GLuint prog)
     }
 }
 
-int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, char *err, size_t errlen)
+int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, struct error *e)
 {
     static const char *const vs[] = {"quad_vertex.glsl", NULL};
     static const char *const fs[] = {"probe_fragment.glsl", NULL};
@@ -350,11 +350,9 @@ int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, char *err, si
     c->shader.fragment_highp = c->fragment_highp;
     c->shader.draw_buffers_ext = 0;
 
-    if (quad_init() != 0) {
-        snprintf(err, errlen, "cannot create the vertex buffer of the full-screen quad");
-        return -1;
-    }
-    GLuint prog = shader_program_build(&c->shader, NULL, vs, fs, err, errlen);
+    if (quad_init() != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "cannot create the vertex buffer of the full-screen quad");
+    GLuint prog = shader_program_build(&c->shader, NULL, vs, fs, e);
     if (!prog)
         return -1;
     list_candidates(c);

@@ -56,8 +56,9 @@ int gl_fault(const char *name);
 /* "GL_FRAMEBUFFER_UNSUPPORTED" and the like, for messages. */
 const char *gl_framebuffer_status_name(GLenum status);
 
-/* Probe the current context. Returns 0; the probe itself failing (no shader compiles) gives -1. */
-int gl_caps_probe(struct gl_caps *caps, const struct gl_context *ctx, char *err, size_t errlen);
+/* Probe the current context. Returns 0; the probe itself failing (no shader compiles) gives -1
+ * with E filled (ERROR_INPUT for a shader file under --shader-dir that cannot be read). */
+int gl_caps_probe(struct gl_caps *caps, const struct gl_context *ctx, struct error *e);
 /* The best working format of the class (fp32 or fp16), or NULL. */
 const struct float_format *caps_format(const struct gl_caps *caps, int fp32);
 

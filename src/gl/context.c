@@ -19,13 +19,13 @@ static struct gl_context *current;
 struct gl_context *gl_context_current(void) { return current; }
 void gl_context_now_current(struct gl_context *ctx) { current = ctx; }
 
-static struct gl_context *with_api(struct gl_context *ctx, char *err, size_t errlen)
+static struct gl_context *with_api(struct gl_context *ctx, struct error *e)
 {
     if (!ctx)
         return NULL;
     const char *missing = gl_api_load(ctx->get_proc);
     if (missing) {
-        snprintf(err, errlen, "%s: the GL entry point %s is missing", ctx->backend, missing);
+        error_set(e, ERROR_RUNTIME, NULL, "%s: the GL entry point %s is missing", ctx->backend, missing);
         ctx->destroy(ctx);
         return NULL;
     }
@@ -33,25 +33,27 @@ static struct gl_context *with_api(struct gl_context *ctx, char *err, size_t err
     return ctx;
 }
 
-struct gl_context *gl_context_create(const char *name, char *err, size_t errlen)
+struct gl_context *gl_context_create(const char *name, struct error *e)
 {
     if (strcmp(name, "egl") == 0)
-        return with_api(init_egl_surfaceless(err, errlen), err, errlen);
+        return with_api(init_egl_surfaceless(e), e);
     if (strcmp(name, "osmesa") == 0)
-        return with_api(init_osmesa(err, errlen), err, errlen);
+        return with_api(init_osmesa(e), e);
     if (strcmp(name, "auto") == 0) {
-        char egl_err[256];
-        struct gl_context *ctx = with_api(init_egl_surfaceless(egl_err, sizeof egl_err), egl_err, sizeof egl_err);
+        struct error egl_err;
+        struct gl_context *ctx = with_api(init_egl_surfaceless(&egl_err), &egl_err);
         if (ctx)
             return ctx;
-        char os_err[256];
-        ctx = with_api(init_osmesa(os_err, sizeof os_err), os_err, sizeof os_err);
+        struct error os_err;
+        ctx = with_api(init_osmesa(&os_err), &os_err);
         if (ctx)
             return ctx;
-        snprintf(err, errlen, "no headless GL back-end works: %s; %s", egl_err, os_err);
+        /* each reason cut at 255 characters, so that both fit in one message */
+        error_set(e, ERROR_RUNTIME, NULL, "no headless GL back-end works: %.255s; %.255s", egl_err.message,
+                  os_err.message);
         return NULL;
     }
-    snprintf(err, errlen, "unknown back-end '%s' (expected egl, osmesa or auto)", name);
+    error_set(e, ERROR_INPUT, NULL, "unknown back-end '%s' (expected egl, osmesa or auto)", name);
     return NULL;
 }
 

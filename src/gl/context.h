@@ -3,6 +3,7 @@
 #ifndef BT_CONTEXT_H
 #define BT_CONTEXT_H
 #include <stddef.h>
+#include "io/error.h"
 
 enum shading_dialect {
     DIALECT_GLSL_ES_100,   /* GLES2/3 contexts: shaders_es/ as written */
@@ -28,12 +29,13 @@ struct gl_context {
 struct gl_context *gl_context_current(void);
 void gl_context_now_current(struct gl_context *ctx);
 
-/* Each returns NULL with a message in err when the back-end is unavailable. */
-struct gl_context *init_egl_surfaceless(char *err, size_t errlen);
-struct gl_context *init_osmesa(char *err, size_t errlen);
+/* Each returns NULL with E filled (ERROR_RUNTIME) when the back-end is unavailable. */
+struct gl_context *init_egl_surfaceless(struct error *e);
+struct gl_context *init_osmesa(struct error *e);
 
-/* name: "egl", "osmesa" or "auto" (EGL first, then OSMesa). Loads the GL entry points too. */
-struct gl_context *gl_context_create(const char *name, char *err, size_t errlen);
+/* name: "egl", "osmesa" or "auto" (EGL first, then OSMesa). Loads the GL entry points too. NULL
+ * with E filled: ERROR_INPUT for a name that is none of these, else ERROR_RUNTIME. */
+struct gl_context *gl_context_create(const char *name, struct error *e);
 void gl_context_destroy(struct gl_context *ctx);
 /* Whether this build has the back-end at all. */
 int gl_backend_built(const char *name);

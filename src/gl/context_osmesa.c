@@ -31,7 +31,7 @@ static void osmesa_destroy(struct gl_context *ctx)
     free(ctx);
 }
 
-struct gl_context *init_osmesa(char *err, size_t errlen)
+struct gl_context *init_osmesa(struct error *e)
 {
     /* Compatibility profile: GLSL 1.30 keeps gl_FragColor, gl_FragData, texture2D and
      * attribute/varying, so the GLSL ES 1.00 source needs only a preamble. */
@@ -39,7 +39,7 @@ struct gl_context *init_osmesa(char *err, size_t errlen)
                                   OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, 0};
     OSMesaContext c = OSMesaCreateContextAttribs(attribs, NULL);
     if (!c) {
-        snprintf(err, errlen, "OSMesa: cannot create a compatibility-profile context");
+        error_set(e, ERROR_RUNTIME, NULL, "OSMesa: cannot create a compatibility-profile context");
         return NULL;
     }
     struct gl_context *ctx = calloc(1, sizeof *ctx);
@@ -48,7 +48,7 @@ struct gl_context *init_osmesa(char *err, size_t errlen)
         free(ctx);
         free(priv);
         OSMesaDestroyContext(c);
-        snprintf(err, errlen, "OSMesa: out of memory");
+        error_set(e, ERROR_RUNTIME, NULL, "OSMesa: out of memory");
         return NULL;
     }
     priv->context = c;
@@ -56,7 +56,7 @@ struct gl_context *init_osmesa(char *err, size_t errlen)
         free(ctx);
         free(priv);
         OSMesaDestroyContext(c);
-        snprintf(err, errlen, "OSMesa: cannot make the context current");
+        error_set(e, ERROR_RUNTIME, NULL, "OSMesa: cannot make the context current");
         return NULL;
     }
     ctx->backend = "osmesa";
@@ -70,9 +70,10 @@ struct gl_context *init_osmesa(char *err, size_t errlen)
     return ctx;
 }
 #else
-struct gl_context *init_osmesa(char *err, size_t errlen)
+struct gl_context *init_osmesa(struct error *e)
 {
-    snprintf(err, errlen, "OSMesa: this build has no OSMesa back-end (install libosmesa6-dev and rebuild)");
+    error_set(e, ERROR_RUNTIME, NULL,
+              "OSMesa: this build has no OSMesa back-end (install libosmesa6-dev and rebuild)");
     return NULL;
 }
 #endif

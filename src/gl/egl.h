@@ -24,23 +24,23 @@ struct egl_platform {
 /* The platform's display on native_display, initialised, the ES API bound: a context (backend
  * "egl", GLSL ES 1.00) with no surface yet, whose platform_version is "EGL 1.5 (version_label)".
  * who begins this context's messages ("x11", the card's path, "EGL") and must outlive it. NULL
- * with err. */
+ * with E filled (ERROR_RUNTIME), as for every failure of this module. */
 struct gl_context *egl_open(const struct egl_platform *p, void *native_display, const char *who,
-                            const char *version_label, char *err, size_t errlen);
+                            const char *version_label, struct error *e);
 
 /* The display egl_open initialised, for choosing a config on it. */
 EGLDisplay egl_display(const struct gl_context *ctx);
 
 /* A window surface on native_window (what eglCreatePlatformWindowSurfaceEXT takes) in config, an
- * ES2 context current on it, the GL entry points loaded (gl_api_load). 0, or -1 with err; either
- * way ctx->destroy() frees it all. */
-int egl_attach_window(struct gl_context *ctx, EGLConfig config, void *native_window, char *err, size_t errlen);
+ * ES2 context current on it, the GL entry points loaded (gl_api_load). 0, or -1 with E filled;
+ * either way ctx->destroy() frees it all. */
+int egl_attach_window(struct gl_context *ctx, EGLConfig config, void *native_window, struct error *e);
 
 /* The same without a surface (EGL_KHR_surfaceless_context: rendering into FBOs only); config may
  * be EGL_NO_CONFIG_KHR. */
-int egl_attach_surfaceless(struct gl_context *ctx, EGLConfig config, char *err, size_t errlen);
+int egl_attach_surfaceless(struct gl_context *ctx, EGLConfig config, struct error *e);
 
-/* Shows what was drawn: eglSwapBuffers. 0, or -1 with err. */
-int egl_swap(struct gl_context *ctx, char *err, size_t errlen);
+/* Shows what was drawn: eglSwapBuffers. 0, or -1 with E filled. */
+int egl_swap(struct gl_context *ctx, struct error *e);
 
 #endif

@@ -1,4 +1,5 @@
 #include "gl/shader.h"
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,36 +14,39 @@ static const char *shader_dir;
 
 void shader_set_directory(const char *dir) { shader_dir = dir; }
 
-static char *read_file(const char *path, char *err, size_t errlen)
+/* A file under the directory the user named (--shader-dir): one that cannot be opened or is too
+ * large is the user's, no memory for it the machine's. */
+static char *read_file(const char *path, struct error *e)
 {
     FILE *f = fopen(path, "rb");
     if (!f) {
-        snprintf(err, errlen, "cannot read shader %s", path);
+        error_set(e, error_status_of_errno(errno), NULL, "cannot read shader %s", path);
         return NULL;
     }
     char *buf = malloc(SHADER_MAX_BYTES + 1);
     size_t n = buf ? fread(buf, 1, SHADER_MAX_BYTES + 1, f) : 0;
     fclose(f);
     if (!buf || n > SHADER_MAX_BYTES) {
+        error_set(e, buf ? ERROR_INPUT : ERROR_RUNTIME, NULL, "shader %s is larger than %d bytes", path,
+                  SHADER_MAX_BYTES);
         free(buf);
-        snprintf(err, errlen, "shader %s is larger than %d bytes", path, SHADER_MAX_BYTES);
         return NULL;
     }
     buf[n] = '\0';
     return buf;
 }
 
-char *shader_load_text(const char *name, char *err, size_t errlen)
+char *shader_load_text(const char *name, struct error *e)
 {
     if (shader_dir) {
         char path[1024];
         snprintf(path, sizeof path, "%s/%s", shader_dir, name);
-        return read_file(path, err, errlen);
+        return read_file(path, e);
     }
-    for (const struct embedded_file *e = embedded_shaders; e->name; e++)
-        if (strcmp(e->name, name) == 0)
-            return strdup(e->text);
-    snprintf(err, errlen, "no shader named %s is built in", name);
+    for (const struct embedded_file *f = embedded_shaders; f->name; f++)
+        if (strcmp(f->name, name) == 0)
+            return strdup(f->text);
+    error_set(e, ERROR_RUNTIME, NULL, "no shader named %s is built in", name);
     return NULL;
 }
 
@@ -86,7 +90,7 @@ static void translate_log(const char *log, const char *const *files, int n_files
 }
 
 static GLuint compile(const struct shader_target *t, GLenum stage, const char *defines,
-                      const char *const *files, char *err, size_t errlen)
+                      const char *const *files, struct error *e)
 {
     const char *src[2 * SHADER_MAX_FILES + 2];
     char *texts[SHADER_MAX_FILES] = {0};
@@ -100,10 +104,10 @@ static GLuint compile(const struct shader_target *t, GLenum stage, const char *d
     src[n_src++] = defines ? defines : "";
     for (; files[n_files]; n_files++) {
         if (n_files == SHADER_MAX_FILES) {
-            snprintf(err, errlen, "too many shader files (at most %d)", SHADER_MAX_FILES);
+            error_set(e, ERROR_RUNTIME, NULL, "too many shader files (at most %d)", SHADER_MAX_FILES);
             goto out;
         }
-        texts[n_files] = shader_load_text(files[n_files], err, errlen);
+        texts[n_files] = shader_load_text(files[n_files], e);
         if (!texts[n_files])
             goto out;
         snprintf(lines[n_files], sizeof lines[n_files], "\n#line 1 %d\n", n_files + 1);
@@ -119,8 +123,8 @@ static GLuint compile(const struct shader_target *t, GLenum stage, const char *d
         char log[4096] = "", mapped[4096];
         glGetShaderInfoLog(sh, sizeof log, NULL, log);
         translate_log(log, files, n_files, mapped, sizeof mapped);
-        snprintf(err, errlen, "%s shader (%s%s) does not compile:\n%s",
-                 stage == GL_VERTEX_SHADER ? "vertex" : "fragment", files[0], n_files > 1 ? ", ..." : "", mapped);
+        error_set(e, ERROR_RUNTIME, NULL, "%s shader (%s%s) does not compile:\n%s",
+                  stage == GL_VERTEX_SHADER ? "vertex" : "fragment", files[0], n_files > 1 ? ", ..." : "", mapped);
         glDeleteShader(sh);
         sh = 0;
     }
@@ -132,12 +136,12 @@ out:
 
 GLuint shader_program_build(const struct shader_target *target, const char *defines,
                             const char *const *vertex, const char *const *fragment,
-                            char *err, size_t errlen)
+                            struct error *e)
 {
-    GLuint vs = compile(target, GL_VERTEX_SHADER, defines, vertex, err, errlen);
+    GLuint vs = compile(target, GL_VERTEX_SHADER, defines, vertex, e);
     if (!vs)
         return 0;
-    GLuint fs = compile(target, GL_FRAGMENT_SHADER, defines, fragment, err, errlen);
+    GLuint fs = compile(target, GL_FRAGMENT_SHADER, defines, fragment, e);
     if (!fs) {
         glDeleteShader(vs);
         return 0;
@@ -155,7 +159,7 @@ GLuint shader_program_build(const struct shader_target *target, const char *defi
     if (!ok) {
         char log[2048] = "";
         glGetProgramInfoLog(prog, sizeof log, NULL, log);
-        snprintf(err, errlen, "program (%s + %s) does not link: %s", vertex[0], fragment[0], log);
+        error_set(e, ERROR_RUNTIME, NULL, "program (%s + %s) does not link: %s", vertex[0], fragment[0], log);
         glDeleteProgram(prog);
         return 0;
     }

@@ -14,15 +14,17 @@ struct shader_target {
 
 /* Load shader files from DIR instead of the embedded copies (development); NULL resets. */
 void shader_set_directory(const char *dir);
-/* Text of one shader file, malloc'd; NULL with err filled. */
-char *shader_load_text(const char *name, char *err, size_t errlen);
+/* Text of one shader file, malloc'd; NULL with E filled: a file under the directory that cannot
+ * be opened (error_status_of_errno) or is too large is the user's, the rest the machine's. */
+char *shader_load_text(const char *name, struct error *e);
 
 /* Compile and link a program. vertex/fragment are NULL-terminated lists of file names,
  * concatenated in order after the preamble; defines is extra preamble text ("#define X 1\n...").
- * The vertex attribute a_corner is bound to location 0. Returns 0 with err filled on failure;
- * compiler messages name the file and line. */
+ * The vertex attribute a_corner is bound to location 0. Returns 0 with E filled on failure
+ * (ERROR_RUNTIME for a program that does not compile or link, shader_load_text's status for a
+ * file); compiler messages name the file and line. */
 GLuint shader_program_build(const struct shader_target *target, const char *defines,
                             const char *const *vertex, const char *const *fragment,
-                            char *err, size_t errlen);
+                            struct error *e);
 
 #endif

@@ -22,7 +22,9 @@ int compositor_init(struct compositor *c, const struct gl_context *gl, int width
     c->height = height;
     /* the probe also takes this compositor's share of the pass quadrilateral (gl/quad.h) */
     struct gl_caps caps;
-    if (gl_caps_probe(&caps, gl, err, errlen) != 0) {
+    struct error ge;
+    if (gl_caps_probe(&caps, gl, &ge) != 0) {
+        snprintf(err, errlen, "%s", ge.message);
         quad_release();
         return -1;
     }
@@ -30,9 +32,10 @@ int compositor_init(struct compositor *c, const struct gl_context *gl, int width
     static const char *const vertex[] = {"kiosk_vertex.glsl", NULL};
     static const char *const blit[] = {"kiosk_blit.glsl", NULL};
     static const char *const pipeline[] = {"kiosk_pipeline.glsl", NULL};
-    c->blit = shader_program_build(&caps.shader, "", vertex, blit, err, errlen);
-    c->pipeline = c->blit ? shader_program_build(&caps.shader, "", vertex, pipeline, err, errlen) : 0;
+    c->blit = shader_program_build(&caps.shader, "", vertex, blit, &ge);
+    c->pipeline = c->blit ? shader_program_build(&caps.shader, "", vertex, pipeline, &ge) : 0;
     if (!c->pipeline) {
+        snprintf(err, errlen, "%s", ge.message);
         compositor_release(c);
         return -1;
     }

@@ -125,11 +125,9 @@ int render_frame(const struct scene *s, const struct frame_request *req, struct 
                  struct frame_info *info, struct error *e)
 {
     error_clear(e);
-    struct gl_context *ctx = gl_context_create(req->backend, e->message, sizeof e->message);
-    if (!ctx) {
-        e->status = ERROR_RUNTIME;
+    struct gl_context *ctx = gl_context_create(req->backend, e);
+    if (!ctx)
         return -1;
-    }
     int rc = -1;
     struct renderer *r = renderer_create(ctx, s, e);
     if (r) {

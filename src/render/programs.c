@@ -97,6 +97,17 @@ void program_cache_release(struct program_cache *pc)
     pc->n = 0;
 }
 
+/* shader_program_build with its message in err. */
+static GLuint build(const struct shader_target *t, const char *defines, const char *const *vertex,
+                    const char *const *fragment, char *err, size_t errlen)
+{
+    struct error ge;
+    GLuint id = shader_program_build(t, defines, vertex, fragment, &ge);
+    if (!id)
+        snprintf(err, errlen, "%s", ge.message);
+    return id;
+}
+
 const struct stage_program *program_cache_get(struct program_cache *pc, const char *const *fragment_files,
                                               const char *defines, int two_targets, char *err, size_t errlen)
 {
@@ -131,18 +142,18 @@ const struct stage_program *program_cache_get_vertex(struct program_cache *pc, c
     if (!two_targets) {
         snprintf(full, sizeof full, "#define BT_TARGET 0\n%s", defines);
         t.draw_buffers_ext = 0;
-        ids[0] = shader_program_build(&t, full, vertex, fragment_files, err, errlen);
+        ids[0] = build(&t, full, vertex, fragment_files, err, errlen);
         n_programs = 1;
     } else if (pc->mrt) {
         snprintf(full, sizeof full, "#define BT_MRT 1\n#define BT_TARGET 0\n%s", defines);
         t.draw_buffers_ext = t.dialect == DIALECT_GLSL_ES_100;
-        ids[0] = shader_program_build(&t, full, vertex, fragment_files, err, errlen);
+        ids[0] = build(&t, full, vertex, fragment_files, err, errlen);
         n_programs = 1;
     } else {
         t.draw_buffers_ext = 0;
         for (int k = 0; k < 2; k++) {
             snprintf(full, sizeof full, "#define BT_TARGET %d\n%s", k, defines);
-            ids[k] = shader_program_build(&t, full, vertex, fragment_files, err, errlen);
+            ids[k] = build(&t, full, vertex, fragment_files, err, errlen);
             if (!ids[k])
                 break;
         }

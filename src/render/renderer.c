@@ -79,7 +79,9 @@ static int renderer_open(struct renderer *r, const struct gl_context *ctx, const
     r->assets_key = assets_key(scene);
     /* until a caller says it reads only the image, every run keeps its outcomes readable */
     r->reads = RENDER_READ_OUTCOMES;
-    if (gl_caps_probe(&r->caps, ctx, err, errlen) != 0) {
+    struct error ge;
+    if (gl_caps_probe(&r->caps, ctx, &ge) != 0) {
+        snprintf(err, errlen, "%s", ge.message);
         quad_release();              /* the probe takes its share of the pass quad even when it fails */
         return -1;
     }

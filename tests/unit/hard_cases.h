@@ -28,10 +28,10 @@ static inline struct gl_context *hc_context(void)
 {
     static struct gl_context *ctx;
     if (!ctx) {
-        char err[1024];
-        ctx = gl_context_create("egl", err, sizeof err);
+        struct error err;
+        ctx = gl_context_create("egl", &err);
         if (!ctx)
-            fail_msg("EGL context: %s", err);
+            fail_msg("EGL context: %s", err.message);
     }
     return ctx;
 }

@@ -450,7 +450,7 @@ static void test_needs_fp32(void **state)
     assert_non_null(strstr(gl_err.message, "orbit_table"));
     s.render.precision = PRECISION_AUTO;
     setenv("BT_FAULT", "float_render", 1);
-    struct gl_context *ctx = gl_context_create("egl", err, sizeof err);
+    struct gl_context *ctx = gl_context_create("egl", &gl_err);
     assert_non_null(ctx);
     r = renderer_create(ctx, &s, &gl_err);
     unsetenv("BT_FAULT");
