@@ -33,11 +33,11 @@ static void print_caps(const struct gl_caps *c)
     else
         printf("occlusion query: no: the multipass scheme runs every segment (%s)\n", c->query_why);
     struct render_path path;
-    char err[512];
-    if (render_path_choose(c, PRECISION_AUTO, MRT_AUTO, &path, err, sizeof err) == 0)
+    struct error e;
+    if (render_path_choose(c, PRECISION_AUTO, MRT_AUTO, &path, &e) == 0)
         printf("render path:     %s\n", path.description);
     else
-        printf("render path:     none: %s\n", err);
+        printf("render path:     none: %.511s\n", e.message);   /* cut at 511 characters, as before */
     int fused = render_path_can_fuse(c, c->mrt_works);
     char else_path[128];
     snprintf(else_path, sizeof else_path, "%s", fused ? "one fused pass a segment (4 draw buffers) where the scene's objects "

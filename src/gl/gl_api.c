@@ -36,14 +36,13 @@ const char *gl_error_name(GLenum e)
     }
 }
 
-int gl_check(const char *stage, char *err, size_t errlen)
+int gl_check(const char *stage, struct error *e)
 {
-    GLenum e = glGetError();
-    if (e == GL_NO_ERROR)
+    GLenum code = glGetError();
+    if (code == GL_NO_ERROR)
         return 0;
     /* drain the queue so that the next stage starts clean */
     while (glGetError() != GL_NO_ERROR) {
     }
-    snprintf(err, errlen, "%s: %s (0x%04x)", stage, gl_error_name(e), e);
-    return -1;
+    return error_set(e, ERROR_RUNTIME, NULL, "%s: %s (0x%04x)", stage, gl_error_name(code), code);
 }

@@ -6,6 +6,7 @@
 #include <stddef.h>
 #include <GLES3/gl3.h>
 #include <GLES2/gl2ext.h>
+#include "io/error.h"
 
 #ifndef GL_HALF_FLOAT_OES
 #define GL_HALF_FLOAT_OES 0x8D61
@@ -170,7 +171,8 @@ const char *gl_api_load(void *(*get_proc)(const char *name));
 
 /* Name of a GL error code, for messages. */
 const char *gl_error_name(GLenum e);
-/* Check glGetError at a stage boundary; on error fill err with "STAGE: GL_xxx" and return -1. */
-int gl_check(const char *stage, char *err, size_t errlen);
+/* Check glGetError at a stage boundary; on error fill e with "STAGE: GL_xxx" (ERROR_RUNTIME) and
+ * return -1. */
+int gl_check(const char *stage, struct error *e);
 
 #endif

@@ -20,15 +20,20 @@ static char *read_file(const char *path, struct error *e)
 {
     FILE *f = fopen(path, "rb");
     if (!f) {
-        error_set(e, error_status_of_errno(errno), NULL, "cannot read shader %s", path);
+        int errnum = errno;
+        error_set(e, error_status_of_errno(errnum), NULL, "cannot read shader %s: %s", path, strerror(errnum));
         return NULL;
     }
     char *buf = malloc(SHADER_MAX_BYTES + 1);
-    size_t n = buf ? fread(buf, 1, SHADER_MAX_BYTES + 1, f) : 0;
+    if (!buf) {
+        fclose(f);
+        error_set(e, ERROR_RUNTIME, NULL, "cannot read shader %s: out of memory", path);
+        return NULL;
+    }
+    size_t n = fread(buf, 1, SHADER_MAX_BYTES + 1, f);
     fclose(f);
-    if (!buf || n > SHADER_MAX_BYTES) {
-        error_set(e, buf ? ERROR_INPUT : ERROR_RUNTIME, NULL, "shader %s is larger than %d bytes", path,
-                  SHADER_MAX_BYTES);
+    if (n > SHADER_MAX_BYTES) {
+        error_set(e, ERROR_INPUT, NULL, "shader %s is larger than %d bytes", path, SHADER_MAX_BYTES);
         free(buf);
         return NULL;
     }

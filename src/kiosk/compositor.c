@@ -8,6 +8,16 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* gl_check with its message in err. */
+static int gl_checked(const char *stage, char *err, size_t errlen)
+{
+    struct error ge;
+    if (gl_check(stage, &ge) == 0)
+        return 0;
+    snprintf(err, errlen, "%s", ge.message);
+    return -1;
+}
+
 /* The canvas and the HUD, 8-bit RGBA; each blit() sets the filter its scale needs. */
 static GLuint linear_texture(int width, int height)
 {
@@ -52,7 +62,7 @@ int compositor_init(struct compositor *c, const struct gl_context *gl, int width
     }
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
-    if (gl_check("making the compositor", err, errlen) != 0) {
+    if (gl_checked("making the compositor", err, errlen) != 0) {
         compositor_release(c);
         return -1;
     }
@@ -119,7 +129,7 @@ int compositor_put_preview(struct compositor *c, GLuint image, char *err, size_t
     /* the renderer's image keeps its own nearest filtering: its passes read it texel for texel */
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    return gl_check("drawing the preview into the canvas", err, errlen);
+    return gl_checked("drawing the preview into the canvas", err, errlen);
 }
 
 int compositor_put_band(struct compositor *c, GLuint image, int band_height, int y0, int rows, char *err,
@@ -127,7 +137,7 @@ int compositor_put_band(struct compositor *c, GLuint image, int band_height, int
 {
     to_canvas(c, 0, y0, c->width, rows);
     blit(c, image, GL_NEAREST, 0, 0, 1, (float)rows / (float)band_height);
-    return gl_check("drawing a refined band into the canvas", err, errlen);
+    return gl_checked("drawing a refined band into the canvas", err, errlen);
 }
 
 int compositor_put_tile(struct compositor *c, GLuint image, int tex_w, int tex_h, int x0, int y0, int w, int h,
@@ -135,7 +145,7 @@ int compositor_put_tile(struct compositor *c, GLuint image, int tex_w, int tex_h
 {
     to_canvas(c, x0, y0, w, h);
     blit(c, image, GL_NEAREST, 0, 0, (float)w / (float)tex_w, (float)h / (float)tex_h);
-    return gl_check("drawing a refined tile into the canvas", err, errlen);
+    return gl_checked("drawing a refined tile into the canvas", err, errlen);
 }
 
 int compositor_put_preview_tile(struct compositor *c, GLuint image, int tex_w, int tex_h, int x0, int y0, int w,
@@ -158,7 +168,7 @@ int compositor_put_preview_tile(struct compositor *c, GLuint image, int tex_w, i
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     blit(c, image, GL_NEAREST, 0, 0, (float)w / (float)tex_w, (float)h / (float)tex_h);
-    return gl_check("drawing a preview tile", err, errlen);
+    return gl_checked("drawing a preview tile", err, errlen);
 }
 
 int compositor_show_preview(struct compositor *c, char *err, size_t errlen)
@@ -201,7 +211,7 @@ int compositor_put_pipeline(struct compositor *c, const struct renderer_textures
         glUniform1f(glGetUniformLocation(p, "u_panel"), (float)k);
         quad_draw(p, 0.0f);
     }
-    return gl_check("drawing the pipeline view", err, errlen);
+    return gl_checked("drawing the pipeline view", err, errlen);
 }
 
 int compositor_set_hud(struct compositor *c, const unsigned char *rgba, int width, int height, char *err,
@@ -222,7 +232,7 @@ int compositor_set_hud(struct compositor *c, const unsigned char *rgba, int widt
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
     c->hud_valid = 1;
-    return gl_check("uploading the HUD", err, errlen);
+    return gl_checked("uploading the HUD", err, errlen);
 }
 
 void compositor_letterbox(const struct compositor *c, int sw, int sh, int *x, int *y, int *w, int *h)
@@ -258,7 +268,7 @@ int compositor_draw(struct compositor *c, const struct screen *s, char *err, siz
              -1);
         glDisable(GL_BLEND);
     }
-    return gl_check("drawing the frame on the screen", err, errlen);
+    return gl_checked("drawing the frame on the screen", err, errlen);
 }
 
 int compositor_read_screen(const struct screen *s, unsigned char *rgba, char *err, size_t errlen)
@@ -275,5 +285,5 @@ int compositor_read_screen(const struct screen *s, unsigned char *rgba, char *er
     for (int y = 0; y < s->height; y++)
         memcpy(rgba + (size_t)(s->height - 1 - y) * row, rows + (size_t)y * row, row);
     free(rows);
-    return gl_check("reading the screen back", err, errlen);
+    return gl_checked("reading the screen back", err, errlen);
 }

@@ -64,7 +64,7 @@ void observer_set_uniforms(const struct program_uniforms *p, const struct render
                                                                                                    s->model.center))));
 }
 
-int observer_lut_load(struct renderer *r, char *err, size_t errlen)
+int observer_lut_load(struct renderer *r, struct error *e)
 {
     if (!doppler_colour(r->scene))
         return 0;
@@ -85,7 +85,7 @@ int observer_lut_load(struct renderer *r, char *err, size_t errlen)
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, BLACKBODY_LUT_SIZE, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-    return gl_check("uploading the black-body table", err, errlen);
+    return gl_check("uploading the black-body table", e);
 }
 
 void observer_lut_release(struct renderer *r)

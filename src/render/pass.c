@@ -14,7 +14,7 @@ void uniform_float(const struct program_uniforms *program, const char *name, dou
 }
 
 int pass_move_rays(struct renderer *r, const struct stage_program *sp, int segment_start, set_uniforms_fn set_uniforms,
-                   const void *arg, char *err, size_t errlen)
+                   const void *arg, struct error *e)
 {
     struct raystate *rs = &r->rs;
     /* write to the one position copy that is neither the segment start nor the current one */
@@ -27,7 +27,7 @@ int pass_move_rays(struct renderer *r, const struct stage_program *sp, int segme
         {"u_ray_velocity", rs->velocity[rs->cur_velocity]},
         {"u_hit", rs->hit[rs->cur_hit]},
     };
-    if (pass_run(r, sp, rs->position[out_pos], rs->velocity[out_vel], in, 3, set_uniforms, arg, err, errlen) != 0)
+    if (pass_run(r, sp, rs->position[out_pos], rs->velocity[out_vel], in, 3, set_uniforms, arg, e) != 0)
         return -1;
     rs->cur_position = out_pos;
     rs->cur_velocity = out_vel;
@@ -36,23 +36,23 @@ int pass_move_rays(struct renderer *r, const struct stage_program *sp, int segme
 
 int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GLuint out1,
              const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
-             char *err, size_t errlen)
+             struct error *e)
 {
     const GLuint out[RAYSTATE_MAX_TARGETS] = {out0, out1, 0, 0};
-    return pass_run_targets(r, sp, out, inputs, n_inputs, set_uniforms, arg, err, errlen);
+    return pass_run_targets(r, sp, out, inputs, n_inputs, set_uniforms, arg, e);
 }
 
 int pass_run_targets(struct renderer *r, const struct stage_program *sp, const GLuint out[RAYSTATE_MAX_TARGETS],
                      const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
-                     char *err, size_t errlen)
+                     struct error *e)
 {
     struct raystate *rs = &r->rs;
     for (int k = 0; k < sp->n_programs; k++) {
         GLuint fbo;
         if (sp->n_programs == 1)
-            fbo = raystate_fbo_targets(rs, out, err, errlen);
+            fbo = raystate_fbo_targets(rs, out, e);
         else
-            fbo = raystate_fbo(rs, out[k], 0, err, errlen);
+            fbo = raystate_fbo(rs, out[k], 0, e);
         if (!fbo)
             return -1;
         const struct program_uniforms *prog = &sp->program[k];

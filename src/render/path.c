@@ -75,31 +75,24 @@ static void describe(struct render_path *p, const char *fallback)
 }
 
 int render_path_choose(const struct gl_caps *c, enum precision_choice precision, enum mrt_choice mrt,
-                       struct render_path *p, char *err, size_t errlen)
+                       struct render_path *p, struct error *e)
 {
     char why32[400], why16[400];
     memset(p, 0, sizeof *p);
     explain_formats(c, 1, why32, sizeof why32);
     explain_formats(c, 0, why16, sizeof why16);
     const struct float_format *f32 = caps_format(c, 1), *f16 = caps_format(c, 0);
-    if (precision == PRECISION_FP32 && !f32) {
-        snprintf(err, errlen, "--precision fp32: no 32-bit float render target works here (%s)", why32);
-        return -1;
-    }
-    if (precision == PRECISION_FP16 && !f16) {
-        snprintf(err, errlen, "--precision fp16: no 16-bit float render target works here (%s)", why16);
-        return -1;
-    }
-    if (!f32 && !f16) {
-        snprintf(err, errlen, "this GPU has no renderable float format for the ray state (%s; %s); "
-                              "bentray needs RGBA32F or RGBA16F render targets",
-                 why32, why16);
-        return -1;
-    }
-    if (mrt == MRT_ON && !c->mrt_works) {
-        snprintf(err, errlen, "mrt=on: multiple render targets do not work here (%s)", c->mrt_why);
-        return -1;
-    }
+    if (precision == PRECISION_FP32 && !f32)
+        return error_set(e, ERROR_INPUT, NULL, "--precision fp32: no 32-bit float render target works here (%s)",
+                         why32);
+    if (precision == PRECISION_FP16 && !f16)
+        return error_set(e, ERROR_INPUT, NULL, "--precision fp16: no 16-bit float render target works here (%s)",
+                         why16);
+    if (!f32 && !f16)
+        return error_set(e, ERROR_RUNTIME, NULL, "this GPU has no renderable float format for the ray state (%s; %s); "
+                         "bentray needs RGBA32F or RGBA16F render targets", why32, why16);
+    if (mrt == MRT_ON && !c->mrt_works)
+        return error_set(e, ERROR_INPUT, NULL, "mrt=on: multiple render targets do not work here (%s)", c->mrt_why);
     /* the paths in order of preference: the first that the scene allows (a forced precision or MRT
      * setting is kept), the probe found working and whose ray-state framebuffer is complete */
     static const struct { int fp32, mrt; } order[4] = {{1, 1}, {1, 0}, {0, 1}, {0, 0}};
@@ -125,10 +118,9 @@ int render_path_choose(const struct gl_caps *c, enum precision_choice precision,
             snprintf(fallback, sizeof fallback, "(fell back from %s: %s framebuffer incomplete)",
                      path_name(preferred->is_fp32, preferred_mrt), preferred->name);
     }
-    if (!preferred) {
-        snprintf(err, errlen, "internal: no render path fits precision %d and mrt %d", (int)precision, (int)mrt);
-        return -1;
-    }
+    if (!preferred)
+        return error_set(e, ERROR_RUNTIME, NULL, "internal: no render path fits precision %d and mrt %d",
+                         (int)precision, (int)mrt);
     if (!p->format) {
         /* nothing complete: the preferred path, so that its failure is the one reported */
         p->format = preferred;

@@ -37,7 +37,7 @@ static int add_slot(struct program_uniforms *p, int *capacity, const char *name,
 
 /* The active uniforms of a linked program and their locations: each by its name, an array also by
  * its bare name and by every element's ("u_light_color[2]"); -1 when out of memory. */
-static int uniforms_read(struct program_uniforms *p, GLuint id, char *err, size_t errlen)
+static int uniforms_read(struct program_uniforms *p, GLuint id, struct error *e)
 {
     GLint count = 0, longest = 0;
     memset(p, 0, sizeof *p);
@@ -65,10 +65,8 @@ static int uniforms_read(struct program_uniforms *p, GLuint id, char *err, size_
     }
     free(name);
     free(element);
-    if (rc != 0) {
-        snprintf(err, errlen, "out of memory listing a program's uniforms");
-        return -1;
-    }
+    if (rc != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory listing a program's uniforms");
     if (p->n > 0)
         qsort(p->slots, (size_t)p->n, sizeof *p->slots, by_name);
     return 0;
@@ -97,26 +95,15 @@ void program_cache_release(struct program_cache *pc)
     pc->n = 0;
 }
 
-/* shader_program_build with its message in err. */
-static GLuint build(const struct shader_target *t, const char *defines, const char *const *vertex,
-                    const char *const *fragment, char *err, size_t errlen)
-{
-    struct error ge;
-    GLuint id = shader_program_build(t, defines, vertex, fragment, &ge);
-    if (!id)
-        snprintf(err, errlen, "%s", ge.message);
-    return id;
-}
-
 const struct stage_program *program_cache_get(struct program_cache *pc, const char *const *fragment_files,
-                                              const char *defines, int two_targets, char *err, size_t errlen)
+                                              const char *defines, int two_targets, struct error *e)
 {
-    return program_cache_get_vertex(pc, NULL, fragment_files, defines, two_targets, err, errlen);
+    return program_cache_get_vertex(pc, NULL, fragment_files, defines, two_targets, e);
 }
 
 const struct stage_program *program_cache_get_vertex(struct program_cache *pc, const char *const *vertex_files,
                                                      const char *const *fragment_files, const char *defines,
-                                                     int two_targets, char *err, size_t errlen)
+                                                     int two_targets, struct error *e)
 {
     static const char *const quad_vertex[] = {"quad_vertex.glsl", NULL};
     const char *const *vertex = vertex_files ? vertex_files : quad_vertex;
@@ -125,14 +112,14 @@ const struct stage_program *program_cache_get_vertex(struct program_cache *pc, c
     for (int i = 0; fragment_files[i] && used < sizeof key; i++)
         used += snprintf(key + used, sizeof key - used, "%s,", fragment_files[i]);
     if (used >= sizeof key) {
-        snprintf(err, errlen, "internal: program variant key too long");
+        error_set(e, ERROR_RUNTIME, NULL, "internal: program variant key too long");
         return NULL;
     }
     for (int i = 0; i < pc->n; i++)
         if (strcmp(pc->entries[i].key, key) == 0)
             return &pc->entries[i].sp;
     if (pc->n == PROGRAMS_MAX) {
-        snprintf(err, errlen, "internal: more than %d shader variants", PROGRAMS_MAX);
+        error_set(e, ERROR_RUNTIME, NULL, "internal: more than %d shader variants", PROGRAMS_MAX);
         return NULL;
     }
     GLuint ids[2] = {0, 0};
@@ -142,18 +129,18 @@ const struct stage_program *program_cache_get_vertex(struct program_cache *pc, c
     if (!two_targets) {
         snprintf(full, sizeof full, "#define BT_TARGET 0\n%s", defines);
         t.draw_buffers_ext = 0;
-        ids[0] = build(&t, full, vertex, fragment_files, err, errlen);
+        ids[0] = shader_program_build(&t, full, vertex, fragment_files, e);
         n_programs = 1;
     } else if (pc->mrt) {
         snprintf(full, sizeof full, "#define BT_MRT 1\n#define BT_TARGET 0\n%s", defines);
         t.draw_buffers_ext = t.dialect == DIALECT_GLSL_ES_100;
-        ids[0] = build(&t, full, vertex, fragment_files, err, errlen);
+        ids[0] = shader_program_build(&t, full, vertex, fragment_files, e);
         n_programs = 1;
     } else {
         t.draw_buffers_ext = 0;
         for (int k = 0; k < 2; k++) {
             snprintf(full, sizeof full, "#define BT_TARGET %d\n%s", k, defines);
-            ids[k] = build(&t, full, vertex, fragment_files, err, errlen);
+            ids[k] = shader_program_build(&t, full, vertex, fragment_files, e);
             if (!ids[k])
                 break;
         }
@@ -164,7 +151,7 @@ const struct stage_program *program_cache_get_vertex(struct program_cache *pc, c
     sp.n_programs = n_programs;
     int failed = 0;
     for (int k = 0; k < n_programs; k++)
-        failed |= !ids[k] || uniforms_read(&sp.program[k], ids[k], err, errlen) != 0;
+        failed |= !ids[k] || uniforms_read(&sp.program[k], ids[k], e) != 0;
     if (failed) {
         for (int k = 0; k < n_programs; k++) {
             if (sp.program[k].id)

@@ -38,12 +38,12 @@ struct program_cache {
 void program_cache_init(struct program_cache *pc, const struct shader_target *target, int mrt);
 void program_cache_release(struct program_cache *pc);
 /* The program(s) of a stage: fragment files (NULL-terminated) and variant defines.
- * two_targets: 0 for stages that write one colour (sky). NULL with err on failure. */
+ * two_targets: 0 for stages that write one colour (sky). NULL with e on failure. */
 const struct stage_program *program_cache_get(struct program_cache *pc, const char *const *fragment_files,
-                                              const char *defines, int two_targets, char *err, size_t errlen);
+                                              const char *defines, int two_targets, struct error *e);
 /* The same with vertex files of its own (NULL: the pass quad's). */
 const struct stage_program *program_cache_get_vertex(struct program_cache *pc, const char *const *vertex_files,
                                                      const char *const *fragment_files, const char *defines,
-                                                     int two_targets, char *err, size_t errlen);
+                                                     int two_targets, struct error *e);
 
 #endif

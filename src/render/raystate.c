@@ -34,9 +34,9 @@ static GLuint make_fbo(struct raystate *rs, const GLuint target[RAYSTATE_MAX_TAR
     return fbo;
 }
 
-/* What was attached, in which render path, and what to try instead. */
+/* What was attached, in which render path, and what to try instead (the GPU's failure). */
 static void incomplete_message(const struct raystate *rs, const GLuint target[RAYSTATE_MAX_TARGETS], GLenum status,
-                               char *err, size_t errlen)
+                               struct error *e)
 {
     int float_target = target[0] != rs->final_color;
     int n = target_count(target);
@@ -44,16 +44,15 @@ static void incomplete_message(const struct raystate *rs, const GLuint target[RA
     if (n > 1)
         snprintf(count, sizeof count, "%d x ", n);
     const char *format = float_target ? rs->format->name : "RGBA8";
-    snprintf(err, errlen, "render path %s: a ray-state framebuffer (%s%s colour, 16-bit depth, %dx%d) is "
-             "incomplete: %s (0x%04x)%s%s%s", rs->path_name, count, format, rs->width,
-             rs->height, gl_framebuffer_status_name(status), status,
-             float_target && rs->format->is_fp32 ? "; try --precision fp16" : "",
-             float_target && rs->mrt ? (rs->format->is_fp32 ? " or --no-mrt" : "; try --no-mrt") : "",
-             float_target ? " (bentray info lists the formats that work)" : "");
+    error_set(e, ERROR_RUNTIME, NULL, "render path %s: a ray-state framebuffer (%s%s colour, 16-bit depth, %dx%d) is "
+              "incomplete: %s (0x%04x)%s%s%s", rs->path_name, count, format, rs->width,
+              rs->height, gl_framebuffer_status_name(status), status,
+              float_target && rs->format->is_fp32 ? "; try --precision fp16" : "",
+              float_target && rs->mrt ? (rs->format->is_fp32 ? " or --no-mrt" : "; try --no-mrt") : "",
+              float_target ? " (bentray info lists the formats that work)" : "");
 }
 
-int raystate_init(struct raystate *rs, const struct render_path *path, int width, int height,
-                  char *err, size_t errlen)
+int raystate_init(struct raystate *rs, const struct render_path *path, int width, int height, struct error *e)
 {
     const struct float_format *f = path->format;
     memset(rs, 0, sizeof *rs);
@@ -80,7 +79,7 @@ int raystate_init(struct raystate *rs, const struct render_path *path, int width
     char what[128];
     snprintf(what, sizeof what, "render path %s: allocating the ray state (13 %s textures of %dx%d)", path->name,
              f->name, width, height);
-    if (gl_check(what, err, errlen) != 0) {
+    if (gl_check(what, e) != 0) {
         raystate_release(rs);
         return -1;
     }
@@ -91,7 +90,7 @@ int raystate_init(struct raystate *rs, const struct render_path *path, int width
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDeleteFramebuffers(1, &fbo);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
-        incomplete_message(rs, setup, status, err, errlen);
+        incomplete_message(rs, setup, status, e);
         raystate_release(rs);
         return -1;
     }
@@ -123,19 +122,19 @@ void raystate_release(struct raystate *rs)
     memset(rs, 0, sizeof *rs);
 }
 
-GLuint raystate_fbo(struct raystate *rs, GLuint target0, GLuint target1, char *err, size_t errlen)
+GLuint raystate_fbo(struct raystate *rs, GLuint target0, GLuint target1, struct error *e)
 {
     const GLuint target[RAYSTATE_MAX_TARGETS] = {target0, target1, 0, 0};
-    return raystate_fbo_targets(rs, target, err, errlen);
+    return raystate_fbo_targets(rs, target, e);
 }
 
-GLuint raystate_fbo_targets(struct raystate *rs, const GLuint target[RAYSTATE_MAX_TARGETS], char *err, size_t errlen)
+GLuint raystate_fbo_targets(struct raystate *rs, const GLuint target[RAYSTATE_MAX_TARGETS], struct error *e)
 {
     for (int i = 0; i < rs->n_fbos; i++)
         if (memcmp(rs->fbos[i].target, target, sizeof rs->fbos[i].target) == 0)
             return rs->fbos[i].fbo;
     if (rs->n_fbos == RAYSTATE_MAX_FBOS) {
-        snprintf(err, errlen, "internal: more than %d framebuffer combinations", RAYSTATE_MAX_FBOS);
+        error_set(e, ERROR_RUNTIME, NULL, "internal: more than %d framebuffer combinations", RAYSTATE_MAX_FBOS);
         return 0;
     }
     GLenum status;
@@ -143,7 +142,7 @@ GLuint raystate_fbo_targets(struct raystate *rs, const GLuint target[RAYSTATE_MA
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glDeleteFramebuffers(1, &fbo);
-        incomplete_message(rs, target, status, err, errlen);
+        incomplete_message(rs, target, status, e);
         return 0;
     }
     memcpy(rs->fbos[rs->n_fbos].target, target, sizeof rs->fbos[rs->n_fbos].target);
@@ -152,22 +151,19 @@ GLuint raystate_fbo_targets(struct raystate *rs, const GLuint target[RAYSTATE_MA
     return fbo;
 }
 
-int raystate_read(struct raystate *rs, GLuint texture, float *out, char *err, size_t errlen)
+int raystate_read(struct raystate *rs, GLuint texture, float *out, struct error *e)
 {
     int w = rs->width, h = rs->height;
-    GLuint fbo = raystate_fbo(rs, texture, 0, err, errlen);
+    GLuint fbo = raystate_fbo(rs, texture, 0, e);
     if (!fbo)
         return -1;
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     float *rows = malloc((size_t)w * h * 4 * sizeof *rows);
-    if (!rows) {
-        snprintf(err, errlen, "out of memory reading the ray state back");
-        return -1;
-    }
+    if (!rows)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the ray state back");
     if (read_float_pixels(0, 0, w, h, rows) != 0) {
         free(rows);
-        snprintf(err, errlen, "the ray state cannot be read back as floats");
-        return -1;
+        return error_set(e, ERROR_RUNTIME, NULL, "the ray state cannot be read back as floats");
     }
     /* GL rows run bottom-up; images and dumps run top-down */
     for (int y = 0; y < h; y++)

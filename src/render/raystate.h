@@ -39,16 +39,15 @@ struct raystate {
 /* Allocates every texture and builds the path's first framebuffer (its colour targets and the
  * depth buffer), so that a format this GPU cannot render into fails here, named with the path.
  * On failure nothing stays allocated. */
-int raystate_init(struct raystate *rs, const struct render_path *path, int width, int height,
-                  char *err, size_t errlen);
+int raystate_init(struct raystate *rs, const struct render_path *path, int width, int height, struct error *e);
 void raystate_release(struct raystate *rs);
 /* Framebuffer with target0 (and target1 when nonzero) and the shared depth buffer attached;
  * made once and cached. */
-GLuint raystate_fbo(struct raystate *rs, GLuint target0, GLuint target1, char *err, size_t errlen);
+GLuint raystate_fbo(struct raystate *rs, GLuint target0, GLuint target1, struct error *e);
 /* The same for up to RAYSTATE_MAX_TARGETS colour targets (the first n nonzero). */
-GLuint raystate_fbo_targets(struct raystate *rs, const GLuint target[RAYSTATE_MAX_TARGETS], char *err, size_t errlen);
+GLuint raystate_fbo_targets(struct raystate *rs, const GLuint target[RAYSTATE_MAX_TARGETS], struct error *e);
 /* Read one texture back as floats, top row first (image order): w*h*4 floats. */
-int raystate_read(struct raystate *rs, GLuint texture, float *rgba_top_down, char *err, size_t errlen);
+int raystate_read(struct raystate *rs, GLuint texture, float *rgba_top_down, struct error *e);
 /* The float texture (the path's format) the sky stage writes the unclamped colour into
  * (renderer_set_hdr), made on first use. */
 GLuint raystate_hdr_color(struct raystate *rs);

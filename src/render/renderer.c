@@ -39,7 +39,7 @@ static uint64_t assets_key(const struct scene *s)
  * integrated) or on, set the observer moving, or changed the effects between two frames. The
  * programs of every variant stay cached; only the black-body table is rebuilt when the tone
  * mapping changes. */
-static int renderer_follow_scene(struct renderer *r, char *err, size_t errlen)
+static int renderer_follow_scene(struct renderer *r, struct error *e)
 {
     const struct scene *scene = r->scene;
     /* a model with its fields off is flat space: nothing is integrated (model_is_straight) */
@@ -63,46 +63,41 @@ static int renderer_follow_scene(struct renderer *r, char *err, size_t errlen)
              control_defines[scene->render.step_control], scene->render.steps_per_pass,
              !r->straight && scene->model.type == MODEL_POTENTIAL && scene->model.profile == PROFILE_POLYNOMIAL
                  ? "#define PROFILE_POLYNOMIAL 1\n" : "");
-    if (observer_defines(scene, r->observer_defines, sizeof r->observer_defines) != 0) {
-        snprintf(err, errlen, "internal: the observer's defines do not fit");
-        return -1;
-    }
-    return observer_lut_load(r, err, errlen);
+    if (observer_defines(scene, r->observer_defines, sizeof r->observer_defines) != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "internal: the observer's defines do not fit");
+    return observer_lut_load(r, e);
 }
 
-/* The checks of renderer_create: 0, or -1 with the message in err and *bad_input set when the
- * failure is the user's request (a forced path missing, a size beyond this GPU). */
-static int renderer_open(struct renderer *r, const struct gl_context *ctx, const struct scene *scene, char *err,
-                         size_t errlen, int *bad_input)
+/* The checks of renderer_create: 0, or -1 with e, ERROR_INPUT when the failure is the user's request
+ * (a forced path missing, a size beyond this GPU). */
+static int renderer_open(struct renderer *r, const struct gl_context *ctx, const struct scene *scene,
+                         struct error *e)
 {
     r->scene = scene;
     r->assets_key = assets_key(scene);
     /* until a caller says it reads only the image, every run keeps its outcomes readable */
     r->reads = RENDER_READ_OUTCOMES;
-    struct error ge;
-    if (gl_caps_probe(&r->caps, ctx, &ge) != 0) {
-        snprintf(err, errlen, "%s", ge.message);
+    if (gl_caps_probe(&r->caps, ctx, e) != 0) {
         quad_release();              /* the probe takes its share of the pass quad even when it fails */
         return -1;
     }
-    if (render_path_choose(&r->caps, scene->render.precision, scene->render.mrt, &r->path, err, errlen) != 0) {
+    if (render_path_choose(&r->caps, scene->render.precision, scene->render.mrt, &r->path, e) != 0) {
         /* a forced path that this GPU lacks is the user's request; no path at all is the machine's */
-        *bad_input = scene->render.precision != PRECISION_AUTO || scene->render.mrt == MRT_ON;
+        e->status = scene->render.precision != PRECISION_AUTO || scene->render.mrt == MRT_ON ? ERROR_INPUT
+                                                                                             : ERROR_RUNTIME;
         quad_release();
         return -1;
     }
     if (scene->render.width > r->caps.max_texture_size || scene->render.height > r->caps.max_texture_size) {
-        snprintf(err, errlen, "image size %dx%d exceeds this GPU's texture limit %d", scene->render.width,
-                 scene->render.height, r->caps.max_texture_size);
-        *bad_input = 1;
+        error_set(e, ERROR_INPUT, NULL, "image size %dx%d exceeds this GPU's texture limit %d", scene->render.width,
+                  scene->render.height, r->caps.max_texture_size);
         quad_release();
         return -1;
     }
     if (scene->render.method == METHOD_ORBIT_TABLE && !r->path.fp32) {
         if (scene->render.precision == PRECISION_FP16) {
-            snprintf(err, errlen, "render.method = orbit_table needs 32-bit float textures, and render.precision = "
-                     "fp16 asks for 16-bit ones: use render.method = rk4 or precision auto");
-            *bad_input = 1;
+            error_set(e, ERROR_INPUT, NULL, "render.method = orbit_table needs 32-bit float textures, and "
+                      "render.precision = fp16 asks for 16-bit ones: use render.method = rk4 or precision auto");
             quad_release();
             return -1;
         }
@@ -114,40 +109,37 @@ static int renderer_open(struct renderer *r, const struct gl_context *ctx, const
     int table_width = scene->render.orbit_columns + 1 + ORBIT_WARP_SAMPLES, table_height = 2 * scene->render.orbit_rows;
     if (scene->render.method == METHOD_ORBIT_TABLE && r->path.fp32 &&
         (table_width > r->caps.max_texture_size || table_height > r->caps.max_texture_size)) {
-        snprintf(err, errlen, "the orbit table (%dx%d texels for render.orbit_columns = %d, render.orbit_rows = %d) "
-                 "exceeds this GPU's texture limit %d", table_width, table_height, scene->render.orbit_columns,
-                 scene->render.orbit_rows, r->caps.max_texture_size);
-        *bad_input = 1;
+        error_set(e, ERROR_INPUT, NULL, "the orbit table (%dx%d texels for render.orbit_columns = %d, "
+                  "render.orbit_rows = %d) exceeds this GPU's texture limit %d", table_width, table_height,
+                  scene->render.orbit_columns, scene->render.orbit_rows, r->caps.max_texture_size);
         quad_release();
         return -1;
     }
     program_cache_init(&r->programs, &r->caps.shader, r->path.mrt);
     r->programs_ready = 1;
-    if (renderer_follow_scene(r, err, errlen) != 0)
+    if (renderer_follow_scene(r, e) != 0)
         return -1;
     struct object_batch all;
     char why[200];
-    if ((scene->render.pipeline == PIPELINE_SINGLE && frame_batch(r, &all, err, errlen) != 0) ||
-        (scene->render.pipeline == PIPELINE_FUSED && segment_fused_choose(r, why, sizeof why, err, errlen) < 0)) {
-        *bad_input = 1;      /* asked for, and refused before any work */
+    if ((scene->render.pipeline == PIPELINE_SINGLE && frame_batch(r, &all, e) != 0) ||
+        (scene->render.pipeline == PIPELINE_FUSED && segment_fused_choose(r, why, sizeof why, e) < 0)) {
+        e->status = ERROR_INPUT;     /* asked for, and refused before any work */
         return -1;
     }
-    if (textures_load(r, err, errlen, bad_input) != 0 || polygons_load(r, err, errlen) != 0)
+    if (textures_load(r, e) != 0 || polygons_load(r, e) != 0)
         return -1;
     return 0;
 }
 
 struct renderer *renderer_create(const struct gl_context *ctx, const struct scene *scene, struct error *e)
 {
-    int bad_input = 0;
     error_clear(e);
     struct renderer *r = calloc(1, sizeof *r);
     if (!r) {
         error_set(e, ERROR_RUNTIME, NULL, "out of memory");
         return NULL;
     }
-    if (renderer_open(r, ctx, scene, e->message, sizeof e->message, &bad_input) != 0) {
-        e->status = bad_input ? ERROR_INPUT : ERROR_RUNTIME;
+    if (renderer_open(r, ctx, scene, e) != 0) {
         if (r->programs_ready)
             renderer_destroy(r);
         else
@@ -171,25 +163,25 @@ void renderer_set_subpixel(struct renderer *r, double dx, double dy)
     r->subpixel_y = dy;
 }
 
-int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, int origin_y, int width, int height,
-                 segment_hook hook, void *hook_arg, char *err, size_t errlen)
+/* renderer_run with e; a hook that fails stops the run, and e says at which segment. */
+static int run(struct renderer *r, const struct scene *scene, int origin_x, int origin_y, int width, int height,
+               segment_hook hook, void *hook_arg, struct error *e)
 {
-    if (assets_key(scene) != r->assets_key) {
-        snprintf(err, errlen, "internal: a run of scene '%s' on the renderer made for '%s', whose objects, "
-                 "textures or sky it loaded: make a renderer for the new scene", scene->name, r->scene->name);
-        return -1;
-    }
+    if (assets_key(scene) != r->assets_key)
+        return error_set(e, ERROR_RUNTIME, NULL, "internal: a run of scene '%s' on the renderer made for '%s', whose "
+                         "objects, textures or sky it loaded: make a renderer for the new scene", scene->name,
+                         r->scene->name);
     r->scene = scene;
     const struct scene *s = r->scene;
     if (!r->have_state || r->rs.width != width || r->rs.height != height) {
         if (r->have_state)
             raystate_release(&r->rs);
         r->have_state = 0;
-        if (raystate_init(&r->rs, &r->path, width, height, err, errlen) != 0)
+        if (raystate_init(&r->rs, &r->path, width, height, e) != 0)
             return -1;
         r->have_state = 1;
     }
-    if (renderer_follow_scene(r, err, errlen) != 0)
+    if (renderer_follow_scene(r, e) != 0)
         return -1;
     double t0 = now_seconds();
     r->passes = 0;
@@ -203,9 +195,9 @@ int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, in
         /* the whole ray in one pass */
         /* where only the image is read, the pass draws it itself (the sky stage's colour in it) */
         int colour = r->reads == RENDER_READ_IMAGE && !r->hdr;
-        if ((r->exact_orbits && orbit_prepare(r, err, errlen) != 0) ||
-            stage_frame(r, colour ? FRAME_WRITES_COLOUR : FRAME_WRITES_OUTCOMES, err, errlen) != 0 ||
-            (!colour && stage_sky(r, err, errlen) != 0))
+        if ((r->exact_orbits && orbit_prepare(r, e) != 0) ||
+            stage_frame(r, colour ? FRAME_WRITES_COLOUR : FRAME_WRITES_OUTCOMES, e) != 0 ||
+            (!colour && stage_sky(r, e) != 0))
             return -1;
         r->pipeline_name = "single pass";
         r->state_pending = 1;
@@ -217,7 +209,7 @@ int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, in
         return 0;
     }
     char fused_why[200];
-    int fused = segment_fused_choose(r, fused_why, sizeof fused_why, err, errlen);
+    int fused = segment_fused_choose(r, fused_why, sizeof fused_why, e);
     if (fused < 0)
         return -1;
     if (s->render.pipeline == PIPELINE_AUTO) {
@@ -228,12 +220,12 @@ int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, in
     r->pipeline_name = fused ? "fused segment" : "multipass";
     r->state_pending = 0;
     r->outcomes_pending = 0;
-    if (stage_setup(r, err, errlen) != 0)
+    if (stage_setup(r, e) != 0)
         return -1;
     int early_z = s->render.early_z;
     if (early_z) {
         /* every ray-state framebuffer shares the depth buffer: 1 = travelling */
-        GLuint fbo = raystate_fbo(&r->rs, r->rs.result_hit, 0, err, errlen);
+        GLuint fbo = raystate_fbo(&r->rs, r->rs.result_hit, 0, e);
         if (!fbo)
             return -1;
         glBindFramebuffer(GL_FRAMEBUFFER, fbo);
@@ -245,7 +237,7 @@ int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, in
         glDepthFunc(GL_LESS);
     }
     int orbit = r->exact_orbits;
-    if (orbit && orbit_prepare(r, err, errlen) != 0)
+    if (orbit && orbit_prepare(r, e) != 0)
         return -1;
     int segments = r->straight ? 1 : orbit ? r->orbit.max_segments : render_segments(&s->render);
     /* Early stop: the first moving pass after each retirement runs inside an occlusion query,
@@ -269,27 +261,28 @@ int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, in
         int probe = stop_early && seg > 0 && seg % s->render.termination_interval == 0;
         if (probe)
             glBeginQuery(r->caps.query_target, r->queries[seg & 1]);
-        int moved = fused   ? stage_segment(r, seg, err, errlen)
-                    : orbit ? stage_orbit(r, seg, start, err, errlen)
-                            : stage_integrate(r, start, err, errlen);
+        int moved = fused   ? stage_segment(r, seg, e)
+                    : orbit ? stage_orbit(r, seg, start, e)
+                            : stage_integrate(r, start, e);
         if (probe)
             glEndQuery(r->caps.query_target);
         if (moved != 0)
             return -1;
         pending = probe ? seg : pending;
         /* the fused pass has intersected and ended the segment's rays too */
-        if (!fused && (stage_intersect_all(r, seg, start, err, errlen) != 0 || stage_terminate(r, seg, err, errlen) != 0))
+        if (!fused && (stage_intersect_all(r, seg, start, e) != 0 || stage_terminate(r, seg, e) != 0))
             return -1;
         if (early_z && (seg + 1) % s->render.termination_interval == 0 && seg + 1 < segments &&
-            stage_retire(r, 0, err, errlen) != 0)
+            stage_retire(r, 0, e) != 0)
             return -1;
         if (hook && hook(r, seg, hook_arg) != 0)
-            return -1;
+            return error_set(e, ERROR_RUNTIME, NULL, "the reader of every segment stopped the run at segment %d",
+                             seg);
     }
-    if (stage_retire(r, 1, err, errlen) != 0 || stage_polygons(r, err, errlen) != 0)
+    if (stage_retire(r, 1, e) != 0 || stage_polygons(r, e) != 0)
         return -1;
     glDisable(GL_DEPTH_TEST);
-    if (stage_sky(r, err, errlen) != 0)
+    if (stage_sky(r, e) != 0)
         return -1;
     glFinish();
     r->seconds = now_seconds() - t0;
@@ -298,12 +291,26 @@ int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, in
     return 0;
 }
 
+int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, int origin_y, int width, int height,
+                 segment_hook hook, void *hook_arg, char *err, size_t errlen)
+{
+    struct error e;
+    error_clear(&e);
+    if (run(r, scene, origin_x, origin_y, width, height, hook, hook_arg, &e) == 0)
+        return 0;
+    snprintf(err, errlen, "%s", e.message);
+    return -1;
+}
+
 int renderer_read_position(struct renderer *r, int x, int y, float xyzw[4], char *err, size_t errlen)
 {
     float buf[4 * 1];
-    GLuint fbo = raystate_fbo(&r->rs, r->rs.position[r->rs.cur_position], 0, err, errlen);
-    if (!fbo)
+    struct error e;
+    GLuint fbo = raystate_fbo(&r->rs, r->rs.position[r->rs.cur_position], 0, &e);
+    if (!fbo) {
+        snprintf(err, errlen, "%s", e.message);
         return -1;
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     if (read_float_pixels(x, y, 1, 1, buf) != 0) {
         snprintf(err, errlen, "cannot read the ray position back");
@@ -327,21 +334,22 @@ int render_read_with_sky(int with_state) { return with_state == RENDER_READ_STAT
 
 /* The single-pass frame's deferred outcome textures (image and velocity), traced again when the
  * frame drew its colour itself; then, with state, its hit and position. */
-static int complete(struct renderer *r, int state, char *err, size_t errlen)
+static int complete(struct renderer *r, int state, struct error *e)
 {
     glDisable(GL_DEPTH_TEST);
     if (r->outcomes_pending) {
         r->outcomes_pending = 0;
-        if (stage_frame(r, FRAME_WRITES_OUTCOMES, err, errlen) != 0)
+        if (stage_frame(r, FRAME_WRITES_OUTCOMES, e) != 0)
             return -1;
     }
     if (!state || !r->state_pending)
         return 0;
     r->state_pending = 0;
-    return stage_frame(r, FRAME_WRITES_STATE, err, errlen);
+    return stage_frame(r, FRAME_WRITES_STATE, e);
 }
 
-int renderer_read(struct renderer *r, struct render_result *out, int with_state, char *err, size_t errlen)
+/* renderer_read with e. */
+static int read_back(struct renderer *r, struct render_result *out, int with_state, struct error *e)
 {
     struct raystate *rs = &r->rs;
     size_t n = (size_t)rs->width * rs->height;
@@ -354,10 +362,9 @@ int renderer_read(struct renderer *r, struct render_result *out, int with_state,
     unsigned char *rows = malloc(n * 4);
     if (!out->rgba || !rows) {
         free(rows);
-        snprintf(err, errlen, "out of memory reading the image back");
-        return -1;
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the image back");
     }
-    GLuint fbo = raystate_fbo(rs, rs->final_color, 0, err, errlen);
+    GLuint fbo = raystate_fbo(rs, rs->final_color, 0, e);
     if (!fbo) {
         free(rows);
         return -1;
@@ -369,22 +376,20 @@ int renderer_read(struct renderer *r, struct render_result *out, int with_state,
         memcpy(out->rgba + (size_t)(rs->height - 1 - y) * rs->width * 4, rows + (size_t)y * rs->width * 4,
                (size_t)rs->width * 4);
     free(rows);
-    if (gl_check("reading the image back", err, errlen) != 0)
+    if (gl_check("reading the image back", e) != 0)
         return -1;
     if (r->hdr) {
         out->color = malloc(n * 4 * sizeof(float));
-        if (!out->color) {
-            snprintf(err, errlen, "out of memory reading the image back");
-            return -1;
-        }
-        if (raystate_read(rs, raystate_hdr_color(rs), out->color, err, errlen) != 0)
+        if (!out->color)
+            return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the image back");
+        if (raystate_read(rs, raystate_hdr_color(rs), out->color, e) != 0)
             return -1;
     }
     if (with_state == RENDER_READ_IMAGE)
         return 0;
     /* the image and velocity textures are written by every pipeline (a single pass that drew its
      * colour itself writes them now), position and hit on demand */
-    if (complete(r, render_read_includes(with_state, 0), err, errlen) != 0)
+    if (complete(r, render_read_includes(with_state, 0), e) != 0)
         return -1;
     float **dst[4] = {&out->position, &out->velocity, &out->hit, &out->image};
     GLuint src[4] = {rs->result_position, rs->result_velocity, rs->result_hit, rs->result_image};
@@ -392,19 +397,30 @@ int renderer_read(struct renderer *r, struct render_result *out, int with_state,
         if (!render_read_includes(with_state, k))
             continue;
         *dst[k] = malloc(n * 4 * sizeof(float));
-        if (!*dst[k]) {
-            snprintf(err, errlen, "out of memory reading the ray state back");
-            return -1;
-        }
-        if (raystate_read(rs, src[k], *dst[k], err, errlen) != 0)
+        if (!*dst[k])
+            return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the ray state back");
+        if (raystate_read(rs, src[k], *dst[k], e) != 0)
             return -1;
     }
     return 0;
 }
 
+int renderer_read(struct renderer *r, struct render_result *out, int with_state, char *err, size_t errlen)
+{
+    struct error e;
+    if (read_back(r, out, with_state, &e) == 0)
+        return 0;
+    snprintf(err, errlen, "%s", e.message);
+    return -1;
+}
+
 int renderer_complete_state(struct renderer *r, char *err, size_t errlen)
 {
-    return complete(r, 1, err, errlen);
+    struct error e;
+    if (complete(r, 1, &e) == 0)
+        return 0;
+    snprintf(err, errlen, "%s", e.message);
+    return -1;
 }
 
 void renderer_set_reads(struct renderer *r, int with_state)

@@ -45,14 +45,13 @@ int frame_choose(const struct renderer *r, int per_segment_hook, char *why, size
     return 1;
 }
 
-int frame_batch(const struct renderer *r, struct object_batch *b, char *err, size_t errlen)
+int frame_batch(const struct renderer *r, struct object_batch *b, struct error *e)
 {
     if (object_batch_all(r, b) == 0)
         return 0;
-    snprintf(err, errlen, "render.pipeline = single: the scene's %d objects do not fit one pass on this GPU "
-             "(at most %d, their textures within its texture units, none drawn as polygons); use "
-             "render.pipeline = multipass or auto", r->scene->n_objects, frame_object_limit(r));
-    return -1;
+    return error_set(e, ERROR_INPUT, NULL, "render.pipeline = single: the scene's %d objects do not fit one pass on "
+                     "this GPU (at most %d, their textures within its texture units, none drawn as polygons); use "
+                     "render.pipeline = multipass or auto", r->scene->n_objects, frame_object_limit(r));
 }
 
 struct frame_args {
@@ -78,14 +77,13 @@ static void set_frame(const struct program_uniforms *p, const void *arg)
     uniform_float(p, "u_segments", r->straight ? 1 : render_segments(&r->scene->render));
 }
 
-int frame_batch_defines(const struct renderer *r, const struct object_batch *b, char *out, size_t len, char *err,
-                        size_t errlen)
+int frame_batch_defines(const struct renderer *r, const struct object_batch *b, char *out, size_t len,
+                        struct error *e)
 {
     if (b->count > 0) {
         if (object_batch_defines(b, out, len) == 0)
             return 0;
-        snprintf(err, errlen, "internal: the defines of a pass with every object do not fit");
-        return -1;
+        return error_set(e, ERROR_RUNTIME, NULL, "internal: the defines of a pass with every object do not fit");
     }
     /* nothing to meet: an empty batch of one slot keeps the shading code well-formed */
     snprintf(out, len, "#define BATCH_SIZE 1\n#define LIGHT_COUNT %d\n#define BATCH_TESTS\n%s%s\n", r->scene->n_lights,
@@ -93,15 +91,15 @@ int frame_batch_defines(const struct renderer *r, const struct object_batch *b, 
     return 0;
 }
 
-int stage_frame(struct renderer *r, enum frame_output output, char *err, size_t errlen)
+int stage_frame(struct renderer *r, enum frame_output output, struct error *e)
 {
     struct raystate *rs = &r->rs;
     const struct scene *s = r->scene;
     struct frame_args a = {.r = r, .output = output};
-    if (frame_batch(r, &a.batch, err, errlen) != 0)
+    if (frame_batch(r, &a.batch, e) != 0)
         return -1;
     char batch[4096];
-    if (frame_batch_defines(r, &a.batch, batch, sizeof batch, err, errlen) != 0)
+    if (frame_batch_defines(r, &a.batch, batch, sizeof batch, e) != 0)
         return -1;
     const char *files[PRIM_COUNT + 11] = {"common.glsl", r->model_file};
     int n = object_batch_files(&a.batch, files, 2);
@@ -131,14 +129,14 @@ int stage_frame(struct renderer *r, enum frame_output output, char *err, size_t 
                  r->model_defines, batch, r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass,
                  written);
     const struct stage_program *sp =
-        program_cache_get(&r->programs, files, defines, output != FRAME_WRITES_COLOUR, err, errlen);
+        program_cache_get(&r->programs, files, defines, output != FRAME_WRITES_COLOUR, e);
     if (!sp)
         return -1;
     GLuint out0 = output == FRAME_WRITES_STATE ? rs->result_hit : output == FRAME_WRITES_COLOUR ? rs->final_color
                                                                                                : rs->result_image;
     GLuint out1 = output == FRAME_WRITES_STATE ? rs->result_position : output == FRAME_WRITES_COLOUR ? 0
                                                                                                     : rs->result_velocity;
-    if (pass_run(r, sp, out0, out1, NULL, 0, set_frame, &a, err, errlen) != 0)
+    if (pass_run(r, sp, out0, out1, NULL, 0, set_frame, &a, e) != 0)
         return -1;
-    return gl_check("the single-pass frame", err, errlen);
+    return gl_check("the single-pass frame", e);
 }

@@ -18,16 +18,16 @@ void integrate_set_uniforms(const struct program_uniforms *p, const void *scene)
     }
 }
 
-int stage_integrate(struct renderer *r, int segment_start, char *err, size_t errlen)
+int stage_integrate(struct renderer *r, int segment_start, struct error *e)
 {
     const struct scene *s = r->scene;
     const char *const files[] = {"common.glsl", r->model_file, "stage_integrate.glsl", NULL};
-    const struct stage_program *sp = program_cache_get(&r->programs, files, r->model_defines, 1, err, errlen);
+    const struct stage_program *sp = program_cache_get(&r->programs, files, r->model_defines, 1, e);
     if (!sp)
         return -1;
     int passes = r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass;
     for (int k = 0; k < passes; k++)
-        if (pass_move_rays(r, sp, segment_start, integrate_set_uniforms, s, err, errlen) != 0)
+        if (pass_move_rays(r, sp, segment_start, integrate_set_uniforms, s, e) != 0)
             return -1;
-    return gl_check("ray integration", err, errlen);
+    return gl_check("ray integration", e);
 }

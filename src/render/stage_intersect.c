@@ -254,14 +254,12 @@ int frame_object_limit(const struct renderer *r)
     return pass_capacity(r, 1);
 }
 
-static int intersect_batch(struct renderer *r, const struct object_batch *b, int segment_start, char *err, size_t errlen)
+static int intersect_batch(struct renderer *r, const struct object_batch *b, int segment_start, struct error *e)
 {
     struct raystate *rs = &r->rs;
     char defines[4096];
-    if (object_batch_defines(b, defines, sizeof defines) != 0) {
-        snprintf(err, errlen, "internal: the defines of an object batch do not fit");
-        return -1;
-    }
+    if (object_batch_defines(b, defines, sizeof defines) != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "internal: the defines of an object batch do not fit");
     const char *files[PRIM_COUNT + 8] = {"common.glsl"};
     int n = object_batch_files(b, files, 1);
     files[n++] = "observer.glsl";
@@ -272,7 +270,7 @@ static int intersect_batch(struct renderer *r, const struct object_batch *b, int
     files[n++] = "shade.glsl";
     files[n++] = "stage_intersect.glsl";
     files[n] = NULL;
-    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, err, errlen);
+    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, e);
     if (!sp)
         return -1;
     int out = 1 - rs->cur_hit;
@@ -282,13 +280,13 @@ static int intersect_batch(struct renderer *r, const struct object_batch *b, int
         {"u_hit", rs->hit[rs->cur_hit]},
         {"u_image", rs->image[rs->cur_hit]},
     };
-    if (pass_run(r, sp, rs->hit[out], rs->image[out], in, 4, object_batch_set_uniforms, b, err, errlen) != 0)
+    if (pass_run(r, sp, rs->hit[out], rs->image[out], in, 4, object_batch_set_uniforms, b, e) != 0)
         return -1;
     rs->cur_hit = out;
     return 0;
 }
 
-int stage_intersect_all(struct renderer *r, int segment, int segment_start, char *err, size_t errlen)
+int stage_intersect_all(struct renderer *r, int segment, int segment_start, struct error *e)
 {
     const struct scene *s = r->scene;
     int limit = intersect_batch_limit(r);
@@ -306,8 +304,8 @@ int stage_intersect_all(struct renderer *r, int segment, int segment_start, char
             textured += needs;
             b.object[b.count++] = next;
         }
-        if (b.count > 0 && intersect_batch(r, &b, segment_start, err, errlen) != 0)
+        if (b.count > 0 && intersect_batch(r, &b, segment_start, e) != 0)
             return -1;
     }
-    return gl_check("ray-object intersection", err, errlen);
+    return gl_check("ray-object intersection", e);
 }

@@ -74,7 +74,7 @@ static void release_table(struct orbit_table *t, GLuint *texture)
 
 /* Two tables are kept: the kiosk's coarse preview table and its refined frame's, which alternate
  * while the knobs rest, are each built once. */
-int orbit_prepare(struct renderer *r, char *err, size_t errlen)
+int orbit_prepare(struct renderer *r, struct error *e)
 {
     struct orbit_table_params p;
     orbit_table_params_for(r->scene, &p);
@@ -84,11 +84,16 @@ int orbit_prepare(struct renderer *r, char *err, size_t errlen)
     if (r->orbit_texture && memcmp(&p, &r->orbit.p, sizeof p) == 0)
         return 0;
     release_table(&r->orbit, &r->orbit_texture);
-    if (orbit_table_build(&r->orbit, &p, err, errlen) != 0)
+    /* the physics module still reports in a buffer: its failures are the machine's */
+    if (orbit_table_build(&r->orbit, &p, e->message, sizeof e->message) != 0) {
+        e->status = ERROR_RUNTIME;
+        e->where[0] = '\0';
         return -1;
+    }
     if (r->orbit.width > r->caps.max_texture_size || r->orbit.height > r->caps.max_texture_size) {
-        snprintf(err, errlen, "the orbit table (%dx%d) exceeds this GPU's texture limit %d: lower "
-                 "render.orbit_rows or render.orbit_columns", r->orbit.width, r->orbit.height, r->caps.max_texture_size);
+        error_set(e, ERROR_INPUT, NULL, "the orbit table (%dx%d) exceeds this GPU's texture limit %d: lower "
+                  "render.orbit_rows or render.orbit_columns", r->orbit.width, r->orbit.height,
+                  r->caps.max_texture_size);
         release_table(&r->orbit, &r->orbit_texture);
         return -1;
     }
@@ -96,7 +101,7 @@ int orbit_prepare(struct renderer *r, char *err, size_t errlen)
     r->orbit_texture = texture_create_nearest(f->internal_format, f->format, GL_FLOAT, r->orbit.width, r->orbit.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, r->orbit.width, r->orbit.height, f->format, GL_FLOAT, r->orbit.texels);
-    return gl_check("uploading the orbit table", err, errlen);
+    return gl_check("uploading the orbit table", e);
 }
 
 void orbit_release(struct renderer *r)
@@ -182,17 +187,17 @@ void orbit_set_uniforms(const struct program_uniforms *p, const struct renderer 
     uniform_float(p, "u_orbit_even_scale", ORBIT_EVEN_SCALE);
 }
 
-int stage_orbit(struct renderer *r, int segment, int segment_start, char *err, size_t errlen)
+int stage_orbit(struct renderer *r, int segment, int segment_start, struct error *e)
 {
     const char *const files[] = {"common.glsl", "model_schwarzschild.glsl", "observer.glsl", "orbit_table.glsl",
                                  "stage_orbit.glsl", NULL};
     char defines[sizeof r->model_defines + sizeof r->observer_defines];
     snprintf(defines, sizeof defines, "%s%s", r->model_defines, r->observer_defines);
-    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, err, errlen);
+    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, e);
     if (!sp)
         return -1;
     struct orbit_args a = {r, segment};
-    if (pass_move_rays(r, sp, segment_start, set_orbit, &a, err, errlen) != 0)
+    if (pass_move_rays(r, sp, segment_start, set_orbit, &a, e) != 0)
         return -1;
-    return gl_check("orbit segments", err, errlen);
+    return gl_check("orbit segments", e);
 }

@@ -21,7 +21,7 @@ int polygons_draw_object(const struct renderer *r, int k)
     return r->scene->render.moving_objects == MOVING_POLYGONS && object_motion(&r->scene->objects[k], &m);
 }
 
-int polygons_load(struct renderer *r, char *err, size_t errlen)
+int polygons_load(struct renderer *r, struct error *e)
 {
     const struct scene *s = r->scene;
     for (int k = 0; k < s->n_objects; k++) {
@@ -31,8 +31,7 @@ int polygons_load(struct renderer *r, char *err, size_t errlen)
         struct polygon_mesh mesh;
         object_rest_geometry(&s->objects[k], &rest);
         if (polygon_mesh_build(&rest, s->render.polygon_subdivision, &mesh) != 0) {
-            snprintf(err, errlen, "out of memory for the mesh of [object %s]", s->objects[k].name);
-            return -1;
+            return error_set(e, ERROR_RUNTIME, NULL, "out of memory for the mesh of [object %s]", s->objects[k].name);
         }
         glGenBuffers(2, r->mesh_buffers[k]);
         glBindBuffer(GL_ARRAY_BUFFER, r->mesh_buffers[k][0]);
@@ -46,7 +45,7 @@ int polygons_load(struct renderer *r, char *err, size_t errlen)
     }
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
     quad_bind();
-    return gl_check("uploading the moving objects' meshes", err, errlen);
+    return gl_check("uploading the moving objects' meshes", e);
 }
 
 void polygons_release(struct renderer *r)
@@ -105,8 +104,7 @@ static void draw_object(struct renderer *r, const struct program_uniforms *p, in
 }
 
 /* One object's program: its variant (textured, clock) on top of the observer's. */
-static const struct stage_program *object_program(struct renderer *r, const struct object *o, char *err,
-                                                  size_t errlen)
+static const struct stage_program *object_program(struct renderer *r, const struct object *o, struct error *e)
 {
     static const char *const vertex[] = {"polygon_vertex.glsl", NULL};
     char defines[512];
@@ -114,17 +112,17 @@ static const struct stage_program *object_program(struct renderer *r, const stru
              o->material.texture >= 0 ? "#define TEXTURED 1\n" : "",
              o->material.clock_period > 0.0 ? "#define CLOCKS 1\n" : "", r->observer_defines);
     const char *const files[] = {"common.glsl", "observer.glsl", "shade.glsl", "polygon_fragment.glsl", NULL};
-    return program_cache_get_vertex(&r->programs, vertex, files, defines, 1, err, errlen);
+    return program_cache_get_vertex(&r->programs, vertex, files, defines, 1, e);
 }
 
-int stage_polygons(struct renderer *r, char *err, size_t errlen)
+int stage_polygons(struct renderer *r, struct error *e)
 {
     if (!polygons_present(r))
         return 0;
     const struct scene *s = r->scene;
     struct raystate *rs = &r->rs;
     /* one depth buffer (distance from the eye) for the polygons of every moving object */
-    GLuint first = raystate_fbo(rs, rs->result_hit, 0, err, errlen);
+    GLuint first = raystate_fbo(rs, rs->result_hit, 0, e);
     if (!first)
         return -1;
     glBindFramebuffer(GL_FRAMEBUFFER, first);
@@ -135,12 +133,12 @@ int stage_polygons(struct renderer *r, char *err, size_t errlen)
     for (int k = 0; k < s->n_objects; k++) {
         if (!polygons_draw_object(r, k))
             continue;
-        const struct stage_program *sp = object_program(r, &s->objects[k], err, errlen);
+        const struct stage_program *sp = object_program(r, &s->objects[k], e);
         if (!sp)
             return -1;
         for (int t = 0; t < sp->n_programs; t++) {
             GLuint out0 = sp->n_programs == 1 || t == 0 ? rs->result_hit : rs->result_image;
-            GLuint fbo = raystate_fbo(rs, out0, sp->n_programs == 1 ? rs->result_image : 0, err, errlen);
+            GLuint fbo = raystate_fbo(rs, out0, sp->n_programs == 1 ? rs->result_image : 0, e);
             if (!fbo)
                 return -1;
             const struct program_uniforms *p = &sp->program[t];
@@ -175,5 +173,5 @@ int stage_polygons(struct renderer *r, char *err, size_t errlen)
     glDisable(GL_DEPTH_TEST);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
     quad_bind();
-    return gl_check("moving objects as polygons", err, errlen);
+    return gl_check("moving objects as polygons", e);
 }

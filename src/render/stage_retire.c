@@ -19,7 +19,7 @@ static void set_retire(const struct program_uniforms *p, const void *arg)
     }
 }
 
-int stage_retire(struct renderer *r, int all, char *err, size_t errlen)
+int stage_retire(struct renderer *r, int all, struct error *e)
 {
     /* integrated rays around a mass: the sky's direction at infinity goes into the velocity */
     static const char *const files[] = {"common.glsl", "stage_retire.glsl", NULL};
@@ -27,9 +27,8 @@ int stage_retire(struct renderer *r, int all, char *err, size_t errlen)
                                                     NULL};
     struct raystate *rs = &r->rs;
     const struct stage_program *sp =
-        r->sky_at_infinity ? program_cache_get(&r->programs, files_at_infinity, "#define SKY_AT_INFINITY 1\n", 1, err,
-                                               errlen)
-                           : program_cache_get(&r->programs, files, "", 1, err, errlen);
+        r->sky_at_infinity ? program_cache_get(&r->programs, files_at_infinity, "#define SKY_AT_INFINITY 1\n", 1, e)
+                           : program_cache_get(&r->programs, files, "", 1, e);
     if (!sp)
         return -1;
     struct retire_args a0 = {r, all, 1}, a1 = {r, all, 0};
@@ -47,14 +46,14 @@ int stage_retire(struct renderer *r, int all, char *err, size_t errlen)
     };
     int inputs = r->sky_at_infinity ? 4 : 3;
     r->quad_z = -1.0f;          /* depth 0: in front of the heavy passes' 0.5 */
-    int rc = pass_run(r, sp, rs->result_position, rs->result_velocity, pair0, inputs, set_retire, &a0, err, errlen);
+    int rc = pass_run(r, sp, rs->result_position, rs->result_velocity, pair0, inputs, set_retire, &a0, e);
     /* the depth mark goes with the last draw, after every result texture has its copy */
     r->depth_write_last = r->scene->render.early_z;
     if (rc == 0)
-        rc = pass_run(r, sp, rs->result_hit, rs->result_image, pair1, inputs, set_retire, &a1, err, errlen);
+        rc = pass_run(r, sp, rs->result_hit, rs->result_image, pair1, inputs, set_retire, &a1, e);
     r->depth_write_last = 0;
     r->quad_z = 0.0f;
     if (rc != 0)
         return -1;
-    return gl_check("ray retirement", err, errlen);
+    return gl_check("ray retirement", e);
 }

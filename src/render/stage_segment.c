@@ -27,7 +27,7 @@ static const char *fused_missing(const struct renderer *r, char *buf, size_t n)
     return NULL;
 }
 
-int segment_fused_choose(const struct renderer *r, char *why, size_t whylen, char *err, size_t errlen)
+int segment_fused_choose(const struct renderer *r, char *why, size_t whylen, struct error *e)
 {
     enum pipeline_choice choice = r->scene->render.pipeline;
     char buf[160];
@@ -36,10 +36,9 @@ int segment_fused_choose(const struct renderer *r, char *why, size_t whylen, cha
         return 0;
     }
     const char *missing = fused_missing(r, buf, sizeof buf);
-    if (choice == PIPELINE_FUSED && missing) {
-        snprintf(err, errlen, "render.pipeline = fused: %s; use render.pipeline = multipass or auto", missing);
-        return -1;
-    }
+    if (choice == PIPELINE_FUSED && missing)
+        return error_set(e, ERROR_INPUT, NULL, "render.pipeline = fused: %s; use render.pipeline = multipass or auto",
+                         missing);
     if (missing) {
         snprintf(why, whylen, "%s", missing);
         return 0;
@@ -62,13 +61,13 @@ static void set_segment(const struct program_uniforms *p, const void *arg)
     observer_set_uniforms(p, a->r);
 }
 
-int stage_segment(struct renderer *r, int segment, char *err, size_t errlen)
+int stage_segment(struct renderer *r, int segment, struct error *e)
 {
     struct raystate *rs = &r->rs;
     const struct scene *s = r->scene;
     struct segment_args a = {.r = r};
     char batch[4096];
-    if (frame_batch(r, &a.batch, err, errlen) != 0 || frame_batch_defines(r, &a.batch, batch, sizeof batch, err, errlen) != 0)
+    if (frame_batch(r, &a.batch, e) != 0 || frame_batch_defines(r, &a.batch, batch, sizeof batch, e) != 0)
         return -1;
     a.batch.segment = segment;
     const char *files[PRIM_COUNT + 10] = {"common.glsl", r->model_file};
@@ -83,7 +82,7 @@ int stage_segment(struct renderer *r, int segment, char *err, size_t errlen)
     char defines[sizeof batch + sizeof r->model_defines + 96];
     snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define PASSES_PER_SEGMENT %d\n", r->model_defines,
              batch, r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass);
-    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, err, errlen);
+    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, e);
     if (!sp)
         return -1;
     /* the other copies of each: the segment's start stays where it is */
@@ -97,10 +96,10 @@ int stage_segment(struct renderer *r, int segment, char *err, size_t errlen)
     };
     const GLuint out[SEGMENT_FUSED_TARGETS] = {rs->position[out_pos], rs->velocity[out_vel], rs->hit[out_hit],
                                        rs->image[out_hit]};
-    if (pass_run_targets(r, sp, out, in, 4, set_segment, &a, err, errlen) != 0)
+    if (pass_run_targets(r, sp, out, in, 4, set_segment, &a, e) != 0)
         return -1;
     rs->cur_position = out_pos;
     rs->cur_velocity = out_vel;
     rs->cur_hit = out_hit;
-    return gl_check("the fused segment pass", err, errlen);
+    return gl_check("the fused segment pass", e);
 }

@@ -31,28 +31,28 @@ static void set_sky(const struct program_uniforms *p, const void *arg)
     sky_colour_set_uniforms(p, arg, UNIT_SKY);
 }
 
-int stage_sky(struct renderer *r, char *err, size_t errlen)
+int stage_sky(struct renderer *r, struct error *e)
 {
     static const char *const files[] = {"common.glsl", "observer.glsl", "sky_colour.glsl", "stage_sky.glsl", NULL};
     struct raystate *rs = &r->rs;
     char defines[sizeof r->observer_defines + 32];
     snprintf(defines, sizeof defines, "%s%s", sky_colour_defines(r), r->observer_defines);
-    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 0, err, errlen);
+    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 0, e);
     if (!sp)
         return -1;
     struct pass_input in[] = {
         {"u_image", rs->result_image},
         {"u_ray_velocity", rs->result_velocity},
     };
-    if (pass_run(r, sp, rs->final_color, 0, in, 2, set_sky, r, err, errlen) != 0)
+    if (pass_run(r, sp, rs->final_color, 0, in, 2, set_sky, r, e) != 0)
         return -1;
     if (r->hdr) {
         /* the float colour into a ping-pong texture of the ray state, free once the rays are done */
         char hdr_defines[sizeof defines + 32];
         snprintf(hdr_defines, sizeof hdr_defines, "#define HDR_OUTPUT 1\n%s", defines);
-        const struct stage_program *hp = program_cache_get(&r->programs, files, hdr_defines, 0, err, errlen);
-        if (!hp || pass_run(r, hp, raystate_hdr_color(rs), 0, in, 2, set_sky, r, err, errlen) != 0)
+        const struct stage_program *hp = program_cache_get(&r->programs, files, hdr_defines, 0, e);
+        if (!hp || pass_run(r, hp, raystate_hdr_color(rs), 0, in, 2, set_sky, r, e) != 0)
             return -1;
     }
-    return gl_check("sky and final colour", err, errlen);
+    return gl_check("sky and final colour", e);
 }

@@ -14,11 +14,11 @@ static void set_terminate(const struct program_uniforms *p, const void *arg)
     uniform_float(p, "u_segment_index", a->segment);
 }
 
-int stage_terminate(struct renderer *r, int segment, char *err, size_t errlen)
+int stage_terminate(struct renderer *r, int segment, struct error *e)
 {
     static const char *const files[] = {"common.glsl", "stage_terminate.glsl", NULL};
     struct raystate *rs = &r->rs;
-    const struct stage_program *sp = program_cache_get(&r->programs, files, "", 1, err, errlen);
+    const struct stage_program *sp = program_cache_get(&r->programs, files, "", 1, e);
     if (!sp)
         return -1;
     struct terminate_args a = {r->scene, segment};
@@ -28,8 +28,8 @@ int stage_terminate(struct renderer *r, int segment, char *err, size_t errlen)
         {"u_hit", rs->hit[rs->cur_hit]},
         {"u_image", rs->image[rs->cur_hit]},
     };
-    if (pass_run(r, sp, rs->hit[out], rs->image[out], in, 3, set_terminate, &a, err, errlen) != 0)
+    if (pass_run(r, sp, rs->hit[out], rs->image[out], in, 3, set_terminate, &a, e) != 0)
         return -1;
     rs->cur_hit = out;
-    return gl_check("ray termination test", err, errlen);
+    return gl_check("ray termination test", e);
 }

@@ -70,45 +70,45 @@ typedef void (*set_uniforms_fn)(const struct program_uniforms *program, const vo
 /* Draw the quad with each program of the stage into out0 (and out1), inputs bound as samplers. */
 int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GLuint out1,
              const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
-             char *err, size_t errlen);
+             struct error *e);
 
 /* The same for up to RAYSTATE_MAX_TARGETS targets (the fused segment pass: four, with MRT). */
 int pass_run_targets(struct renderer *r, const struct stage_program *sp, const GLuint out[RAYSTATE_MAX_TARGETS],
                      const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
-                     char *err, size_t errlen);
+                     struct error *e);
 
 /* One pass that moves the rays (integrate, orbit): reads the current position, velocity and hit,
  * writes the next position (keeping the segment's start) and velocity. */
 int pass_move_rays(struct renderer *r, const struct stage_program *sp, int segment_start, set_uniforms_fn set_uniforms,
-                   const void *arg, char *err, size_t errlen);
+                   const void *arg, struct error *e);
 
 void model_set_uniforms(const struct program_uniforms *program, const struct model *m);
 void bounds_set_uniforms(const struct program_uniforms *program, const struct scene *s);
 void uniform_vec3(const struct program_uniforms *program, const char *name, vec3d v);
 void uniform_float(const struct program_uniforms *program, const char *name, double v);
 
-/* The scene's textures and sky; a file that cannot be decoded sets *bad_input (exit 2). */
-int textures_load(struct renderer *r, char *err, size_t errlen, int *bad_input);
+/* The scene's textures and sky; a file that cannot be decoded is ERROR_INPUT (exit 2). */
+int textures_load(struct renderer *r, struct error *e);
 /* shaders_es/observer.glsl: camera, observer velocity, black-body table (observer.c) */
 int observer_defines(const struct scene *s, char *out, size_t len);
 void observer_set_uniforms(const struct program_uniforms *program, const struct renderer *r);
-int observer_lut_load(struct renderer *r, char *err, size_t errlen);
+int observer_lut_load(struct renderer *r, struct error *e);
 void observer_lut_release(struct renderer *r);
 void textures_release(struct renderer *r);
 
-int stage_setup(struct renderer *r, char *err, size_t errlen);
-int stage_integrate(struct renderer *r, int segment_start, char *err, size_t errlen);
+int stage_setup(struct renderer *r, struct error *e);
+int stage_integrate(struct renderer *r, int segment_start, struct error *e);
 /* The integration stage's uniforms (model, bounds, step control): a set_uniforms_fn of a scene. */
 void integrate_set_uniforms(const struct program_uniforms *p, const void *scene);
 /* render.method = orbit_table (stage_orbit.c): the table for the scene as it is now, built and
  * uploaded when its parameters changed; one pass per segment along the exact orbits. */
-int orbit_prepare(struct renderer *r, char *err, size_t errlen);
+int orbit_prepare(struct renderer *r, struct error *e);
 void orbit_release(struct renderer *r);
-int stage_orbit(struct renderer *r, int segment, int segment_start, char *err, size_t errlen);
+int stage_orbit(struct renderer *r, int segment, int segment_start, struct error *e);
 /* The orbit stage's uniforms (table, camera, bounds, the pixel's axis; segment for the orbit stage). */
 void orbit_set_uniforms(const struct program_uniforms *p, const struct renderer *r, int segment);
 /* Every object against the current segment, render.batch objects per pass. */
-int stage_intersect_all(struct renderer *r, int segment, int segment_start, char *err, size_t errlen);
+int stage_intersect_all(struct renderer *r, int segment, int segment_start, struct error *e);
 /* Objects per intersection pass on this GPU: render.batch, bounded by its uniform vectors. */
 int intersect_batch_limit(const struct renderer *r);
 /* Objects the single pass can test on this GPU (its uniform vectors; render.batch does not apply). */
@@ -138,36 +138,37 @@ int object_batch_all(const struct renderer *r, struct object_batch *b);
 int frame_choose(const struct renderer *r, int per_segment_hook, char *why, size_t whylen);
 /* render.pipeline = fused (stage_segment.c): whether this frame's segments each run as one pass
  * (integrate, intersect and terminate fused; four draw buffers), with why in words; forced where
- * it cannot run: -1 with err (render.pipeline = fused asked for what this GPU or scene lacks).
+ * it cannot run: -1 with e (ERROR_INPUT: render.pipeline = fused asked for what this GPU or scene lacks).
  * The pass of segment k itself. */
 /* Why every object of the scene does not fit one pass (for the pipeline's why). */
 void frame_objects_why(const struct renderer *r, char *why, size_t whylen);
 /* The defines of a pass that tests every object (b from frame_batch; none: an empty slot). */
-int frame_batch_defines(const struct renderer *r, const struct object_batch *b, char *out, size_t len, char *err,
-                        size_t errlen);
-int segment_fused_choose(const struct renderer *r, char *why, size_t whylen, char *err, size_t errlen);
-int stage_segment(struct renderer *r, int segment, char *err, size_t errlen);
+int frame_batch_defines(const struct renderer *r, const struct object_batch *b, char *out, size_t len,
+                        struct error *e);
+int segment_fused_choose(const struct renderer *r, char *why, size_t whylen, struct error *e);
+int stage_segment(struct renderer *r, int segment, struct error *e);
 /* What a single-pass frame writes: the outcome textures (image and velocity, what the sky stage
  * reads), the state (hit and position, for a read-back of the ray state), or the final colour itself
  * (the sky stage's sky_colour.glsl in the same pass, when only the image is read: FRAME_COLOUR
  * in the shaders). */
 enum frame_output { FRAME_WRITES_OUTCOMES, FRAME_WRITES_STATE, FRAME_WRITES_COLOUR };
-int stage_frame(struct renderer *r, enum frame_output output, char *err, size_t errlen);
-/* Every object of the scene as the single pass's batch; -1 with err saying why they do not fit. */
-int frame_batch(const struct renderer *r, struct object_batch *b, char *err, size_t errlen);
-int stage_terminate(struct renderer *r, int segment, char *err, size_t errlen);
+int stage_frame(struct renderer *r, enum frame_output output, struct error *e);
+/* Every object of the scene as the single pass's batch; -1 with e saying why they do not fit
+ * (ERROR_INPUT: only render.pipeline = single asks for it where they do not). */
+int frame_batch(const struct renderer *r, struct object_batch *b, struct error *e);
+int stage_terminate(struct renderer *r, int segment, struct error *e);
 /* Retire finished rays (all: every ray) into the result textures; mark them for early-z. */
-int stage_retire(struct renderer *r, int all, char *err, size_t errlen);
-int stage_sky(struct renderer *r, char *err, size_t errlen);
+int stage_retire(struct renderer *r, int all, struct error *e);
+int stage_sky(struct renderer *r, struct error *e);
 /* The final colour's uniforms and defines (sky_colour.glsl), for the sky stage and FRAME_WRITES_COLOUR. */
 void sky_colour_set_uniforms(const struct program_uniforms *p, const struct renderer *r, int sky_unit);
 const char *sky_colour_defines(const struct renderer *r);
 /* The polygon method for moving objects (stage_polygons.c): which objects it draws, their meshes,
  * and the stage that rasterises them into the results. */
 int polygons_draw_object(const struct renderer *r, int k);
-int polygons_load(struct renderer *r, char *err, size_t errlen);
+int polygons_load(struct renderer *r, struct error *e);
 void polygons_release(struct renderer *r);
-int stage_polygons(struct renderer *r, char *err, size_t errlen);
+int stage_polygons(struct renderer *r, struct error *e);
 /* One object's material vectors as the intersection and polygon shaders read them. */
 void intersect_pack_material(const struct material *m, int object_id, float out[5][4]);
 

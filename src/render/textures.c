@@ -7,18 +7,15 @@
 /* A texture that cannot be decoded is the scene's bad input: the message names the scene file and
  * the line of the key that named it (the validation read only the PNG's header). */
 static int upload(GLenum target, const struct scene *s, const char *key, int line, const char *path, int max_size,
-                  char *err, size_t errlen, int *bad_input)
+                  struct error *e)
 {
     int w, h, owned = 0;
     const unsigned char *rgba = NULL;
     struct error fe;
     if (image_read(path, max_size, &w, &h, &rgba, &owned, &fe) != 0) {
         if (line > 0)
-            snprintf(err, errlen, "%s:%d: %s: %s", s->path, line, key, fe.message);
-        else
-            snprintf(err, errlen, "%s: %s: %s", s->path, key, fe.message);
-        *bad_input = 1;
-        return -1;
+            return error_set(e, ERROR_INPUT, NULL, "%s:%d: %s: %s", s->path, line, key, fe.message);
+        return error_set(e, ERROR_INPUT, NULL, "%s: %s: %s", s->path, key, fe.message);
     }
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(target, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
@@ -27,7 +24,7 @@ static int upload(GLenum target, const struct scene *s, const char *key, int lin
     return 0;
 }
 
-int textures_load(struct renderer *r, char *err, size_t errlen, int *bad_input)
+int textures_load(struct renderer *r, struct error *e)
 {
     const struct scene *s = r->scene;
     int max_size = r->caps.max_texture_size < SCENE_MAX_TEXTURE_SIZE ? r->caps.max_texture_size : SCENE_MAX_TEXTURE_SIZE;
@@ -39,8 +36,7 @@ int textures_load(struct renderer *r, char *err, size_t errlen, int *bad_input)
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        if (upload(GL_TEXTURE_2D, s, "texture", s->texture_line[i], s->textures[i], max_size, err, errlen,
-                   bad_input) != 0)
+        if (upload(GL_TEXTURE_2D, s, "texture", s->texture_line[i], s->textures[i], max_size, e) != 0)
             return -1;
     }
     if (s->sky.type == SKY_CUBEMAP) {
@@ -53,12 +49,11 @@ int textures_load(struct renderer *r, char *err, size_t errlen, int *bad_input)
         for (int f = 0; f < SCENE_CUBEMAP_FACES; f++) {
             char path[SCENE_PATH_LEN + 16];
             scene_cubemap_face_path(s->sky.cubemap, f, path, sizeof path);
-            if (upload(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, s, "cubemap", s->cubemap_line, path, max_size, err,
-                       errlen, bad_input) != 0)
+            if (upload(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, s, "cubemap", s->cubemap_line, path, max_size, e) != 0)
                 return -1;
         }
     }
-    return gl_check("uploading textures", err, errlen);
+    return gl_check("uploading textures", e);
 }
 
 void textures_release(struct renderer *r)

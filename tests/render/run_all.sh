@@ -134,6 +134,8 @@ check "fp32 targets missing" 0 "fp16(\+mrt)?: RGBA16F.*reduced accuracy" -- env 
 # a broken shader directory: clear message naming the file and line, exit 1
 mkdir -p "$TMP/shaders" && cp shaders_es/*.glsl "$TMP/shaders/" && echo "this is not glsl" >> "$TMP/shaders/stage_integrate.glsl"
 check "broken shader" 1 "stage_integrate.glsl:[0-9]+" -- $BT render --scene $S --size 32x24 --shader-dir "$TMP/shaders" --out "$TMP/g.png"
+# a shader directory that is not there is the user's mistake: exit 2, naming the file it looked for
+check "missing shader directory" 2 "cannot read shader $TMP/no-shaders/[a-z_]+\.glsl" -- $BT render --scene $S --size 32x24 --shader-dir "$TMP/no-shaders" --out "$TMP/g.png"
 # outputs: checked before any work, never anything but a regular file replaced, a link replaced
 # itself and never followed, the old file kept whole when the new one cannot be written
 W="$TMP/outputs" && mkdir -p "$W"

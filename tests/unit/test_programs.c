@@ -27,16 +27,15 @@ static void test_locations_match_gl(void **state)
     struct error ge;
     if (gl_caps_probe(&caps, hc_context(), &ge) != 0)
         fail_msg("probe: %s", ge.message);
-    char err[1024];
     struct program_cache pc;
     program_cache_init(&pc, &caps.shader, 1);
     static const char *const files[] = {"common.glsl", "prim_sphere.glsl", "observer.glsl", "shade.glsl",
                                         "stage_intersect.glsl", NULL};
     const char *defines = "#define BATCH_SIZE 3\n#define LIGHT_COUNT 2\n#define HAS_PRIM_SPHERE 1\n"
                           "#define BATCH_TESTS TEST_SPHERE(0) TEST_SPHERE(1) TEST_SPHERE(2)\n";
-    const struct stage_program *sp = program_cache_get(&pc, files, defines, 1, err, sizeof err);
+    const struct stage_program *sp = program_cache_get(&pc, files, defines, 1, &ge);
     if (!sp)
-        fail_msg("%s", err);
+        fail_msg("%s", ge.message);
     const struct program_uniforms *p = &sp->program[0];
     assert_true(p->n > 10);
     static const char *const names[] = {"u_inv_size", "u_segment_index", "u_hit", "u_geometry", "u_materials",
