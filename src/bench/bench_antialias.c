@@ -31,9 +31,11 @@ static int time_samples(struct bench *b, const struct scene *s, int runs, double
     *rgba = NULL;
     for (int k = 0; k <= runs && rc == 0; k++) {
         struct render_result res;
-        rc = frame_run_samples(r, s, &res, 0, PROGRESS_NONE, err, errlen);
-        if (rc != 0)
+        rc = frame_run_samples(r, s, &res, 0, PROGRESS_NONE, &e);
+        if (rc != 0) {
+            snprintf(err, errlen, "%s", e.message);
             break;
+        }
         if (k > 0)
             times[k - 1] = res.seconds;
         free(*rgba);

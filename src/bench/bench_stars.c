@@ -33,7 +33,9 @@ static int time_stars(struct bench *b, const struct scene *s, int runs, double *
     int rc = 0;
     for (int k = 0; k <= runs && rc == 0; k++) {
         struct render_result res;
-        rc = frame_run_samples(r, s, &res, 0, PROGRESS_NONE, err, errlen);
+        rc = frame_run_samples(r, s, &res, 0, PROGRESS_NONE, &e);
+        if (rc != 0)
+            snprintf(err, errlen, "%s", e.message);
         if (rc == 0 && k > 0) {
             g[k - 1] = res.seconds;
             t[k - 1] = res.sky_seconds;

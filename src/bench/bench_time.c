@@ -45,10 +45,12 @@ int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_ti
     renderer_set_reads(r, RENDER_READ_IMAGE);
     int rc = 0;
     for (int k = 0; k <= runs && rc == 0; k++) {
-        rc = renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, err, errlen);
+        rc = renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, &e);
         struct render_result res;
         if (rc == 0 && k > 0)
-            rc = renderer_read(r, &res, d && k == runs, err, errlen);
+            rc = renderer_read(r, &res, d && k == runs, &e);
+        if (rc != 0)
+            snprintf(err, errlen, "%s", e.message);
         if (rc == 0 && k > 0) {
             times[k - 1] = res.seconds;
             t->passes = res.passes;

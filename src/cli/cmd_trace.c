@@ -29,11 +29,12 @@ static int record_point(struct renderer *r, int segment, void *arg)
 {
     (void)segment;
     struct polyline *pl = arg;
-    char err[256];
+    struct error e;
     if (pl->n == pl->cap)
         return -1;
-    if (renderer_read_position(r, 0, 0, pl->points[pl->n], err, sizeof err) != 0) {
-        fprintf(stderr, "bentray trace: %s\n", err);
+    /* the reason first; the renderer then says at which segment the run stopped */
+    if (renderer_read_position(r, 0, 0, pl->points[pl->n], &e) != 0) {
+        fprintf(stderr, "bentray trace: %s\n", e.message);
         return -1;
     }
     pl->n++;
@@ -102,7 +103,6 @@ static void print_json(const struct scene *s, long px, long py, const char *engi
 /* GPU path: a 1x1 ray state for the chosen pixel, the same arithmetic as the full frame. */
 static int trace_gpu(const struct common_options *o, const struct scene *s, long px, long py, struct polyline *pl)
 {
-    char err[2048];
     int rc = EXIT_RUNTIME;
     struct error e;
     struct gl_context *ctx = gl_context_create(o->backend, &e);
@@ -116,8 +116,9 @@ static int trace_gpu(const struct common_options *o, const struct scene *s, long
         fprintf(stderr, "bentray trace: note: the polyline needs the end of every segment, so trace runs the "
                 "multipass scheme (render.pipeline = single applies to render)\n");
     int gl_row = s->render.height - 1 - (int)py;
-    if (r && renderer_run(r, s, (int)px, gl_row, 1, 1, record_point, pl, err, sizeof err) == 0 &&
-        renderer_read(r, &res, 1, err, sizeof err) == 0) {
+    /* a run or a read that fails is the machine's (exit 1), as it always has been */
+    if (r && renderer_run(r, s, (int)px, gl_row, 1, 1, record_point, pl, &e) == 0 &&
+        renderer_read(r, &res, 1, &e) == 0) {
         struct dump d;
         if (result_to_dump(&res, s, "gpu", &d) == 0) {
             char engine[40];
@@ -125,13 +126,14 @@ static int trace_gpu(const struct common_options *o, const struct scene *s, long
             print_json(s, px, py, engine, &d.records[0], pl);
             dump_free(&d);
             rc = EXIT_OK;
+        } else {
+            error_set(&e, ERROR_RUNTIME, NULL, "out of memory");
         }
     } else if (!r) {
         rc = e.status == ERROR_INPUT ? EXIT_USAGE : EXIT_RUNTIME;
-        snprintf(err, sizeof err, "%s", e.message);
     }
     if (rc != EXIT_OK)
-        fprintf(stderr, "bentray trace: %s\n", err);
+        fprintf(stderr, "bentray trace: %s\n", e.message);
     render_result_free(&res);
     renderer_destroy(r);
     gl_context_destroy(ctx);

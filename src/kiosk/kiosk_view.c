@@ -123,8 +123,11 @@ static int run_tile(struct kiosk_view *v, const struct kiosk_tiles *t, int *x0, 
                     GLuint *image, char *err, size_t errlen)
 {
     tile_at(t, t->next, x0, y0, w, h);
-    if (renderer_run(v->renderer, &v->live, *x0, *y0, t->tile_width, t->tile_height, NULL, NULL, err, errlen) != 0)
+    struct error e;
+    if (renderer_run(v->renderer, &v->live, *x0, *y0, t->tile_width, t->tile_height, NULL, NULL, &e) != 0) {
+        snprintf(err, errlen, "%s", e.message);
         return -1;
+    }
     struct renderer_textures tex;
     renderer_textures(v->renderer, &tex);
     *image = tex.image;
@@ -167,12 +170,14 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char 
     if (v->preview.count > 1)
         return preview_tile(v, err, errlen);
     v->preview.next = v->preview.count;
-    if (renderer_run(v->renderer, &v->live, 0, 0, k->preview_width, k->preview_height, NULL, NULL, err, errlen) != 0)
-        return -1;
-    struct renderer_textures t;
+    struct error e;
     /* the pipeline view shows every ray's final state, which a single-pass frame writes on demand */
-    if (v->pipeline_view && renderer_complete_state(v->renderer, err, errlen) != 0)
+    if (renderer_run(v->renderer, &v->live, 0, 0, k->preview_width, k->preview_height, NULL, NULL, &e) != 0 ||
+        (v->pipeline_view && renderer_complete_state(v->renderer, &e) != 0)) {
+        snprintf(err, errlen, "%s", e.message);
         return -1;
+    }
+    struct renderer_textures t;
     renderer_textures(v->renderer, &t);
     int rc = v->pipeline_view ? compositor_put_pipeline(&v->comp, &t, v->live.render.bound_radius,
                                                         render_segments(&v->live.render), v->live.render.step_size, err,
@@ -204,8 +209,11 @@ int kiosk_view_refine(struct kiosk_view *v, char *err, size_t errlen)
         /* whole bands: every band has the same size, so the ray state is made once per refinement;
          * the last one may trace rows above the frame, which are not shown */
         int y0 = v->refined_rows;
-        if (renderer_run(v->renderer, &v->live, 0, y0, k->width, t->tile_height, NULL, NULL, err, errlen) != 0)
+        struct error e;
+        if (renderer_run(v->renderer, &v->live, 0, y0, k->width, t->tile_height, NULL, NULL, &e) != 0) {
+            snprintf(err, errlen, "%s", e.message);
             return -1;
+        }
         struct renderer_textures tex;
         renderer_textures(v->renderer, &tex);
         int rows = k->height - y0 < t->tile_height ? k->height - y0 : t->tile_height;

@@ -10,15 +10,14 @@
 #include <string.h>
 
 /* The stars and Milky Way of [sky] on one image of the frame, from its rays' exit directions. */
-static int add_star_light(const struct star_sky *k, struct render_result *img, double dx, double dy, char *err,
-                          size_t errlen)
+static int add_star_light(const struct star_sky *k, struct render_result *img, double dx, double dy,
+                          struct error *e)
 {
     size_t n = (size_t)img->width * img->height;
     unsigned char *sky = malloc(n ? n : 1);
-    if (!sky) {
-        snprintf(err, errlen, "out of memory for the stars of a %dx%d image", img->width, img->height);
-        return -1;
-    }
+    if (!sky)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory for the stars of a %dx%d image", img->width,
+                         img->height);
     for (size_t i = 0; i < n; i++)
         sky[i] = lrintf(img->image[4 * i + 3]) == DUMP_SKY;
     /* the renderer's subpixel offsets run up the image, as the camera's do (scene/camera.h) */
@@ -31,14 +30,14 @@ static int add_star_light(const struct star_sky *k, struct render_result *img, d
 /* One image of the frame, its rays started (dx, dy) off the pixels' centres, with the stars when
  * stars is not NULL. */
 static int run_image(struct renderer *r, const struct scene *s, const struct star_sky *stars, double dx, double dy,
-                     struct render_result *out, int with_state, struct frame_progress *p, char *err, size_t errlen)
+                     struct render_result *out, int with_state, struct frame_progress *p, struct error *e)
 {
     if (!stars)
-        return frame_run_image(r, s, dx, dy, out, with_state, p, err, errlen);
-    if (frame_run_image(r, s, dx, dy, out, render_read_with_sky(with_state), p, err, errlen) != 0)
+        return frame_run_image(r, s, dx, dy, out, with_state, p, e);
+    if (frame_run_image(r, s, dx, dy, out, render_read_with_sky(with_state), p, e) != 0)
         return -1;
     double t0 = progress_now();
-    if (add_star_light(stars, out, dx, dy, err, errlen) != 0) {
+    if (add_star_light(stars, out, dx, dy, e) != 0) {
         render_result_free(out);
         return -1;
     }
@@ -47,8 +46,7 @@ static int run_image(struct renderer *r, const struct scene *s, const struct sta
 }
 
 static int run_samples(struct renderer *r, const struct scene *s, const struct star_sky *stars,
-                       struct render_result *out, int with_state, enum progress_mode progress, char *err,
-                       size_t errlen)
+                       struct render_result *out, int with_state, enum progress_mode progress, struct error *e)
 {
     struct pixel_samples pattern;
     pixel_samples_make(s->render.samples, &pattern);
@@ -60,23 +58,22 @@ static int run_samples(struct renderer *r, const struct scene *s, const struct s
     long pixel_samples = (long)s->render.width * s->render.height * p.runs;
     p.banded = progress == PROGRESS_ALWAYS || (progress == PROGRESS_AUTO && pixel_samples >= FRAME_BAND_MIN_PIXELS);
     if (pattern.n == 1) {
-        int rc = run_image(r, s, stars, 0.0, 0.0, out, with_state, &p, err, errlen);
+        int rc = run_image(r, s, stars, 0.0, 0.0, out, with_state, &p, e);
         progress_end(&p.line);
         return rc;
     }
     struct sample_average sum;
-    if (sample_average_init(&sum, (size_t)s->render.width * s->render.height) != 0) {
-        snprintf(err, errlen, "out of memory for the samples of a %dx%d image", s->render.width, s->render.height);
-        return -1;
-    }
+    if (sample_average_init(&sum, (size_t)s->render.width * s->render.height) != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory for the samples of a %dx%d image", s->render.width,
+                         s->render.height);
     int first = 0, rc = 0;
     if (extra_centre) {
         /* the centres' state only, not a sample of the image */
         p.sample = -1;
-        rc = frame_run_image(r, s, 0.0, 0.0, out, RENDER_READ_STATE, &p, err, errlen);
+        rc = frame_run_image(r, s, 0.0, 0.0, out, RENDER_READ_STATE, &p, e);
         p.run++;
     } else {
-        rc = run_image(r, s, stars, pattern.dx[0], pattern.dy[0], out, with_state, &p, err, errlen);
+        rc = run_image(r, s, stars, pattern.dx[0], pattern.dy[0], out, with_state, &p, e);
         if (rc == 0)
             sample_average_add(&sum, out->rgba, out->color);
         first = 1;
@@ -85,7 +82,7 @@ static int run_samples(struct renderer *r, const struct scene *s, const struct s
     for (int k = first; k < pattern.n && rc == 0; k++) {
         struct render_result sample;
         p.sample = k;
-        rc = run_image(r, s, stars, pattern.dx[k], pattern.dy[k], &sample, RENDER_READ_IMAGE, &p, err, errlen);
+        rc = run_image(r, s, stars, pattern.dx[k], pattern.dy[k], &sample, RENDER_READ_IMAGE, &p, e);
         p.run++;
         if (rc == 0) {
             sample_average_add(&sum, sample.rgba, sample.color);
@@ -105,17 +102,16 @@ static int run_samples(struct renderer *r, const struct scene *s, const struct s
 }
 
 int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, int with_state,
-                      enum progress_mode progress, char *err, size_t errlen)
+                      enum progress_mode progress, struct error *e)
 {
     if (!star_sky_wanted(s))
-        return run_samples(r, s, NULL, out, with_state, progress, err, errlen);
+        return run_samples(r, s, NULL, out, with_state, progress, e);
     struct star_sky *stars = malloc(sizeof *stars);
-    if (!stars) {
-        snprintf(err, errlen, "out of memory for the stars of the sky");
-        return -1;
-    }
-    int rc = star_sky_init(stars, s, err, errlen) == 0 ? run_samples(r, s, stars, out, with_state, progress, err, errlen)
-                                                        : -1;
+    if (!stars)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory for the stars of the sky");
+    char why[256];      /* the results module still fills a buffer: out of memory, the machine's */
+    int rc = star_sky_init(stars, s, why, sizeof why) == 0 ? run_samples(r, s, stars, out, with_state, progress, e)
+                                                            : error_set(e, ERROR_RUNTIME, NULL, "%s", why);
     star_sky_free(stars);
     free(stars);
     return rc;
@@ -138,7 +134,8 @@ int render_frame(const struct scene *s, const struct frame_request *req, struct 
             snprintf(info->renderer, sizeof info->renderer, "%s", renderer_caps(r)->renderer);
         }
         renderer_set_hdr(r, req->hdr);
-        rc = frame_run_samples(r, s, out, req->with_state, req->progress, e->message, sizeof e->message);
+        rc = frame_run_samples(r, s, out, req->with_state, req->progress, e);
+        /* a failure once the renderer is made ends the command with 1, as it always has */
         if (rc != 0)
             e->status = ERROR_RUNTIME;
         if (info) {

@@ -29,9 +29,9 @@ int render_frame(const struct scene *s, const struct frame_request *req, struct 
 /* The whole image of s on renderer r with every sample of every pixel (render.samples,
  * scene/pixel_samples.h), each a whole frame, averaged in linear light into out->rgba; seconds and
  * passes summed over them. The ray state, when asked for, is the pixels' centres': sample 0 where
- * the pattern holds the centre, else one more run that only the state comes from. 0, or -1 with err. */
+ * the pattern holds the centre, else one more run that only the state comes from. 0, or -1 with e. */
 int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, int with_state,
-                      enum progress_mode progress, char *err, size_t errlen);
+                      enum progress_mode progress, struct error *e);
 /* Per-pixel records (and colours) from a result read with its state, or with its outcomes only
  * (RENDER_READ_OUTCOMES: hit, position, direction, depth and steps are then 0). */
 int result_to_dump(const struct render_result *res, const struct scene *s, const char *engine, struct dump *d);

@@ -4,7 +4,7 @@
 #include <string.h>
 
 /* The whole frame's arrays, empty: the image, and the ray state when with_state. */
-static int frame_alloc(struct render_result *out, int w, int h, int with_state, int hdr, char *err, size_t errlen)
+static int frame_alloc(struct render_result *out, int w, int h, int with_state, int hdr, struct error *e)
 {
     size_t n = (size_t)w * h;
     memset(out, 0, sizeof *out);
@@ -20,21 +20,20 @@ static int frame_alloc(struct render_result *out, int w, int h, int with_state, 
             ok = (*state[k] = malloc(4 * n * sizeof(float))) != NULL;
     if (!ok) {
         render_result_free(out);
-        snprintf(err, errlen, "out of memory for a %dx%d frame", w, h);
-        return -1;
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory for a %dx%d frame", w, h);
     }
     return 0;
 }
 
 /* Image rows [top, top + rows), top row first, in one run, copied into the whole frame. */
 static int run_rows(struct renderer *r, const struct scene *s, int top, int rows, struct render_result *full,
-                    int with_state, char *err, size_t errlen)
+                    int with_state, struct error *e)
 {
     int w = s->render.width, h = s->render.height;
     struct render_result band;
     memset(&band, 0, sizeof band);
-    if (renderer_run(r, s, 0, h - top - rows, w, rows, NULL, NULL, err, errlen) != 0 ||
-        renderer_read(r, &band, with_state, err, errlen) != 0) {
+    if (renderer_run(r, s, 0, h - top - rows, w, rows, NULL, NULL, e) != 0 ||
+        renderer_read(r, &band, with_state, e) != 0) {
         render_result_free(&band);
         return -1;
     }
@@ -66,23 +65,21 @@ static void report(struct frame_progress *p, int rows_done, int rows)
 }
 
 int frame_run_image(struct renderer *r, const struct scene *s, double dx, double dy, struct render_result *out,
-                    int with_state, struct frame_progress *p, char *err, size_t errlen)
+                    int with_state, struct frame_progress *p, struct error *e)
 {
     int w = s->render.width, h = s->render.height, rc = 0;
     renderer_set_subpixel(r, dx, dy);
     renderer_set_reads(r, with_state);
     if (!p || !p->banded) {
         memset(out, 0, sizeof *out);
-        rc = renderer_run(r, s, 0, 0, w, h, NULL, NULL, err, errlen) == 0 &&
-                     renderer_read(r, out, with_state, err, errlen) == 0
-                 ? 0 : -1;
-    } else if ((rc = frame_alloc(out, w, h, with_state, renderer_hdr(r), err, errlen)) == 0) {
+        rc = renderer_run(r, s, 0, 0, w, h, NULL, NULL, e) == 0 && renderer_read(r, out, with_state, e) == 0 ? 0 : -1;
+    } else if ((rc = frame_alloc(out, w, h, with_state, renderer_hdr(r), e)) == 0) {
         /* a first band of a thirty-second of the image tells how long a row takes */
         int rows = h / 32 > 0 ? h / 32 : 1;
         for (int top = 0; top < h && rc == 0;) {
             rows = rows < h - top ? rows : h - top;
             double t0 = progress_now();
-            rc = run_rows(r, s, top, rows, out, with_state, err, errlen);
+            rc = run_rows(r, s, top, rows, out, with_state, e);
             double per_row = (progress_now() - t0) / rows;
             top += rows;
             report(p, top, h);
@@ -97,13 +94,13 @@ int frame_run_image(struct renderer *r, const struct scene *s, double dx, double
 }
 
 int frame_run_bands(struct renderer *r, const struct scene *s, int band_rows, struct render_result *out,
-                    int with_state, char *err, size_t errlen)
+                    int with_state, struct error *e)
 {
-    int h = s->render.height, rc = frame_alloc(out, s->render.width, h, with_state, renderer_hdr(r), err, errlen);
+    int h = s->render.height, rc = frame_alloc(out, s->render.width, h, with_state, renderer_hdr(r), e);
     renderer_set_reads(r, with_state);
     band_rows = band_rows < 1 ? 1 : band_rows;
     for (int top = 0; top < h && rc == 0; top += band_rows)
-        rc = run_rows(r, s, top, band_rows < h - top ? band_rows : h - top, out, with_state, err, errlen);
+        rc = run_rows(r, s, top, band_rows < h - top ? band_rows : h - top, out, with_state, e);
     if (rc != 0)
         render_result_free(out);
     return rc;

@@ -163,9 +163,8 @@ void renderer_set_subpixel(struct renderer *r, double dx, double dy)
     r->subpixel_y = dy;
 }
 
-/* renderer_run with e; a hook that fails stops the run, and e says at which segment. */
-static int run(struct renderer *r, const struct scene *scene, int origin_x, int origin_y, int width, int height,
-               segment_hook hook, void *hook_arg, struct error *e)
+int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, int origin_y, int width, int height,
+                 segment_hook hook, void *hook_arg, struct error *e)
 {
     if (assets_key(scene) != r->assets_key)
         return error_set(e, ERROR_RUNTIME, NULL, "internal: a run of scene '%s' on the renderer made for '%s', whose "
@@ -291,31 +290,15 @@ static int run(struct renderer *r, const struct scene *scene, int origin_x, int 
     return 0;
 }
 
-int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, int origin_y, int width, int height,
-                 segment_hook hook, void *hook_arg, char *err, size_t errlen)
-{
-    struct error e;
-    error_clear(&e);
-    if (run(r, scene, origin_x, origin_y, width, height, hook, hook_arg, &e) == 0)
-        return 0;
-    snprintf(err, errlen, "%s", e.message);
-    return -1;
-}
-
-int renderer_read_position(struct renderer *r, int x, int y, float xyzw[4], char *err, size_t errlen)
+int renderer_read_position(struct renderer *r, int x, int y, float xyzw[4], struct error *e)
 {
     float buf[4 * 1];
-    struct error e;
-    GLuint fbo = raystate_fbo(&r->rs, r->rs.position[r->rs.cur_position], 0, &e);
-    if (!fbo) {
-        snprintf(err, errlen, "%s", e.message);
+    GLuint fbo = raystate_fbo(&r->rs, r->rs.position[r->rs.cur_position], 0, e);
+    if (!fbo)
         return -1;
-    }
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    if (read_float_pixels(x, y, 1, 1, buf) != 0) {
-        snprintf(err, errlen, "cannot read the ray position back");
-        return -1;
-    }
+    if (read_float_pixels(x, y, 1, 1, buf) != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "cannot read the ray position back");
     memcpy(xyzw, buf, sizeof buf);
     return 0;
 }
@@ -348,8 +331,7 @@ static int complete(struct renderer *r, int state, struct error *e)
     return stage_frame(r, FRAME_WRITES_STATE, e);
 }
 
-/* renderer_read with e. */
-static int read_back(struct renderer *r, struct render_result *out, int with_state, struct error *e)
+int renderer_read(struct renderer *r, struct render_result *out, int with_state, struct error *e)
 {
     struct raystate *rs = &r->rs;
     size_t n = (size_t)rs->width * rs->height;
@@ -405,22 +387,9 @@ static int read_back(struct renderer *r, struct render_result *out, int with_sta
     return 0;
 }
 
-int renderer_read(struct renderer *r, struct render_result *out, int with_state, char *err, size_t errlen)
+int renderer_complete_state(struct renderer *r, struct error *e)
 {
-    struct error e;
-    if (read_back(r, out, with_state, &e) == 0)
-        return 0;
-    snprintf(err, errlen, "%s", e.message);
-    return -1;
-}
-
-int renderer_complete_state(struct renderer *r, char *err, size_t errlen)
-{
-    struct error e;
-    if (complete(r, 1, &e) == 0)
-        return 0;
-    snprintf(err, errlen, "%s", e.message);
-    return -1;
+    return complete(r, 1, e);
 }
 
 void renderer_set_reads(struct renderer *r, int with_state)

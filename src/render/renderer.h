@@ -40,10 +40,11 @@ const struct gl_caps *renderer_caps(const struct renderer *r);
  * (GL order, rows bottom-up) is (origin_x, origin_y); a full frame is (0, 0, scene width, scene
  * height). scene is the one the renderer was made with, or one that differs from it in values
  * only (the kiosk's knobs, a preview's size, steps and chords, the camera, the observer): the
- * same objects, textures and sky, which renderer_create loaded (else -1 with err; a new scene
- * takes a new renderer). It must stay valid until the next run; reads of this run follow it. */
+ * same objects, textures and sky, which renderer_create loaded (else -1 with e; a new scene
+ * takes a new renderer). It must stay valid until the next run; reads of this run follow it.
+ * A hook that fails stops the run, and e says at which segment. 0, or -1 with e. */
 int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, int origin_y, int width, int height,
-                 segment_hook hook, void *hook_arg, char *err, size_t errlen);
+                 segment_hook hook, void *hook_arg, struct error *e);
 /* Where in its pixel every ray of the following runs starts: (dx, dy) pixels from the centre, GL
  * order (dy up), each in [-0.5, 0.5) (scene/pixel_samples.h); (0, 0) until set. */
 void renderer_set_subpixel(struct renderer *r, double dx, double dy);
@@ -66,10 +67,10 @@ int render_read_with_sky(int with_state);
  * in render_result.color (16-bit PNG and PFM output). Off until set. */
 void renderer_set_hdr(struct renderer *r, int on);
 int renderer_hdr(const struct renderer *r);
-/* Read the final image, and what `with_state` (enum render_read) asks for. */
-int renderer_read(struct renderer *r, struct render_result *out, int with_state, char *err, size_t errlen);
-/* Position of the ray of texel (x, y) (GL order) right now: for per-segment hooks. */
-int renderer_read_position(struct renderer *r, int x, int y, float xyzw[4], char *err, size_t errlen);
+/* Read the final image, and what `with_state` (enum render_read) asks for. 0, or -1 with e. */
+int renderer_read(struct renderer *r, struct render_result *out, int with_state, struct error *e);
+/* Position of the ray of texel (x, y) (GL order) right now: for per-segment hooks. 0, or -1 with e. */
+int renderer_read_position(struct renderer *r, int x, int y, float xyzw[4], struct error *e);
 void render_result_free(struct render_result *res);
 /* The textures of the last run, on the GPU, for a display to draw from (the kiosk's compositor and
  * pipeline view): the final image (RGBA8) and each ray's final state (layout: common.glsl).
@@ -89,7 +90,7 @@ struct renderer_textures {
 void renderer_textures(const struct renderer *r, struct renderer_textures *out);
 /* The single-pass frame's deferred hit and position, and its outcome textures where it drew its
  * image itself (a no-op after a multipass frame). */
-int renderer_complete_state(struct renderer *r, char *err, size_t errlen);
+int renderer_complete_state(struct renderer *r, struct error *e);
 /* "multipass", "fused segment" or "single pass": how the last run was scheduled. */
 const char *renderer_pipeline(const struct renderer *r);
 /* Why the last run took that pipeline, in words ("render.pipeline = multipass", "OpenGL ES 3.2

@@ -76,14 +76,13 @@ struct hc_gpu {
 /* Per-segment hook for hc_gpu_render_hook (NULL for none). */
 static inline void hc_gpu_render_hook(const struct scene *s, struct hc_gpu *g, segment_hook hook, void *arg)
 {
-    char err[2048];
-    struct error gl_err;
+    struct error gl_err, e;
     struct renderer *r = renderer_create(hc_context(), s, &gl_err);
     if (!r)
         fail_msg("renderer: %s", gl_err.message);
-    if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, hook, arg, err, sizeof err) != 0 ||
-        renderer_read(r, &g->res, 1, err, sizeof err) != 0)
-        fail_msg("render: %s", err);
+    if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, hook, arg, &e) != 0 ||
+        renderer_read(r, &g->res, 1, &e) != 0)
+        fail_msg("render: %s", e.message);
     snprintf(g->path, sizeof g->path, "%s", renderer_path(r)->name);
     char engine[32];
     snprintf(engine, sizeof engine, "gpu %s", g->path);

@@ -326,18 +326,18 @@ static void test_frame_colour_is_exact(void **state)
         s.render.pipeline = PIPELINE_SINGLE;
         struct hc_gpu both;
         hc_gpu_render(&s, &both);
-        char err[2048], what[200];
+        char what[200];
         case_label(what, sizeof what, cases[k].scene, cases[k].sets, cases[k].no_objects ? "(no objects)" : "");
-        struct error gl_err;
+        struct error gl_err, e;
         struct renderer *r = renderer_create(hc_context(), &s, &gl_err);
         if (!r)
             fail_msg("renderer: %s", gl_err.message);
         renderer_set_reads(r, RENDER_READ_IMAGE);
         struct hc_gpu colour;
         struct render_result image;
-        if (renderer_run(r, &s, 0, 0, W, H, NULL, NULL, err, sizeof err) != 0 ||
-            renderer_read(r, &image, RENDER_READ_IMAGE, err, sizeof err) != 0)
-            fail_msg("%s: %s", what, err);
+        if (renderer_run(r, &s, 0, 0, W, H, NULL, NULL, &e) != 0 ||
+            renderer_read(r, &image, RENDER_READ_IMAGE, &e) != 0)
+            fail_msg("%s: %s", what, e.message);
         print_message("%s: %ld pass(es) for the image, %ld with the sky stage\n", what, image.passes,
                       both.res.passes);
         assert_memory_equal(image.rgba, both.res.rgba, (size_t)W * H * 4);
@@ -345,8 +345,8 @@ static void test_frame_colour_is_exact(void **state)
         assert_true(image.passes < both.res.passes);
         render_result_free(&image);
         /* the rays' state, read after the image alone: traced again, the same */
-        if (renderer_read(r, &colour.res, RENDER_READ_STATE, err, sizeof err) != 0)
-            fail_msg("%s: %s", what, err);
+        if (renderer_read(r, &colour.res, RENDER_READ_STATE, &e) != 0)
+            fail_msg("%s: %s", what, e.message);
         assert_same_rays(&colour, &both, what);
         renderer_destroy(r);
         count_outcomes(&both, seen);

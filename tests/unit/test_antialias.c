@@ -170,16 +170,15 @@ static void test_dump_follows_centre(void **state)
 /* One frame of s with every ray started (dx, dy) pixels off its centre. */
 static unsigned char *shifted_image(const struct scene *s, double dx, double dy)
 {
-    char err[2048];
-    struct error gl_err;
+    struct error gl_err, e;
     struct renderer *r = renderer_create(hc_context(), s, &gl_err);
     if (!r)
         fail_msg("renderer: %s", gl_err.message);
     renderer_set_subpixel(r, dx, dy);
     struct render_result res;
-    if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, err, sizeof err) != 0 ||
-        renderer_read(r, &res, 0, err, sizeof err) != 0)
-        fail_msg("render: %s", err);
+    if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, &e) != 0 ||
+        renderer_read(r, &res, 0, &e) != 0)
+        fail_msg("render: %s", e.message);
     renderer_destroy(r);
     unsigned char *rgba = res.rgba;
     res.rgba = NULL;

@@ -20,20 +20,20 @@ static struct renderer *make_renderer(const struct scene *s)
 
 static void whole_frame(const struct scene *s, int what, struct render_result *out)
 {
-    char err[2048];
+    struct error e;
     struct renderer *r = make_renderer(s);
-    if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, err, sizeof err) != 0 ||
-        renderer_read(r, out, what, err, sizeof err) != 0)
-        fail_msg("render: %s", err);
+    if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, &e) != 0 ||
+        renderer_read(r, out, what, &e) != 0)
+        fail_msg("render: %s", e.message);
     renderer_destroy(r);
 }
 
 static void banded_frame(const struct scene *s, int rows, struct render_result *out)
 {
-    char err[2048];
+    struct error e;
     struct renderer *r = make_renderer(s);
-    if (frame_run_bands(r, s, rows, out, RENDER_READ_STATE, err, sizeof err) != 0)
-        fail_msg("bands: %s", err);
+    if (frame_run_bands(r, s, rows, out, RENDER_READ_STATE, &e) != 0)
+        fail_msg("bands: %s", e.message);
     renderer_destroy(r);
 }
 

@@ -44,12 +44,12 @@ struct gpu_tracks {
 static int record_segment(struct renderer *r, int segment, void *arg)
 {
     struct gpu_tracks *g = arg;
-    char err[256];
+    struct error e;
     if (segment >= LZ_MAX_SAMPLES)
         return -1;
     for (int k = 0; k < LZ_RAYS; k++)
         if (renderer_read_position(r, g->pixels[k][0], g->scene->render.height - 1 - g->pixels[k][1], g->x[k][segment],
-                                   err, sizeof err) != 0)
+                                   &e) != 0)
             return -1;
     g->n = segment + 1;
     return 0;

@@ -202,7 +202,6 @@ static void test_renderer_follows_the_scene(void **state)
         {.speed = 0.0, .mass = 0.12, .effects = EFFECTS_GEOMETRY},
     };
     struct error e;
-    char err[2048];
     struct error gl_err;
     struct renderer *r = renderer_create(hc_context(), &live, &gl_err);
     for (size_t k = 0; k < sizeof states / sizeof states[0]; k++) {
@@ -214,8 +213,8 @@ static void test_renderer_follows_the_scene(void **state)
             assert_non_null(r);
         }
         struct render_result a;
-        if (renderer_run(r, &live, 0, 0, W, H, NULL, NULL, err, sizeof err) != 0 || renderer_read(r, &a, 0, err, sizeof err))
-            fail_msg("%s", err);
+        if (renderer_run(r, &live, 0, 0, W, H, NULL, NULL, &e) != 0 || renderer_read(r, &a, 0, &e))
+            fail_msg("%s", e.message);
         fresh = live;
         struct hc_gpu g;
         hc_gpu_render(&fresh, &g);
@@ -227,13 +226,13 @@ static void test_renderer_follows_the_scene(void **state)
     /* another scene's objects, textures or sky are not what this renderer loaded: refused, not drawn */
     static struct scene other;
     hc_load(&other, "neutron_star", W, H, NULL);
-    assert_int_equal(renderer_run(r, &other, 0, 0, W, H, NULL, NULL, err, sizeof err), -1);
-    assert_non_null(strstr(err, "make a renderer for the new scene"));
+    assert_int_equal(renderer_run(r, &other, 0, 0, W, H, NULL, NULL, &e), -1);
+    assert_non_null(strstr(e.message, "make a renderer for the new scene"));
     fresh = live;
     fresh.n_objects--;
-    assert_int_equal(renderer_run(r, &fresh, 0, 0, W, H, NULL, NULL, err, sizeof err), -1);
+    assert_int_equal(renderer_run(r, &fresh, 0, 0, W, H, NULL, NULL, &e), -1);
     /* the scene it follows still runs */
-    assert_int_equal(renderer_run(r, &live, 0, 0, W, H, NULL, NULL, err, sizeof err), 0);
+    assert_int_equal(renderer_run(r, &live, 0, 0, W, H, NULL, NULL, &e), 0);
     renderer_destroy(r);
 }
 

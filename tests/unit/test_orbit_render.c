@@ -92,15 +92,14 @@ static void test_single_pass_bit_identical(void **state)
  * the kiosk draws it. */
 static void render_image_only(const struct scene *s, struct render_result *image)
 {
-    char err[2048];
-    struct error gl_err;
+    struct error gl_err, e;
     struct renderer *r = renderer_create(hc_context(), s, &gl_err);
     if (!r)
         fail_msg("renderer: %s", gl_err.message);
     renderer_set_reads(r, RENDER_READ_IMAGE);
-    if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, err, sizeof err) != 0 ||
-        renderer_read(r, image, RENDER_READ_IMAGE, err, sizeof err) != 0)
-        fail_msg("render: %s", err);
+    if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, &e) != 0 ||
+        renderer_read(r, image, RENDER_READ_IMAGE, &e) != 0)
+        fail_msg("render: %s", e.message);
     renderer_destroy(r);
 }
 
@@ -441,8 +440,7 @@ static void test_needs_fp32(void **state)
     static struct scene s;
     static const char *const sets[] = {"render.method=orbit_table", "render.precision=fp16", NULL};
     hc_load(&s, "schwarzschild", 16, 12, sets);
-    char err[512];
-    struct error gl_err;
+    struct error gl_err, e;
     struct renderer *r = renderer_create(hc_context(), &s, &gl_err);
     print_message("fp16 forced: %s\n", r ? "(accepted)" : gl_err.message);
     assert_null(r);
@@ -459,7 +457,7 @@ static void test_needs_fp32(void **state)
     const char *how = renderer_path(r)->description;
     print_message("fp16 only: %s\n", how);
     assert_non_null(strstr(how, "integrated with rk4"));
-    assert_int_equal(renderer_run(r, &s, 0, 0, 16, 12, NULL, NULL, err, sizeof err), 0);
+    assert_int_equal(renderer_run(r, &s, 0, 0, 16, 12, NULL, NULL, &e), 0);
     /* integrated, and still in one pass: this context runs long fragment loops */
     assert_string_equal(renderer_pipeline(r), "single pass");
     renderer_destroy(r);
