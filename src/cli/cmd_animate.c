@@ -482,12 +482,12 @@ int cmd_animate(int argc, char **argv)
         frame_path(dir, k, a.frames, path, sizeof path);
         if (output_check(path, force, &why) != 0) {
             fprintf(stderr, "bentray animate: --out: %s\n", why.message);
-            return EXIT_USAGE;
+            return exit_code_of(&why);
         }
     }
     if (video && output_check(video, force, &why) != 0) {
         fprintf(stderr, "bentray animate: --video: %s\n", why.message);
-        return EXIT_USAGE;
+        return exit_code_of(&why);
     }
     struct progress p;
     progress_begin(&p, PROGRESS_NONE);
@@ -507,12 +507,12 @@ int cmd_animate(int argc, char **argv)
         }
         if (failed) {
             fprintf(stderr, "bentray animate: frame %d: %s\n", k + 1, e.message);
-            return e.status == ERROR_INPUT ? EXIT_USAGE : EXIT_RUNTIME;
+            return exit_code_of(&e);
         }
         if (png_write_rgba8(path, m.dump.width, m.dump.height, m.rgba, force, &e) != 0) {
             fprintf(stderr, "bentray animate: frame %d: %s\n", k + 1, e.message);
             measured_free(&m);
-            return EXIT_RUNTIME;
+            return exit_code_of(&e);
         }
         measured_free(&m);
         double elapsed = progress_now() - p.start, left = elapsed * (a.frames - k - 1) / (k + 1);

@@ -73,7 +73,7 @@ int cmd_error(int argc, char **argv)
     struct error e;
     if (measure_gpu(&s, o.backend, 1, PROGRESS_AUTO, 0, &gpu, &e) != 0) {
         fprintf(stderr, "bentray error: GPU engine: %s\n", e.message);
-        return e.status == ERROR_INPUT ? EXIT_USAGE : EXIT_RUNTIME;
+        return exit_code_of(&e);
     }
     if (measure_cpu(&s, &cpu_opt, &cpu, &e) != 0) {
         fprintf(stderr, "bentray error: CPU reference: %s\n", e.message);

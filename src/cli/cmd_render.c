@@ -148,7 +148,7 @@ static int render_with(const struct common_options *o, const struct scene *s, in
         return EXIT_OK;
     }
     fprintf(stderr, "bentray render: %s\n", e.message);
-    return e.status == ERROR_INPUT ? EXIT_USAGE : EXIT_RUNTIME;
+    return exit_code_of(&e);
 }
 
 /* The image's name when --out is not given: the scene's name with every character outside
@@ -245,7 +245,7 @@ int cmd_render(int argc, char **argv)
     for (int k = 0; k < 2; k++) {
         if (outputs[k] && output_check(outputs[k], force, &why) != 0) {
             fprintf(stderr, "bentray render: %s: %s\n", k ? "--dump" : "--out", why.message);
-            return EXIT_USAGE;
+            return exit_code_of(&why);
         }
     }
     if (dump_path && !to_stdout && output_same(out_path, dump_path)) {
@@ -260,10 +260,10 @@ int cmd_render(int argc, char **argv)
     if (rc == EXIT_OK &&
         image_write(out_path, format, r.dump.width, r.dump.height, r.rgba, r.color, force, &err) != 0) {
         fprintf(stderr, "bentray render: --out: %s\n", err.message);
-        rc = EXIT_RUNTIME;
+        rc = exit_code_of(&err);
     } else if (rc == EXIT_OK && dump_path && dump_write(dump_path, &r.dump, force, &err) != 0) {
         fprintf(stderr, "bentray render: --dump: %s\n", err.message);
-        rc = EXIT_RUNTIME;
+        rc = exit_code_of(&err);
     }
     if (rc == EXIT_OK) {
         if (!quiet)

@@ -116,7 +116,6 @@ static int trace_gpu(const struct common_options *o, const struct scene *s, long
         fprintf(stderr, "bentray trace: note: the polyline needs the end of every segment, so trace runs the "
                 "multipass scheme (render.pipeline = single applies to render)\n");
     int gl_row = s->render.height - 1 - (int)py;
-    /* a run or a read that fails is the machine's (exit 1), as it always has been */
     if (r && renderer_run(r, s, (int)px, gl_row, 1, 1, record_point, pl, &e) == 0 &&
         renderer_read(r, &res, 1, &e) == 0) {
         struct dump d;
@@ -129,8 +128,8 @@ static int trace_gpu(const struct common_options *o, const struct scene *s, long
         } else {
             error_set(&e, ERROR_RUNTIME, NULL, "out of memory");
         }
-    } else if (!r) {
-        rc = e.status == ERROR_INPUT ? EXIT_USAGE : EXIT_RUNTIME;
+    } else {
+        rc = exit_code_of(&e);
     }
     if (rc != EXIT_OK)
         fprintf(stderr, "bentray trace: %s\n", e.message);

@@ -1,6 +1,7 @@
 #include "cli/options.h"
 #include "cli/commands.h"
 #include "gl/shader.h"
+#include "io/error.h"
 #include "io/text_file.h"
 #include <errno.h>
 #include <stdio.h>
@@ -305,3 +306,5 @@ int options_load_scene(const struct common_options *o, const char *cmd, struct s
     }
     return 0;
 }
+
+enum exit_code exit_code_of(const struct error *e) { return e->status == ERROR_INPUT ? EXIT_USAGE : EXIT_RUNTIME; }

@@ -135,9 +135,6 @@ int render_frame(const struct scene *s, const struct frame_request *req, struct 
         }
         renderer_set_hdr(r, req->hdr);
         rc = frame_run_samples(r, s, out, req->with_state, req->progress, e);
-        /* a failure once the renderer is made ends the command with 1, as it always has */
-        if (rc != 0)
-            e->status = ERROR_RUNTIME;
         if (info) {
             snprintf(info->pipeline, sizeof info->pipeline, "%s", renderer_pipeline(r));
             snprintf(info->pipeline_why, sizeof info->pipeline_why, "%s", renderer_pipeline_why(r));

@@ -136,6 +136,9 @@ mkdir -p "$TMP/shaders" && cp shaders_es/*.glsl "$TMP/shaders/" && echo "this is
 check "broken shader" 1 "stage_integrate.glsl:[0-9]+" -- $BT render --scene $S --size 32x24 --shader-dir "$TMP/shaders" --out "$TMP/g.png"
 # a shader directory that is not there is the user's mistake: exit 2, naming the file it looked for
 check "missing shader directory" 2 "cannot read shader $TMP/no-shaders/[a-z_]+\.glsl" -- $BT render --scene $S --size 32x24 --shader-dir "$TMP/no-shaders" --out "$TMP/g.png"
+# one stage's shader missing: the probe passes, the frame stops at that stage, the same exit 2
+mkdir -p "$TMP/some-shaders" && cp shaders_es/*.glsl "$TMP/some-shaders/" && rm "$TMP/some-shaders/stage_sky.glsl"
+check "missing stage shader" 2 "cannot read shader $TMP/some-shaders/stage_sky\.glsl" -- $BT render --scene $S --size 32x24 --shader-dir "$TMP/some-shaders" --out "$TMP/g.png"
 # outputs: checked before any work, never anything but a regular file replaced, a link replaced
 # itself and never followed, the old file kept whole when the new one cannot be written
 W="$TMP/outputs" && mkdir -p "$W"
