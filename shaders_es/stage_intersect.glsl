@@ -163,6 +163,16 @@ float cull_phi_a;               // the chord being tested spans phi_a .. phi_b (
 float cull_phi_b;
 float cull_wedge_start;
 float cull_wedge_width;
+// For a group of chords (group_clear): each object's ball cuts the orbit's plane in a disc that
+// spans radii rho_lo .. rho_hi about the mass; a flat object's plane is at signed distance
+// d + r (A cos phi + B sin phi) from the point at (r, phi) of the orbit's plane (plane = d, A, B,
+// sqrt(A^2 + B^2); all 0 for a sphere), which is largest at phi = plane_phi.
+float cull_rho_lo[BATCH_SIZE];
+float cull_rho_hi[BATCH_SIZE];
+vec4 cull_plane[BATCH_SIZE];
+float cull_plane_phi[BATCH_SIZE];
+float cull_wedge_rho_lo;
+float cull_wedge_rho_hi;
 
 // The wedge of the ball (centre, radius) about the mass in the orbit's plane.
 void cull_wedge(orbit_ray ray, vec3 centre, float radius)
@@ -179,6 +189,18 @@ void cull_wedge(orbit_ray ray, vec3 centre, float radius)
     float half_width = asin(min(in_plane / max(rho, 1e-30), 1.0)) + CULL_ANGLE_MARGIN;
     cull_wedge_start = mod(atan(y, x) - half_width, CULL_TURN);
     cull_wedge_width = abs(off_plane) > r ? -1.0 : rho <= in_plane ? 2.0 * CULL_TURN : 2.0 * half_width;
+    cull_wedge_rho_lo = rho - in_plane;
+    cull_wedge_rho_hi = rho + in_plane;
+}
+
+// The plane through p0 with unit normal n, as cull_plane holds it, for slot `slot`.
+void cull_flat(orbit_ray ray, int slot, vec3 p0, vec3 n)
+{
+    float along_e1 = dot(n, ray.e1);
+    float along_e2 = dot(n, ray.e2);
+    cull_plane[slot] = vec4(dot(n, u_model_center - p0), along_e1, along_e2,
+                            sqrt(along_e1 * along_e1 + along_e2 * along_e2));
+    cull_plane_phi[slot] = atan(along_e2, along_e1);
 }
 
 // Whether the chord phi_a .. phi_b can meet object `slot`.
@@ -197,21 +219,73 @@ void cull_prepare(orbit_ray ray)
 #undef TEST_DISK
 #undef TEST_RECT
 #undef TEST_TRIANGLE
-#define CULL_KEEP(n) cull_start[n] = cull_wedge_start; cull_width[n] = cull_wedge_width;
-#define TEST_SPHERE(n) { vec4 g0 = GEOMETRY(n, 0); cull_wedge(ray, g0.xyz, g0.w); CULL_KEEP(n) }
-#define TEST_DISK(n) { vec4 g0 = GEOMETRY(n, 0); cull_wedge(ray, g0.xyz, g0.w); CULL_KEEP(n) }
+#define CULL_KEEP(n) cull_start[n] = cull_wedge_start; cull_width[n] = cull_wedge_width; \
+                     cull_rho_lo[n] = cull_wedge_rho_lo; cull_rho_hi[n] = cull_wedge_rho_hi;
+#define TEST_SPHERE(n) { vec4 g0 = GEOMETRY(n, 0); cull_wedge(ray, g0.xyz, g0.w); CULL_KEEP(n) \
+                         cull_plane[n] = vec4(0.0); cull_plane_phi[n] = 0.0; }
+#define TEST_DISK(n) { vec4 g0 = GEOMETRY(n, 0); cull_wedge(ray, g0.xyz, g0.w); CULL_KEEP(n) \
+                       cull_flat(ray, n, g0.xyz, GEOMETRY(n, 1).xyz); }
 #define TEST_RECT(n) { vec4 g0 = GEOMETRY(n, 0); vec3 g1 = GEOMETRY(n, 1).xyz, g2 = GEOMETRY(n, 2).xyz; \
-                       cull_wedge(ray, g0.xyz, max(length(g1 + g2), length(g1 - g2))); CULL_KEEP(n) }
+                       cull_wedge(ray, g0.xyz, max(length(g1 + g2), length(g1 - g2))); CULL_KEEP(n) \
+                       cull_flat(ray, n, g0.xyz, normalize(cross(g1, g2))); }
 #define TEST_TRIANGLE(n) { vec3 v0 = GEOMETRY(n, 0).xyz, v1 = GEOMETRY(n, 1).xyz, v2 = GEOMETRY(n, 2).xyz; \
                            vec3 c = (v0 + v1 + v2) / 3.0; \
                            cull_wedge(ray, c, max(length(v0 - c), max(length(v1 - c), length(v2 - c)))); \
-                           CULL_KEEP(n) }
+                           CULL_KEEP(n) cull_flat(ray, n, v0, normalize(cross(v1 - v0, v2 - v0))); }
     BATCH_TESTS
 #undef TEST_SPHERE
 #undef TEST_DISK
 #undef TEST_RECT
 #undef TEST_TRIANGLE
 #undef CULL_KEEP
+}
+
+// A group of chords, whose ends all lie at angles phi_a .. phi_b (cull_phi_a, cull_phi_b) and at
+// radii r_lo .. r_hi from the mass, where (cos, sin) of phi_a and phi_b are ends.xy and .zw: can
+// any of its chords meet object `slot`? Each chord joins two such ends, so it stays inside the
+// wedge, at radii of at least r_lo cos((phi_b - phi_a) / 2), and on the side of a plane that
+// holds every point of the region: the object is out of reach where its disc misses the wedge or
+// that ring, or where a flat object's plane leaves the whole region on one side (the signed
+// distance, linear in the point, is extreme at a corner of the region or where the outer arc
+// faces the plane's normal).
+bool cull_group_meets(int slot, vec4 ends, float r_lo, float r_hi)
+{
+    float span = cull_phi_b - cull_phi_a;
+    float r_in = span < 0.5 * CULL_TURN ? r_lo * cos(0.5 * span) : 0.0;
+    bool ring = cull_rho_hi[slot] >= r_in && cull_rho_lo[slot] <= r_hi;
+    vec4 plane = cull_plane[slot];
+    float f_a = plane.y * ends.x + plane.z * ends.y;
+    float f_b = plane.y * ends.z + plane.z * ends.w;
+    bool faces = mod(cull_plane_phi[slot] - cull_phi_a, CULL_TURN) <= span;
+    bool turns_away = mod(cull_plane_phi[slot] + 0.5 * CULL_TURN - cull_phi_a, CULL_TURN) <= span;
+    float f_max = faces ? plane.w : max(f_a, f_b);
+    float f_min = turns_away ? -plane.w : min(f_a, f_b);
+    float d_lo = plane.x + min(r_lo * f_min, r_hi * f_min);
+    float d_hi = plane.x + max(r_lo * f_max, r_hi * f_max);
+    float margin = CULL_MARGIN * (abs(plane.x) + r_hi * plane.w);
+    bool crosses = d_lo <= margin && d_hi >= -margin;
+    return cull_meets(slot) && ring && crosses;
+}
+
+// Whether a group of chords with ends as cull_group_meets takes them can meet no object of the
+// batch.
+bool cull_group_clear(vec4 ends, float r_lo, float r_hi)
+{
+    bool meets = false;
+#undef TEST_SPHERE
+#undef TEST_DISK
+#undef TEST_RECT
+#undef TEST_TRIANGLE
+#define TEST_SPHERE(n) meets = meets || cull_group_meets(n, ends, r_lo, r_hi);
+#define TEST_DISK(n) TEST_SPHERE(n)
+#define TEST_RECT(n) TEST_SPHERE(n)
+#define TEST_TRIANGLE(n) TEST_SPHERE(n)
+    BATCH_TESTS
+#undef TEST_SPHERE
+#undef TEST_DISK
+#undef TEST_RECT
+#undef TEST_TRIANGLE
+    return !meets;
 }
 #define TEST_SPHERE(slot) if (cull_meets(slot)) TEST_SPHERE_FULL(slot)
 #define TEST_DISK(slot) if (cull_meets(slot)) TEST_DISK_FULL(slot)

@@ -32,6 +32,37 @@ void main()
 #endif
 }
 #else
+// Chords taken together, ORBIT_GROUP at a time: a group whose chords can meet nothing is passed
+// over in one step, its end point computed as its last chord would compute it, so the rays, hits
+// and images stay those of the chord-by-chord walk (tests/unit/test_orbit_render.c).
+const float ORBIT_GROUP = 4.0;
+// How far, relative to the radius, the interpolated orbit might stray from the radii of its ends
+// between them (float roundings, and the interpolant's wiggle where the orbit is nearly circular)
+const float GROUP_RADIUS_MARGIN = 1e-3;
+
+// Whether the chords between fractions s_a and s_b of the orbit (where it has u, du/ds = q_a and
+// q_b) can meet no object, end inside the capture sphere or leave the bounding sphere. Without a
+// turning point between them (du/ds keeps its sign) all their ends lie between the radii of the
+// two ends; a group with one is followed chord by chord.
+bool group_clear(orbit_ray ray, float s_a, vec2 q_a, vec2 cs_a, float s_b, vec2 q_b, vec2 cs_b)
+{
+    bool turns = q_a.y * q_b.y <= 0.0;
+    float r_a = 1.0 / q_a.x;
+    float r_b = 1.0 / q_b.x;
+    float r_lo = min(r_a, r_b) * (1.0 - GROUP_RADIUS_MARGIN);
+    float r_hi = max(r_a, r_b) * (1.0 + GROUP_RADIUS_MARGIN);
+    float capture_offset = length(u_capture_center - u_model_center);
+    float nearest_capture = r_lo - capture_offset;
+    bool may_fall = u_capture_radius2 > 0.0 &&
+                    (nearest_capture <= 0.0 || nearest_capture * nearest_capture <= u_capture_radius2);
+    float farthest_bound = length(u_model_center - u_bound_center) + r_hi;
+    bool may_leave = farthest_bound * farthest_bound >= u_bound_radius2 * (1.0 - GROUP_RADIUS_MARGIN);
+    cull_phi_a = s_a * ray.phi_end;
+    cull_phi_b = s_b * ray.phi_end;
+    vec4 ends = vec4(cs_a, cs_b);
+    return !turns && !may_fall && !may_leave && cull_group_clear(ends, r_lo, r_hi);
+}
+
 void main()
 {
     orbit_ray ray = orbit_ray_of();
@@ -60,45 +91,72 @@ void main()
     vec2 leave_q1 = q;
     vec3 leave_from_bound = vec3(0.0);
     candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
-    for (int i = 0; i < MAX_SEGMENTS; i++) {
-        float k = float(i);
-        if (k >= ray.segments || leaving)
+    // Chords are taken ORBIT_GROUP at a time. At a group's start a turn looks at the group's last
+    // end only: where the group can meet nothing, fall in or leave (group_clear), the ray moves
+    // there at once, to the point its last chord would have reached; otherwise the next turns
+    // follow the group chord by chord. Every turn evaluates the orbit once and tests one chord,
+    // whichever it does, so that a group of pixels where some rays pass a group over and others
+    // follow its chords pays for one turn, not for both.
+    vec2 q_group = orbit_at(ray, 0.0);   // u, du/ds where the ray is
+    vec2 cs_group = vec2(1.0, 0.0);      // cos, sin of its angle about the mass
+    float k = 0.0;
+    float k_end = 0.0;                   // end of the group being followed chord by chord
+    bool done = false;
+    for (int i = 0; i < 2 * MAX_SEGMENTS + 2; i++) {
+        if (k >= ray.segments || leaving || done)
             break;
+        bool probe = k >= k_end;
+        float group_end = min(k + ORBIT_GROUP, ray.segments);
+        float k1 = probe ? group_end : k + 1.0;
         float s_a = s;
-        float s1 = orbit_chord_end(ray, k + 1.0);
+        float s1 = orbit_chord_end(ray, k1);
         vec2 q1 = orbit_at(ray, s1);
         vec3 p1 = orbit_point(ray, q1, s1);
+        float phi1 = s1 * ray.phi_end;
+        vec2 cs1 = vec2(cos(phi1), sin(phi1));
+        bool clear = group_clear(ray, s_a, q_group, cs_group, s1, q1, cs1);
+        bool passes = probe && clear;
+        bool chord = !probe;
+        k_end = probe ? group_end : k_end;
         vec3 from_bound = p1 - u_bound_center;
-        leaving = dot(from_bound, from_bound) >= u_bound_radius2;
+        leaving = chord && dot(from_bound, from_bound) >= u_bound_radius2;
         leave_a = a;
         leave_s = s_a;
         leave_k = k;
         leave_s1 = s1;
         leave_q1 = q1;
         leave_from_bound = from_bound;
-        if (leaving)
-            continue;
-        q = q1;
-        s = s1;
-        b = p1;
-        steps = k + 1.0;
+        bool tested = chord && !leaving;
+        bool moves = passes || tested;
+        q = moves ? q1 : q;
+        s = moves ? s1 : s;
+        b = moves ? p1 : b;
+        steps = moves ? k1 : steps;
+        q_group = moves ? q1 : q_group;
+        cs_group = moves ? cs1 : cs_group;
         cull_phi_a = s_a * ray.phi_end;
-        cull_phi_b = s * ray.phi_end;
-        intersect_chord(a, b, k, best);
-        hit_a = a;
-        hit_b = b;
-        hit_s_a = s_a;
-        hit_s_b = s;
-        hit_segment = k;
-        vec3 from_mass = b - u_capture_center;
-        bool captured = u_capture_radius2 > 0.0 && dot(from_mass, from_mass) <= u_capture_radius2;
+        cull_phi_b = phi1;
+        candidate trial = best;
+        intersect_chord(a, p1, k, trial);
+        best.key = tested ? trial.key : best.key;
+        best.t = tested ? trial.t : best.t;
+        best.slot = tested ? trial.slot : best.slot;
+        best.normal = tested ? trial.normal : best.normal;
+        best.surface = tested ? trial.surface : best.surface;
+        hit_a = tested ? a : hit_a;
+        hit_b = tested ? p1 : hit_b;
+        hit_s_a = tested ? s_a : hit_s_a;
+        hit_s_b = tested ? s1 : hit_s_b;
+        hit_segment = tested ? k : hit_segment;
+        vec3 from_mass = p1 - u_capture_center;
+        bool captured = tested && u_capture_radius2 > 0.0 && dot(from_mass, from_mass) <= u_capture_radius2;
         bool found = best.slot >= 0.0;
         bool ends = !found && captured;
         code = ends ? CODE_CAPTURED : code;
         end_key = ends ? steps : end_key;
-        if (found || ends)
-            break;
-        a = b;
+        done = found || ends;
+        a = moves && !done ? p1 : a;
+        k = moves && !done ? k1 : k;
     }
     if (leaving) {
         // the leaving chord as the orbit stage makes it (orbit_chord_from): from its end outside

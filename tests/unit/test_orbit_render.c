@@ -524,11 +524,153 @@ static void test_sky_at_infinity(void **state)
     }
 }
 
+/* Where the orbit of pixel (i, j)'s ray (the camera at rest, outside the photon sphere) comes
+ * closest to the mass: integrated here in double (d2u/dphi2 = 3 M u^2 - u) from its launch to
+ * where du/dphi changes sign. 0 where the ray has no periapsis ahead (it starts outwards or falls
+ * in). */
+static int periapsis(const struct scene *s, int i, int j, vec3d *at, double *r_p)
+{
+    vec3d d = camera_ray(s, i, j), from_mass = v3_sub(s->camera.position, s->model.center);
+    double r0 = v3_len(from_mass), m = s->model.mass;
+    vec3d e1 = v3_scale(from_mass, 1.0 / r0);
+    double radial = v3_dot(d, e1);
+    vec3d across = v3_sub(d, v3_scale(e1, radial));
+    double sine = v3_len(across);
+    if (radial >= 0.0 || sine == 0.0)
+        return 0;
+    vec3d e2 = v3_scale(across, 1.0 / sine);
+    double b = r0 * sine / sqrt(1.0 - 2.0 * m / r0), u = 1.0 / r0;
+    double w = sqrt(fmax(1.0 / (b * b) - u * u * (1.0 - 2.0 * m * u), 0.0)), phi = 0.0, h = 1e-4;
+    while (w > 0.0) {
+        if (u > 1.0 / (3.0 * m))
+            return 0;
+        double k1u = w, k1w = 3.0 * m * u * u - u;
+        double u2 = u + 0.5 * h * k1u, w2 = w + 0.5 * h * k1w;
+        double k2u = w2, k2w = 3.0 * m * u2 * u2 - u2;
+        double u3 = u + 0.5 * h * k2u, w3 = w + 0.5 * h * k2w;
+        double k3u = w3, k3w = 3.0 * m * u3 * u3 - u3;
+        double u4 = u + h * k3u, w4 = w + h * k3w;
+        double k4u = w4, k4w = 3.0 * m * u4 * u4 - u4;
+        double w_next = w + h / 6.0 * (k1w + 2.0 * k2w + 2.0 * k3w + k4w);
+        u += h / 6.0 * (k1u + 2.0 * k2u + 2.0 * k3u + k4u);
+        phi += w_next > 0.0 ? h : h * w / (w - w_next);
+        w = w_next;
+    }
+    *r_p = 1.0 / u;
+    *at = v3_add(s->model.center, v3_scale(v3_add(v3_scale(e1, cos(phi)), v3_scale(e2, sin(phi))), *r_p));
+    return 1;
+}
+
+/* The single pass passes over a group of chords at once where none of them can meet an object
+ * (group_clear in stage_orbit_frame.glsl): it bounds the group's chords by the radii of its two
+ * ends and the wedge between their angles, and a flat object by its plane over that region. The
+ * bounds are tight where an orbit turns (at its periapsis its radius dips below both ends') and
+ * where chords are long (a chord cuts inside the arc it spans): coarse chords, and objects around
+ * the photon sphere, where rays seen next to the shadow turn. First a shell of small spheres, a
+ * disk and a rectangle; then a few spheres alone, each just inside the periapsis of one ray, so
+ * that nothing else keeps the groups around those periapses from being passed over. Hits, state
+ * and image must be the multipass scheme's (which follows every chord), bit for bit. */
+static void test_single_pass_group_bounds(void **state)
+{
+    (void)state;
+    static const double tolerances[] = {0.2, 0.02, 1e-3};
+    enum { BALLS = 40, TURNING = 6 };
+    for (int layout = 0; layout < 2; layout++)
+        for (size_t k = 0; k < sizeof tolerances / sizeof tolerances[0]; k++) {
+            static struct scene s;
+            orbit_hole(&s, 30.0);
+            s.render.width = 96;
+            s.render.height = 72;
+            s.render.chord_tolerance = tolerances[k];
+            s.camera.position = v3(0.0, 0.5, 12.0);
+            s.camera.look_at = v3(0.0, 0.0, 0.0);
+            s.camera.up = v3(0.0, 1.0, 0.0);
+            s.camera.fov_deg = 60.0;
+            int placed = 0;
+            if (layout == 0) {
+                /* spheres spread over shells from 3.2 to 4.6 (a golden-angle spiral) */
+                for (int i = 0; i < BALLS; i++) {
+                    char name[16];
+                    snprintf(name, sizeof name, "ball%d", i);
+                    struct object *o = hc_add_object(&s, PRIM_SPHERE, name);
+                    double z = 1.0 - (2.0 * i + 1.0) / BALLS, ring = sqrt(1.0 - z * z);
+                    double a = 2.39996322972865 * i, r = 3.2 + 1.4 * fmod(0.618034 * i, 1.0);
+                    o->center = v3(r * ring * cos(a), r * z, r * ring * sin(a));
+                    o->radius = 0.05 + 0.004 * (i % 5);
+                }
+                struct object *disk = hc_add_object(&s, PRIM_DISK, "disk");
+                disk->center = v3(0.0, 0.0, 0.0);
+                disk->normal = v3(0.3, 1.0, 0.2);
+                disk->inner_radius = 3.3;
+                disk->radius = 3.45;
+                struct object *plate = hc_add_object(&s, PRIM_RECT, "plate");
+                plate->center = v3(-3.6, -1.0, -1.0);
+                plate->axis_u = v3(0.0, 0.0, 0.8);
+                plate->axis_v = v3(0.0, 0.6, 0.0);
+                placed = BALLS + 2;
+            } else {
+                /* the rays along a circle around the image's centre, every 60 degrees, whose
+                 * periapsis lies between 3.3 and 4.5: a sphere reaching 0.15 above it */
+                for (int n = 0; n < TURNING; n++) {
+                    double a = 2.0 * 3.14159265358979 * (n + 0.25) / TURNING;
+                    for (int step = 0; step < 48; step++) {
+                        int i = (int)(48.0 + step * cos(a)), j = (int)(36.0 + step * sin(a));
+                        vec3d at;
+                        double r_p;
+                        if (i < 0 || j < 0 || i >= 96 || j >= 72 || !periapsis(&s, i, j, &at, &r_p) || r_p < 3.3 ||
+                            r_p > 4.5)
+                            continue;
+                        char name[16];
+                        snprintf(name, sizeof name, "turn%d", n);
+                        struct object *o = hc_add_object(&s, PRIM_SPHERE, name);
+                        vec3d out = v3_scale(v3_sub(at, s.model.center), 1.0 / r_p);
+                        o->center = v3_add(s.model.center, v3_scale(out, r_p - 0.15));
+                        o->radius = 0.3;
+                        placed++;
+                        break;
+                    }
+                }
+                assert_int_equal(placed, TURNING);
+            }
+            hc_validate(&s);
+            struct hc_gpu single, multi;
+            s.render.pipeline = PIPELINE_SINGLE;
+            hc_gpu_render(&s, &single);
+            s.render.pipeline = PIPELINE_MULTIPASS;
+            hc_gpu_render(&s, &multi);
+            char what[64];
+            snprintf(what, sizeof what, "groups, %s, chords within %g", layout == 0 ? "shell" : "periapses",
+                     tolerances[k]);
+            expect_same_dumps(what, &single, &multi);
+            struct render_result image;
+            s.render.pipeline = PIPELINE_SINGLE;
+            render_image_only(&s, &image);
+            assert_memory_equal(image.rgba, multi.res.rgba, (size_t)s.render.width * s.render.height * 4);
+            render_result_free(&image);
+            int seen = 0;
+            long met[BALLS + 2] = {0};
+            for (long i = 0; i < (long)s.render.width * s.render.height; i++) {
+                int o = multi.dump.records[i].outcome;
+                if (o >= 0 && o < placed)
+                    met[o]++;
+            }
+            for (int o = 0; o < placed; o++)
+                seen += met[o] > 0;
+            print_message("%s: %d of %d objects met\n", what, seen, placed);
+            assert_true(seen >= placed / 2);
+            if (layout == 0)
+                assert_true(met[BALLS] > 0 && met[BALLS + 1] > 0);
+            hc_gpu_free(&single);
+            hc_gpu_free(&multi);
+        }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_single_pass_bit_identical),
         cmocka_unit_test(test_single_pass_culling),
+        cmocka_unit_test(test_single_pass_group_bounds),
         cmocka_unit_test(test_photon_sphere),
         cmocka_unit_test(test_sky_at_infinity),
         cmocka_unit_test(test_observers),
