@@ -144,22 +144,24 @@ void consider(bool found, float t, vec3 normal, vec3 surface, float slot, inout 
 }
 
 #if defined(SINGLE_PASS) && defined(ORBIT_HITS)
-// The single pass on exact orbits tests an object against a chord only where the two can meet.
-// Every chord of a ray joins two points of its orbit, which lies in the plane of e1 and e2 through
-// the mass, at angles phi_a < phi_b about the mass (phi from e1 towards e2) less than half a turn
-// apart: the chord stays in that plane, inside the wedge between the two angles. An object's
-// bounding ball cuts the plane in a disc; where the ball misses the plane, or the disc lies
-// outside the wedge (the disc is seen from the mass within +- asin(radius / distance) of its
-// centre's angle), no chord of that wedge can meet the object, and its test is skipped: the hits
-// are the ones the full tests find (tests/unit/test_orbit_render.c). The balls are taken a little
-// larger (CULL_MARGIN of their distance from the mass) than the objects, and the angles wider
-// (CULL_ANGLE_MARGIN), than a float rounding of the chords' points could move them.
+// Where the chords of the single pass on exact orbits can meet an object (the single pass passes
+// over a group of chords that can meet none: group_clear in stage_orbit_frame.glsl). Every chord
+// of a ray joins two points of its orbit, which lies in the plane of e1 and e2 through the mass,
+// at angles phi_a < phi_b about the mass (phi from e1 towards e2) less than half a turn apart:
+// the chord stays in that plane, inside the wedge between the two angles. An object's bounding
+// ball cuts the plane in a disc; where the ball misses the plane, or the disc lies outside the
+// wedge (the disc is seen from the mass within +- asin(radius / distance) of its centre's angle),
+// no chord of that wedge can meet the object. The balls are taken a little larger (CULL_MARGIN of
+// their distance from the mass) than the objects, and the angles wider (CULL_ANGLE_MARGIN), than
+// a float rounding of the chords' points could move them. Each chord's own tests are not guarded
+// by it: llvmpipe runs the body of an `if` for every pixel group whatever its condition, so such
+// a guard only added its own arithmetic there (docs/PIPELINE.md).
 const float CULL_TURN = 6.28318530717959;
 const float CULL_MARGIN = 1e-4;
 const float CULL_ANGLE_MARGIN = 1e-4;
 float cull_start[BATCH_SIZE];   // per object: where its wedge starts, in [0, 2 pi)
 float cull_width[BATCH_SIZE];   // its width (beyond a turn: every angle); < 0: misses the plane
-float cull_phi_a;               // the chord being tested spans phi_a .. phi_b (set by the caller)
+float cull_phi_a;               // the chords looked at span phi_a .. phi_b (set by the caller)
 float cull_phi_b;
 float cull_wedge_start;
 float cull_wedge_width;
@@ -203,7 +205,7 @@ void cull_flat(orbit_ray ray, int slot, vec3 p0, vec3 n)
     cull_plane_phi[slot] = atan(along_e2, along_e1);
 }
 
-// Whether the chord phi_a .. phi_b can meet object `slot`.
+// Whether a chord within phi_a .. phi_b can meet object `slot`, by its wedge.
 bool cull_meets(int slot)
 {
     float span = cull_phi_b - cull_phi_a;
@@ -287,10 +289,10 @@ bool cull_group_clear(vec4 ends, float r_lo, float r_hi)
 #undef TEST_TRIANGLE
     return !meets;
 }
-#define TEST_SPHERE(slot) if (cull_meets(slot)) TEST_SPHERE_FULL(slot)
-#define TEST_DISK(slot) if (cull_meets(slot)) TEST_DISK_FULL(slot)
-#define TEST_RECT(slot) if (cull_meets(slot)) TEST_RECT_FULL(slot)
-#define TEST_TRIANGLE(slot) if (cull_meets(slot)) TEST_TRIANGLE_FULL(slot)
+#define TEST_SPHERE(slot) TEST_SPHERE_FULL(slot)
+#define TEST_DISK(slot) TEST_DISK_FULL(slot)
+#define TEST_RECT(slot) TEST_RECT_FULL(slot)
+#define TEST_TRIANGLE(slot) TEST_TRIANGLE_FULL(slot)
 #endif
 
 // Every object of the batch against chord a -> b of segment `segment`: best keeps the closest hit
@@ -428,15 +430,7 @@ void orbit_refine_hit(orbit_ray ray, float s_a, float s_b, float segment, inout 
         vec3 m = orbit_point(ray, q, s_m);
         candidate first = candidate(none, 0.0, no_slot, vec3(0.0), vec3(0.0));
         candidate second = candidate(none, 0.0, no_slot, vec3(0.0), vec3(0.0));
-#if defined(SINGLE_PASS) && defined(ORBIT_HITS)
-        cull_phi_a = lo * ray.phi_end;
-        cull_phi_b = s_m * ray.phi_end;
-#endif
         intersect_chord(a, m, segment, first);
-#if defined(SINGLE_PASS) && defined(ORBIT_HITS)
-        cull_phi_a = s_m * ray.phi_end;
-        cull_phi_b = hi * ray.phi_end;
-#endif
         intersect_chord(m, b, segment, second);
         bool in_first = first.slot >= 0.0;
         bool in_second = !in_first && second.slot >= 0.0;

@@ -134,8 +134,6 @@ void main()
         steps = moves ? k1 : steps;
         q_group = moves ? q1 : q_group;
         cs_group = moves ? cs1 : cs_group;
-        cull_phi_a = s_a * ray.phi_end;
-        cull_phi_b = phi1;
         candidate trial = best;
         intersect_chord(a, p1, k, trial);
         best.key = tested ? trial.key : best.key;
@@ -166,8 +164,6 @@ void main()
         leaves = true;
         b = orbit_chord_point(ray, q, s, leaves);
         steps = leave_k + 1.0;
-        cull_phi_a = leave_s * ray.phi_end;
-        cull_phi_b = s * ray.phi_end;
         intersect_chord(leave_a, b, leave_k, best);
         hit_a = leave_a;
         hit_b = b;

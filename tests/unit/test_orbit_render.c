@@ -103,8 +103,8 @@ static void render_image_only(const struct scene *s, struct render_result *image
     renderer_destroy(r);
 }
 
-/* The single pass skips an object's test on a chord whose wedge about the mass its bounding ball
- * cannot reach (cull_meets in stage_intersect.glsl): a ring of small spheres around the hole at
+/* The single pass passes over chords whose wedge about the mass an object's bounding ball cannot
+ * reach (cull_meets in stage_intersect.glsl, for group_clear): a ring of small spheres around the hole at
  * every angle and height, a triangle, a rectangle and a disk across the orbit planes, seen from
  * near the hole so that rays wind around it (the wedge tests on orbits that sweep more than a
  * turn), at rest and moving. Hits, state and image, and the image alone, must be the multipass
