@@ -25,25 +25,25 @@ struct kiosk_timing {
 };
 
 static int time_scene(struct kiosk_view *v, const struct kiosk_config *c, struct screen *screen, int scene,
-                      struct kiosk_timing *t, char *err, size_t errlen)
+                      struct kiosk_timing *t, struct error *e)
 {
-    if (kiosk_view_load(v, scene, NULL, err, errlen) != 0)
+    if (kiosk_view_load(v, scene, NULL, e) != 0)
         return -1;
     struct kiosk_state st;
     kiosk_state_reset(&st, c);
     st.scene = scene;
     /* the first preview compiles the scene's programs: not timed */
-    if (kiosk_view_preview(v, &st, err, errlen) != 0)
+    if (kiosk_view_preview(v, &st, e) != 0)
         return -1;
     double times[KIOSK_BENCH_PREVIEWS];
     for (int i = 0; i < KIOSK_BENCH_PREVIEWS; i++) {
         st.speed = knob_turn(&c->speed, st.speed, 1);
         double t0 = bench_now();
-        if (kiosk_view_preview(v, &st, err, errlen) != 0 || compositor_draw(&v->comp, screen, err, errlen) != 0)
+        if (kiosk_view_preview(v, &st, e) != 0 || compositor_draw(&v->comp, screen, e) != 0)
             return -1;
         /* a preview drawn in tiles is on screen once its last tile is */
         while (kiosk_view_preview_pending(v))
-            if (kiosk_view_refine(v, err, errlen) != 0 || compositor_draw(&v->comp, screen, err, errlen) != 0)
+            if (kiosk_view_refine(v, e) != 0 || compositor_draw(&v->comp, screen, e) != 0)
                 return -1;
         glFinish();
         times[i] = bench_now() - t0;
@@ -54,7 +54,7 @@ static int time_scene(struct kiosk_view *v, const struct kiosk_config *c, struct
     double t0 = bench_now();
     t->bands = 0;
     while (!kiosk_view_refined(v)) {
-        if (kiosk_view_refine(v, err, errlen) != 0 || compositor_draw(&v->comp, screen, err, errlen) != 0)
+        if (kiosk_view_refine(v, e) != 0 || compositor_draw(&v->comp, screen, e) != 0)
             return -1;
         t->bands++;
     }
@@ -80,13 +80,13 @@ int bench_kiosk(struct bench *b, char *err, size_t errlen)
     int n = b->quick ? 1 : c.kiosk.n_scenes;
     static struct kiosk_view v;
     struct screen *screen;
-    if (kiosk_view_init(&v, &c, b->ctx, err, errlen) != 0)
-        return -1;
+    if (kiosk_view_init(&v, &c, b->ctx, &e) != 0)
+        return error_format(&e, err, errlen);
     /* a screen of the refined frame's size on the bench's context, as the headless kiosk has */
-    screen = screen_open_offscreen(b->ctx, c.kiosk.width, c.kiosk.height, err, errlen);
+    screen = screen_open_offscreen(b->ctx, c.kiosk.width, c.kiosk.height, &e);
     if (!screen) {
         kiosk_view_release(&v);
-        return -1;
+        return error_format(&e, err, errlen);
     }
     /* bentray bench --kiosk without --out: the table alone, on standard output */
     FILE *csv = b->data_dir[0] ? bench_data_file(b, "kiosk.csv", err, errlen) : fopen("/dev/null", "w");
@@ -112,10 +112,12 @@ int bench_kiosk(struct bench *b, char *err, size_t errlen)
         name = name ? name + 1 : c.kiosk.scenes[i];
         bench_progress(b, "kiosk: %s", name);
         struct kiosk_timing t;
-        rc = time_scene(&v, &c, screen, i, &t, err, errlen);
+        rc = time_scene(&v, &c, screen, i, &t, &e);
         b->done++;
-        if (rc != 0)
+        if (rc != 0) {
+            error_format(&e, err, errlen);
             break;
+        }
         double fps = 1.0 / t.preview_median;
         fprintf(b->md, "| %s | %.3f | %.1f | %s | %.2f | %d | %s |\n", name, t.preview_median, fps,
                 fps >= KIOSK_TARGET_PREVIEW_FPS ? "met" : "MISSED", t.refined, t.bands,

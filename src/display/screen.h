@@ -8,6 +8,7 @@
 #include "gl/context.h"
 #include "gl/gl_api.h"
 #include "input/input.h"
+#include "io/error.h"
 #include "display/display_settings.h"
 
 struct screen {
@@ -21,8 +22,8 @@ struct screen {
      * most max; returns how many. NULL where there are none. */
     int (*events)(struct screen *s, double now, struct input_event *out, int max);
     /* Show what was drawn into framebuffer: swap, page flip (waiting for vertical blank when the
-     * configuration asks), or nothing (headless). 0, or -1 with err. */
-    int (*present)(struct screen *s, char *err, size_t errlen);
+     * configuration asks), or nothing (headless). 0, or -1 with e (ERROR_RUNTIME). */
+    int (*present)(struct screen *s, struct error *e);
     /* Puts the display back as it was (the console's mode), frees the context. */
     void (*close)(struct screen *s);
     void *priv;
@@ -35,17 +36,21 @@ struct screen {
     FILE *log;
 };
 
-/* Each returns NULL with err when the back-end cannot open here. gl_backend (headless only):
- * "egl", "osmesa" or "auto". */
-struct screen *screen_open_headless(int width, int height, const char *gl_backend, char *err, size_t errlen);
+/* Each returns NULL with e when the back-end cannot open here; the message names the back-end or
+ * the device. What the configuration names and the machine refuses or lacks (its DRM device, the
+ * connector, the mode) is the user's (ERROR_INPUT), the rest the machine's (ERROR_RUNTIME).
+ * gl_backend (headless only): "egl", "osmesa" or "auto". */
+struct screen *screen_open_headless(int width, int height, const char *gl_backend, struct error *e);
 /* The headless screen's framebuffer on a context the caller keeps (the bench's): width x height,
  * RGBA8; screen_close leaves the context open. */
-struct screen *screen_open_offscreen(struct gl_context *gl, int width, int height, char *err, size_t errlen);
-struct screen *screen_open_x11(const struct kiosk_display *d, int width, int height, char *err, size_t errlen);
-struct screen *screen_open_kms(const struct kiosk_display *d, char *err, size_t errlen);
-/* The configured back-end; auto tries kms, then x11 (when DISPLAY is set), then headless. */
-struct screen *screen_open(const struct kiosk_display *d, int width, int height, const char *gl_backend, char *err,
-                           size_t errlen);
+struct screen *screen_open_offscreen(struct gl_context *gl, int width, int height, struct error *e);
+struct screen *screen_open_x11(const struct kiosk_display *d, int width, int height, struct error *e);
+struct screen *screen_open_kms(const struct kiosk_display *d, struct error *e);
+/* The configured back-end; auto tries kms, then x11 (when DISPLAY is set), then headless. With auto,
+ * e->message keeps why the back-ends passed over did not open ("" when the first did) once one
+ * opens (e->status ERROR_NONE), and all the reasons when none does (ERROR_RUNTIME). */
+struct screen *screen_open(const struct kiosk_display *d, int width, int height, const char *gl_backend,
+                           struct error *e);
 void screen_close(struct screen *s);
 
 #endif

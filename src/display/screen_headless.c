@@ -17,15 +17,11 @@ static int headless_fd(struct screen *s)
     return -1;
 }
 
-static int headless_present(struct screen *s, char *err, size_t errlen)
+static int headless_present(struct screen *s, struct error *e)
 {
     (void)s;
     glFinish();
-    struct error ge;
-    if (gl_check("presenting a headless frame", &ge) == 0)
-        return 0;
-    snprintf(err, errlen, "%s", ge.message);
-    return -1;
+    return gl_check("presenting a headless frame", e);
 }
 
 static void headless_close(struct screen *s)
@@ -43,15 +39,14 @@ static void headless_close(struct screen *s)
 }
 
 /* The screen on gl, which it owns (closes with it) or not. */
-static struct screen *offscreen(struct gl_context *gl, int owns_gl, int width, int height, char *err,
-                                size_t errlen)
+static struct screen *offscreen(struct gl_context *gl, int owns_gl, int width, int height, struct error *e)
 {
     struct screen *s = calloc(1, sizeof *s);
     struct headless *h = calloc(1, sizeof *h);
     if (!s || !h) {
         free(s);
         free(h);
-        snprintf(err, errlen, "out of memory");
+        error_set(e, ERROR_RUNTIME, NULL, "out of memory");
         return NULL;
     }
     s->name = "headless";
@@ -72,8 +67,8 @@ static struct screen *offscreen(struct gl_context *gl, int owns_gl, int width, i
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, h->color);
     GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
-        snprintf(err, errlen, "headless screen: the %dx%d RGBA8 framebuffer is incomplete (status 0x%x)", width,
-                 height, status);
+        error_set(e, ERROR_RUNTIME, NULL, "headless screen: the %dx%d RGBA8 framebuffer is incomplete (status 0x%x)",
+                  width, height, status);
         screen_close(s);
         return NULL;
     }
@@ -81,20 +76,17 @@ static struct screen *offscreen(struct gl_context *gl, int owns_gl, int width, i
     return s;
 }
 
-struct screen *screen_open_offscreen(struct gl_context *gl, int width, int height, char *err, size_t errlen)
+struct screen *screen_open_offscreen(struct gl_context *gl, int width, int height, struct error *e)
 {
-    return offscreen(gl, 0, width, height, err, errlen);
+    return offscreen(gl, 0, width, height, e);
 }
 
-struct screen *screen_open_headless(int width, int height, const char *gl_backend, char *err, size_t errlen)
+struct screen *screen_open_headless(int width, int height, const char *gl_backend, struct error *e)
 {
-    struct error ge;
-    struct gl_context *gl = gl_context_create(gl_backend, &ge);
-    if (!gl) {
-        snprintf(err, errlen, "%s", ge.message);
+    struct gl_context *gl = gl_context_create(gl_backend, e);
+    if (!gl)
         return NULL;
-    }
-    struct screen *s = offscreen(gl, 1, width, height, err, errlen);
+    struct screen *s = offscreen(gl, 1, width, height, e);
     if (!s)
         gl_context_destroy(gl);
     return s;

@@ -13,7 +13,6 @@
 #include <fcntl.h>
 #include <gbm.h>
 #include <poll.h>
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -43,15 +42,6 @@ struct kms {
     struct vt_switch vt;             /* the console the kiosk runs on (standard input) */
 };
 
-__attribute__((format(printf, 3, 4)))
-static void say(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
-
 /* ---- choosing the card, the connector and the mode ------------------------------------------ */
 
 static void connector_name(const drmModeConnector *conn, char *out, size_t outlen)
@@ -77,7 +67,7 @@ static const char *open_reason(int e)
 /* The connector to drive on an open card: the one named (connected), else the first connected.
  * NULL with a reason naming the card. */
 static drmModeConnector *find_connector(int fd, const char *path, const drmModeRes *res, const char *want,
-                                        char *err, size_t errlen)
+                                        struct error *e)
 {
     char names[256] = "";
     size_t used = 0;
@@ -90,8 +80,8 @@ static drmModeConnector *find_connector(int fd, const char *path, const drmModeR
         if (*want && strcmp(name, want) == 0) {
             if (connected(conn))
                 return conn;
-            say(err, errlen, "%s: connector %s is not connected (no display on it, or it reports no modes)", path,
-                name);
+            error_set(e, ERROR_RUNTIME, NULL, "%s: connector %s is not connected (no display on it, or it reports no "
+                      "modes)", path, name);
             drmModeFreeConnector(conn);
             return NULL;
         }
@@ -106,15 +96,16 @@ static drmModeConnector *find_connector(int fd, const char *path, const drmModeR
         drmModeFreeConnector(conn);
     }
     if (*want)
-        say(err, errlen, "%s: no connector %s; it has %s", path, want, used ? names : "none");
+        error_set(e, ERROR_INPUT, NULL, "%s: no connector %s; it has %s", path, want, used ? names : "none");
     else
-        say(err, errlen, "%s: no connected connector%s%s%s", path, used ? " (it has " : "", names, used ? ")" : "");
+        error_set(e, ERROR_RUNTIME, NULL, "%s: no connected connector%s%s%s", path, used ? " (it has " : "", names,
+                  used ? ")" : "");
     return NULL;
 }
 
 /* The configured mode, else the preferred one, else the largest. -1 with the modes it has. */
 static int choose_mode(const drmModeConnector *conn, const char *path, int width, int height,
-                       drmModeModeInfo *mode, char *err, size_t errlen)
+                       drmModeModeInfo *mode, struct error *e)
 {
     const drmModeModeInfo *best = NULL;
     for (int i = 0; i < conn->count_modes; i++) {
@@ -145,8 +136,8 @@ static int choose_mode(const drmModeConnector *conn, const char *path, int width
         if (n > 0)
             used += (size_t)n;
     }
-    say(err, errlen, "%s: %s has no mode %dx%d; its modes: %s", path, name, width, height, modes);
-    return -1;
+    return error_set(e, ERROR_INPUT, NULL, "%s: %s has no mode %dx%d; its modes: %s", path, name, width, height,
+                     modes);
 }
 
 /* The CRTC already driving the connector (the console's), else a free one its encoders can use. */
@@ -175,37 +166,38 @@ static uint32_t find_crtc(int fd, const drmModeRes *res, const drmModeConnector 
 }
 
 /* Opens PATH and takes its connector, mode and CRTC into k. -1 with a reason naming PATH. */
-static int try_card(struct kms *k, const char *path, const struct kiosk_display *d, char *err, size_t errlen)
+static int try_card(struct kms *k, const char *path, const struct kiosk_display *d, struct error *e)
 {
     int fd = open(path, O_RDWR | O_CLOEXEC);
     if (fd < 0) {
-        say(err, errlen, "%s: %s", path, open_reason(errno));
-        return -1;
+        int en = errno;
+        return error_set(e, error_status_of_errno(en), NULL, "%s: %s", path, open_reason(en));
     }
     drmModeRes *res = drmModeGetResources(fd);
     if (!res) {
-        say(err, errlen, "%s: not a display controller (drmModeGetResources: %s)", path, strerror(errno));
+        error_set(e, ERROR_RUNTIME, NULL, "%s: not a display controller (drmModeGetResources: %s)", path,
+                  strerror(errno));
         close(fd);
         return -1;
     }
     /* The first opener of a card is its master; anyone else (a display server) may not set modes. */
     if (!drmIsMaster(fd) && drmSetMaster(fd) != 0) {
-        say(err, errlen, "%s: another program (a display server?) is driving the display: stop it, or use "
-                         "[display] backend = x11", path);
+        error_set(e, ERROR_RUNTIME, NULL, "%s: another program (a display server?) is driving the display: stop it, "
+                  "or use [display] backend = x11", path);
         drmModeFreeResources(res);
         close(fd);
         return -1;
     }
-    drmModeConnector *conn = find_connector(fd, path, res, d->connector, err, errlen);
+    drmModeConnector *conn = find_connector(fd, path, res, d->connector, e);
     int ok = conn != NULL;
     if (ok)
-        ok = choose_mode(conn, path, d->mode_width, d->mode_height, &k->mode, err, errlen) == 0;
+        ok = choose_mode(conn, path, d->mode_width, d->mode_height, &k->mode, e) == 0;
     if (ok) {
         k->crtc_id = find_crtc(fd, res, conn);
         if (!k->crtc_id) {
             char name[KIOSK_NAME_LEN];
             connector_name(conn, name, sizeof name);
-            say(err, errlen, "%s: no CRTC can drive %s", path, name);
+            error_set(e, ERROR_RUNTIME, NULL, "%s: no CRTC can drive %s", path, name);
             ok = 0;
         }
     }
@@ -233,38 +225,39 @@ static int by_number(const void *a, const void *b)
 }
 
 /* The configured card, else the first /dev/dri/cardN (by N) that drives a connected display. */
-static int open_card(struct kms *k, const struct kiosk_display *d, char *err, size_t errlen)
+static int open_card(struct kms *k, const struct kiosk_display *d, struct error *e)
 {
     if (*d->drm_device)
-        return try_card(k, d->drm_device, d, err, errlen);
+        return try_card(k, d->drm_device, d, e);
     DIR *dir = opendir(KMS_DRI_DIR);
-    if (!dir) {
-        say(err, errlen, "no DRM device: %s: %s (no GPU driver with display support is loaded)", KMS_DRI_DIR,
-            strerror(errno));
-        return -1;
-    }
+    if (!dir)
+        return error_set(e, ERROR_RUNTIME, NULL, "no DRM device: %s: %s (no GPU driver with display support is "
+                         "loaded)", KMS_DRI_DIR, strerror(errno));
     int cards[KMS_MAX_CARDS], n = 0;
-    for (struct dirent *e; (e = readdir(dir)) != NULL && n < KMS_MAX_CARDS;)
-        if (card_number(e->d_name) >= 0)
-            cards[n++] = card_number(e->d_name);
+    for (struct dirent *ent; (ent = readdir(dir)) != NULL && n < KMS_MAX_CARDS;)
+        if (card_number(ent->d_name) >= 0)
+            cards[n++] = card_number(ent->d_name);
     closedir(dir);
-    if (n == 0) {
-        say(err, errlen, "no DRM device: no card in %s", KMS_DRI_DIR);
-        return -1;
-    }
+    if (n == 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "no DRM device: no card in %s", KMS_DRI_DIR);
     qsort(cards, (size_t)n, sizeof cards[0], by_number);
+    error_clear(e);
     size_t used = 0;
     for (int i = 0; i < n; i++) {
-        char path[64], why[384];
+        char path[64];
+        struct error why;
         snprintf(path, sizeof path, "%s/card%d", KMS_DRI_DIR, cards[i]);
-        if (try_card(k, path, d, why, sizeof why) == 0)
+        if (try_card(k, path, d, &why) == 0)
             return 0;
-        if (used < errlen) {
-            int m = snprintf(err + used, errlen - used, "%s%s", used ? "; " : "", why);
+        if (used < sizeof e->message) {
+            /* each card's reason cut at 383 characters, to leave room for the others' */
+            int m = snprintf(e->message + used, sizeof e->message - used, "%s%.383s", used ? "; " : "", why.message);
             if (m > 0)
                 used += (size_t)m;
         }
     }
+    /* no card here drives a display: the machine's, whatever each card's reason */
+    e->status = ERROR_RUNTIME;
     return -1;
 }
 
@@ -285,14 +278,14 @@ static void kms_fb_destroy(struct gbm_bo *bo, void *data)
 }
 
 /* The DRM framebuffer of a GBM buffer, made once and kept with it (GBM reuses its few buffers). */
-static uint32_t fb_of(struct kms *k, struct gbm_bo *bo, char *err, size_t errlen)
+static uint32_t fb_of(struct kms *k, struct gbm_bo *bo, struct error *e)
 {
     struct kms_fb *fb = gbm_bo_get_user_data(bo);
     if (fb)
         return fb->fb_id;
     fb = calloc(1, sizeof *fb);
     if (!fb) {
-        say(err, errlen, "%s: out of memory", k->path);
+        error_set(e, ERROR_RUNTIME, NULL, "%s: out of memory", k->path);
         return 0;
     }
     fb->fd = k->fd;
@@ -300,8 +293,8 @@ static uint32_t fb_of(struct kms *k, struct gbm_bo *bo, char *err, size_t errlen
     uint32_t handles[4] = {gbm_bo_get_handle(bo).u32}, strides[4] = {gbm_bo_get_stride(bo)}, offsets[4] = {0};
     if (drmModeAddFB2(k->fd, width, height, gbm_bo_get_format(bo), handles, strides, offsets, &fb->fb_id, 0) != 0 &&
         drmModeAddFB(k->fd, width, height, 24, 32, strides[0], handles[0], &fb->fb_id) != 0) {
-        say(err, errlen, "%s: cannot make a framebuffer of a %ux%u buffer (%s)", k->path, width, height,
-            strerror(errno));
+        error_set(e, ERROR_RUNTIME, NULL, "%s: cannot make a framebuffer of a %ux%u buffer (%s)", k->path, width,
+                  height, strerror(errno));
         free(fb);
         return 0;
     }
@@ -320,7 +313,7 @@ static void page_flip_done(int fd, unsigned frame, unsigned sec, unsigned usec, 
 }
 
 /* Until the queued flip is on the screen, at most KMS_FLIP_TIMEOUT_MS. */
-static int wait_flip(struct kms *k, char *err, size_t errlen)
+static int wait_flip(struct kms *k, struct error *e)
 {
     drmEventContext events = {.version = 2, .page_flip_handler = page_flip_done};
     while (k->flip_bo) {
@@ -328,54 +321,46 @@ static int wait_flip(struct kms *k, char *err, size_t errlen)
         int r = poll(&p, 1, KMS_FLIP_TIMEOUT_MS);
         if (r < 0 && errno == EINTR)
             continue;
-        if (r < 0) {
-            say(err, errlen, "%s: waiting for a page flip: %s", k->path, strerror(errno));
-            return -1;
-        }
-        if (r == 0) {
-            say(err, errlen, "%s: a page flip did not complete within %d ms", k->path, KMS_FLIP_TIMEOUT_MS);
-            return -1;
-        }
-        if (drmHandleEvent(k->fd, &events) != 0) {
-            say(err, errlen, "%s: reading the page flip event failed: %s", k->path, strerror(errno));
-            return -1;
-        }
+        if (r < 0)
+            return error_set(e, ERROR_RUNTIME, NULL, "%s: waiting for a page flip: %s", k->path, strerror(errno));
+        if (r == 0)
+            return error_set(e, ERROR_RUNTIME, NULL, "%s: a page flip did not complete within %d ms", k->path,
+                             KMS_FLIP_TIMEOUT_MS);
+        if (drmHandleEvent(k->fd, &events) != 0)
+            return error_set(e, ERROR_RUNTIME, NULL, "%s: reading the page flip event failed: %s", k->path,
+                             strerror(errno));
     }
     return 0;
 }
 
 /* ---- the screen ------------------------------------------------------------------------------ */
 
-static int kms_present(struct screen *s, char *err, size_t errlen)
+static int kms_present(struct screen *s, struct error *e)
 {
     struct kms *k = s->priv;
     if (!k->vt.showing)
         return 0;
     /* A flip that timed out last time may have completed since: its buffer is needed back. */
-    if (k->flip_bo && wait_flip(k, err, errlen) != 0)
+    if (k->flip_bo && wait_flip(k, e) != 0)
         return -1;
-    struct error ge;
-    if (egl_swap(s->gl, &ge) != 0) {
-        snprintf(err, errlen, "%s", ge.message);
+    if (egl_swap(s->gl, e) != 0)
         return -1;
-    }
     struct gbm_bo *bo = gbm_surface_lock_front_buffer(k->surface);
-    if (!bo) {
-        say(err, errlen, "%s: no front buffer after the swap (gbm_surface_lock_front_buffer)", k->path);
-        return -1;
-    }
-    uint32_t fb = fb_of(k, bo, err, errlen);
+    if (!bo)
+        return error_set(e, ERROR_RUNTIME, NULL, "%s: no front buffer after the swap (gbm_surface_lock_front_buffer)",
+                         k->path);
+    uint32_t fb = fb_of(k, bo, e);
     if (!fb) {
         gbm_surface_release_buffer(k->surface, bo);
         return -1;
     }
     if (!k->mode_set) {
         if (drmModeSetCrtc(k->fd, k->crtc_id, fb, 0, 0, &k->connector_id, 1, &k->mode) != 0) {
-            int e = errno;
+            int en = errno;
             gbm_surface_release_buffer(k->surface, bo);
-            say(err, errlen, "%s: cannot set mode %s (%s)%s", k->path, k->mode.name, strerror(e),
-                e == EACCES || e == EPERM ? ": another program (a display server?) is driving the display" : "");
-            return -1;
+            return error_set(e, ERROR_RUNTIME, NULL, "%s: cannot set mode %s (%s)%s", k->path, k->mode.name,
+                             strerror(en), en == EACCES || en == EPERM ? ": another program (a display server?) is "
+                             "driving the display" : "");
         }
         k->mode_set = 1;
         if (k->shown_bo)
@@ -392,15 +377,14 @@ static int kms_present(struct screen *s, char *err, size_t errlen)
         flipped = drmModePageFlip(k->fd, k->crtc_id, fb, DRM_MODE_PAGE_FLIP_EVENT, k) == 0;
     }
     if (!flipped) {
-        int e = errno;
+        int en = errno;
         gbm_surface_release_buffer(k->surface, bo);
-        say(err, errlen, "%s: page flip failed (%s)", k->path, strerror(e));
-        return -1;
+        return error_set(e, ERROR_RUNTIME, NULL, "%s: page flip failed (%s)", k->path, strerror(en));
     }
     k->flip_bo = bo;
     /* Without vsync the flip is asynchronous where the driver can, and completes at once; waiting
      * for it either way leaves no event behind on the descriptor the loop polls. */
-    return wait_flip(k, err, errlen);
+    return wait_flip(k, e);
 }
 
 /* No input of its own: the console switches the signals announced, served at every turn. */
@@ -433,8 +417,8 @@ static void kms_close(struct screen *s)
     if (k && k->fd >= 0) {
         /* the console back first: removing a framebuffer that is still scanned out turns the CRTC off */
         if (k->flip_bo) {
-            char ignored[128];
-            wait_flip(k, ignored, sizeof ignored);
+            struct error ignored;
+            wait_flip(k, &ignored);
         }
         /* on another console, the display is that console's */
         if (k->mode_set && k->vt.showing) {
@@ -499,38 +483,29 @@ static int config_for_format(EGLDisplay dpy, uint32_t format, EGLConfig *out)
 
 /* EGL on the GBM device, drawing into the GBM surface, an ES2 context current on it. On failure
  * the caller's close frees what was made. */
-static int init_egl_gbm(struct screen *s, struct kms *k, char *err, size_t errlen)
+static int init_egl_gbm(struct screen *s, struct kms *k, struct error *e)
 {
     static const struct egl_platform gbm = {EGL_PLATFORM_GBM_KHR, "GBM", "GBM", "EGL_KHR_platform_gbm",
                                             "EGL_MESA_platform_gbm", "install Mesa's EGL (libegl-mesa0)"};
     char version_label[48];
     snprintf(version_label, sizeof version_label, "GBM, %.32s", k->path);
-    struct error ge;
-    s->gl = egl_open(&gbm, k->gbm, k->path, version_label, &ge);
-    if (!s->gl) {
-        snprintf(err, errlen, "%s", ge.message);
+    s->gl = egl_open(&gbm, k->gbm, k->path, version_label, e);
+    if (!s->gl)
         return -1;
-    }
     EGLConfig config;
-    if (config_for_format(egl_display(s->gl), GBM_FORMAT_XRGB8888, &config) != 0) {
-        say(err, errlen, "%s: no EGL config renders XRGB8888 for scan-out", k->path);
-        return -1;
-    }
-    if (egl_attach_window(s->gl, config, k->surface, &ge) != 0) {
-        snprintf(err, errlen, "%s", ge.message);
-        return -1;
-    }
-    return 0;
+    if (config_for_format(egl_display(s->gl), GBM_FORMAT_XRGB8888, &config) != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "%s: no EGL config renders XRGB8888 for scan-out", k->path);
+    return egl_attach_window(s->gl, config, k->surface, e);
 }
 
-struct screen *screen_open_kms(const struct kiosk_display *d, char *err, size_t errlen)
+struct screen *screen_open_kms(const struct kiosk_display *d, struct error *e)
 {
     struct screen *s = calloc(1, sizeof *s);
     struct kms *k = calloc(1, sizeof *k);
     if (!s || !k) {
         free(s);
         free(k);
-        say(err, errlen, "kms: out of memory");
+        error_set(e, ERROR_RUNTIME, NULL, "kms: out of memory");
         return NULL;
     }
     k->fd = -1;
@@ -542,7 +517,7 @@ struct screen *screen_open_kms(const struct kiosk_display *d, char *err, size_t 
     s->events = kms_events;
     s->present = kms_present;
     s->close = kms_close;
-    if (open_card(k, d, err, errlen) != 0) {
+    if (open_card(k, d, e) != 0) {
         kms_close(s);
         return NULL;
     }
@@ -553,19 +528,19 @@ struct screen *screen_open_kms(const struct kiosk_display *d, char *err, size_t 
     s->height = k->mode.vdisplay;
     k->gbm = gbm_create_device(k->fd);
     if (!k->gbm) {
-        say(err, errlen, "%s: cannot create a GBM device on it", k->path);
+        error_set(e, ERROR_RUNTIME, NULL, "%s: cannot create a GBM device on it", k->path);
         kms_close(s);
         return NULL;
     }
     k->surface = gbm_surface_create(k->gbm, (uint32_t)s->width, (uint32_t)s->height, GBM_FORMAT_XRGB8888,
                                     GBM_BO_USE_SCANOUT | GBM_BO_USE_RENDERING);
     if (!k->surface) {
-        say(err, errlen, "%s: cannot create a %dx%d XRGB8888 scan-out surface (gbm_surface_create)", k->path,
-            s->width, s->height);
+        error_set(e, ERROR_RUNTIME, NULL, "%s: cannot create a %dx%d XRGB8888 scan-out surface (gbm_surface_create)",
+                  k->path, s->width, s->height);
         kms_close(s);
         return NULL;
     }
-    if (init_egl_gbm(s, k, err, errlen) != 0) {
+    if (init_egl_gbm(s, k, e) != 0) {
         kms_close(s);
         return NULL;
     }

@@ -112,14 +112,9 @@ static int x11_events(struct screen *s, double now, struct input_event *out, int
     return n;
 }
 
-static int x11_present(struct screen *s, char *err, size_t errlen)
+static int x11_present(struct screen *s, struct error *e)
 {
-    struct error ge;
-    if (egl_swap(s->gl, &ge) != 0) {
-        snprintf(err, errlen, "%s", ge.message);
-        return -1;
-    }
-    return 0;
+    return egl_swap(s->gl, e);
 }
 
 /* The window in the visual of the EGL config, an ES2 context current on it. The window is made
@@ -163,7 +158,7 @@ static void exhibit_window(Display *dpy, Window window, int width, int height)
     }
 }
 
-static int attach_window(struct screen *s, struct x11_window *w, int vsync, char *err, size_t errlen)
+static int attach_window(struct screen *s, struct x11_window *w, int vsync, struct error *e)
 {
     int width = s->width, height = s->height;
     EGLDisplay display = egl_display(s->gl);
@@ -172,8 +167,8 @@ static int attach_window(struct screen *s, struct x11_window *w, int vsync, char
     EGLConfig config = NULL;
     EGLint n = 0;
     if (!eglChooseConfig(display, config_attribs, &config, 1, &n) || n < 1) {
-        snprintf(err, errlen, "x11: no EGL config for an 8-bit RGB ES2 window (EGL error 0x%x)", eglGetError());
-        return -1;
+        return error_set(e, ERROR_RUNTIME, NULL, "x11: no EGL config for an 8-bit RGB ES2 window (EGL error 0x%x)",
+                         eglGetError());
     }
     EGLint visual_id = 0;
     eglGetConfigAttrib(display, config, EGL_NATIVE_VISUAL_ID, &visual_id);
@@ -181,8 +176,8 @@ static int attach_window(struct screen *s, struct x11_window *w, int vsync, char
     int n_visuals = 0;
     visual = XGetVisualInfo(w->dpy, VisualIDMask, &want, &n_visuals);
     if (!visual || n_visuals < 1) {
-        snprintf(err, errlen, "x11: the X server has no visual 0x%x for the EGL config", (unsigned)visual_id);
-        return -1;
+        return error_set(e, ERROR_RUNTIME, NULL, "x11: the X server has no visual 0x%x for the EGL config",
+                         (unsigned)visual_id);
     }
     Window root = RootWindow(w->dpy, visual->screen);
     w->colormap = XCreateColormap(w->dpy, root, visual->visual, AllocNone);
@@ -200,28 +195,24 @@ static int attach_window(struct screen *s, struct x11_window *w, int vsync, char
                               &attrs);
     XFree(visual);
     if (!w->window) {
-        snprintf(err, errlen, "x11: cannot create a %dx%d window", width, height);
-        return -1;
+        return error_set(e, ERROR_RUNTIME, NULL, "x11: cannot create a %dx%d window", width, height);
     }
     XStoreName(w->dpy, w->window, X11_WINDOW_TITLE);
     exhibit_window(w->dpy, w->window, width, height);
     XSetWMProtocols(w->dpy, w->window, &w->wm_delete_window, 1);
     XMapWindow(w->dpy, w->window);
-    struct error ge;
-    if (egl_attach_window(s->gl, config, &w->window, &ge) != 0) {
-        snprintf(err, errlen, "%s", ge.message);
+    if (egl_attach_window(s->gl, config, &w->window, e) != 0)
         return -1;
-    }
     /* Advisory: a server without vertical blank (Xvfb) may refuse it, and frames still show. */
     eglSwapInterval(display, vsync ? 1 : 0);
     return 0;
 }
 
-struct screen *screen_open_x11(const struct kiosk_display *d, int width, int height, char *err, size_t errlen)
+struct screen *screen_open_x11(const struct kiosk_display *d, int width, int height, struct error *e)
 {
     const char *name = getenv("DISPLAY");
     if (!name || !*name) {
-        snprintf(err, errlen, "x11: no X display: DISPLAY is not set");
+        error_set(e, ERROR_RUNTIME, NULL, "x11: no X display: DISPLAY is not set");
         return NULL;
     }
     struct screen *s = calloc(1, sizeof *s);
@@ -229,7 +220,7 @@ struct screen *screen_open_x11(const struct kiosk_display *d, int width, int hei
     if (!s || !w) {
         free(s);
         free(w);
-        snprintf(err, errlen, "x11: out of memory");
+        error_set(e, ERROR_RUNTIME, NULL, "x11: out of memory");
         return NULL;
     }
     s->name = "x11";
@@ -243,8 +234,8 @@ struct screen *screen_open_x11(const struct kiosk_display *d, int width, int hei
     s->close = x11_close;
     w->dpy = XOpenDisplay(NULL);
     if (!w->dpy) {
-        snprintf(err, errlen, "x11: cannot open the X display \"%s\" (is the X server running, may this user "
-                              "connect to it: XAUTHORITY, xhost?)", name);
+        error_set(e, ERROR_RUNTIME, NULL, "x11: cannot open the X display \"%s\" (is the X server running, may this "
+                  "user connect to it: XAUTHORITY, xhost?)", name);
         x11_close(s);
         return NULL;
     }
@@ -252,11 +243,8 @@ struct screen *screen_open_x11(const struct kiosk_display *d, int width, int hei
     w->wm_delete_window = XInternAtom(w->dpy, "WM_DELETE_WINDOW", False);
     static const struct egl_platform x11 = {EGL_PLATFORM_X11_KHR, "X11", "the X display", "EGL_KHR_platform_x11",
                                             "EGL_EXT_platform_x11", "install Mesa's EGL (libegl-mesa0)"};
-    struct error ge;
-    s->gl = egl_open(&x11, w->dpy, "x11", "X11", &ge);
-    if (!s->gl)
-        snprintf(err, errlen, "%s", ge.message);
-    if (!s->gl || attach_window(s, w, d->vsync, err, errlen) != 0) {
+    s->gl = egl_open(&x11, w->dpy, "x11", "X11", e);
+    if (!s->gl || attach_window(s, w, d->vsync, e) != 0) {
         x11_close(s);
         return NULL;
     }

@@ -26,6 +26,15 @@ void error_print(const struct error *e, const char *program, FILE *out)
             e->where[0] ? ": " : "", e->message);
 }
 
+int error_format(const struct error *e, char *buf, size_t len)
+{
+    if (e->where[0])
+        snprintf(buf, len, "%s: %s", e->where, e->message);
+    else
+        snprintf(buf, len, "%s", e->message);
+    return -1;
+}
+
 enum error_status error_status_of_errno(int errnum)
 {
     switch (errnum) {

@@ -8,33 +8,20 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* gl_check with its message in err. */
-static int gl_checked(const char *stage, char *err, size_t errlen)
-{
-    struct error ge;
-    if (gl_check(stage, &ge) == 0)
-        return 0;
-    snprintf(err, errlen, "%s", ge.message);
-    return -1;
-}
-
 /* The canvas and the HUD, 8-bit RGBA; each blit() sets the filter its scale needs. */
 static GLuint linear_texture(int width, int height)
 {
     return texture_create(GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, width, height, GL_LINEAR);
 }
 
-int compositor_init(struct compositor *c, const struct gl_context *gl, int width, int height, char *err,
-                    size_t errlen)
+int compositor_init(struct compositor *c, const struct gl_context *gl, int width, int height, struct error *e)
 {
     memset(c, 0, sizeof *c);
     c->width = width;
     c->height = height;
     /* the probe also takes this compositor's share of the pass quadrilateral (gl/quad.h) */
     struct gl_caps caps;
-    struct error ge;
-    if (gl_caps_probe(&caps, gl, &ge) != 0) {
-        snprintf(err, errlen, "%s", ge.message);
+    if (gl_caps_probe(&caps, gl, e) != 0) {
         quad_release();
         return -1;
     }
@@ -42,10 +29,9 @@ int compositor_init(struct compositor *c, const struct gl_context *gl, int width
     static const char *const vertex[] = {"kiosk_vertex.glsl", NULL};
     static const char *const blit[] = {"kiosk_blit.glsl", NULL};
     static const char *const pipeline[] = {"kiosk_pipeline.glsl", NULL};
-    c->blit = shader_program_build(&caps.shader, "", vertex, blit, &ge);
-    c->pipeline = c->blit ? shader_program_build(&caps.shader, "", vertex, pipeline, &ge) : 0;
+    c->blit = shader_program_build(&caps.shader, "", vertex, blit, e);
+    c->pipeline = c->blit ? shader_program_build(&caps.shader, "", vertex, pipeline, e) : 0;
     if (!c->pipeline) {
-        snprintf(err, errlen, "%s", ge.message);
         compositor_release(c);
         return -1;
     }
@@ -55,14 +41,14 @@ int compositor_init(struct compositor *c, const struct gl_context *gl, int width
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, c->canvas, 0);
     GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
-        snprintf(err, errlen, "the %dx%d RGBA8 canvas framebuffer is incomplete (status 0x%x)", width, height,
-                 status);
+        error_set(e, ERROR_RUNTIME, NULL, "the %dx%d RGBA8 canvas framebuffer is incomplete (status 0x%x)", width,
+                  height, status);
         compositor_release(c);
         return -1;
     }
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
-    if (gl_checked("making the compositor", err, errlen) != 0) {
+    if (gl_check("making the compositor", e) != 0) {
         compositor_release(c);
         return -1;
     }
@@ -122,34 +108,33 @@ static void to_canvas(struct compositor *c, int x, int y, int w, int h)
     glDisable(GL_BLEND);
 }
 
-int compositor_put_preview(struct compositor *c, GLuint image, char *err, size_t errlen)
+int compositor_put_preview(struct compositor *c, GLuint image, struct error *e)
 {
     to_canvas(c, 0, 0, c->width, c->height);
     blit(c, image, GL_LINEAR, 0, 0, 1, 1);
     /* the renderer's image keeps its own nearest filtering: its passes read it texel for texel */
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    return gl_checked("drawing the preview into the canvas", err, errlen);
+    return gl_check("drawing the preview into the canvas", e);
 }
 
-int compositor_put_band(struct compositor *c, GLuint image, int band_height, int y0, int rows, char *err,
-                        size_t errlen)
+int compositor_put_band(struct compositor *c, GLuint image, int band_height, int y0, int rows, struct error *e)
 {
     to_canvas(c, 0, y0, c->width, rows);
     blit(c, image, GL_NEAREST, 0, 0, 1, (float)rows / (float)band_height);
-    return gl_checked("drawing a refined band into the canvas", err, errlen);
+    return gl_check("drawing a refined band into the canvas", e);
 }
 
 int compositor_put_tile(struct compositor *c, GLuint image, int tex_w, int tex_h, int x0, int y0, int w, int h,
-                        char *err, size_t errlen)
+                        struct error *e)
 {
     to_canvas(c, x0, y0, w, h);
     blit(c, image, GL_NEAREST, 0, 0, (float)w / (float)tex_w, (float)h / (float)tex_h);
-    return gl_checked("drawing a refined tile into the canvas", err, errlen);
+    return gl_check("drawing a refined tile into the canvas", e);
 }
 
 int compositor_put_preview_tile(struct compositor *c, GLuint image, int tex_w, int tex_h, int x0, int y0, int w,
-                                int h, int pw, int ph, char *err, size_t errlen)
+                                int h, int pw, int ph, struct error *e)
 {
     if (!c->preview || c->preview_width != pw || c->preview_height != ph) {
         if (c->preview_fbo)
@@ -168,18 +153,18 @@ int compositor_put_preview_tile(struct compositor *c, GLuint image, int tex_w, i
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     blit(c, image, GL_NEAREST, 0, 0, (float)w / (float)tex_w, (float)h / (float)tex_h);
-    return gl_checked("drawing a preview tile", err, errlen);
+    return gl_check("drawing a preview tile", e);
 }
 
-int compositor_show_preview(struct compositor *c, char *err, size_t errlen)
+int compositor_show_preview(struct compositor *c, struct error *e)
 {
     if (!c->preview)
         return 0;
-    return compositor_put_preview(c, c->preview, err, errlen);
+    return compositor_put_preview(c, c->preview, e);
 }
 
 int compositor_put_pipeline(struct compositor *c, const struct renderer_textures *t, double bound_radius,
-                            int segments, double step, char *err, size_t errlen)
+                            int segments, double step, struct error *e)
 {
     int pw = c->width / 3, ph = c->height / 2;
     to_canvas(c, 0, 0, c->width, c->height);
@@ -211,11 +196,10 @@ int compositor_put_pipeline(struct compositor *c, const struct renderer_textures
         glUniform1f(glGetUniformLocation(p, "u_panel"), (float)k);
         quad_draw(p, 0.0f);
     }
-    return gl_checked("drawing the pipeline view", err, errlen);
+    return gl_check("drawing the pipeline view", e);
 }
 
-int compositor_set_hud(struct compositor *c, const unsigned char *rgba, int width, int height, char *err,
-                       size_t errlen)
+int compositor_set_hud(struct compositor *c, const unsigned char *rgba, int width, int height, struct error *e)
 {
     if (!rgba) {
         c->hud_valid = 0;
@@ -232,7 +216,7 @@ int compositor_set_hud(struct compositor *c, const unsigned char *rgba, int widt
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
     c->hud_valid = 1;
-    return gl_checked("uploading the HUD", err, errlen);
+    return gl_check("uploading the HUD", e);
 }
 
 void compositor_letterbox(const struct compositor *c, int sw, int sh, int *x, int *y, int *w, int *h)
@@ -246,7 +230,7 @@ void compositor_letterbox(const struct compositor *c, int sw, int sh, int *x, in
     *y = sh - *h - (sh - *h) / 2;
 }
 
-int compositor_draw(struct compositor *c, const struct screen *s, char *err, size_t errlen)
+int compositor_draw(struct compositor *c, const struct screen *s, struct error *e)
 {
     glBindFramebuffer(GL_FRAMEBUFFER, s->framebuffer);
     glViewport(0, 0, s->width, s->height);
@@ -268,16 +252,15 @@ int compositor_draw(struct compositor *c, const struct screen *s, char *err, siz
              -1);
         glDisable(GL_BLEND);
     }
-    return gl_checked("drawing the frame on the screen", err, errlen);
+    return gl_check("drawing the frame on the screen", e);
 }
 
-int compositor_read_screen(const struct screen *s, unsigned char *rgba, char *err, size_t errlen)
+int compositor_read_screen(const struct screen *s, unsigned char *rgba, struct error *e)
 {
     size_t row = (size_t)s->width * 4;
     unsigned char *rows = malloc(row * (size_t)s->height);
     if (!rows) {
-        snprintf(err, errlen, "out of memory reading the screen back");
-        return -1;
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the screen back");
     }
     glBindFramebuffer(GL_FRAMEBUFFER, s->framebuffer);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -285,5 +268,5 @@ int compositor_read_screen(const struct screen *s, unsigned char *rgba, char *er
     for (int y = 0; y < s->height; y++)
         memcpy(rgba + (size_t)(s->height - 1 - y) * row, rows + (size_t)y * row, row);
     free(rows);
-    return gl_checked("reading the screen back", err, errlen);
+    return gl_check("reading the screen back", e);
 }

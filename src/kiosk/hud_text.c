@@ -59,22 +59,24 @@ static void size_cache_clear(struct size_cache *c)
 /* The whole font file, read once: a font replaced or cut short on disk while the kiosk runs does
  * not reach the glyphs it draws later (FreeType would read them from the file as needed). A FIFO
  * or a device is refused, and so is a file beyond HUD_FONT_MAX_BYTES. */
-static unsigned char *read_font_file(const char *path, long *size, char *err, size_t errlen)
+static unsigned char *read_font_file(const char *path, long *size, struct error *e)
 {
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        int en = errno;
+        error_set(e, error_status_of_errno(en), path, "%s", strerror(en));
         return NULL;
     }
     struct stat st;
     unsigned char *data = NULL;
-    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        snprintf(err, errlen, "%s: not a regular file", path);
+    int stat_failed = fstat(fd, &st) != 0, stat_errno = stat_failed ? errno : 0;
+    if (stat_failed || !S_ISREG(st.st_mode)) {
+        error_set(e, error_status_of_errno(stat_errno), path, "not a regular file");
     } else if (st.st_size <= 0 || st.st_size > HUD_FONT_MAX_BYTES) {
-        snprintf(err, errlen, "%s: %lld bytes; a font file has 1 to %d", path, (long long)st.st_size,
-                 HUD_FONT_MAX_BYTES);
+        error_set(e, ERROR_INPUT, path, "%lld bytes; a font file has 1 to %d", (long long)st.st_size,
+                  HUD_FONT_MAX_BYTES);
     } else if (!(data = malloc((size_t)st.st_size))) {
-        snprintf(err, errlen, "%s: out of memory", path);
+        error_set(e, ERROR_RUNTIME, path, "out of memory");
     } else {
         long got = 0;
         while (got < st.st_size) {
@@ -86,7 +88,7 @@ static unsigned char *read_font_file(const char *path, long *size, char *err, si
             got += n;
         }
         if (got != st.st_size) {
-            snprintf(err, errlen, "%s: read %ld of %lld bytes", path, got, (long long)st.st_size);
+            error_set(e, ERROR_RUNTIME, path, "read %ld of %lld bytes", got, (long long)st.st_size);
             free(data);
             data = NULL;
         }
@@ -96,43 +98,43 @@ static unsigned char *read_font_file(const char *path, long *size, char *err, si
     return data;
 }
 
-struct hud_font *hud_font_open(const char *path, char *err, size_t errlen)
+struct hud_font *hud_font_open(const char *path, struct error *e)
 {
     long size = 0;
-    unsigned char *file = read_font_file(path, &size, err, errlen);
+    unsigned char *file = read_font_file(path, &size, e);
     if (!file)
         return NULL;
     struct hud_font *f = calloc(1, sizeof *f);
     if (!f) {
-        snprintf(err, errlen, "%s: out of memory", path);
+        error_set(e, ERROR_RUNTIME, path, "out of memory");
         free(file);
         return NULL;
     }
     f->file = file;
-    FT_Error e = FT_Init_FreeType(&f->library);
-    if (e) {
-        snprintf(err, errlen, "%s: FreeType cannot start (error %d)", path, e);
+    FT_Error fe = FT_Init_FreeType(&f->library);
+    if (fe) {
+        error_set(e, ERROR_RUNTIME, path, "FreeType cannot start (error %d)", fe);
         free(f->file);
         free(f);
         return NULL;
     }
-    e = FT_New_Memory_Face(f->library, f->file, (FT_Long)size, 0, &f->face);
-    if (e) {
-        if (e == FT_Err_Unknown_File_Format)
-            snprintf(err, errlen, "%s: not a font (FreeType knows no such format)", path);
+    fe = FT_New_Memory_Face(f->library, f->file, (FT_Long)size, 0, &f->face);
+    if (fe) {
+        if (fe == FT_Err_Unknown_File_Format)
+            error_set(e, ERROR_INPUT, path, "not a font (FreeType knows no such format)");
         else
-            snprintf(err, errlen, "%s: not a readable font (FreeType error %d)", path, e);
+            error_set(e, ERROR_INPUT, path, "not a readable font (FreeType error %d)", fe);
         f->face = NULL;
         hud_font_close(f);
         return NULL;
     }
     if (!FT_IS_SCALABLE(f->face)) {
-        snprintf(err, errlen, "%s: a bitmap font; the HUD scales its text with the screen, give an outline font", path);
+        error_set(e, ERROR_INPUT, path, "a bitmap font; the HUD scales its text with the screen, give an outline font");
         hud_font_close(f);
         return NULL;
     }
     if (FT_Select_Charmap(f->face, FT_ENCODING_UNICODE)) {
-        snprintf(err, errlen, "%s: the font has no Unicode character map", path);
+        error_set(e, ERROR_INPUT, path, "the font has no Unicode character map");
         hud_font_close(f);
         return NULL;
     }

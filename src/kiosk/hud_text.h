@@ -3,11 +3,14 @@
 #ifndef BT_KIOSK_HUD_TEXT_H
 #define BT_KIOSK_HUD_TEXT_H
 #include <stddef.h>
+#include "io/error.h"
 
 struct hud_font;
 
-/* NULL with err ("FILE: why") when the font cannot be read. */
-struct hud_font *hud_font_open(const char *path, char *err, size_t errlen);
+/* NULL with e (where: the font file; the message: why) when the font cannot be read: the user's
+ * (ERROR_INPUT) for a path that is refused or a file that is no usable font, the machine's for no
+ * memory, a failed read or FreeType that cannot start. */
+struct hud_font *hud_font_open(const char *path, struct error *e);
 void hud_font_close(struct hud_font *f);
 
 /* Width in pixels of UTF-8 text at pixel_height. */

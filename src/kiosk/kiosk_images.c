@@ -58,7 +58,7 @@ double kiosk_image_bytes(const struct scene *scenes, int n, char *largest, size_
     return total;
 }
 
-int kiosk_image_memory_check(const struct kiosk_config *c, const struct scene *scenes, char *err, size_t errlen)
+int kiosk_image_memory_check(const struct kiosk_config *c, const struct scene *scenes, struct error *e)
 {
     char largest[IMAGE_PATH_LEN];
     unsigned long w, h;
@@ -72,8 +72,7 @@ int kiosk_image_memory_check(const struct kiosk_config *c, const struct scene *s
         snprintf(where, sizeof where, "%s:%d", c->path, line);
     else
         snprintf(where, sizeof where, "%s", c->path);
-    snprintf(err, errlen, "%s: [kiosk] image_memory = %d MB%s: the scenes' textures and sky faces take %.0f MB "
-             "decoded, kept for the whole run (the largest, %s, is %lux%lu); make them smaller or raise image_memory",
-             where, c->kiosk.image_memory, line > 0 ? "" : " (the default)", mb, largest, w, h);
-    return -1;
+    return error_set(e, ERROR_INPUT, where, "[kiosk] image_memory = %d MB%s: the scenes' textures and sky faces take "
+                     "%.0f MB decoded, kept for the whole run (the largest, %s, is %lux%lu); make them smaller or "
+                     "raise image_memory", c->kiosk.image_memory, line > 0 ? "" : " (the default)", mb, largest, w, h);
 }

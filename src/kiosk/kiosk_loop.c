@@ -176,8 +176,11 @@ static int update_hud(struct kiosk *k, char *err, size_t errlen, int *failed)
         return 0;
     memcpy(k->hud_text, text, sizeof text);
     hud_draw(k->font, k->hud_rgba, w, h, &v);
-    if (compositor_set_hud(&k->view.comp, k->hud_rgba, w, h, err, errlen) != 0)
+    struct error e;
+    if (compositor_set_hud(&k->view.comp, k->hud_rgba, w, h, &e) != 0) {
+        error_format(&e, err, errlen);
         *failed = 1;
+    }
     return 1;
 }
 
@@ -191,8 +194,11 @@ static int write_frame(struct kiosk *k, char *err, size_t errlen)
         snprintf(err, errlen, "out of memory writing %s", path);
         return -1;
     }
-    int rc = compositor_read_screen(s, rgba, err, errlen);
-    if (rc == 0) {
+    struct error e;
+    int rc = compositor_read_screen(s, rgba, &e);
+    if (rc != 0) {
+        error_format(&e, err, errlen);
+    } else {
         struct error fe;
         rc = png_write_rgba8(path, s->width, s->height, rgba, k->opt->force, &fe);
         if (rc != 0)
@@ -372,22 +378,23 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
     }
     /* the view knows which scene it holds: a change of scene (or none loaded yet) loads it */
     int loading = k->view.scene_index != k->state.scene;
+    struct error e;
     if (loading) {
         did = "loading the scene, then drawing its preview";
-        if (kiosk_view_load(&k->view, k->state.scene, &k->scenes[k->state.scene], err, errlen) != 0)
-            return -1;
+        if (kiosk_view_load(&k->view, k->state.scene, &k->scenes[k->state.scene], &e) != 0)
+            return error_format(&e, err, errlen);
         changed = 1;
     }
     int drew = 0;
     if (changed) {
         did = loading ? did : "drawing a preview";
-        if (kiosk_view_preview(&k->view, &k->state, err, errlen) != 0)
-            return -1;
+        if (kiosk_view_preview(&k->view, &k->state, &e) != 0)
+            return error_format(&e, err, errlen);
         drew = 1;
     } else if (!kiosk_view_refined(&k->view)) {
         did = kiosk_view_preview_pending(&k->view) ? "drawing a tile of the preview" : "refining the frame";
-        if (kiosk_view_refine(&k->view, err, errlen) != 0)
-            return -1;
+        if (kiosk_view_refine(&k->view, &e) != 0)
+            return error_format(&e, err, errlen);
         drew = 1;
     }
     k->draws_this_second += drew;
@@ -403,9 +410,8 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
         return -1;
     if (drew || hud_changed || k->turn == 0 || k->screen->redraw) {
         k->screen->redraw = 0;
-        if (compositor_draw(&k->view.comp, k->screen, err, errlen) != 0 ||
-            k->screen->present(k->screen, err, errlen) != 0)
-            return -1;
+        if (compositor_draw(&k->view.comp, k->screen, &e) != 0 || k->screen->present(k->screen, &e) != 0)
+            return error_format(&e, err, errlen);
         if (k->turn == 0)
             service_ready();
     }
@@ -517,8 +523,9 @@ static int preflight(struct kiosk *k, char *err, size_t errlen)
             }
         }
     }
-    if (kiosk_image_memory_check(c, k->scenes, err, errlen) != 0)
-        return -1;
+    struct error e;
+    if (kiosk_image_memory_check(c, k->scenes, &e) != 0)
+        return error_format(&e, err, errlen);
     image_cache_keep(1);
     for (int i = 0; i < c->kiosk.n_scenes; i++)
         if (keep_scene_images(&k->scenes[i], err, errlen) != 0)
@@ -582,8 +589,10 @@ static struct screen *open_screen(struct kiosk *k, char *err, size_t errlen)
     const struct kiosk_config *c = k->cfg;
     int logged = 0;
     for (;;) {
-        err[0] = '\0';
-        struct screen *s = screen_open(&c->display, c->kiosk.width, c->kiosk.height, k->opt->gl_backend, err, errlen);
+        struct error e;
+        error_clear(&e);
+        struct screen *s = screen_open(&c->display, c->kiosk.width, c->kiosk.height, k->opt->gl_backend, &e);
+        error_format(&e, err, errlen);
         if (s) {
             if (c->display.backend == KIOSK_BACKEND_AUTO && err[0])
                 fprintf(k->log, "bentray kiosk: display %s (passed over: %s)\n", s->name, err);
@@ -622,8 +631,10 @@ static int open_hud(struct kiosk *k)
     if (!k->cfg->kiosk.hud)
         return 0;
     char err[600];
-    k->font = hud_font_open(k->cfg->kiosk.font, err, sizeof err);
+    struct error e;
+    k->font = hud_font_open(k->cfg->kiosk.font, &e);
     if (!k->font) {
+        error_format(&e, err, sizeof err);
         fprintf(k->log, "HUD: %s; the kiosk runs without it\n", err);
         return 0;
     }
@@ -672,7 +683,9 @@ enum kiosk_status kiosk_run(const struct kiosk_config *c, const struct kiosk_run
         fprintf(k.log, "bentray kiosk: %s\n", k.screen->note);
     k.screen->log = k.log;
     enum kiosk_status rc = KIOSK_STOPPED;
-    if (kiosk_view_init(&k.view, c, k.screen->gl, err, sizeof err) != 0) {
+    struct error e;
+    if (kiosk_view_init(&k.view, c, k.screen->gl, &e) != 0) {
+        error_format(&e, err, sizeof err);
         fprintf(k.log, "bentray kiosk: %s\n", err);
         kiosk_close(&k);
         return KIOSK_FAILED;

@@ -4,8 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
-int kiosk_view_init(struct kiosk_view *v, const struct kiosk_config *cfg, const struct gl_context *gl, char *err,
-                    size_t errlen)
+int kiosk_view_init(struct kiosk_view *v, const struct kiosk_config *cfg, const struct gl_context *gl, struct error *e)
 {
     memset(v, 0, sizeof *v);
     v->cfg = cfg;
@@ -18,7 +17,7 @@ int kiosk_view_init(struct kiosk_view *v, const struct kiosk_config *cfg, const 
     int by_frames = k->height / k->refine_frames > 0 ? k->height / k->refine_frames : 1;
     v->band_rows = by_cost < 1 ? 1 : by_cost < by_frames ? by_cost : by_frames;
     v->refined_rows = k->height;
-    return compositor_init(&v->comp, gl, k->width, k->height, err, errlen);
+    return compositor_init(&v->comp, gl, k->width, k->height, e);
 }
 
 void kiosk_view_release(struct kiosk_view *v)
@@ -28,29 +27,23 @@ void kiosk_view_release(struct kiosk_view *v)
     compositor_release(&v->comp);
 }
 
-int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *base, char *err, size_t errlen)
+int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *base, struct error *e)
 {
     if (v->scene_index == scene_index && v->renderer)
         return 0;
     renderer_destroy(v->renderer);
     v->renderer = NULL;
     v->scene_index = -1;
-    struct error serr;
-    if (base) {
+    if (base)
         v->base = *base;
-    } else if (scene_load(&v->base, v->cfg->kiosk.scenes[scene_index], &serr) != 0) {
-        snprintf(err, errlen, "%s: %s", serr.where, serr.message);
+    else if (scene_load(&v->base, v->cfg->kiosk.scenes[scene_index], e) != 0)
         return -1;
-    }
     v->base.render.width = v->cfg->kiosk.width;
     v->base.render.height = v->cfg->kiosk.height;
     v->live = v->base;
-    struct error e;
-    v->renderer = renderer_create(v->gl, &v->live, &e);
-    if (!v->renderer) {
-        snprintf(err, errlen, "%s", e.message);
+    v->renderer = renderer_create(v->gl, &v->live, e);
+    if (!v->renderer)
         return -1;
-    }
     v->scene_index = scene_index;
     return 0;
 }
@@ -118,16 +111,13 @@ static void tile_at(const struct kiosk_tiles *t, int k, int *x0, int *y0, int *w
     *h = t->height - *y0 < t->tile_height ? t->height - *y0 : t->tile_height;
 }
 
-/* Tile t->next drawn by the renderer: where it goes and its image. 0, or -1 with err. */
+/* Tile t->next drawn by the renderer: where it goes and its image. 0, or -1 with e. */
 static int run_tile(struct kiosk_view *v, const struct kiosk_tiles *t, int *x0, int *y0, int *w, int *h,
-                    GLuint *image, char *err, size_t errlen)
+                    GLuint *image, struct error *e)
 {
     tile_at(t, t->next, x0, y0, w, h);
-    struct error e;
-    if (renderer_run(v->renderer, &v->live, *x0, *y0, t->tile_width, t->tile_height, NULL, NULL, &e) != 0) {
-        snprintf(err, errlen, "%s", e.message);
+    if (renderer_run(v->renderer, &v->live, *x0, *y0, t->tile_width, t->tile_height, NULL, NULL, e) != 0)
         return -1;
-    }
     struct renderer_textures tex;
     renderer_textures(v->renderer, &tex);
     *image = tex.image;
@@ -135,27 +125,24 @@ static int run_tile(struct kiosk_view *v, const struct kiosk_tiles *t, int *x0, 
 }
 
 /* The next tile of the preview, offscreen; the preview shown once whole. */
-static int preview_tile(struct kiosk_view *v, char *err, size_t errlen)
+static int preview_tile(struct kiosk_view *v, struct error *e)
 {
     struct kiosk_tiles *t = &v->preview;
     int x0, y0, w, h;
     GLuint image;
-    if (run_tile(v, t, &x0, &y0, &w, &h, &image, err, errlen) != 0 ||
+    if (run_tile(v, t, &x0, &y0, &w, &h, &image, e) != 0 ||
         compositor_put_preview_tile(&v->comp, image, t->tile_width, t->tile_height, x0, y0, w, h, t->width,
-                                    t->height, err, errlen) != 0)
+                                    t->height, e) != 0)
         return -1;
-    if (++t->next == t->count && compositor_show_preview(&v->comp, err, errlen) != 0)
+    if (++t->next == t->count && compositor_show_preview(&v->comp, e) != 0)
         return -1;
     return 0;
 }
 
-int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char *err, size_t errlen)
+int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, struct error *e)
 {
-    struct error serr;
-    if (kiosk_state_apply(st, &v->base, &v->full, &serr) != 0) {
-        snprintf(err, errlen, "%s: %s", serr.where, serr.message);
+    if (kiosk_state_apply(st, &v->base, &v->full, e) != 0)
         return -1;
-    }
     kiosk_preview_scene(&v->full, &v->cfg->kiosk, &v->live);
     v->pipeline_view = st->pipeline_view;
     const struct kiosk_main *k = &v->cfg->kiosk;
@@ -168,21 +155,17 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char 
      * view shows every ray's final state too */
     renderer_set_reads(v->renderer, v->pipeline_view ? RENDER_READ_STATE : RENDER_READ_IMAGE);
     if (v->preview.count > 1)
-        return preview_tile(v, err, errlen);
+        return preview_tile(v, e);
     v->preview.next = v->preview.count;
-    struct error e;
     /* the pipeline view shows every ray's final state, which a single-pass frame writes on demand */
-    if (renderer_run(v->renderer, &v->live, 0, 0, k->preview_width, k->preview_height, NULL, NULL, &e) != 0 ||
-        (v->pipeline_view && renderer_complete_state(v->renderer, &e) != 0)) {
-        snprintf(err, errlen, "%s", e.message);
+    if (renderer_run(v->renderer, &v->live, 0, 0, k->preview_width, k->preview_height, NULL, NULL, e) != 0 ||
+        (v->pipeline_view && renderer_complete_state(v->renderer, e) != 0))
         return -1;
-    }
     struct renderer_textures t;
     renderer_textures(v->renderer, &t);
     int rc = v->pipeline_view ? compositor_put_pipeline(&v->comp, &t, v->live.render.bound_radius,
-                                                        render_segments(&v->live.render), v->live.render.step_size, err,
-                                                        errlen)
-                              : compositor_put_preview(&v->comp, t.image, err, errlen);
+                                                        render_segments(&v->live.render), v->live.render.step_size, e)
+                              : compositor_put_preview(&v->comp, t.image, e);
     /* the pipeline view shows the preview's own state: it is not refined */
     v->refined_rows = v->pipeline_view ? k->height : 0;
     return rc;
@@ -193,13 +176,13 @@ int kiosk_view_preview_pending(const struct kiosk_view *v)
     return v->preview.next < v->preview.count;
 }
 
-int kiosk_view_refine(struct kiosk_view *v, char *err, size_t errlen)
+int kiosk_view_refine(struct kiosk_view *v, struct error *e)
 {
     const struct kiosk_main *k = &v->cfg->kiosk;
     if (!v->renderer)
         return 0;
     if (kiosk_view_preview_pending(v))
-        return preview_tile(v, err, errlen);
+        return preview_tile(v, e);
     if (v->refined_rows >= k->height)
         return 0;
     renderer_set_reads(v->renderer, RENDER_READ_IMAGE);
@@ -209,15 +192,12 @@ int kiosk_view_refine(struct kiosk_view *v, char *err, size_t errlen)
         /* whole bands: every band has the same size, so the ray state is made once per refinement;
          * the last one may trace rows above the frame, which are not shown */
         int y0 = v->refined_rows;
-        struct error e;
-        if (renderer_run(v->renderer, &v->live, 0, y0, k->width, t->tile_height, NULL, NULL, &e) != 0) {
-            snprintf(err, errlen, "%s", e.message);
+        if (renderer_run(v->renderer, &v->live, 0, y0, k->width, t->tile_height, NULL, NULL, e) != 0)
             return -1;
-        }
         struct renderer_textures tex;
         renderer_textures(v->renderer, &tex);
         int rows = k->height - y0 < t->tile_height ? k->height - y0 : t->tile_height;
-        if (compositor_put_band(&v->comp, tex.image, t->tile_height, y0, rows, err, errlen) != 0)
+        if (compositor_put_band(&v->comp, tex.image, t->tile_height, y0, rows, e) != 0)
             return -1;
         v->refined_rows += rows;
         return 0;
@@ -225,8 +205,8 @@ int kiosk_view_refine(struct kiosk_view *v, char *err, size_t errlen)
     /* tiles narrower than the frame: a row of tiles at a time, the rows counted once it is done */
     int x0, y0, w, h;
     GLuint image;
-    if (run_tile(v, t, &x0, &y0, &w, &h, &image, err, errlen) != 0 ||
-        compositor_put_tile(&v->comp, image, t->tile_width, t->tile_height, x0, y0, w, h, err, errlen) != 0)
+    if (run_tile(v, t, &x0, &y0, &w, &h, &image, e) != 0 ||
+        compositor_put_tile(&v->comp, image, t->tile_width, t->tile_height, x0, y0, w, h, e) != 0)
         return -1;
     t->next++;
     if (t->next % t->columns == 0 || t->next == t->count)

@@ -62,18 +62,19 @@ struct kiosk_view {
     struct kiosk_tiles refine;       /* the refinement's tiles */
 };
 
-int kiosk_view_init(struct kiosk_view *v, const struct kiosk_config *cfg, const struct gl_context *gl, char *err,
-                    size_t errlen);
+/* 0, or -1 with e (compositor_init's). */
+int kiosk_view_init(struct kiosk_view *v, const struct kiosk_config *cfg, const struct gl_context *gl, struct error *e);
 void kiosk_view_release(struct kiosk_view *v);
 /* Scene index i: base, the scene as read at start, or NULL to read its file now (once per switch).
- * 0, or -1 with err. */
-int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *base, char *err, size_t errlen);
+ * 0, or -1 with e: the scene file's error (where: the file) or the renderer's. */
+int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *base, struct error *e);
 /* Draw the preview of a state into the canvas (the scene must be loaded); refinement starts
- * over. 0, or -1 with err. */
-int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, char *err, size_t errlen);
+ * over. 0, or -1 with e: a state the scene cannot take (where: the scene or the key), or the
+ * renderer's or the compositor's failure. */
+int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, struct error *e);
 /* The next tile of a preview drawn in tiles, else the next band (or tile) of refinement; 0, or -1
- * with err. Nothing to do once refined. */
-int kiosk_view_refine(struct kiosk_view *v, char *err, size_t errlen);
+ * with e. Nothing to do once refined. */
+int kiosk_view_refine(struct kiosk_view *v, struct error *e);
 /* A preview is still being drawn, tile by tile (not yet shown). */
 int kiosk_view_preview_pending(const struct kiosk_view *v);
 int kiosk_view_refined(const struct kiosk_view *v);

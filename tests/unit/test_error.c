@@ -34,6 +34,22 @@ static void test_set_and_print(void **state)
     assert_string_equal(text, "bentray render: a.scene:3: error: key 'fov' in [camera]\nerror: no GPU\n");
 }
 
+/* Into a caller's buffer: "WHERE: MESSAGE", the message alone without a place, cut to the buffer. */
+static void test_format(void **state)
+{
+    (void)state;
+    struct error e;
+    char buf[64], tiny[8];
+    error_set(&e, ERROR_INPUT, "font.ttf", "not a regular file");
+    assert_int_equal(error_format(&e, buf, sizeof buf), -1);
+    assert_string_equal(buf, "font.ttf: not a regular file");
+    error_set(&e, ERROR_RUNTIME, NULL, "out of memory");
+    error_format(&e, buf, sizeof buf);
+    assert_string_equal(buf, "out of memory");
+    error_format(&e, tiny, sizeof tiny);
+    assert_string_equal(tiny, "out of ");
+}
+
 /* Each reader of what a user writes says the failure is the user's. */
 /* A path the user named and the system refused is the user's to fix (exit code 2); a failure of the
  * machine under it is not (exit code 1). */
@@ -83,6 +99,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_set_and_print),
+        cmocka_unit_test(test_format),
         cmocka_unit_test(test_readers_set_input_status),
         cmocka_unit_test(test_status_of_errno),
     };

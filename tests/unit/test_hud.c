@@ -25,10 +25,10 @@ static const unsigned char white[4] = {255, 255, 255, 255};
 static int open_font(void **state)
 {
     (void)state;
-    char err[256];
-    font = hud_font_open(FONT_PATH, err, sizeof err);
+    struct error e;
+    font = hud_font_open(FONT_PATH, &e);
     if (!font)
-        print_error("%s\n", err);
+        print_error("%s: %s\n", e.where, e.message);
     return font ? 0 : -1;
 }
 
@@ -412,10 +412,11 @@ static void test_indicator_bar(void **state)
 static void test_font_errors(void **state)
 {
     (void)state;
-    char err[256] = "";
+    struct error e;
     const char *missing = "/nonexistent/fonts/NoSuchFont.ttf";
-    assert_null(hud_font_open(missing, err, sizeof err));
-    assert_non_null(strstr(err, missing));
+    assert_null(hud_font_open(missing, &e));
+    assert_string_equal(e.where, missing);
+    assert_int_equal(e.status, ERROR_INPUT);
 
     char path[] = "/tmp/bt_hud_not_a_font_XXXXXX";
     int fd = mkstemp(path);
@@ -423,16 +424,13 @@ static void test_font_errors(void **state)
     const char text[] = "[kiosk]\nhud = on\n";
     assert_int_equal(write(fd, text, sizeof text - 1), (int)(sizeof text - 1));
     close(fd);
-    err[0] = '\0';
-    struct hud_font *f = hud_font_open(path, err, sizeof err);
+    error_clear(&e);
+    struct hud_font *f = hud_font_open(path, &e);
     unlink(path);
     assert_null(f);
-    assert_non_null(strstr(err, path));
-    assert_non_null(strstr(err, "not a"));
-
-    char tiny[8];   /* a short buffer gets a cut message, not an overrun */
-    assert_null(hud_font_open(missing, tiny, sizeof tiny));
-    assert_true(strlen(tiny) < sizeof tiny);
+    assert_string_equal(e.where, path);
+    assert_non_null(strstr(e.message, "not a"));
+    assert_int_equal(e.status, ERROR_INPUT);
     hud_font_close(NULL);
 }
 
@@ -441,7 +439,8 @@ static void test_font_errors(void **state)
 static void test_font_read_once(void **state)
 {
     (void)state;
-    char path[] = "/tmp/bt_hud_font_XXXXXX", err[256] = "";
+    char path[] = "/tmp/bt_hud_font_XXXXXX";
+    struct error e;
     int fd = mkstemp(path);
     assert_true(fd >= 0);
     FILE *src = fopen(FONT_PATH, "rb");
@@ -452,7 +451,7 @@ static void test_font_read_once(void **state)
         assert_int_equal(write(fd, buf, n), (ssize_t)n);
     fclose(src);
     close(fd);
-    struct hud_font *f = hud_font_open(path, err, sizeof err);
+    struct hud_font *f = hud_font_open(path, &e);
     assert_non_null(f);
     int before = hud_text_width(f, 40, "Mass");
     assert_true(before > 0);
@@ -476,8 +475,9 @@ static void test_font_read_once(void **state)
     close(fd);
     unlink(fifo);
     assert_int_equal(mkfifo(fifo, 0600), 0);
-    assert_null(hud_font_open(fifo, err, sizeof err));
-    assert_non_null(strstr(err, "not a regular file"));
+    assert_null(hud_font_open(fifo, &e));
+    assert_non_null(strstr(e.message, "not a regular file"));
+    assert_int_equal(e.status, ERROR_INPUT);
     unlink(fifo);
 }
 

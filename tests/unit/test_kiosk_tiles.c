@@ -60,20 +60,19 @@ static void test_tiled_preview(void **state)
     base.render.max_path *= 400.0;
     assert_int_equal(scene_validate(&base, &se), 0);
     static struct kiosk_view v;
-    char err[2048];
-    if (kiosk_view_init(&v, &c, hc_context(), err, sizeof err) != 0 || kiosk_view_load(&v, scene, &base, err, sizeof err) != 0)
-        fail_msg("%s", err);
+    if (kiosk_view_init(&v, &c, hc_context(), &e) != 0 || kiosk_view_load(&v, scene, &base, &e) != 0)
+        fail_msg("%s", e.message);
     struct kiosk_state st;
     kiosk_state_reset(&st, &c);
     st.scene = scene;
-    assert_int_equal(kiosk_view_preview(&v, &st, err, sizeof err), 0);
+    assert_int_equal(kiosk_view_preview(&v, &st, &e), 0);
     int tiles = v.preview.count, calls = 1;
     printf("  preview in %d tiles of %d x %d\n", tiles, v.preview.tile_width, v.preview.tile_height);
     assert_true(tiles > 1);
     assert_true(kiosk_view_preview_pending(&v));
     assert_false(kiosk_view_refined(&v));
     while (kiosk_view_preview_pending(&v)) {
-        assert_int_equal(kiosk_view_refine(&v, err, sizeof err), 0);
+        assert_int_equal(kiosk_view_refine(&v, &e), 0);
         calls++;
     }
     assert_int_equal(calls, tiles);

@@ -79,10 +79,10 @@ static void config_of_size(struct kiosk_config *c, int width, int height)
 
 static void open_x11(struct screen **s, const struct kiosk_config *c)
 {
-    char err[512] = "";
-    *s = screen_open_x11(&c->display, c->kiosk.width, c->kiosk.height, err, sizeof err);
+    struct error e;
+    *s = screen_open_x11(&c->display, c->kiosk.width, c->kiosk.height, &e);
     if (!*s)
-        fail_msg("screen_open_x11 on %s: %s", xvfb.display, err);
+        fail_msg("screen_open_x11 on %s: %s", xvfb.display, e.message);
 }
 
 /* ---- the window's frame ----------------------------------------------------------------------- */
@@ -99,9 +99,9 @@ static void clear_read_present(struct screen *s, int r, int g, int b)
     assert_int_equal(glGetError(), GL_NO_ERROR);
     if (abs(px[0] - r) > 1 || abs(px[1] - g) > 1 || abs(px[2] - b) > 1)
         fail_msg("read back %d,%d,%d after clearing to %d,%d,%d", px[0], px[1], px[2], r, g, b);
-    char err[256] = "";
-    if (s->present(s, err, sizeof err) != 0)
-        fail_msg("present: %s", err);
+    struct error e;
+    if (s->present(s, &e) != 0)
+        fail_msg("present: %s", e.message);
 }
 
 static void test_x11_frame_reads_back(void **state)
@@ -254,13 +254,14 @@ static void test_auto_passes_over_kms(void **state)
     struct kiosk_config c;
     config_of_size(&c, WIDTH, HEIGHT);
     snprintf(c.display.drm_device, sizeof c.display.drm_device, "%s", MISSING_DRM_DEVICE);
-    char err[1024] = "";
-    struct screen *s = screen_open(&c.display, c.kiosk.width, c.kiosk.height, "auto", err, sizeof err);
+    struct error e;
+    struct screen *s = screen_open(&c.display, c.kiosk.width, c.kiosk.height, "auto", &e);
     if (!s)
-        fail_msg("screen_open (auto): %s", err);
+        fail_msg("screen_open (auto): %s", e.message);
     assert_string_equal(s->name, "x11");
-    print_message("passed over: %s\n", err);
-    assert_non_null(strstr(err, "kms: " MISSING_DRM_DEVICE));
+    print_message("passed over: %s\n", e.message);
+    assert_non_null(strstr(e.message, "kms: " MISSING_DRM_DEVICE));
+    assert_int_equal(e.status, ERROR_NONE);
     screen_close(s);
 }
 
@@ -273,15 +274,15 @@ static void test_x11_without_display(void **state)
     unsetenv("DISPLAY");
     struct kiosk_config c;
     config_of_size(&c, WIDTH, HEIGHT);
-    char err[256] = "";
-    struct screen *s = screen_open_x11(&c.display, c.kiosk.width, c.kiosk.height, err, sizeof err);
+    struct error e;
+    struct screen *s = screen_open_x11(&c.display, c.kiosk.width, c.kiosk.height, &e);
     if (saved) {
         setenv("DISPLAY", saved, 1);
         free(saved);
     }
     assert_null(s);
-    print_message("%s\n", err);
-    assert_non_null(strstr(err, "DISPLAY is not set"));
+    print_message("%s\n", e.message);
+    assert_non_null(strstr(e.message, "DISPLAY is not set"));
 }
 
 static void test_kms_missing_device(void **state)
@@ -290,20 +291,23 @@ static void test_kms_missing_device(void **state)
     struct kiosk_config c;
     config_of_size(&c, WIDTH, HEIGHT);
     snprintf(c.display.drm_device, sizeof c.display.drm_device, "%s", MISSING_DRM_DEVICE);
-    char err[256] = "";
-    assert_null(screen_open_kms(&c.display, err, sizeof err));
-    print_message("%s\n", err);
-    assert_non_null(strstr(err, MISSING_DRM_DEVICE));
+    struct error e;
+    assert_null(screen_open_kms(&c.display, &e));
+    print_message("%s\n", e.message);
+    assert_non_null(strstr(e.message, MISSING_DRM_DEVICE));
+    /* the device the configuration names is not there: the user's */
+    assert_int_equal(e.status, ERROR_INPUT);
     c.display.backend = KIOSK_BACKEND_KMS;
-    err[0] = '\0';
-    assert_null(screen_open(&c.display, c.kiosk.width, c.kiosk.height, "auto", err, sizeof err));
-    assert_non_null(strstr(err, MISSING_DRM_DEVICE));
+    error_clear(&e);
+    assert_null(screen_open(&c.display, c.kiosk.width, c.kiosk.height, "auto", &e));
+    assert_non_null(strstr(e.message, MISSING_DRM_DEVICE));
     /* a device that is there but drives no display */
     snprintf(c.display.drm_device, sizeof c.display.drm_device, "/dev/null");
-    err[0] = '\0';
-    assert_null(screen_open_kms(&c.display, err, sizeof err));
-    print_message("%s\n", err);
-    assert_non_null(strstr(err, "/dev/null: not a display controller"));
+    error_clear(&e);
+    assert_null(screen_open_kms(&c.display, &e));
+    print_message("%s\n", e.message);
+    assert_non_null(strstr(e.message, "/dev/null: not a display controller"));
+    assert_int_equal(e.status, ERROR_RUNTIME);
 }
 
 int main(void)
