@@ -63,7 +63,7 @@ bool object_sphere(vec3 a, vec3 b, vec4 g0, out float t, out vec3 normal, out ve
     surface = normal;
     return found;
 }
-#define TEST_SPHERE_FULL(slot) consider(object_sphere(a, b, GEOMETRY(slot, 0), t, normal, surface), \
+#define TEST_SPHERE_FULL(slot) CONSIDER(object_sphere(a, b, GEOMETRY(slot, 0), t, normal, surface), \
                                         t, normal, surface, float(slot), best);
 #define TEST_SPHERE(slot) TEST_SPHERE_FULL(slot)
 #endif
@@ -81,7 +81,7 @@ bool object_triangle(vec3 a, vec3 b, vec4 g0, vec4 g1, vec4 g2, vec4 g3, vec4 g4
     surface = vec3(uv, 0.0);
     return found;
 }
-#define TEST_TRIANGLE_FULL(slot) consider(object_triangle(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), \
+#define TEST_TRIANGLE_FULL(slot) CONSIDER(object_triangle(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), \
                                                           GEOMETRY(slot, 2), GEOMETRY(slot, 3), GEOMETRY(slot, 4), \
                                                           t, normal, surface), t, normal, surface, float(slot), best);
 #define TEST_TRIANGLE(slot) TEST_TRIANGLE_FULL(slot)
@@ -97,7 +97,7 @@ bool object_disk(vec3 a, vec3 b, vec4 g0, vec4 g1, out float t, out vec3 normal,
     normal = g1.xyz;
     return found;
 }
-#define TEST_DISK_FULL(slot) consider(object_disk(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), t, normal, surface), \
+#define TEST_DISK_FULL(slot) CONSIDER(object_disk(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), t, normal, surface), \
                                       t, normal, surface, float(slot), best);
 #define TEST_DISK(slot) TEST_DISK_FULL(slot)
 #endif
@@ -114,7 +114,7 @@ bool object_rect(vec3 a, vec3 b, vec4 g0, vec4 g1, vec4 g2, out float t, out vec
     surface = vec3(uv, 0.0);
     return found;
 }
-#define TEST_RECT_FULL(slot) consider(object_rect(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), GEOMETRY(slot, 2), \
+#define TEST_RECT_FULL(slot) CONSIDER(object_rect(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), GEOMETRY(slot, 2), \
                                               t, normal, surface), t, normal, surface, float(slot), best);
 #define TEST_RECT(slot) TEST_RECT_FULL(slot)
 #endif
@@ -131,7 +131,9 @@ struct candidate {
 // the segment index of the chord being tested (u_segment_index, or the single pass's loop)
 float intersect_segment_index;
 
-// Computed for every object, then selected: see the precision note in common.glsl.
+// Computed for every object, then selected: see the precision note in common.glsl. A test keeps
+// the hit's depth key, fraction and object only; its normal and surface are found once, for the
+// hit that is shaded (candidate_surface), not carried through every chord's tests.
 void consider(bool found, float t, vec3 normal, vec3 surface, float slot, inout candidate best)
 {
     float key = intersect_segment_index + t;
@@ -139,8 +141,30 @@ void consider(bool found, float t, vec3 normal, vec3 surface, float slot, inout 
     best.key = closer ? key : best.key;
     best.t = closer ? t : best.t;
     best.slot = closer ? slot : best.slot;
-    best.normal = closer ? normal : best.normal;
-    best.surface = closer ? surface : best.surface;
+}
+#define CONSIDER consider
+
+// The normal and surface of the hit of object `slot` where it is candidate best's.
+void keep_surface(bool found, float t, vec3 normal, vec3 surface, float slot, inout candidate best)
+{
+    bool chosen = slot == best.slot;
+    best.normal = chosen ? normal : best.normal;
+    best.surface = chosen ? surface : best.surface;
+}
+
+// best's normal and surface: every object's test again on chord a -> b, the chord on which best
+// was found, the chosen object's kept. The same arithmetic on the same values as the test that
+// found it, so they are the ones that test computed.
+void candidate_surface(vec3 a, vec3 b, inout candidate best)
+{
+    float t;
+    vec3 normal;
+    vec3 surface;
+#undef CONSIDER
+#define CONSIDER keep_surface
+    BATCH_TESTS
+#undef CONSIDER
+#define CONSIDER consider
 }
 
 #if defined(SINGLE_PASS) && defined(ORBIT_HITS)
@@ -358,6 +382,7 @@ vec2 texture_coordinates(candidate best)
 // The hit record and the shaded colour (object id in alpha) of candidate best on chord a -> b.
 void intersect_shade(candidate best, vec3 a, vec3 b, out vec4 new_hit, out vec4 new_image)
 {
+    candidate_surface(a, b, best);
     vec2 uv = texture_coordinates(best);
     // the chosen object's material
     vec4 color_checker = MATERIAL(0, 0), emission_id = MATERIAL(0, 1), factors = MATERIAL(0, 2),

@@ -139,8 +139,6 @@ void main()
         best.key = tested ? trial.key : best.key;
         best.t = tested ? trial.t : best.t;
         best.slot = tested ? trial.slot : best.slot;
-        best.normal = tested ? trial.normal : best.normal;
-        best.surface = tested ? trial.surface : best.surface;
         hit_a = tested ? a : hit_a;
         hit_b = tested ? p1 : hit_b;
         hit_s_a = tested ? s_a : hit_s_a;
