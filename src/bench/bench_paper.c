@@ -41,7 +41,8 @@ static int table1_errors(struct bench *b, const struct scene *base, const struct
     int rc = bench_time(b, &s, 1, &t, &d, err, errlen);
     if (rc != 0)
         return -1;
-    rc = compare_dumps(&d, ref, c, err, errlen);
+    struct error e;
+    rc = compare_dumps(&d, ref, c, &e) == 0 ? 0 : error_format(&e, err, errlen);
     dump_free(&d);
     return rc;
 }
@@ -79,8 +80,9 @@ int bench_table1(struct bench *b, char *err, size_t errlen)
         ref_options_default(&o.ref, &small);
         bench_progress(b, "table 1: %s, CPU reference at %dx%d", t1_scene[k], small.render.width,
                        small.render.height);
-        if (cpu_render(&small, &o, &ref, err, errlen) != 0)
-            return -1;
+        struct error e;
+        if (cpu_render(&small, &o, &ref, &e) != 0)
+            return error_format(&e, err, errlen);
         struct bench_timing t[ACCEL_COUNT];
         struct compare_result c[ACCEL_COUNT];
         for (int a = 0; a < ACCEL_COUNT; a++) {

@@ -173,8 +173,9 @@ static int measure_scene(struct bench *b, int k, struct pareto_point *pts, struc
     ref_options_default(&o.ref, &base);
     bench_progress(b, "speed against error: %s, CPU reference at %dx%d", ps->title, base.render.width,
                    base.render.height);
-    if (cpu_render(&base, &o, &ref, err, errlen) != 0)
-        return -1;
+    struct error e;
+    if (cpu_render(&base, &o, &ref, &e) != 0)
+        return error_format(&e, err, errlen);
     int n = b->quick ? 3 : base.model.type == MODEL_SCHWARZSCHILD ? N_CONFIGS : N_CONFIGS - N_ORBIT_CONFIGS;
     for (int c = 0; c < n; c++) {
         static struct scene s;
@@ -184,7 +185,6 @@ static int measure_scene(struct bench *b, int k, struct pareto_point *pts, struc
             continue;
         }
         apply_config(&s, &configs[c]);
-        struct error e;
         if (scene_validate(&s, &e) != 0) {
             snprintf(err, errlen, "internal: configuration %s of %s: %s", configs[c].name, ps->title, e.message);
             cpu_image_free(&ref);
@@ -194,9 +194,14 @@ static int measure_scene(struct bench *b, int k, struct pareto_point *pts, struc
         struct dump d;
         struct compare_result cr;
         bench_progress(b, "speed against error: %s, %s", ps->title, configs[c].name);
-        if (bench_time(b, &s, b->runs, &t, &d, err, errlen) != 0 || compare_dumps(&d, &ref.dump, &cr, err, errlen) != 0) {
+        if (bench_time(b, &s, b->runs, &t, &d, err, errlen) != 0) {
             cpu_image_free(&ref);
             return -1;
+        }
+        if (compare_dumps(&d, &ref.dump, &cr, &e) != 0) {
+            dump_free(&d);
+            cpu_image_free(&ref);
+            return error_format(&e, err, errlen);
         }
         dump_free(&d);
         b->done++;

@@ -74,8 +74,13 @@ int bench_pipelines(struct bench *b, char *err, size_t errlen)
         }
         for (int p = 1; p < 3 && rc == 0; p++) {
             struct compare_result c;
-            if (ran[p] && (rc = compare_dumps(&d[p], &d[0], &c, err, errlen)) == 0)
+            struct error e;
+            if (!ran[p])
+                continue;
+            if ((rc = compare_dumps(&d[p], &d[0], &c, &e)) == 0)
                 differ[p] = 100.0 * c.outcome_fraction;
+            else
+                error_format(&e, err, errlen);
         }
         for (int p = 0; p < 3; p++)
             if (ran[p])

@@ -16,7 +16,8 @@ static int time_against(struct bench *b, const struct scene *s, const struct cpu
     bench_progress(b, "%s", what);
     int rc = bench_time(b, s, b->runs, t, &d, err, errlen);
     if (rc == 0) {
-        rc = compare_dumps(&d, &ref->dump, cr, err, errlen);
+        struct error e;
+        rc = compare_dumps(&d, &ref->dump, cr, &e) == 0 ? 0 : error_format(&e, err, errlen);
         dump_free(&d);
     }
     b->done++;
@@ -27,7 +28,8 @@ static int reference(const struct scene *s, struct cpu_image *ref, char *err, si
 {
     struct cpu_render_options o = {.threads = 0, .progress = 0};
     ref_options_default(&o.ref, s);
-    return cpu_render(s, &o, ref, err, errlen);
+    struct error e;
+    return cpu_render(s, &o, ref, &e) == 0 ? 0 : error_format(&e, err, errlen);
 }
 
 static int moving_objects(struct bench *b, FILE *csv, char *err, size_t errlen)
