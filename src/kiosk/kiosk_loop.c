@@ -532,10 +532,10 @@ static int preflight(struct kiosk *k, char *err, size_t errlen)
             return -1;
     static struct script sc;
     for (int i = 0; i < c->n_inputs; i++)
-        if (c->inputs[i].type == KIOSK_INPUT_SCRIPT && script_load(&sc, c->inputs[i].path, err, errlen) != 0)
-            return -1;
-    if (c->attract.enabled && script_load(&k->tour, c->attract.script, err, errlen) != 0)
-        return -1;
+        if (c->inputs[i].type == KIOSK_INPUT_SCRIPT && script_load(&sc, c->inputs[i].path, &e) != 0)
+            return error_format(&e, err, errlen);
+    if (c->attract.enabled && script_load(&k->tour, c->attract.script, &e) != 0)
+        return error_format(&e, err, errlen);
     return 0;
 }
 
