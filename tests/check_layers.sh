@@ -6,7 +6,8 @@
 cd "$(dirname "$0")/.." || exit 1
 allowed() {
     case $1 in
-        io | physics) echo "" ;;
+        io) echo "" ;;
+        physics) echo "io" ;;
         gl) echo "io" ;;
         conf) echo "io" ;;
         scene) echo "io physics conf" ;;

@@ -6,6 +6,7 @@
 #define BT_BENCH_H
 #include <stdio.h>
 #include "gl/context.h"
+#include "io/error.h"
 #include "results/dump.h"
 #include "scene/scene.h"
 
@@ -36,9 +37,10 @@ double bench_now(void);
 void bench_progress(struct bench *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 /* Render s runs + 1 times on the bench's context (the first, which compiles the shaders, is not
- * timed); the median frame time. With d, the last frame's per-pixel dump. 0, or -1 with err. */
-int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_timing *t, struct dump *d, char *err,
-               size_t errlen);
+ * timed); the median frame time. With d, the last frame's per-pixel dump. 0, or -1 with e: the
+ * renderer's error as it is, or no memory for the dump (ERROR_RUNTIME). */
+int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_timing *t, struct dump *d,
+               struct error *e);
 
 /* The median of n times (sorted in place). */
 double bench_median(double *times, int n);
@@ -49,36 +51,40 @@ enum bench_accel { ACCEL_NONE, ACCEL_PAPER, ACCEL_ALL, ACCEL_SINGLE, ACCEL_FUSED
 extern const char *const bench_accel_names[ACCEL_COUNT];
 void bench_apply_accel(struct scene *s, enum bench_accel a);
 
-/* The committed scene assets/scenes/NAME.scene at w x h (0 x 0: its own size). 0, or -1 with err. */
-int bench_load_scene(struct scene *s, const char *name, int w, int h, char *err, size_t errlen);
+/* The committed scene assets/scenes/NAME.scene at w x h (0 x 0: its own size). 0, or -1 with
+ * scene_load's error (its place the scene file). */
+int bench_load_scene(struct scene *s, const char *name, int w, int h, struct error *e);
 /* Replace the objects of s by n spheres in view, in a ring around the camera's look_at. */
 void bench_spheres(struct scene *s, int n);
 /* The paper's Table 1 / Figure 5 settings: n_segs segments, n_steps steps in all over a path of
  * `path` (the step is path / n_steps; render_path_budget keeps the scene's own). */
 void bench_paper_steps(struct scene *s, int n_segs, int n_steps, double path);
 
-/* Sections; each writes its part of BENCH.md and its CSV files. 0, or -1 with err. */
-int bench_table1(struct bench *b, char *err, size_t errlen);
-int bench_figure5(struct bench *b, char *err, size_t errlen);
-int bench_unrolling(struct bench *b, char *err, size_t errlen);
-int bench_batching(struct bench *b, char *err, size_t errlen);
-int bench_early_z(struct bench *b, char *err, size_t errlen);
-int bench_pareto(struct bench *b, char *err, size_t errlen);
+/* Sections; each writes its part of BENCH.md and its CSV files. 0, or -1 with e, the error of
+ * what failed passed on as it is (a scene's, the renderer's, the CPU reference's, the comparison's,
+ * the kiosk's), printed as "WHERE: MESSAGE". */
+int bench_table1(struct bench *b, struct error *e);
+int bench_figure5(struct bench *b, struct error *e);
+int bench_unrolling(struct bench *b, struct error *e);
+int bench_batching(struct bench *b, struct error *e);
+int bench_early_z(struct bench *b, struct error *e);
+int bench_pareto(struct bench *b, struct error *e);
 /* the paper's multipass scheme against the single pass, every model at its scene's own size */
-int bench_pipelines(struct bench *b, char *err, size_t errlen);
+int bench_pipelines(struct bench *b, struct error *e);
 /* configurations bench_pareto times in all (for the progress count) */
 extern const int bench_pareto_count;
-int bench_limit(struct bench *b, char *err, size_t errlen);
+int bench_limit(struct bench *b, struct error *e);
 /* the observer's effects and moving objects, rays against polygons (bench_relativity.c) */
-int bench_relativity(struct bench *b, char *err, size_t errlen);
+int bench_relativity(struct bench *b, struct error *e);
 /* the kiosk's previews and refined frames (bench_kiosk.c) */
-int bench_kiosk(struct bench *b, char *err, size_t errlen);
+int bench_kiosk(struct bench *b, struct error *e);
 /* the cost of render.samples against the error it leaves (bench_antialias.c) */
-int bench_antialias(struct bench *b, char *err, size_t errlen);
+int bench_antialias(struct bench *b, struct error *e);
 /* the cost of the stars of the sky, drawn on the CPU (bench_stars.c) */
-int bench_stars(struct bench *b, char *err, size_t errlen);
+int bench_stars(struct bench *b, struct error *e);
 
-/* Open out_dir/bench/NAME for writing (CSV, gnuplot script). NULL with err. */
-FILE *bench_data_file(struct bench *b, const char *name, char *err, size_t errlen);
+/* Open out_dir/bench/NAME for writing (CSV, gnuplot script). NULL with e ("cannot write PATH", no
+ * place; its status from error_status_of_errno). */
+FILE *bench_data_file(struct bench *b, const char *name, struct error *e);
 
 #endif

@@ -17,25 +17,20 @@ static const int aa_counts[] = {1, 2, 4, 9, 16};
 
 /* The image of s with its samples, runs times after a warm-up: the median seconds and the last image. */
 static int time_samples(struct bench *b, const struct scene *s, int runs, double *median, unsigned char **rgba,
-                        char *err, size_t errlen)
+                        struct error *e)
 {
-    struct error e;
-    struct renderer *r = renderer_create(b->ctx, s, &e);
-    if (!r) {
-        snprintf(err, errlen, "%s", e.message);
+    struct renderer *r = renderer_create(b->ctx, s, e);
+    if (!r)
         return -1;
-    }
     double times[64];
     runs = runs < 1 ? 1 : runs < 64 ? runs : 64;
     int rc = 0;
     *rgba = NULL;
     for (int k = 0; k <= runs && rc == 0; k++) {
         struct render_result res;
-        rc = frame_run_samples(r, s, &res, 0, PROGRESS_NONE, &e);
-        if (rc != 0) {
-            snprintf(err, errlen, "%s", e.message);
+        rc = frame_run_samples(r, s, &res, 0, PROGRESS_NONE, e);
+        if (rc != 0)
             break;
-        }
         if (k > 0)
             times[k - 1] = res.seconds;
         free(*rgba);
@@ -53,12 +48,12 @@ static int time_samples(struct bench *b, const struct scene *s, int runs, double
     return 0;
 }
 
-int bench_antialias(struct bench *b, char *err, size_t errlen)
+int bench_antialias(struct bench *b, struct error *e)
 {
     static struct scene s;
-    if (bench_load_scene(&s, "demo", b->quick ? 32 : 0, b->quick ? 24 : 0, err, errlen) != 0)
+    if (bench_load_scene(&s, "demo", b->quick ? 32 : 0, b->quick ? 24 : 0, e) != 0)
         return -1;
-    FILE *csv = bench_data_file(b, "antialias.csv", err, errlen);
+    FILE *csv = bench_data_file(b, "antialias.csv", e);
     if (!csv)
         return -1;
     size_t pixels = (size_t)s.render.width * s.render.height;
@@ -67,7 +62,7 @@ int bench_antialias(struct bench *b, char *err, size_t errlen)
     bench_progress(b, "antialias: demo at %d samples a pixel (the reference)", s.render.samples);
     double t_ref;
     unsigned char *reference;
-    if (time_samples(b, &s, 1, &t_ref, &reference, err, errlen) != 0) {
+    if (time_samples(b, &s, 1, &t_ref, &reference, e) != 0) {
         fclose(csv);
         return -1;
     }
@@ -85,18 +80,18 @@ int bench_antialias(struct bench *b, char *err, size_t errlen)
         bench_progress(b, "antialias: demo at %d samples a pixel", aa_counts[k]);
         double t;
         unsigned char *image;
-        rc = time_samples(b, &s, b->runs, &t, &image, err, errlen);
+        rc = time_samples(b, &s, b->runs, &t, &image, e);
         if (rc != 0)
             break;
         b->done++;
-        double e = image_rms_linear(image, reference, pixels);
+        double rms = image_rms_linear(image, reference, pixels);
         free(image);
         if (k == 0) {
             t1 = t;
-            e1 = e;
+            e1 = rms;
         }
-        fprintf(b->md, "| %d | %.3f | %.2f | %.5f | %.2f |\n", aa_counts[k], t, t / t1, e, e1 > 0.0 ? e / e1 : 0.0);
-        fprintf(csv, "%d,%.5f,%.6f\n", aa_counts[k], t, e);
+        fprintf(b->md, "| %d | %.3f | %.2f | %.5f | %.2f |\n", aa_counts[k], t, t / t1, rms, e1 > 0.0 ? rms / e1 : 0.0);
+        fprintf(csv, "%d,%.5f,%.6f\n", aa_counts[k], t, rms);
     }
     fprintf(b->md, "\n");
     free(reference);

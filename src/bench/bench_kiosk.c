@@ -63,14 +63,11 @@ static int time_scene(struct kiosk_view *v, const struct kiosk_config *c, struct
     return 0;
 }
 
-int bench_kiosk(struct bench *b, char *err, size_t errlen)
+int bench_kiosk(struct bench *b, struct error *e)
 {
     static struct kiosk_config c;
-    struct error e;
-    if (kiosk_config_load(&c, KIOSK_CONFIG, &e) != 0 || kiosk_config_check(&c, &e) != 0) {
-        snprintf(err, errlen, "%s: %s", e.where, e.message);
+    if (kiosk_config_load(&c, KIOSK_CONFIG, e) != 0 || kiosk_config_check(&c, e) != 0)
         return -1;
-    }
     if (b->quick) {
         c.kiosk.preview_width = 32;
         c.kiosk.preview_height = 18;
@@ -80,16 +77,18 @@ int bench_kiosk(struct bench *b, char *err, size_t errlen)
     int n = b->quick ? 1 : c.kiosk.n_scenes;
     static struct kiosk_view v;
     struct screen *screen;
-    if (kiosk_view_init(&v, &c, b->ctx, &e) != 0)
-        return error_format(&e, err, errlen);
+    if (kiosk_view_init(&v, &c, b->ctx, e) != 0)
+        return -1;
     /* a screen of the refined frame's size on the bench's context, as the headless kiosk has */
-    screen = screen_open_offscreen(b->ctx, c.kiosk.width, c.kiosk.height, &e);
+    screen = screen_open_offscreen(b->ctx, c.kiosk.width, c.kiosk.height, e);
     if (!screen) {
         kiosk_view_release(&v);
-        return error_format(&e, err, errlen);
+        return -1;
     }
     /* bentray bench --kiosk without --out: the table alone, on standard output */
-    FILE *csv = b->data_dir[0] ? bench_data_file(b, "kiosk.csv", err, errlen) : fopen("/dev/null", "w");
+    FILE *csv = b->data_dir[0] ? bench_data_file(b, "kiosk.csv", e) : fopen("/dev/null", "w");
+    if (!csv && !b->data_dir[0])
+        error_set(e, ERROR_RUNTIME, NULL, "cannot write /dev/null");
     if (!csv) {
         screen_close(screen);
         kiosk_view_release(&v);
@@ -112,12 +111,10 @@ int bench_kiosk(struct bench *b, char *err, size_t errlen)
         name = name ? name + 1 : c.kiosk.scenes[i];
         bench_progress(b, "kiosk: %s", name);
         struct kiosk_timing t;
-        rc = time_scene(&v, &c, screen, i, &t, &e);
+        rc = time_scene(&v, &c, screen, i, &t, e);
         b->done++;
-        if (rc != 0) {
-            error_format(&e, err, errlen);
+        if (rc != 0)
             break;
-        }
         double fps = 1.0 / t.preview_median;
         fprintf(b->md, "| %s | %.3f | %.1f | %s | %.2f | %d | %s |\n", name, t.preview_median, fps,
                 fps >= KIOSK_TARGET_PREVIEW_FPS ? "met" : "MISSED", t.refined, t.bands,

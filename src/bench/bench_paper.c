@@ -18,9 +18,9 @@ static const double t1_paper[T1_MODELS][2] = {{3.87, 3.13}, {4.22, 1.16}, {3.35,
  * measured (segments x steps x step), kept so that its workload stays the same from run to run. */
 static const double t1_path[T1_MODELS] = {30.0, 40.0, 40.0, 40.0};
 
-static int table1_scene(struct bench *b, struct scene *s, int k, int w, int h, char *err, size_t errlen)
+static int table1_scene(struct bench *b, struct scene *s, int k, int w, int h, struct error *e)
 {
-    if (bench_load_scene(s, t1_scene[k], w, h, err, errlen) != 0)
+    if (bench_load_scene(s, t1_scene[k], w, h, e) != 0)
         return -1;
     bench_spheres(s, b->quick ? 2 : 10);
     bench_paper_steps(s, 30, 300, t1_path[k]);
@@ -30,7 +30,7 @@ static int table1_scene(struct bench *b, struct scene *s, int k, int w, int h, c
 /* Outcome differences and exit-direction p99 of the configuration against the reference, at a
  * quarter of the size (the reference at 800x600 would take minutes per model). */
 static int table1_errors(struct bench *b, const struct scene *base, const struct dump *ref, enum bench_accel a,
-                         struct compare_result *c, char *err, size_t errlen)
+                         struct compare_result *c, struct error *e)
 {
     static struct scene s;
     s = *base;
@@ -38,17 +38,17 @@ static int table1_errors(struct bench *b, const struct scene *base, const struct
     struct bench_timing t;
     struct dump d;
     /* the error does not depend on the run: one frame */
-    int rc = bench_time(b, &s, 1, &t, &d, err, errlen);
+    int rc = bench_time(b, &s, 1, &t, &d, e);
     if (rc != 0)
         return -1;
-    rc = compare_dumps(&d, ref, c, err, errlen);
+    rc = compare_dumps(&d, ref, c, e);
     dump_free(&d);
     return rc;
 }
 
-int bench_table1(struct bench *b, char *err, size_t errlen)
+int bench_table1(struct bench *b, struct error *e)
 {
-    FILE *csv = bench_data_file(b, "table1.csv", err, errlen);
+    FILE *csv = bench_data_file(b, "table1.csv", e);
     if (!csv)
         return -1;
     fprintf(csv, "model,acceleration,median_s,min_s,max_s,passes,outcome_pct,sky_p99_rad\n");
@@ -71,15 +71,15 @@ int bench_table1(struct bench *b, char *err, size_t errlen)
     int met_time = 1, met_speedup = 1;
     for (int k = 0; k < T1_MODELS; k++) {
         static struct scene s, small;
-        if (table1_scene(b, &s, k, b->width, b->height, err, errlen) != 0 ||
-            table1_scene(b, &small, k, b->width / 4, b->height / 4, err, errlen) != 0)
+        if (table1_scene(b, &s, k, b->width, b->height, e) != 0 ||
+            table1_scene(b, &small, k, b->width / 4, b->height / 4, e) != 0)
             return -1;
         struct cpu_image ref;
         struct cpu_render_options o = {.threads = 0, .progress = 0};
         ref_options_default(&o.ref, &small);
         bench_progress(b, "table 1: %s, CPU reference at %dx%d", t1_scene[k], small.render.width,
                        small.render.height);
-        if (cpu_render(&small, &o, &ref, err, errlen) != 0)
+        if (cpu_render(&small, &o, &ref, e) != 0)
             return -1;
         struct bench_timing t[ACCEL_COUNT];
         struct compare_result c[ACCEL_COUNT];
@@ -88,8 +88,8 @@ int bench_table1(struct bench *b, char *err, size_t errlen)
             run = s;
             bench_apply_accel(&run, (enum bench_accel)a);
             bench_progress(b, "table 1: %s, acceleration %s", t1_scene[k], bench_accel_names[a]);
-            if (bench_time(b, &run, b->runs, &t[a], NULL, err, errlen) != 0 ||
-                table1_errors(b, &small, &ref.dump, (enum bench_accel)a, &c[a], err, errlen) != 0) {
+            if (bench_time(b, &run, b->runs, &t[a], NULL, e) != 0 ||
+                table1_errors(b, &small, &ref.dump, (enum bench_accel)a, &c[a], e) != 0) {
                 cpu_image_free(&ref);
                 return -1;
             }
@@ -122,12 +122,12 @@ int bench_table1(struct bench *b, char *err, size_t errlen)
     return 0;
 }
 
-int bench_figure5(struct bench *b, char *err, size_t errlen)
+int bench_figure5(struct bench *b, struct error *e)
 {
     static const int counts_full[] = {1, 5, 10, 20}, counts_quick[] = {1, 2};
     const int *counts = b->quick ? counts_quick : counts_full;
     int n = b->quick ? 2 : 4;
-    FILE *csv = bench_data_file(b, "figure5.csv", err, errlen);
+    FILE *csv = bench_data_file(b, "figure5.csv", e);
     if (!csv)
         return -1;
     fprintf(csv, "spheres,none_s,paper_s,all_s,single_s,fused_s\n");
@@ -140,14 +140,14 @@ int bench_figure5(struct bench *b, char *err, size_t errlen)
         double sec[ACCEL_COUNT];
         for (int a = 0; a < ACCEL_COUNT; a++) {
             static struct scene s;
-            if (bench_load_scene(&s, "schwarzschild", b->width, b->height, err, errlen) != 0)
+            if (bench_load_scene(&s, "schwarzschild", b->width, b->height, e) != 0)
                 return -1;
             bench_spheres(&s, counts[i]);
             bench_paper_steps(&s, 50, 500, render_path_budget(&s.render));
             bench_apply_accel(&s, (enum bench_accel)a);
             struct bench_timing t;
             bench_progress(b, "figure 5: %d spheres, acceleration %s", counts[i], bench_accel_names[a]);
-            if (bench_time(b, &s, b->runs, &t, NULL, err, errlen) != 0)
+            if (bench_time(b, &s, b->runs, &t, NULL, e) != 0)
                 return -1;
             b->done++;
             sec[a] = t.median;
@@ -157,7 +157,7 @@ int bench_figure5(struct bench *b, char *err, size_t errlen)
     }
     fclose(csv);
     fprintf(b->md, "\n");
-    FILE *gp = bench_data_file(b, "figure5.gp", err, errlen);
+    FILE *gp = bench_data_file(b, "figure5.gp", e);
     if (!gp)
         return -1;
     fprintf(gp, "set terminal pngcairo size 800,500\nset output 'figure5.png'\nset datafile separator ','\n"

@@ -158,12 +158,12 @@ static void mark_front(struct pareto_point *p, int n)
 }
 
 static int measure_scene(struct bench *b, int k, struct pareto_point *pts, struct quality_bound *q, FILE *csv,
-                         char *err, size_t errlen)
+                         struct error *e)
 {
     const struct pareto_scene *ps = &scenes[k];
     static struct scene base;
     int w = b->quick ? 32 : ps->paper_size ? b->width : 0, h = b->quick ? 24 : ps->paper_size ? b->height : 0;
-    if (bench_load_scene(&base, ps->scene, w, h, err, errlen) != 0)
+    if (bench_load_scene(&base, ps->scene, w, h, e) != 0)
         return -1;
     if (ps->sky_only)
         base.n_objects = 0;
@@ -173,7 +173,7 @@ static int measure_scene(struct bench *b, int k, struct pareto_point *pts, struc
     ref_options_default(&o.ref, &base);
     bench_progress(b, "speed against error: %s, CPU reference at %dx%d", ps->title, base.render.width,
                    base.render.height);
-    if (cpu_render(&base, &o, &ref, err, errlen) != 0)
+    if (cpu_render(&base, &o, &ref, e) != 0)
         return -1;
     int n = b->quick ? 3 : base.model.type == MODEL_SCHWARZSCHILD ? N_CONFIGS : N_CONFIGS - N_ORBIT_CONFIGS;
     for (int c = 0; c < n; c++) {
@@ -184,9 +184,10 @@ static int measure_scene(struct bench *b, int k, struct pareto_point *pts, struc
             continue;
         }
         apply_config(&s, &configs[c]);
-        struct error e;
-        if (scene_validate(&s, &e) != 0) {
-            snprintf(err, errlen, "internal: configuration %s of %s: %s", configs[c].name, ps->title, e.message);
+        struct error why;
+        if (scene_validate(&s, &why) != 0) {
+            error_set(e, ERROR_RUNTIME, NULL, "internal: configuration %s of %s: %s", configs[c].name, ps->title,
+                      why.message);
             cpu_image_free(&ref);
             return -1;
         }
@@ -194,7 +195,12 @@ static int measure_scene(struct bench *b, int k, struct pareto_point *pts, struc
         struct dump d;
         struct compare_result cr;
         bench_progress(b, "speed against error: %s, %s", ps->title, configs[c].name);
-        if (bench_time(b, &s, b->runs, &t, &d, err, errlen) != 0 || compare_dumps(&d, &ref.dump, &cr, err, errlen) != 0) {
+        if (bench_time(b, &s, b->runs, &t, &d, e) != 0) {
+            cpu_image_free(&ref);
+            return -1;
+        }
+        if (compare_dumps(&d, &ref.dump, &cr, e) != 0) {
+            dump_free(&d);
             cpu_image_free(&ref);
             return -1;
         }
@@ -322,10 +328,10 @@ static void write_plot_data(FILE *dat, const char *title, const struct pareto_po
 #define SKY_TARGET_RAD 1e-5
 #define SKY_TARGET_SECONDS 0.03
 
-int bench_pareto(struct bench *b, char *err, size_t errlen)
+int bench_pareto(struct bench *b, struct error *e)
 {
-    FILE *csv = bench_data_file(b, "pareto.csv", err, errlen);
-    FILE *dat = bench_data_file(b, "pareto.dat", err, errlen);
+    FILE *csv = bench_data_file(b, "pareto.csv", e);
+    FILE *dat = bench_data_file(b, "pareto.dat", e);
     if (!csv || !dat) {
         if (csv)
             fclose(csv);
@@ -352,7 +358,7 @@ int bench_pareto(struct bench *b, char *err, size_t errlen)
     for (int k = 0; k < N_SCENES; k++) {
         struct pareto_point pts[N_CONFIGS];
         struct quality_bound q;
-        int n = measure_scene(b, k, pts, &q, csv, err, errlen);
+        int n = measure_scene(b, k, pts, &q, csv, e);
         if (n < 0) {
             fclose(csv);
             fclose(dat);
@@ -375,7 +381,7 @@ int bench_pareto(struct bench *b, char *err, size_t errlen)
     fprintf(b->md, "Target: the Schwarzschild sky at %dx%d with exit-direction p99 at most %g rad in at most "
                    "%.0f ms: **%s** (%.0f ms).\n\n", b->width, b->height, SKY_TARGET_RAD, 1e3 * SKY_TARGET_SECONDS,
             sky_target_met ? "met" : "missed", 1e3 * sky_target_seconds);
-    FILE *gp = bench_data_file(b, "pareto.gp", err, errlen);
+    FILE *gp = bench_data_file(b, "pareto.gp", e);
     if (!gp)
         return -1;
     /* noenhanced: scene names keep their underscores; ticks as 1e-05, not 0.0000100 */

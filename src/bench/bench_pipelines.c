@@ -29,9 +29,9 @@ static const struct pipeline_case cases[] = {
 static const enum pipeline_choice row_pipelines[3] = {PIPELINE_MULTIPASS, PIPELINE_FUSED, PIPELINE_SINGLE};
 static const char *const row_names[3] = {"multipass", "fused", "single"};
 
-int bench_pipelines(struct bench *b, char *err, size_t errlen)
+int bench_pipelines(struct bench *b, struct error *e)
 {
-    FILE *csv = bench_data_file(b, "pipelines.csv", err, errlen);
+    FILE *csv = bench_data_file(b, "pipelines.csv", e);
     if (!csv)
         return -1;
     fprintf(csv, "scene,pipeline,width,height,median_s,passes,ms_per_pass,outcome_pct\n");
@@ -57,7 +57,7 @@ int bench_pipelines(struct bench *b, char *err, size_t errlen)
         static struct scene s;
         int rc = 0;
         for (int p = 0; p < 3 && rc == 0; p++) {
-            if (bench_load_scene(&s, cases[k].scene, b->quick ? 32 : 0, b->quick ? 24 : 0, err, errlen) != 0) {
+            if (bench_load_scene(&s, cases[k].scene, b->quick ? 32 : 0, b->quick ? 24 : 0, e) != 0) {
                 rc = -1;
                 break;
             }
@@ -68,13 +68,13 @@ int bench_pipelines(struct bench *b, char *err, size_t errlen)
                 continue;
             s.render.pipeline = row_pipelines[p];
             bench_progress(b, "pipelines: %s, %s", cases[k].label, row_names[p]);
-            rc = bench_time(b, &s, b->runs, &t[p], &d[p], err, errlen);
+            rc = bench_time(b, &s, b->runs, &t[p], &d[p], e);
             ran[p] = rc == 0;
             b->done++;
         }
         for (int p = 1; p < 3 && rc == 0; p++) {
             struct compare_result c;
-            if (ran[p] && (rc = compare_dumps(&d[p], &d[0], &c, err, errlen)) == 0)
+            if (ran[p] && (rc = compare_dumps(&d[p], &d[0], &c, e)) == 0)
                 differ[p] = 100.0 * c.outcome_fraction;
         }
         for (int p = 0; p < 3; p++)

@@ -10,35 +10,34 @@ static const int subdivisions[] = {1, 4, 16, 64};
 #define N_SUBDIVISIONS (int)(sizeof subdivisions / sizeof subdivisions[0])
 
 static int time_against(struct bench *b, const struct scene *s, const struct cpu_image *ref, const char *what,
-                        struct bench_timing *t, struct compare_result *cr, char *err, size_t errlen)
+                        struct bench_timing *t, struct compare_result *cr, struct error *e)
 {
     struct dump d;
     bench_progress(b, "%s", what);
-    int rc = bench_time(b, s, b->runs, t, &d, err, errlen);
+    int rc = bench_time(b, s, b->runs, t, &d, e);
     if (rc == 0) {
-        rc = compare_dumps(&d, &ref->dump, cr, err, errlen);
+        rc = compare_dumps(&d, &ref->dump, cr, e);
         dump_free(&d);
     }
     b->done++;
     return rc;
 }
 
-static int reference(const struct scene *s, struct cpu_image *ref, char *err, size_t errlen)
+static int reference(const struct scene *s, struct cpu_image *ref, struct error *e)
 {
     struct cpu_render_options o = {.threads = 0, .progress = 0};
     ref_options_default(&o.ref, s);
-    return cpu_render(s, &o, ref, err, errlen);
+    return cpu_render(s, &o, ref, e);
 }
 
-static int moving_objects(struct bench *b, FILE *csv, char *err, size_t errlen)
+static int moving_objects(struct bench *b, FILE *csv, struct error *e)
 {
     static struct scene base, s;
-    if (bench_load_scene(&base, "cube_approach", b->quick ? 32 : b->width, b->quick ? 24 : b->height, err,
-                         errlen) != 0)
+    if (bench_load_scene(&base, "cube_approach", b->quick ? 32 : b->width, b->quick ? 24 : b->height, e) != 0)
         return -1;
     struct cpu_image ref;
     bench_progress(b, "moving objects: CPU reference");
-    if (reference(&base, &ref, err, errlen) != 0)
+    if (reference(&base, &ref, e) != 0)
         return -1;
     fprintf(b->md, "### Moving objects: rays against polygons\n\nThe approaching cube (cube_approach, 0.95 c) at "
                    "%dx%d: traced per pixel in its rest frame, and drawn by the polygon method with N segments per "
@@ -58,7 +57,7 @@ static int moving_objects(struct bench *b, FILE *csv, char *err, size_t errlen)
         }
         struct bench_timing t;
         struct compare_result cr;
-        if (time_against(b, &s, &ref, what, &t, &cr, err, errlen) != 0) {
+        if (time_against(b, &s, &ref, what, &t, &cr, e) != 0) {
             cpu_image_free(&ref);
             return -1;
         }
@@ -74,7 +73,7 @@ static int moving_objects(struct bench *b, FILE *csv, char *err, size_t errlen)
 
 /* The same frame with every effect off, at rest, and with the scene's own observer: the cost of
  * aberration and colour. */
-static int effects(struct bench *b, FILE *csv, char *err, size_t errlen)
+static int effects(struct bench *b, FILE *csv, struct error *e)
 {
     static const char *const scenes[] = {"starflight", "blackhole_flight"};
     fprintf(b->md, "### What the observer's effects cost\n\nEach scene at %dx%d at rest with `effects = "
@@ -83,19 +82,18 @@ static int effects(struct bench *b, FILE *csv, char *err, size_t errlen)
             b->quick ? 32 : b->width, b->quick ? 24 : b->height);
     for (int k = 0; k < (b->quick ? 1 : 2); k++) {
         static struct scene moving, rest;
-        if (bench_load_scene(&moving, scenes[k], b->quick ? 32 : b->width, b->quick ? 24 : b->height, err,
-                             errlen) != 0)
+        if (bench_load_scene(&moving, scenes[k], b->quick ? 32 : b->width, b->quick ? 24 : b->height, e) != 0)
             return -1;
         rest = moving;
         rest.observer.velocity = v3(0.0, 0.0, 0.0);
         rest.observer.effects = EFFECTS_GEOMETRY;
         struct bench_timing t_rest, t_moving;
         bench_progress(b, "effects: %s at rest", scenes[k]);
-        if (bench_time(b, &rest, b->runs, &t_rest, NULL, err, errlen) != 0)
+        if (bench_time(b, &rest, b->runs, &t_rest, NULL, e) != 0)
             return -1;
         b->done++;
         bench_progress(b, "effects: %s moving", scenes[k]);
-        if (bench_time(b, &moving, b->runs, &t_moving, NULL, err, errlen) != 0)
+        if (bench_time(b, &moving, b->runs, &t_moving, NULL, e) != 0)
             return -1;
         b->done++;
         fprintf(b->md, "| %s | %.4f | %.4f | %.2f |\n", scenes[k], t_rest.median, t_moving.median,
@@ -107,14 +105,14 @@ static int effects(struct bench *b, FILE *csv, char *err, size_t errlen)
     return 0;
 }
 
-int bench_relativity(struct bench *b, char *err, size_t errlen)
+int bench_relativity(struct bench *b, struct error *e)
 {
-    FILE *csv = bench_data_file(b, "relativity.csv", err, errlen);
+    FILE *csv = bench_data_file(b, "relativity.csv", e);
     if (!csv)
         return -1;
     fprintf(csv, "scene,configuration,seconds,outcome_pct,hit_p99_rel\n");
     fprintf(b->md, "## Relativity\n\n");
-    int rc = moving_objects(b, csv, err, errlen) != 0 || effects(b, csv, err, errlen) != 0 ? -1 : 0;
+    int rc = moving_objects(b, csv, e) != 0 || effects(b, csv, e) != 0 ? -1 : 0;
     fclose(csv);
     return rc;
 }

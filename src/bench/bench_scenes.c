@@ -40,15 +40,12 @@ void bench_apply_accel(struct scene *s, enum bench_accel a)
     r->pipeline = a == ACCEL_FUSED ? PIPELINE_FUSED : PIPELINE_SINGLE;
 }
 
-int bench_load_scene(struct scene *s, const char *name, int w, int h, char *err, size_t errlen)
+int bench_load_scene(struct scene *s, const char *name, int w, int h, struct error *e)
 {
     char path[256];
-    struct error e;
     snprintf(path, sizeof path, "assets/scenes/%s.scene", name);
-    if (scene_load(s, path, &e) != 0) {
-        snprintf(err, errlen, "%s: %s", e.where, e.message);
+    if (scene_load(s, path, e) != 0)
         return -1;
-    }
     if (w > 0 && h > 0) {
         s->render.width = w;
         s->render.height = h;

@@ -19,23 +19,17 @@ static const struct {
 #define STAR_CONFIGS (int)(sizeof star_configs / sizeof star_configs[0])
 
 /* Median GPU and star seconds of runs frames after a warm-up. */
-static int time_stars(struct bench *b, const struct scene *s, int runs, double *gpu, double *stars, char *err,
-                      size_t errlen)
+static int time_stars(struct bench *b, const struct scene *s, int runs, double *gpu, double *stars, struct error *e)
 {
-    struct error e;
-    struct renderer *r = renderer_create(b->ctx, s, &e);
-    if (!r) {
-        snprintf(err, errlen, "%s", e.message);
+    struct renderer *r = renderer_create(b->ctx, s, e);
+    if (!r)
         return -1;
-    }
     double g[64], t[64];
     runs = runs < 1 ? 1 : runs < 64 ? runs : 64;
     int rc = 0;
     for (int k = 0; k <= runs && rc == 0; k++) {
         struct render_result res;
-        rc = frame_run_samples(r, s, &res, 0, PROGRESS_NONE, &e);
-        if (rc != 0)
-            snprintf(err, errlen, "%s", e.message);
+        rc = frame_run_samples(r, s, &res, 0, PROGRESS_NONE, e);
         if (rc == 0 && k > 0) {
             g[k - 1] = res.seconds;
             t[k - 1] = res.sky_seconds;
@@ -51,12 +45,12 @@ static int time_stars(struct bench *b, const struct scene *s, int runs, double *
     return 0;
 }
 
-int bench_stars(struct bench *b, char *err, size_t errlen)
+int bench_stars(struct bench *b, struct error *e)
 {
     static struct scene s;
-    if (bench_load_scene(&s, "star_sky", b->quick ? 64 : 1920, b->quick ? 36 : 1080, err, errlen) != 0)
+    if (bench_load_scene(&s, "star_sky", b->quick ? 64 : 1920, b->quick ? 36 : 1080, e) != 0)
         return -1;
-    FILE *csv = bench_data_file(b, "stars.csv", err, errlen);
+    FILE *csv = bench_data_file(b, "stars.csv", e);
     if (!csv)
         return -1;
     fprintf(csv, "stars,milky_way,gpu_seconds,star_seconds\n");
@@ -73,7 +67,7 @@ int bench_stars(struct bench *b, char *err, size_t errlen)
         s.sky.milky_way = star_configs[k].milky_way ? milky_way : 0.0;
         bench_progress(b, "stars: %s", star_configs[k].what);
         double gpu, stars;
-        rc = time_stars(b, &s, b->runs, &gpu, &stars, err, errlen);
+        rc = time_stars(b, &s, b->runs, &gpu, &stars, e);
         if (rc != 0)
             break;
         b->done++;

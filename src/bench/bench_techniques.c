@@ -6,9 +6,9 @@
 
 /* The paper's Table 1 Schwarzschild frame (10 spheres, 300 Euler steps); segments of 60 steps, so
  * that K = 1, 4, 10, 30 and 60 all divide a segment. */
-static int technique_scene(struct bench *b, struct scene *s, int segments, char *err, size_t errlen)
+static int technique_scene(struct bench *b, struct scene *s, int segments, struct error *e)
 {
-    if (bench_load_scene(s, "schwarzschild", b->width, b->height, err, errlen) != 0)
+    if (bench_load_scene(s, "schwarzschild", b->width, b->height, e) != 0)
         return -1;
     bench_spheres(s, b->quick ? 2 : 10);
     bench_paper_steps(s, segments, 300, render_path_budget(&s->render));
@@ -16,11 +16,10 @@ static int technique_scene(struct bench *b, struct scene *s, int segments, char 
     return 0;
 }
 
-static int time_one(struct bench *b, const struct scene *s, const char *what, struct bench_timing *t, char *err,
-                    size_t errlen)
+static int time_one(struct bench *b, const struct scene *s, const char *what, struct bench_timing *t, struct error *e)
 {
     bench_progress(b, "%s", what);
-    int rc = bench_time(b, s, b->runs, t, NULL, err, errlen);
+    int rc = bench_time(b, s, b->runs, t, NULL, e);
     b->done++;
     return rc;
 }
@@ -35,9 +34,9 @@ struct sweep {
     void (*apply)(struct scene *s, int value);
 };
 
-static int run_sweep(struct bench *b, const struct sweep *w, double *speedup, char *err, size_t errlen)
+static int run_sweep(struct bench *b, const struct sweep *w, double *speedup, struct error *e)
 {
-    FILE *csv = bench_data_file(b, w->csv, err, errlen);
+    FILE *csv = bench_data_file(b, w->csv, e);
     if (!csv)
         return -1;
     fprintf(csv, "%s,median_s,passes,speedup\n", w->column);
@@ -45,7 +44,7 @@ static int run_sweep(struct bench *b, const struct sweep *w, double *speedup, ch
     double base = 0.0;
     for (int i = 0; i < w->n; i++) {
         static struct scene s;
-        if (technique_scene(b, &s, w->segments, err, errlen) != 0) {
+        if (technique_scene(b, &s, w->segments, e) != 0) {
             fclose(csv);
             return -1;
         }
@@ -53,7 +52,7 @@ static int run_sweep(struct bench *b, const struct sweep *w, double *speedup, ch
         char what[96];
         snprintf(what, sizeof what, "%s %d", w->what, w->values[i]);
         struct bench_timing t;
-        if (time_one(b, &s, what, &t, err, errlen) != 0) {
+        if (time_one(b, &s, what, &t, e) != 0) {
             fclose(csv);
             return -1;
         }
@@ -79,7 +78,7 @@ static void apply_batch(struct scene *s, int batch)
     s->render.batch = batch;
 }
 
-int bench_unrolling(struct bench *b, char *err, size_t errlen)
+int bench_unrolling(struct bench *b, struct error *e)
 {
     static const int ks[] = {1, 4, 10, 30, 60};
     const struct sweep w = {"unrolling.csv", "K", "unrolling: K =", ks, 5, 5, apply_unroll};
@@ -87,14 +86,14 @@ int bench_unrolling(struct bench *b, char *err, size_t errlen)
     fprintf(b->md, "## Unrolled integration\n\nK integration steps per pass (K = 1 is the paper's scheme); the "
                    "Table 1 Schwarzschild frame, 5 segments of 60 steps, all objects in one pass, early-z off. "
                    "Unrolling is exact: the rays are the same for every K (tests/unit/test_acceleration.c).\n\n");
-    if (run_sweep(b, &w, speedup, err, errlen) != 0)
+    if (run_sweep(b, &w, speedup, e) != 0)
         return -1;
     fprintf(b->md, "\nTarget: K = 10 at least %.0f times faster than K = 1: **%s** (%.2f).\n\n", UNROLL_TARGET,
             speedup[2] >= UNROLL_TARGET ? "met" : "missed", speedup[2]);
     return 0;
 }
 
-int bench_batching(struct bench *b, char *err, size_t errlen)
+int bench_batching(struct bench *b, struct error *e)
 {
     static const int batches[] = {1, 2, 5, 10};
     const struct sweep w = {"batching.csv", "objects per pass", "batching: objects per pass", batches, 4, 30,
@@ -102,15 +101,15 @@ int bench_batching(struct bench *b, char *err, size_t errlen)
     double speedup[4];
     fprintf(b->md, "## Objects per pass\n\nThe Table 1 Schwarzschild frame (10 spheres, 30 segments of 10 steps, "
                    "K = 10, early-z on); batch 1 is the paper's one pass per object. Exact for every batch size.\n\n");
-    if (run_sweep(b, &w, speedup, err, errlen) != 0)
+    if (run_sweep(b, &w, speedup, e) != 0)
         return -1;
     fprintf(b->md, "\n");
     return 0;
 }
 
-int bench_early_z(struct bench *b, char *err, size_t errlen)
+int bench_early_z(struct bench *b, struct error *e)
 {
-    FILE *csv = bench_data_file(b, "early_z.csv", err, errlen);
+    FILE *csv = bench_data_file(b, "early_z.csv", e);
     if (!csv)
         return -1;
     fprintf(csv, "case,early_z,termination_interval,median_s,passes\n");
@@ -127,7 +126,7 @@ int bench_early_z(struct bench *b, char *err, size_t errlen)
     double retired[2] = {0, 0};
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         static struct scene s;
-        if (technique_scene(b, &s, 30, err, errlen) != 0)
+        if (technique_scene(b, &s, 30, e) != 0)
             return -1;
         if (cases[i].enclosed) {
             s.objects[0].center = s.camera.position;
@@ -139,7 +138,7 @@ int bench_early_z(struct bench *b, char *err, size_t errlen)
         snprintf(what, sizeof what, "early-z: %s, early_z %d, interval %d", cases[i].name, cases[i].early_z,
                  cases[i].interval);
         struct bench_timing t;
-        if (time_one(b, &s, what, &t, err, errlen) != 0)
+        if (time_one(b, &s, what, &t, e) != 0)
             return -1;
         if (cases[i].enclosed)
             retired[cases[i].early_z] = t.median;
@@ -155,10 +154,10 @@ int bench_early_z(struct bench *b, char *err, size_t errlen)
 
 /* GL integration steps per second: no objects, a bounding sphere no ray leaves, fixed RK4 steps,
  * 60 per pass; against the C kernel doing the same float arithmetic on every core. */
-int bench_limit(struct bench *b, char *err, size_t errlen)
+int bench_limit(struct bench *b, struct error *e)
 {
     static struct scene s;
-    if (bench_load_scene(&s, "schwarzschild", b->width, b->height, err, errlen) != 0)
+    if (bench_load_scene(&s, "schwarzschild", b->width, b->height, e) != 0)
         return -1;
     s.n_objects = 0;
     s.render.method = METHOD_RK4;
@@ -169,16 +168,16 @@ int bench_limit(struct bench *b, char *err, size_t errlen)
     s.render.steps_per_pass = 60;
     s.render.early_z = 0;
     struct bench_timing t;
-    if (time_one(b, &s, "limit: GL integration throughput", &t, err, errlen) != 0)
+    if (time_one(b, &s, "limit: GL integration throughput", &t, e) != 0)
         return -1;
     double gl_rate = (double)s.render.width * s.render.height * s.render.segments * s.render.steps_per_segment /
                      t.median;
     struct cpu_limit_result c;
     bench_progress(b, "limit: C kernel on every core");
-    if (cpu_limit_measure(&s.model, METHOD_RK4, 65536, 60, 0, b->quick ? 0.05 : 2.0, &c, err, errlen) != 0)
+    if (cpu_limit_measure(&s.model, METHOD_RK4, 65536, 60, 0, b->quick ? 0.05 : 2.0, &c, e) != 0)
         return -1;
     b->done++;
-    FILE *csv = bench_data_file(b, "limit.csv", err, errlen);
+    FILE *csv = bench_data_file(b, "limit.csv", e);
     if (!csv)
         return -1;
     fprintf(csv, "path,steps_per_second\ngl,%.4g\nc_kernel,%.4g\n", gl_rate, c.steps_per_second);

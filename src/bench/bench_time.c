@@ -1,4 +1,5 @@
 /* Timing one configuration: warm-up, then the median of several frames on one GL context. */
+#include <errno.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -30,34 +31,27 @@ static int by_value(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_timing *t, struct dump *d, char *err,
-               size_t errlen)
+int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_timing *t, struct dump *d,
+               struct error *e)
 {
-    struct error e;
-    struct renderer *r = renderer_create(b->ctx, s, &e);
-    if (!r) {
-        snprintf(err, errlen, "%s", e.message);
+    struct renderer *r = renderer_create(b->ctx, s, e);
+    if (!r)
         return -1;
-    }
     double times[64];
     runs = runs < 1 ? 1 : runs < 64 ? runs : 64;
     /* the frame as a display draws it, the image alone; the dump's state is traced after the timed run */
     renderer_set_reads(r, RENDER_READ_IMAGE);
     int rc = 0;
     for (int k = 0; k <= runs && rc == 0; k++) {
-        rc = renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, &e);
+        rc = renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, e);
         struct render_result res;
         if (rc == 0 && k > 0)
-            rc = renderer_read(r, &res, d && k == runs, &e);
-        if (rc != 0)
-            snprintf(err, errlen, "%s", e.message);
+            rc = renderer_read(r, &res, d && k == runs, e);
         if (rc == 0 && k > 0) {
             times[k - 1] = res.seconds;
             t->passes = res.passes;
-            if (d && k == runs && result_to_dump(&res, s, renderer_path(r)->name, d) != 0) {
-                snprintf(err, errlen, "out of memory");
-                rc = -1;
-            }
+            if (d && k == runs && result_to_dump(&res, s, renderer_path(r)->name, d) != 0)
+                rc = error_set(e, ERROR_RUNTIME, NULL, "out of memory");
             render_result_free(&res);
         }
     }
@@ -77,12 +71,13 @@ double bench_median(double *times, int n)
     return n % 2 ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
 }
 
-FILE *bench_data_file(struct bench *b, const char *name, char *err, size_t errlen)
+FILE *bench_data_file(struct bench *b, const char *name, struct error *e)
 {
     char path[BENCH_PATH_LEN + 64];
     snprintf(path, sizeof path, "%s/%s", b->data_dir, name);
+    errno = 0;
     FILE *f = fopen(path, "w");
     if (!f)
-        snprintf(err, errlen, "cannot write %s", path);
+        error_set(e, error_status_of_errno(errno), NULL, "cannot write %s", path);
     return f;
 }

@@ -551,43 +551,34 @@ static void measure_sweeps(struct slice_job *jobs, int n_jobs, double min_second
 }
 
 static int check_arguments(const struct model *m, enum integration_method method, int n_rays, int steps_per_call,
-                           double min_seconds, char *err, size_t errlen)
+                           double min_seconds, struct error *e)
 {
-    if (m->type == MODEL_FLAT) {
-        snprintf(err, errlen, "the flat model integrates nothing (its rays are single straight segments): "
-                              "measure the CPU limit with a curved model");
-        return -1;
-    }
-    if (force_law_of(m) < 0) {
-        snprintf(err, errlen, "unknown model type %d", (int)m->type);
-        return -1;
-    }
-    if (method != METHOD_EULER && method != METHOD_RK4) {
-        snprintf(err, errlen, "unknown integration method %d: use euler or rk4", (int)method);
-        return -1;
-    }
-    if (n_rays < 1 || steps_per_call < 1) {
-        snprintf(err, errlen, "%d rays and %d steps per sweep: both must be at least 1", n_rays, steps_per_call);
-        return -1;
-    }
-    if (!(min_seconds >= 0.0 && isfinite(min_seconds))) {
-        snprintf(err, errlen, "measuring time %g s: give a finite time of 0 s or more", min_seconds);
-        return -1;
-    }
+    /* no command takes these from its user: a wrong one is the program's, ERROR_RUNTIME */
+    if (m->type == MODEL_FLAT)
+        return error_set(e, ERROR_RUNTIME, NULL, "the flat model integrates nothing (its rays are single straight "
+                         "segments): measure the CPU limit with a curved model");
+    if (force_law_of(m) < 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "unknown model type %d", (int)m->type);
+    if (method != METHOD_EULER && method != METHOD_RK4)
+        return error_set(e, ERROR_RUNTIME, NULL, "unknown integration method %d: use euler or rk4", (int)method);
+    if (n_rays < 1 || steps_per_call < 1)
+        return error_set(e, ERROR_RUNTIME, NULL, "%d rays and %d steps per sweep: both must be at least 1", n_rays,
+                         steps_per_call);
+    if (!(min_seconds >= 0.0 && isfinite(min_seconds)))
+        return error_set(e, ERROR_RUNTIME, NULL, "measuring time %g s: give a finite time of 0 s or more",
+                         min_seconds);
     return 0;
 }
 
 int cpu_limit_measure(const struct model *m, enum integration_method method, int n_rays, int steps_per_call,
-                      int threads, double min_seconds, struct cpu_limit_result *out, char *err, size_t errlen)
+                      int threads, double min_seconds, struct cpu_limit_result *out, struct error *e)
 {
     memset(out, 0, sizeof *out);
-    if (check_arguments(m, method, n_rays, steps_per_call, min_seconds, err, errlen) != 0)
+    if (check_arguments(m, method, n_rays, steps_per_call, min_seconds, e) != 0)
         return -1;
     struct ray_arrays rays;
-    if (rays_alloc(&rays, (size_t)n_rays) != 0) {
-        snprintf(err, errlen, "out of memory for %d rays: measure with fewer", n_rays);
-        return -1;
-    }
+    if (rays_alloc(&rays, (size_t)n_rays) != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory for %d rays: measure with fewer", n_rays);
     rays_start(&rays, m);
     struct float_model fm;
     float_model_init(m, &fm);

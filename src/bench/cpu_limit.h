@@ -5,6 +5,7 @@
 #ifndef BT_CPU_LIMIT_H
 #define BT_CPU_LIMIT_H
 #include <stddef.h>
+#include "io/error.h"
 #include "physics/model.h"
 
 struct cpu_limit_result {
@@ -20,9 +21,10 @@ struct cpu_limit_result {
  * and heading inward at up to 45 degrees off the centre) with the model's float arithmetic,
  * steps_per_call steps per ray per sweep, repeating sweeps until min_seconds have elapsed (one warm-up
  * sweep first is not counted). threads <= 0: one per online core. Every model of enum model_type but
- * MODEL_FLAT, which integrates nothing. 0 ok, -1 with err. */
+ * MODEL_FLAT, which integrates nothing. 0 ok, or -1 with e (no place; ERROR_RUNTIME: arguments
+ * outside those ranges, which no command takes from its user, or no memory for the rays). */
 int cpu_limit_measure(const struct model *m, enum integration_method method, int n_rays, int steps_per_call,
-                      int threads, double min_seconds, struct cpu_limit_result *out, char *err, size_t errlen);
+                      int threads, double min_seconds, struct cpu_limit_result *out, struct error *e);
 
 /* One step of size h for one ray in float, the arithmetic of the measured kernel (for tests); the
  * kernel's freeze of rays that left the bounding sphere or stopped being finite is not applied.

@@ -17,7 +17,7 @@
 static const char *const section_names[] = {"table1", "figure5", "unrolling", "batching", "early-z", "pareto",
                                             "pipelines", "limit", "relativity", "antialias", "stars", "kiosk"};
 #define N_SECTIONS (int)(sizeof section_names / sizeof section_names[0])
-static int (*const sections[N_SECTIONS])(struct bench *, char *, size_t) = {
+static int (*const sections[N_SECTIONS])(struct bench *, struct error *) = {
     bench_table1, bench_figure5, bench_unrolling, bench_batching, bench_early_z, bench_pareto, bench_pipelines,
     bench_limit, bench_relativity, bench_antialias, bench_stars, bench_kiosk};
 /* configurations each section times (for the progress count) */
@@ -184,11 +184,10 @@ int cmd_bench(int argc, char **argv)
     int prepared = out ? prepare_out(&b, out, force, md_path, sizeof md_path) : EXIT_OK;
     if (prepared != EXIT_OK)
         return prepared;
-    char err[2048];
-    struct error ge;
-    b.ctx = gl_context_create(backend, &ge);
+    struct error e;
+    b.ctx = gl_context_create(backend, &e);
     if (!b.ctx) {
-        fprintf(stderr, "bentray bench: %s\n", ge.message);
+        fprintf(stderr, "bentray bench: %s\n", e.message);
         return EXIT_RUNTIME;
     }
     snprintf(b.backend, sizeof b.backend, "%s", b.ctx->backend);
@@ -207,10 +206,13 @@ int cmd_bench(int argc, char **argv)
                   "the scripts in `docs/bench/`); every figure below comes from that run.%s\n\n",
             b.quick ? " **Quick mode: tiny frames, the figures mean nothing.**" : "");
     machine_line(b.md, &b);
+    /* a section that fails ends the bench with 1, whatever its error's status */
     int rc = EXIT_OK;
+    error_clear(&e);
     for (int k = 0; k < N_SECTIONS && rc == EXIT_OK; k++)
-        if (wanted[k] && sections[k](&b, err, sizeof err) != 0) {
-            fprintf(stderr, "bentray bench: %s: %s\n", section_names[k], err);
+        if (wanted[k] && sections[k](&b, &e) != 0) {
+            fprintf(stderr, "bentray bench: %s: %s%s%s\n", section_names[k], e.where, e.where[0] ? ": " : "",
+                    e.message);
             rc = EXIT_RUNTIME;
         }
     fprintf(b.md, "Total bench time: %.0f s.\n", bench_now() - b.started);

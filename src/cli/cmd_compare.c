@@ -23,9 +23,8 @@ static int load(const char *path, struct dump *d)
         fprintf(stderr, "bentray compare: %s\n", e.message);
         return rc == DUMP_READ_NO_MEMORY ? EXIT_RUNTIME : EXIT_USAGE;
     }
-    char err[512];
-    if (compare_dump_check(d, err, sizeof err) != 0) {
-        fprintf(stderr, "bentray compare: %s: %s\n", path, err);
+    if (compare_dump_check(d, &e) != 0) {
+        fprintf(stderr, "bentray compare: %s: %s\n", path, e.message);
         dump_free(d);
         return EXIT_USAGE;
     }
@@ -80,10 +79,10 @@ int cmd_compare(int argc, char **argv)
         return loaded;
     }
     struct compare_result r;
-    char err[512];
-    int rc = compare_dumps(&a, &b, &r, err, sizeof err);
+    struct error e;
+    int rc = compare_dumps(&a, &b, &r, &e);
     if (rc != 0)
-        fprintf(stderr, "bentray compare: %s: %s (reference: %s)\n", paths[0], err, paths[1]);
+        fprintf(stderr, "bentray compare: %s: %s (reference: %s)\n", paths[0], e.message, paths[1]);
     else if (json)
         compare_print_json(stdout, &r);
     else

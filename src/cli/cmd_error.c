@@ -69,7 +69,6 @@ int cmd_error(int argc, char **argv)
     struct cpu_render_options cpu_opt;
     options_cpu(&o, &s, &cpu_opt);
     struct measured gpu, cpu;
-    char err[2048];
     struct error e;
     if (measure_gpu(&s, o.backend, 1, PROGRESS_AUTO, 0, &gpu, &e) != 0) {
         fprintf(stderr, "bentray error: GPU engine: %s\n", e.message);
@@ -82,8 +81,8 @@ int cmd_error(int argc, char **argv)
     }
     struct compare_result r;
     rc = EXIT_OK;
-    if (compare_dumps(&gpu.dump, &cpu.dump, &r, err, sizeof err) != 0) {
-        fprintf(stderr, "bentray error: %s\n", err);
+    if (compare_dumps(&gpu.dump, &cpu.dump, &r, &e) != 0) {
+        fprintf(stderr, "bentray error: %s\n", e.message);
         rc = EXIT_RUNTIME;
     } else if (json) {
         print_times(stdout, &gpu, &cpu, 1);

@@ -24,6 +24,7 @@ struct measured {
  * rows and samples on stderr (io/progress.h). */
 int measure_gpu(const struct scene *s, const char *backend, int need_state, enum progress_mode progress, int hdr,
                 struct measured *m, struct error *e);
+/* The CPU reference: 0, or -1 with cpu_render's error, its status always ERROR_RUNTIME (exit 1). */
 int measure_cpu(const struct scene *s, const struct cpu_render_options *o, struct measured *m, struct error *e);
 void measured_free(struct measured *m);
 

@@ -39,8 +39,10 @@ struct input_source *input_open_script(const struct kiosk_input *in, int index, 
     if (!src)
         return NULL;
     struct script_source *s = src->priv;
-    char err[600];
-    if (script_load(&s->script, src->cfg->path, err, sizeof err) != 0) {
+    struct error e;
+    if (script_load(&s->script, src->cfg->path, &e) != 0) {
+        char err[600];
+        error_format(&e, err, sizeof err);
         fprintf(log, "input %s: %s; the script is not replayed\n", src->cfg->name, err);
         src->finished = 1;
         return src;

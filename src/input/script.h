@@ -12,6 +12,7 @@
 #ifndef BT_SCRIPT_H
 #define BT_SCRIPT_H
 #include <stddef.h>
+#include "io/error.h"
 #include "input/input_settings.h"
 
 #define SCRIPT_MAX_EVENTS 4096
@@ -36,7 +37,9 @@ struct script {
     int n;
 };
 
-/* 0, or -1 with "FILE:LINE: what is wrong" in err. */
-int script_load(struct script *sc, const char *path, char *err, size_t errlen);
+/* 0, or -1 with e: where "FILE:LINE" and what is wrong (ERROR_INPUT), or where FILE alone when the
+ * file cannot be read (error_status_of_errno: a missing or refused file, a FIFO or one too large
+ * is the user's, no memory or an I/O error the machine's). */
+int script_load(struct script *sc, const char *path, struct error *e);
 
 #endif

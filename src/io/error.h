@@ -34,7 +34,7 @@ void error_clear(struct error *e);
 /* "PROGRAM: WHERE: error: MESSAGE" (the parts that are there) on OUT. */
 void error_print(const struct error *e, const char *program, FILE *out);
 /* "WHERE: MESSAGE", or MESSAGE alone where E names no place, into BUF (cut to LEN bytes), for a
- * caller that still reports in a buffer of its own. Returns -1, as error_set does. */
+ * caller that writes the error into a line of its own. Returns -1, as error_set does. */
 int error_format(const struct error *e, char *buf, size_t len);
 
 #endif

@@ -20,6 +20,9 @@
 #include <time.h>
 
 #define KIOSK_MAX_EVENTS 256         /* drained per turn; the rest waits for the next turn */
+/* The arguments of "%s%s%s" that write a struct error as "WHERE: MESSAGE" (MESSAGE alone where it
+ * names no place), as the log says every failure. */
+#define ERROR_TEXT(e) (e)->where, (e)->where[0] ? ": " : "", (e)->message
 
 static volatile sig_atomic_t stop_requested;
 
@@ -142,7 +145,7 @@ static void hud_view_of(struct kiosk *k, struct hud_view *v)
 }
 
 /* Redraws the HUD image when its text changed; returns 1 when it did. */
-static int update_hud(struct kiosk *k, char *err, size_t errlen, int *failed)
+static int update_hud(struct kiosk *k, struct error *e, int *failed)
 {
     *failed = 0;
     if (!k->font)
@@ -152,7 +155,7 @@ static int update_hud(struct kiosk *k, char *err, size_t errlen, int *failed)
         /* a window can be resized: the HUD is drawn at the screen's size */
         unsigned char *grown = realloc(k->hud_rgba, (size_t)w * h * 4);
         if (!grown) {
-            snprintf(err, errlen, "out of memory for the HUD at %dx%d", w, h);
+            error_set(e, ERROR_RUNTIME, NULL, "out of memory for the HUD at %dx%d", w, h);
             *failed = 1;
             return 0;
         }
@@ -176,34 +179,22 @@ static int update_hud(struct kiosk *k, char *err, size_t errlen, int *failed)
         return 0;
     memcpy(k->hud_text, text, sizeof text);
     hud_draw(k->font, k->hud_rgba, w, h, &v);
-    struct error e;
-    if (compositor_set_hud(&k->view.comp, k->hud_rgba, w, h, &e) != 0) {
-        error_format(&e, err, errlen);
+    if (compositor_set_hud(&k->view.comp, k->hud_rgba, w, h, e) != 0)
         *failed = 1;
-    }
     return 1;
 }
 
-static int write_frame(struct kiosk *k, char *err, size_t errlen)
+static int write_frame(struct kiosk *k, struct error *e)
 {
     const struct screen *s = k->screen;
     char path[KIOSK_PATH_LEN + 32];
     snprintf(path, sizeof path, "%s/frame_%04d.png", k->cfg->display.headless_out, k->frames_written + 1);
     unsigned char *rgba = malloc((size_t)s->width * s->height * 4);
-    if (!rgba) {
-        snprintf(err, errlen, "out of memory writing %s", path);
-        return -1;
-    }
-    struct error e;
-    int rc = compositor_read_screen(s, rgba, &e);
-    if (rc != 0) {
-        error_format(&e, err, errlen);
-    } else {
-        struct error fe;
-        rc = png_write_rgba8(path, s->width, s->height, rgba, k->opt->force, &fe);
-        if (rc != 0)
-            snprintf(err, errlen, "%s", fe.message);
-    }
+    if (!rgba)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory writing %s", path);
+    int rc = compositor_read_screen(s, rgba, e);
+    if (rc == 0)
+        rc = png_write_rgba8(path, s->width, s->height, rgba, k->opt->force, e);
     free(rgba);
     if (rc == 0)
         k->frames_written++;
@@ -359,8 +350,8 @@ static void start_attract(struct kiosk *k)
     fprintf(k->log, "attract mode: no input for %d s, playing the tour\n", k->cfg->kiosk.idle_seconds);
 }
 
-/* One turn of the loop; 1 to go on, 0 to stop, -1 on failure (err). */
-static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
+/* One turn of the loop; 1 to go on, 0 to stop, -1 on failure (e). */
+static int kiosk_turn(struct kiosk *k, struct error *e)
 {
     double started = input_clock();
     const char *did = "reading inputs";
@@ -378,23 +369,22 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
     }
     /* the view knows which scene it holds: a change of scene (or none loaded yet) loads it */
     int loading = k->view.scene_index != k->state.scene;
-    struct error e;
     if (loading) {
         did = "loading the scene, then drawing its preview";
-        if (kiosk_view_load(&k->view, k->state.scene, &k->scenes[k->state.scene], &e) != 0)
-            return error_format(&e, err, errlen);
+        if (kiosk_view_load(&k->view, k->state.scene, &k->scenes[k->state.scene], e) != 0)
+            return -1;
         changed = 1;
     }
     int drew = 0;
     if (changed) {
         did = loading ? did : "drawing a preview";
-        if (kiosk_view_preview(&k->view, &k->state, &e) != 0)
-            return error_format(&e, err, errlen);
+        if (kiosk_view_preview(&k->view, &k->state, e) != 0)
+            return -1;
         drew = 1;
     } else if (!kiosk_view_refined(&k->view)) {
         did = kiosk_view_preview_pending(&k->view) ? "drawing a tile of the preview" : "refining the frame";
-        if (kiosk_view_refine(&k->view, &e) != 0)
-            return error_format(&e, err, errlen);
+        if (kiosk_view_refine(&k->view, e) != 0)
+            return -1;
         drew = 1;
     }
     k->draws_this_second += drew;
@@ -405,20 +395,20 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
         k->second_start = k->now;
     }
     int hud_failed;
-    int hud_changed = update_hud(k, err, errlen, &hud_failed);
+    int hud_changed = update_hud(k, e, &hud_failed);
     if (hud_failed)
         return -1;
     if (drew || hud_changed || k->turn == 0 || k->screen->redraw) {
         k->screen->redraw = 0;
-        if (compositor_draw(&k->view.comp, k->screen, &e) != 0 || k->screen->present(k->screen, &e) != 0)
-            return error_format(&e, err, errlen);
+        if (compositor_draw(&k->view.comp, k->screen, e) != 0 || k->screen->present(k->screen, e) != 0)
+            return -1;
         if (k->turn == 0)
             service_ready();
     }
     /* frames are files of the headless screen only: a script's 'frame' means nothing on a display */
     int limit = k->cfg->display.headless_frames;
     for (int f = 0; f < frames && k->virtual_clock; f++) {
-        if (write_frame(k, err, errlen) != 0)
+        if (write_frame(k, e) != 0)
             return -1;
         if (limit > 0 && k->frames_written >= limit)
             return 0;
@@ -444,45 +434,42 @@ static int kiosk_turn(struct kiosk *k, char *err, size_t errlen)
 /* Every image a scene shows (its textures, the six faces of its sky), decoded now and kept for the
  * whole run (io/image_cache.h): a file changed or cut short on disk later does not reach the
  * kiosk, and a scene change reads no file. A file that does not decode is named with the scene
- * file's line of the key that named it (the image's message cut at 399 characters, to
- * leave room for the scene file's name). */
-static int keep_scene_images(const struct scene *s, char *err, size_t errlen)
+ * file's line of the key that named it, its place (the image's message cut at 399 characters),
+ * and the image's status. */
+static int keep_scene_images(const struct scene *s, struct error *e)
 {
     int w, h, owned;
     const unsigned char *rgba;
     struct error fe;
+    char where[SCENE_PATH_LEN + 16];
     for (int i = 0; i < s->n_textures; i++)
         if (image_read(s->textures[i], SCENE_MAX_TEXTURE_SIZE, &w, &h, &rgba, &owned, &fe) != 0) {
-            snprintf(err, errlen, "%s:%d: texture: %.399s", s->path, s->texture_line[i], fe.message);
-            return -1;
+            snprintf(where, sizeof where, "%s:%d", s->path, s->texture_line[i]);
+            return error_set(e, fe.status, where, "texture: %.399s", fe.message);
         }
     for (int f = 0; s->sky.type == SKY_CUBEMAP && f < SCENE_CUBEMAP_FACES; f++) {
         char path[SCENE_PATH_LEN + 16];
         scene_cubemap_face_path(s->sky.cubemap, f, path, sizeof path);
         if (image_read(path, SCENE_MAX_TEXTURE_SIZE, &w, &h, &rgba, &owned, &fe) != 0) {
-            snprintf(err, errlen, "%s:%d: cubemap: %.399s", s->path, s->cubemap_line, fe.message);
-            return -1;
+            snprintf(where, sizeof where, "%s:%d", s->path, s->cubemap_line);
+            return error_set(e, fe.status, where, "cubemap: %.399s", fe.message);
         }
     }
     return 0;
 }
 
 /* Everything a run needs that a person could have got wrong, checked before anything is shown:
- * the scene files, the scripts, the font, where headless frames go. 0, or -1 with err. */
-static int preflight(struct kiosk *k, char *err, size_t errlen)
+ * the scene files, the scripts, the font, where headless frames go. 0, or -1 with e. */
+static int preflight(struct kiosk *k, struct error *e)
 {
     const struct kiosk_config *c = k->cfg;
     k->scenes = calloc((size_t)c->kiosk.n_scenes, sizeof *k->scenes);
-    if (!k->scenes) {
-        snprintf(err, errlen, "out of memory for %d scenes", c->kiosk.n_scenes);
-        return -1;
-    }
+    if (!k->scenes)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory for %d scenes", c->kiosk.n_scenes);
     for (int i = 0; i < c->kiosk.n_scenes; i++) {
         struct error serr;
-        if (scene_load(&k->scenes[i], c->kiosk.scenes[i], &serr) != 0) {
-            snprintf(err, errlen, "%.600s: %.1024s", serr.where, serr.message);
+        if (scene_load(&k->scenes[i], c->kiosk.scenes[i], e) != 0)
             return -1;
-        }
         if (k->scenes[i].render.samples > 1 && k->log)
             fprintf(k->log, "%s: render.samples = %d is for bentray render's images; the kiosk traces one ray a "
                             "pixel, its refined frame at the screen's own resolution\n", c->kiosk.scenes[i],
@@ -495,11 +482,9 @@ static int preflight(struct kiosk *k, char *err, size_t errlen)
         struct kiosk_state start;
         kiosk_state_reset(&start, c);
         start.scene = i;
-        if (kiosk_state_apply(&start, &k->scenes[i], &trial, &serr) != 0) {
-            snprintf(err, errlen, "%s: the knobs' start values (speed %g c, mass %g) do not fit %s: %.512s", c->path,
-                     c->speed.start, c->mass.start, c->kiosk.scenes[i], serr.message);
-            return -1;
-        }
+        if (kiosk_state_apply(&start, &k->scenes[i], &trial, &serr) != 0)
+            return error_set(e, ERROR_INPUT, c->path, "the knobs' start values (speed %g c, mass %g) do not fit %s: "
+                             "%.512s", c->speed.start, c->mass.start, c->kiosk.scenes[i], serr.message);
         /* a black hole whose mass the [mass] knob sets directly (no [kiosk] mass_key): at the knob's
          * largest mass its shadow spans at most the share of the view a scene's [kiosk] may reach */
         const struct scene *sc = &k->scenes[i];
@@ -515,98 +500,96 @@ static int preflight(struct kiosk *k, char *err, size_t errlen)
                 else
                     snprintf(what, sizeof what, "cast a shadow %.0f degrees across, over %.0f%% of the view's height",
                              across, 100.0 * SCENE_KIOSK_SHADOW_MAX_FRACTION);
-                snprintf(err, errlen, "%s: [mass] max = %g would make the black hole of %s %s: give the scene a [kiosk] "
-                         "section (mass_key = model.mass, mass_min, mass_max at most %.3g, mass_steps; "
-                         "docs/SCENES.md) or lower [mass] max", c->path, c->mass.max, c->kiosk.scenes[i], what,
-                         scene_mass_for_shadow(sc, limit));
-                return -1;
+                return error_set(e, ERROR_INPUT, c->path, "[mass] max = %g would make the black hole of %s %s: give "
+                                 "the scene a [kiosk] section (mass_key = model.mass, mass_min, mass_max at most "
+                                 "%.3g, mass_steps; docs/SCENES.md) or lower [mass] max", c->mass.max,
+                                 c->kiosk.scenes[i], what, scene_mass_for_shadow(sc, limit));
             }
         }
     }
-    struct error e;
-    if (kiosk_image_memory_check(c, k->scenes, &e) != 0)
-        return error_format(&e, err, errlen);
+    if (kiosk_image_memory_check(c, k->scenes, e) != 0)
+        return -1;
     image_cache_keep(1);
     for (int i = 0; i < c->kiosk.n_scenes; i++)
-        if (keep_scene_images(&k->scenes[i], err, errlen) != 0)
+        if (keep_scene_images(&k->scenes[i], e) != 0)
             return -1;
     static struct script sc;
     for (int i = 0; i < c->n_inputs; i++)
-        if (c->inputs[i].type == KIOSK_INPUT_SCRIPT && script_load(&sc, c->inputs[i].path, err, errlen) != 0)
+        if (c->inputs[i].type == KIOSK_INPUT_SCRIPT && script_load(&sc, c->inputs[i].path, e) != 0)
             return -1;
-    if (c->attract.enabled && script_load(&k->tour, c->attract.script, err, errlen) != 0)
+    if (c->attract.enabled && script_load(&k->tour, c->attract.script, e) != 0)
         return -1;
     return 0;
 }
 
-static int headless_preflight(const struct kiosk *k, char *err, size_t errlen)
+/* The directory headless frames go to: named, there, a directory, and without a frame of an
+ * earlier run (unless --force). 0, or -1 with e, the configuration file its place; a directory
+ * that cannot be looked at has its status from error_status_of_errno. */
+static int headless_preflight(const struct kiosk *k, struct error *e)
 {
     const struct kiosk_display *d = &k->cfg->display;
     struct stat st;
-    if (d->headless_out[0] == '\0') {
-        snprintf(err, errlen, "%s: [display] headless_out: the headless screen needs a directory for its frames",
-                 k->cfg->path);
-        return -1;
-    }
+    if (d->headless_out[0] == '\0')
+        return error_set(e, ERROR_INPUT, k->cfg->path,
+                         "[display] headless_out: the headless screen needs a directory for its frames");
     if (stat(d->headless_out, &st) != 0) {
-        snprintf(err, errlen, "%s: [display] headless_out: %s: %s", k->cfg->path, d->headless_out, strerror(errno));
-        return -1;
+        int en = errno;
+        return error_set(e, error_status_of_errno(en), k->cfg->path, "[display] headless_out: %s: %s",
+                         d->headless_out, strerror(en));
     }
-    if (!S_ISDIR(st.st_mode)) {
-        snprintf(err, errlen, "%s: [display] headless_out: %s is not a directory", k->cfg->path, d->headless_out);
-        return -1;
-    }
+    if (!S_ISDIR(st.st_mode))
+        return error_set(e, ERROR_INPUT, k->cfg->path, "[display] headless_out: %s is not a directory",
+                         d->headless_out);
     /* any frame of an earlier run, not only the first: a stray frame_0007.png would otherwise
      * stop the kiosk at its seventh frame */
     DIR *dir = opendir(d->headless_out);
     if (!dir) {
-        snprintf(err, errlen, "%s: [display] headless_out: %s: %s", k->cfg->path, d->headless_out, strerror(errno));
-        return -1;
+        int en = errno;
+        return error_set(e, error_status_of_errno(en), k->cfg->path, "[display] headless_out: %s: %s",
+                         d->headless_out, strerror(en));
     }
     int rc = 0;
-    for (struct dirent *e; rc == 0 && (e = readdir(dir));) {
+    for (struct dirent *de; rc == 0 && (de = readdir(dir));) {
         unsigned number;
         int end = 0;
-        if (sscanf(e->d_name, "frame_%u.png%n", &number, &end) != 1 || end == 0 || e->d_name[end] != '\0')
+        if (sscanf(de->d_name, "frame_%u.png%n", &number, &end) != 1 || end == 0 || de->d_name[end] != '\0')
             continue;
         char path[KIOSK_PATH_LEN + 300];
-        snprintf(path, sizeof path, "%s/%s", d->headless_out, e->d_name);
+        snprintf(path, sizeof path, "%s/%s", d->headless_out, de->d_name);
         struct error why;
-        if (output_check(path, k->opt->force, &why) != 0) {
-            /* the reason cut at 599 characters, to leave room for the rest */
-            snprintf(err, errlen, "[display] headless_out: %.599s: a frame of an earlier run", why.message);
-            rc = -1;
-        }
+        /* the reason cut at 599 characters, as it always was */
+        if (output_check(path, k->opt->force, &why) != 0)
+            rc = error_set(e, why.status, NULL, "[display] headless_out: %.599s: a frame of an earlier run",
+                           why.message);
     }
     closedir(dir);
     return rc;
 }
 
 /* The screen. A KMS display with nothing plugged in is waited for (the monitor may be switched on
- * after the kiosk), logged once; auto says which back-ends it passed over. */
-static struct screen *open_screen(struct kiosk *k, char *err, size_t errlen)
+ * after the kiosk), logged once; auto says which back-ends it passed over. NULL with e. */
+static struct screen *open_screen(struct kiosk *k, struct error *e)
 {
     const struct kiosk_config *c = k->cfg;
     int logged = 0;
     for (;;) {
-        struct error e;
-        error_clear(&e);
-        struct screen *s = screen_open(&c->display, c->kiosk.width, c->kiosk.height, k->opt->gl_backend, &e);
-        error_format(&e, err, errlen);
+        error_clear(e);
+        struct screen *s = screen_open(&c->display, c->kiosk.width, c->kiosk.height, k->opt->gl_backend, e);
         if (s) {
-            if (c->display.backend == KIOSK_BACKEND_AUTO && err[0])
-                fprintf(k->log, "bentray kiosk: display %s (passed over: %s)\n", s->name, err);
+            if (c->display.backend == KIOSK_BACKEND_AUTO && (e->where[0] || e->message[0]))
+                fprintf(k->log, "bentray kiosk: display %s (passed over: %s%s%s)\n", s->name, ERROR_TEXT(e));
             if (logged)
                 fprintf(k->log, "bentray kiosk: display connected\n");
             return s;
         }
-        if (c->display.backend != KIOSK_BACKEND_KMS || !strstr(err, "no connected connector") || stop_requested)
+        if (c->display.backend != KIOSK_BACKEND_KMS || !strstr(e->message, "no connected connector") || stop_requested)
             return NULL;
         if (!logged++)
-            fprintf(k->log, "bentray kiosk: %s; trying again every %.0f s\n", err, KIOSK_DISPLAY_RETRY_SECONDS);
+            fprintf(k->log, "bentray kiosk: %s%s%s; trying again every %.0f s\n", ERROR_TEXT(e),
+                    KIOSK_DISPLAY_RETRY_SECONDS);
         /* before READY the service manager counts start-up time, not the watchdog: ask for more */
         service_extend_timeout(3.0 * KIOSK_DISPLAY_RETRY_SECONDS);
-        service_status("waiting for a monitor: %s", err);
+        service_status("waiting for a monitor: %s%s%s", ERROR_TEXT(e));
         struct timespec wait = {(time_t)KIOSK_DISPLAY_RETRY_SECONDS, 0};
         nanosleep(&wait, NULL);
     }
@@ -630,12 +613,10 @@ static int open_hud(struct kiosk *k)
 {
     if (!k->cfg->kiosk.hud)
         return 0;
-    char err[600];
     struct error e;
     k->font = hud_font_open(k->cfg->kiosk.font, &e);
     if (!k->font) {
-        error_format(&e, err, sizeof err);
-        fprintf(k->log, "HUD: %s; the kiosk runs without it\n", err);
+        fprintf(k->log, "HUD: %s%s%s; the kiosk runs without it\n", ERROR_TEXT(&e));
         return 0;
     }
     k->hud_width = k->screen->width;
@@ -651,28 +632,30 @@ enum kiosk_status kiosk_run(const struct kiosk_config *c, const struct kiosk_run
     k.cfg = c;
     k.opt = o;
     k.log = o->log;
-    char err[2048];
-    if (preflight(&k, err, sizeof err) != 0) {
-        fprintf(k.log, "bentray kiosk: %s\n", err);
+    /* the run's status is its own (enum kiosk_status), whatever the status of its error */
+    struct error e;
+    error_clear(&e);
+    if (preflight(&k, &e) != 0) {
+        fprintf(k.log, "bentray kiosk: %s%s%s\n", ERROR_TEXT(&e));
         free(k.scenes);
         return KIOSK_BAD_CONFIG;
     }
     int headless = c->display.backend == KIOSK_BACKEND_HEADLESS;
-    if (headless && headless_preflight(&k, err, sizeof err) != 0) {
-        fprintf(k.log, "bentray kiosk: %s\n", err);
+    if (headless && headless_preflight(&k, &e) != 0) {
+        fprintf(k.log, "bentray kiosk: %s%s%s\n", ERROR_TEXT(&e));
         free(k.scenes);
         return KIOSK_BAD_CONFIG;
     }
     catch_stop_signals();
-    k.screen = open_screen(&k, err, sizeof err);
+    k.screen = open_screen(&k, &e);
     if (!k.screen) {
-        fprintf(k.log, "bentray kiosk: no screen: %s\n", err);
+        fprintf(k.log, "bentray kiosk: no screen: %s%s%s\n", ERROR_TEXT(&e));
         free(k.scenes);
         return stop_requested ? KIOSK_STOPPED : KIOSK_FAILED;
     }
     k.virtual_clock = strcmp(k.screen->name, "headless") == 0;
-    if (k.virtual_clock && !headless && headless_preflight(&k, err, sizeof err) != 0) {
-        fprintf(k.log, "bentray kiosk: %s\n", err);
+    if (k.virtual_clock && !headless && headless_preflight(&k, &e) != 0) {
+        fprintf(k.log, "bentray kiosk: %s%s%s\n", ERROR_TEXT(&e));
         kiosk_close(&k);
         return KIOSK_BAD_CONFIG;
     }
@@ -683,10 +666,8 @@ enum kiosk_status kiosk_run(const struct kiosk_config *c, const struct kiosk_run
         fprintf(k.log, "bentray kiosk: %s\n", k.screen->note);
     k.screen->log = k.log;
     enum kiosk_status rc = KIOSK_STOPPED;
-    struct error e;
     if (kiosk_view_init(&k.view, c, k.screen->gl, &e) != 0) {
-        error_format(&e, err, sizeof err);
-        fprintf(k.log, "bentray kiosk: %s\n", err);
+        fprintf(k.log, "bentray kiosk: %s%s%s\n", ERROR_TEXT(&e));
         kiosk_close(&k);
         return KIOSK_FAILED;
     }
@@ -707,9 +688,9 @@ enum kiosk_status kiosk_run(const struct kiosk_config *c, const struct kiosk_run
     /* the first turn loads the start scene into the view (none is loaded yet) and draws it */
     kiosk_state_reset(&k.state, c);
     for (;;) {
-        int r = kiosk_turn(&k, err, sizeof err);
+        int r = kiosk_turn(&k, &e);
         if (r < 0) {
-            fprintf(k.log, "bentray kiosk: %s\n", err);
+            fprintf(k.log, "bentray kiosk: %s%s%s\n", ERROR_TEXT(&e));
             rc = KIOSK_FAILED;
             break;
         }

@@ -382,8 +382,8 @@ static double seconds_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-/* One row: its orbit traced, sampled, its chord schedule. 0, or -1 with err. */
-static int build_row(struct orbit_table *t, int row, double *phi_s, char *err, size_t errlen)
+/* One row: its orbit traced, sampled, its chord schedule. 0, or -1 with e. */
+static int build_row(struct orbit_table *t, int row, double *phi_s, struct error *e)
 {
     const struct orbit_table_params *p = &t->p;
     int cols = p->columns;
@@ -395,9 +395,9 @@ static int build_row(struct orbit_table *t, int row, double *phi_s, char *err, s
         captured != (side == ORBIT_CAPTURED)) {
         if (captured >= 0)
             knots_free(&k);
-        snprintf(err, errlen, "orbit table: the orbit launched at %.17g rad (critical %.17g, M = %.17g, r_o = %.17g) "
-                 "did not end as its side of the critical angle says", psi, t->psi_c, p->mass, p->r_observer);
-        return -1;
+        return error_set(e, ERROR_RUNTIME, NULL, "orbit table: the orbit launched at %.17g rad (critical %.17g, "
+                         "M = %.17g, r_o = %.17g) did not end as its side of the critical angle says", psi, t->psi_c,
+                         p->mass, p->r_observer);
     }
     double phi_end = k.phi[k.n - 1];
     double *u = t->u + (size_t)row * cols, *du = t->du_ds + (size_t)row * cols;
@@ -422,8 +422,7 @@ static int build_row(struct orbit_table *t, int row, double *phi_s, char *err, s
     double sigma = row_warp(&k, p->mass, p->clear_radius, cols, warp);
     if (sigma < 0.0) {
         knots_free(&k);
-        snprintf(err, errlen, "orbit table: out of memory");
-        return -1;
+        return error_set(e, ERROR_RUNTIME, NULL, "orbit table: out of memory");
     }
     for (int m = 0; m < ORBIT_WARP_SAMPLES; m++) {
         float *texel = t->texels + ((size_t)row * t->width + cols + 1 + m) * 4;
@@ -448,7 +447,7 @@ struct row_worker {
     struct orbit_table *t;
     int first, stride, status;
     pthread_t thread;
-    char err[320];
+    struct error e;
 };
 
 static void *build_rows(void *arg)
@@ -457,23 +456,22 @@ static void *build_rows(void *arg)
     double *phi_s = malloc((size_t)w->t->p.columns * sizeof *phi_s);
     w->status = phi_s ? 0 : -1;
     if (!phi_s)
-        snprintf(w->err, sizeof w->err, "orbit table: out of memory");
+        error_set(&w->e, ERROR_RUNTIME, NULL, "orbit table: out of memory");
     for (int row = w->first; row < w->t->height && w->status == 0; row += w->stride)
-        w->status = build_row(w->t, row, phi_s, w->err, sizeof w->err);
+        w->status = build_row(w->t, row, phi_s, &w->e);
     free(phi_s);
     return NULL;
 }
 
-int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p, char *err, size_t errlen)
+int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p, struct error *e)
 {
     double t0 = seconds_now();
     memset(t, 0, sizeof *t);
     t->p = *p;
     if (!(p->mass > 0.0) || !(p->r_observer > 2.0 * p->mass) || !(p->r_far > p->r_observer) ||
-        p->rows_per_side < 4 || p->columns < 4 || p->max_segments < 1 || !(p->chord_tolerance > 0.0)) {
-        snprintf(err, errlen, "orbit table: needs M > 0, 2M < r_o < r_far, 4 rows and columns, a chord tolerance > 0");
-        return -1;
-    }
+        p->rows_per_side < 4 || p->columns < 4 || p->max_segments < 1 || !(p->chord_tolerance > 0.0))
+        return error_set(e, ERROR_RUNTIME, NULL,
+                         "orbit table: needs M > 0, 2M < r_o < r_far, 4 rows and columns, a chord tolerance > 0");
     t->psi_c = orbit_critical_angle(p->mass, p->r_observer);
     t->critical_from_axis = orbit_critical_from_axis(p->mass, p->r_observer, &t->critical_inward);
     t->psi_min = fmin(ORBIT_RADIAL_GAP, 0.5 * t->psi_c);
@@ -483,11 +481,9 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
         /* a small mass's capture cone (or an observer next to the horizon's escape cone) is narrower
          * than epsilon: its rows then start a thousandth of its width from psi_c */
         t->epsilon[side] = fmin(ORBIT_CRITICAL_EPSILON, 1e-3 * extent[side]);
-        if (!(extent[side] > 0.0) || !(t->epsilon[side] > 0.0)) {
-            snprintf(err, errlen, "orbit table: the observer at r = %.17g (M = %.17g) leaves no launch angles on one "
-                     "side of the critical angle %.17g", p->r_observer, p->mass, t->psi_c);
-            return -1;
-        }
+        if (!(extent[side] > 0.0) || !(t->epsilon[side] > 0.0))
+            return error_set(e, ERROR_RUNTIME, NULL, "orbit table: the observer at r = %.17g (M = %.17g) leaves no "
+                             "launch angles on one side of the critical angle %.17g", p->r_observer, p->mass, t->psi_c);
         t->log_span[side] = row_coordinate(extent[side], t->epsilon[side]);
     }
     t->u_observer = 1.0 / p->r_observer;
@@ -505,8 +501,7 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
     t->segments = calloc(rows, sizeof *t->segments);
     if (!t->texels || !t->u || !t->du_ds || !t->phi_over_sin || !t->phi_infinity_over_sin || !t->psi || !t->segments) {
         orbit_table_free(t);
-        snprintf(err, errlen, "orbit table: out of memory");
-        return -1;
+        return error_set(e, ERROR_RUNTIME, NULL, "orbit table: out of memory");
     }
     /* the rows are independent: one thread per core, at most ORBIT_MAX_THREADS */
     long cores = sysconf(_SC_NPROCESSORS_ONLN);
@@ -522,7 +517,7 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
     }
     build_rows(&workers[0]);
     int status = workers[0].status;
-    const char *why = workers[0].err;
+    const struct error *why = &workers[0].e;
     for (int i = 1; i < threads; i++) {
         if (started & (1 << i)) {
             pthread_join(workers[i].thread, NULL);
@@ -532,11 +527,11 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
         }
         if (workers[i].status != 0 && status == 0) {
             status = -1;
-            why = workers[i].err;
+            why = &workers[i].e;
         }
     }
     if (status != 0) {
-        snprintf(err, errlen, "%s", why);
+        *e = *why;
         orbit_table_free(t);
         return -1;
     }

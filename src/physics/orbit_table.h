@@ -18,6 +18,7 @@
 #ifndef BT_ORBIT_TABLE_H
 #define BT_ORBIT_TABLE_H
 #include <stddef.h>
+#include "io/error.h"
 #include "physics/model.h"
 
 enum orbit_side { ORBIT_ESCAPES, ORBIT_CAPTURED };
@@ -85,8 +86,9 @@ struct orbit_table {
     double build_seconds;
 };
 
-/* Build the table; 0, or -1 with err (bad parameters, out of memory, an orbit that does not end). */
-int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p, char *err, size_t errlen);
+/* Build the table; 0, or -1 with e (no place; ERROR_RUNTIME: bad parameters, out of memory, an
+ * orbit that does not end, all of which a validated scene never gives). */
+int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p, struct error *e);
 void orbit_table_free(struct orbit_table *t);
 
 /* orbit_critical_angle and orbit_critical_from_axis: physics/model.h */

@@ -211,7 +211,7 @@ static void run_rows(struct job *job, int threads, struct progress *p, int run, 
 
 /* With stars in the sky: each sample a whole image, its stars added from its neighbouring rays,
  * then averaged in linear light as the GPU's images are (the same order of samples as render_row). */
-static int render_with_stars(struct job *job, int threads, struct progress *p, char *err, size_t errlen)
+static int render_with_stars(struct job *job, int threads, struct progress *p, struct error *e)
 {
     const struct scene *s = job->scene;
     const struct pixel_samples *pattern = job->pattern;
@@ -226,12 +226,13 @@ static int render_with_stars(struct job *job, int threads, struct progress *p, c
     struct star_sky *stars = malloc(sizeof *stars);
     int rc = -1;
     if (!img.color || !img.direction || !img.sky || (pattern->n > 1 && !sum) || !stars) {
-        snprintf(err, errlen, "out of memory for the samples of a %dx%d image", s->render.width, s->render.height);
+        error_set(e, ERROR_RUNTIME, NULL, "out of memory for the samples of a %dx%d image", s->render.width,
+                  s->render.height);
         free(stars);
         stars = NULL;
         goto done;
     }
-    if (star_sky_init(stars, s, err, errlen) != 0)
+    if (star_sky_init(stars, s, e) != 0)
         goto done;
     job->image = &img;
     int centre_run = pattern->n > 1 && !pattern->centre_included;   /* the records' rays only */
@@ -275,13 +276,12 @@ done:
     return rc;
 }
 
-int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct cpu_image *out, char *err,
-               size_t errlen)
+int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct cpu_image *out, struct error *e)
 {
     memset(out, 0, sizeof *out);
     int w = s->render.width, h = s->render.height;
     struct cpu_materials materials;
-    if (cpu_materials_load(&materials, s, err, errlen) != 0) {
+    if (cpu_materials_load(&materials, s, e) != 0) {
         cpu_materials_free(&materials);
         return -1;
     }
@@ -294,8 +294,7 @@ int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct
     if (!out->rgba || !out->dump.records || (o->hdr && !out->color)) {
         cpu_materials_free(&materials);
         cpu_image_free(out);
-        snprintf(err, errlen, "out of memory for a %dx%d image", w, h);
-        return -1;
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory for a %dx%d image", w, h);
     }
     out->dump.width = w;
     out->dump.height = h;
@@ -314,7 +313,7 @@ int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct
     struct progress p;
     progress_begin(&p, o->progress);
     if (star_sky_wanted(s))
-        rc = render_with_stars(&job, n, &p, err, errlen);
+        rc = render_with_stars(&job, n, &p, e);
     else
         run_rows(&job, n, &p, 0, 1);
     progress_end(&p);

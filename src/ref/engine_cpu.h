@@ -26,9 +26,9 @@ struct cpu_image {
     int threads;          /* worker threads that ran */
 };
 
-/* Render scene s (its render.width x render.height). 0 ok, -1 with err (missing texture, memory). */
-int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct cpu_image *out, char *err,
-               size_t errlen);
+/* Render scene s (its render.width x render.height). 0 ok, or -1 with e: a texture that cannot be read
+ * (cpu_materials_load's error, its status with it), or out of memory (the machine's). */
+int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct cpu_image *out, struct error *e);
 void cpu_image_free(struct cpu_image *img);
 /* The dump record of one traced ray with its colour. */
 void ref_ray_to_record(const struct ref_ray *ray, const unsigned char rgba[4], struct dump_record *rec);

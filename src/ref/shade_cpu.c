@@ -7,16 +7,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *err, size_t errlen)
+int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, struct error *e)
 {
     *mat = (struct cpu_materials){.scene = s};
-    struct error fe;
     for (int i = 0; i < s->n_textures; i++) {
         struct cpu_texture *t = &mat->textures[i];
-        if (png_read_rgba8(s->textures[i], SCENE_MAX_TEXTURE_SIZE, &t->width, &t->height, &t->rgba, &fe) != 0) {
-            snprintf(err, errlen, "%s", fe.message);
+        if (png_read_rgba8(s->textures[i], SCENE_MAX_TEXTURE_SIZE, &t->width, &t->height, &t->rgba, e) != 0)
             return -1;
-        }
     }
     if (s->sky.type == SKY_CUBEMAP) {
         mat->has_sky_cubemap = 1;
@@ -24,10 +21,8 @@ int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *e
             char path[SCENE_PATH_LEN + 16];
             scene_cubemap_face_path(s->sky.cubemap, f, path, sizeof path);
             struct cpu_texture *t = &mat->sky[f];
-            if (png_read_rgba8(path, SCENE_MAX_TEXTURE_SIZE, &t->width, &t->height, &t->rgba, &fe) != 0) {
-                snprintf(err, errlen, "%s", fe.message);
+            if (png_read_rgba8(path, SCENE_MAX_TEXTURE_SIZE, &t->width, &t->height, &t->rgba, e) != 0)
                 return -1;
-            }
         }
     }
     if (doppler_colour(s)) {
@@ -35,10 +30,8 @@ int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *e
         t->width = BLACKBODY_LUT_SIZE;
         t->height = 1;
         t->rgba = malloc(4 * BLACKBODY_LUT_SIZE);
-        if (!t->rgba) {
-            snprintf(err, errlen, "out of memory");
-            return -1;
-        }
+        if (!t->rgba)
+            return error_set(e, ERROR_RUNTIME, NULL, "out of memory");
         blackbody_lut_fill_exposed((enum blackbody_tone)scene_blackbody_tone(s), scene_reference_temperature(s), t->rgba);
     }
     return 0;

@@ -3,6 +3,7 @@
  * selection of the GL specification, and the same rounding to 8 bits. */
 #ifndef BT_SHADE_CPU_H
 #define BT_SHADE_CPU_H
+#include "io/error.h"
 #include "ref/reference.h"
 #include <stddef.h>
 
@@ -19,8 +20,9 @@ struct cpu_materials {
     struct cpu_texture blackbody; /* the GPU's black-body table (Doppler colour effects only) */
 };
 
-/* Load the scene's textures and sky faces. 0, or -1 with err naming the file. */
-int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, char *err, size_t errlen);
+/* Load the scene's textures and sky faces. 0, or -1 with e: the PNG reader's error, naming the file
+ * in its message (a file refused or not a PNG is the user's), or out of memory (the machine's). */
+int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, struct error *e);
 void cpu_materials_free(struct cpu_materials *mat);
 /* Final RGBA8 colour of a ray's result; view is the direction the observer looked in (its own frame).
  * Alpha is render.sky_alpha where the ray reached the sky, else 1. */

@@ -109,9 +109,7 @@ int frame_run_samples(struct renderer *r, const struct scene *s, struct render_r
     struct star_sky *stars = malloc(sizeof *stars);
     if (!stars)
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory for the stars of the sky");
-    char why[256];      /* the results module still fills a buffer: out of memory, the machine's */
-    int rc = star_sky_init(stars, s, why, sizeof why) == 0 ? run_samples(r, s, stars, out, with_state, progress, e)
-                                                            : error_set(e, ERROR_RUNTIME, NULL, "%s", why);
+    int rc = star_sky_init(stars, s, e) == 0 ? run_samples(r, s, stars, out, with_state, progress, e) : -1;
     star_sky_free(stars);
     free(stars);
     return rc;

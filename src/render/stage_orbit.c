@@ -84,12 +84,8 @@ int orbit_prepare(struct renderer *r, struct error *e)
     if (r->orbit_texture && memcmp(&p, &r->orbit.p, sizeof p) == 0)
         return 0;
     release_table(&r->orbit, &r->orbit_texture);
-    /* the physics module still reports in a buffer: its failures are the machine's */
-    if (orbit_table_build(&r->orbit, &p, e->message, sizeof e->message) != 0) {
-        e->status = ERROR_RUNTIME;
-        e->where[0] = '\0';
+    if (orbit_table_build(&r->orbit, &p, e) != 0)
         return -1;
-    }
     if (r->orbit.width > r->caps.max_texture_size || r->orbit.height > r->caps.max_texture_size) {
         error_set(e, ERROR_INPUT, NULL, "the orbit table (%dx%d) exceeds this GPU's texture limit %d: lower "
                   "render.orbit_rows or render.orbit_columns", r->orbit.width, r->orbit.height,

@@ -4,40 +4,35 @@
 #include <stdlib.h>
 #include <string.h>
 
-int compare_dump_check(const struct dump *d, char *err, size_t errlen)
+int compare_dump_check(const struct dump *d, struct error *e)
 {
     for (int i = 0; i < d->n_objects; i++) {
         /* relative hit errors divide by the size: it must be a length */
-        if (!(isfinite(d->object_size[i]) && d->object_size[i] > 0.0f)) {
-            snprintf(err, errlen, "object %d has size %g; sizes must be finite and positive", i,
-                     (double)d->object_size[i]);
-            return -1;
-        }
+        if (!(isfinite(d->object_size[i]) && d->object_size[i] > 0.0f))
+            return error_set(e, ERROR_INPUT, NULL, "object %d has size %g; sizes must be finite and positive", i,
+                             (double)d->object_size[i]);
     }
     long n = (long)d->width * d->height;
     for (long i = 0; i < n; i++) {
         int32_t o = d->records[i].outcome;
-        if (o < DUMP_FAILED || o >= d->n_objects) {
-            snprintf(err, errlen, "pixel (%ld, %ld) has outcome %d, outside %d..%d (the dump lists %d objects)",
-                     i % d->width, i / d->width, (int)o, DUMP_FAILED, d->n_objects - 1, d->n_objects);
-            return -1;
-        }
+        if (o < DUMP_FAILED || o >= d->n_objects)
+            return error_set(e, ERROR_INPUT, NULL,
+                             "pixel (%ld, %ld) has outcome %d, outside %d..%d (the dump lists %d objects)",
+                             i % d->width, i / d->width, (int)o, DUMP_FAILED, d->n_objects - 1, d->n_objects);
     }
     return 0;
 }
 
-static int check_compatible(const struct dump *a, const struct dump *b, char *err, size_t errlen)
+static int check_compatible(const struct dump *a, const struct dump *b, struct error *e)
 {
     if (a->width != b->width || a->height != b->height)
-        snprintf(err, errlen, "size %dx%d differs from the reference's %dx%d", a->width, a->height, b->width,
-                 b->height);
-    else if (strcmp(a->scene, b->scene) != 0)
-        snprintf(err, errlen, "scene '%s' differs from the reference's '%s'", a->scene, b->scene);
-    else if (a->n_objects != b->n_objects)
-        snprintf(err, errlen, "%d objects, the reference has %d", a->n_objects, b->n_objects);
-    else
-        return 0;
-    return -1;
+        return error_set(e, ERROR_INPUT, NULL, "size %dx%d differs from the reference's %dx%d", a->width, a->height,
+                         b->width, b->height);
+    if (strcmp(a->scene, b->scene) != 0)
+        return error_set(e, ERROR_INPUT, NULL, "scene '%s' differs from the reference's '%s'", a->scene, b->scene);
+    if (a->n_objects != b->n_objects)
+        return error_set(e, ERROR_INPUT, NULL, "%d objects, the reference has %d", a->n_objects, b->n_objects);
+    return 0;
 }
 
 /* First category that fits, so that the categories partition the differing pixels. */
@@ -171,24 +166,20 @@ static void copy_name(char dst[32], const char src[32])
     dst[31] = '\0';
 }
 
-static int check_both(const struct dump *a, const struct dump *b, char *err, size_t errlen)
+static int check_both(const struct dump *a, const struct dump *b, struct error *e)
 {
-    char why[256];
-    if (compare_dump_check(a, why, sizeof why) != 0) {
-        snprintf(err, errlen, "dump under test: %s", why);
-        return -1;
-    }
-    if (compare_dump_check(b, why, sizeof why) != 0) {
-        snprintf(err, errlen, "reference dump: %s", why);
-        return -1;
-    }
-    return check_compatible(a, b, err, errlen);
+    struct error why;
+    if (compare_dump_check(a, &why) != 0)
+        return error_set(e, why.status, NULL, "dump under test: %s", why.message);
+    if (compare_dump_check(b, &why) != 0)
+        return error_set(e, why.status, NULL, "reference dump: %s", why.message);
+    return check_compatible(a, b, e);
 }
 
-int compare_dumps(const struct dump *a, const struct dump *b, struct compare_result *r, char *err, size_t errlen)
+int compare_dumps(const struct dump *a, const struct dump *b, struct compare_result *r, struct error *e)
 {
     memset(r, 0, sizeof *r);
-    if (check_both(a, b, err, errlen) != 0)
+    if (check_both(a, b, e) != 0)
         return -1;
     copy_name(r->scene, b->scene);
     copy_name(r->engine_a, a->engine);
@@ -197,10 +188,8 @@ int compare_dumps(const struct dump *a, const struct dump *b, struct compare_res
     r->height = b->height;
     r->pixels = (long)b->width * b->height;
     double *buf = malloc((size_t)r->pixels * sizeof *buf);
-    if (!buf) {
-        snprintf(err, errlen, "out of memory comparing %ld pixels", r->pixels);
-        return -1;
-    }
+    if (!buf)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory comparing %ld pixels", r->pixels);
     for (long i = 0; i < r->pixels; i++)
         classify(a->records[i].outcome, b->records[i].outcome, &r->outcomes);
     r->outcome_fraction = (double)r->outcomes.differ / (double)r->pixels;

@@ -44,13 +44,14 @@ struct compare_result {
 };
 
 /* Check one dump on its own: outcomes in range (-4 .. n_objects - 1), object sizes finite and
- * positive. 0 when usable, else -1 with the reason in err. */
-int compare_dump_check(const struct dump *d, char *err, size_t errlen);
+ * positive. 0 when usable, else -1 with the reason in e (ERROR_INPUT, no place: the caller knows
+ * the dump's file). */
+int compare_dump_check(const struct dump *d, struct error *e);
 
-/* Compare a (under test) with b (reference). Returns 0 and fills r, or -1 with the reason in err
- * when the dumps cannot be compared: one fails compare_dump_check, or they differ in size, scene
- * name or object count. */
-int compare_dumps(const struct dump *a, const struct dump *b, struct compare_result *r, char *err, size_t errlen);
+/* Compare a (under test) with b (reference). Returns 0 and fills r, or -1 with the reason in e
+ * (no place) when the dumps cannot be compared: one fails compare_dump_check, or they differ in
+ * size, scene name or object count (ERROR_INPUT), or there is no memory (ERROR_RUNTIME). */
+int compare_dumps(const struct dump *a, const struct dump *b, struct compare_result *r, struct error *e);
 
 /* JSON object with stable keys (docs/ERRORS.md); NAN statistics and an infinite PSNR are null. */
 void compare_print_json(FILE *f, const struct compare_result *r);

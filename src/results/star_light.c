@@ -48,7 +48,7 @@ static double star_flux(const struct scene *s, double magnitude)
     return s->sky.star_brightness * pow(10.0, -0.4 * (magnitude - STAR_MAGNITUDE_LIMIT));
 }
 
-int star_sky_init(struct star_sky *k, const struct scene *s, char *err, size_t errlen)
+int star_sky_init(struct star_sky *k, const struct scene *s, struct error *e)
 {
     memset(k, 0, sizeof *k);
     k->scene = s;
@@ -60,10 +60,9 @@ int star_sky_init(struct star_sky *k, const struct scene *s, char *err, size_t e
     }
     if (s->sky.stars > 0 &&
         star_catalogue_make(&k->catalogue, s->sky.stars, (uint64_t)s->sky.star_seed, s->sky.galactic_pole,
-                            s->sky.galactic_center) != 0) {
-        snprintf(err, errlen, "out of memory for a catalogue of %d stars ([sky] stars)", s->sky.stars);
-        return -1;
-    }
+                            s->sky.galactic_center) != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory for a catalogue of %d stars ([sky] stars)",
+                         s->sky.stars);
     double brightest = INFINITY;
     for (int i = 0; i < k->catalogue.n; i++)
         brightest = fmin(brightest, k->catalogue.stars[i].magnitude);

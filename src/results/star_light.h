@@ -18,6 +18,7 @@
  * as for the rest of the sky. */
 #ifndef BT_STAR_LIGHT_H
 #define BT_STAR_LIGHT_H
+#include "io/error.h"
 #include "physics/star_catalogue.h"
 #include "scene/camera.h"
 
@@ -53,8 +54,8 @@ struct star_view {
     const unsigned char *sky;
 };
 
-/* 0, or -1 with err (out of memory). With no stars and no Milky Way in s it holds nothing. */
-int star_sky_init(struct star_sky *k, const struct scene *s, char *err, size_t errlen);
+/* 0, or -1 with e (out of memory: the machine's). With no stars and no Milky Way in s it holds nothing. */
+int star_sky_init(struct star_sky *k, const struct scene *s, struct error *e);
 void star_sky_free(struct star_sky *k);
 /* 1 when the scene has stars or a Milky Way to draw. */
 int star_sky_wanted(const struct scene *s);

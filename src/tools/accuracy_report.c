@@ -130,7 +130,6 @@ static void note_quality(const struct scene *s, const struct compare_result *c, 
 static int report_variation(FILE *f, struct scene *s, enum variation v, const struct cpu_render_options *ref_opt,
                             const struct measured *ref, char *device, size_t device_len, int size_given)
 {
-    char err[2048];
     struct error e;
     struct measured m;
     int rc;
@@ -149,9 +148,9 @@ static int report_variation(FILE *f, struct scene *s, enum variation v, const st
     if (v == VAR_DEFAULT)
         snprintf(device, device_len, "%s", m.device);
     struct compare_result c;
-    rc = compare_dumps(&m.dump, &ref->dump, &c, err, sizeof err);
+    rc = compare_dumps(&m.dump, &ref->dump, &c, &e);
     if (rc != 0)
-        fprintf(stderr, "%s: %s\n", s->path, err);
+        fprintf(stderr, "%s: %s\n", s->path, e.message);
     else
         write_row(f, s, variation_names[v], &m, &c);
     if (rc == 0 && v == VAR_DEFAULT)

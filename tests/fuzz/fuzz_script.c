@@ -1,7 +1,8 @@
 /* libFuzzer harness: the kiosk's scripted-input files (tests and the attract tour; exhibition staff
  * write the tour). The input is a script file: script_load(), as the kiosk does at start. Beyond
  * the sanitizers:
- *  - every refusal says why: a NUL-terminated message that names the file;
+ *  - every refusal says why and is the user's (ERROR_INPUT): a NUL-terminated place that names the
+ *    file, and a NUL-terminated message;
  *  - what is accepted can be replayed: at most SCRIPT_MAX_EVENTS events, times finite, from 0 and
  *    never decreasing, counts within SCRIPT_MAX_COUNTS, known actions; and the player hands every
  *    event out exactly once, in order, however the clock advances.
@@ -64,10 +65,11 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     tmp_write(data, size);
-    char err[1024];
-    err[0] = '\0';
-    if (script_load(&script, tmp_path, err, sizeof err) != 0) {
-        if (memchr(err, '\0', sizeof err) == NULL || strstr(err, tmp_path) != err)
+    struct error e;
+    memset(&e, 0, sizeof e);
+    if (script_load(&script, tmp_path, &e) != 0) {
+        if (memchr(e.where, '\0', sizeof e.where) == NULL || memchr(e.message, '\0', sizeof e.message) == NULL ||
+            strstr(e.where, tmp_path) != e.where || e.status != ERROR_INPUT)
             __builtin_trap();
         return 0;
     }

@@ -129,10 +129,10 @@ static inline vec3d hc_gpu_v(const struct hc_gpu *g, int i)
 static inline void hc_cpu_render(const struct scene *s, struct cpu_image *img)
 {
     struct cpu_render_options o = {.threads = 0, .progress = 0};
-    char err[512];
+    struct error e;
     ref_options_default(&o.ref, s);
-    if (cpu_render(s, &o, img, err, sizeof err) != 0)
-        fail_msg("cpu render: %s", err);
+    if (cpu_render(s, &o, img, &e) != 0)
+        fail_msg("cpu render: %s", e.message);
 }
 
 /* s at width x height, validated, on both engines. */
@@ -183,9 +183,9 @@ static inline double hc_dist3f(const float *a, const float *b)
 
 static inline void hc_compare(const struct dump *a, const struct dump *b, struct compare_result *r)
 {
-    char err[256];
-    if (compare_dumps(a, b, r, err, sizeof err) != 0)
-        fail_msg("compare: %s", err);
+    struct error e;
+    if (compare_dumps(a, b, r, &e) != 0)
+        fail_msg("compare: %s", e.message);
 }
 
 /* Unit normal of object o at a point p on it (as the shaders compute it). */

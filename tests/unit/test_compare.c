@@ -69,9 +69,9 @@ static void set_hit(struct dump_record *r, int object, float x, float y, float z
 
 static void compare_ok(const struct dump *a, const struct dump *b, struct compare_result *r)
 {
-    char err[256] = "";
-    if (compare_dumps(a, b, r, err, sizeof err) != 0) {
-        print_error("compare_dumps refused: %s\n", err);
+    struct error e;
+    if (compare_dumps(a, b, r, &e) != 0) {
+        print_error("compare_dumps refused: %s\n", e.message);
         fail();
     }
 }
@@ -291,10 +291,12 @@ static void test_non_finite_error(void **state)
 static void expect_refusal(const struct dump *a, const struct dump *b, const char *word)
 {
     struct compare_result r;
-    char err[256] = "";
-    assert_int_equal(compare_dumps(a, b, &r, err, sizeof err), -1);
-    if (!strstr(err, word)) {
-        print_error("message '%s' does not mention '%s'\n", err, word);
+    struct error e;
+    assert_int_equal(compare_dumps(a, b, &r, &e), -1);
+    assert_int_equal(e.status, ERROR_INPUT);
+    assert_string_equal(e.where, "");
+    if (!strstr(e.message, word)) {
+        print_error("message '%s' does not mention '%s'\n", e.message, word);
         fail();
     }
 }

@@ -217,9 +217,9 @@ static void test_flat_step_changes_nothing(void **state)
 static void check_tiny_measure(const char *what, const struct model *m, enum integration_method method)
 {
     struct cpu_limit_result r;
-    char err[256] = "";
-    if (cpu_limit_measure(m, method, TINY_RAYS, TINY_STEPS_PER_CALL, 2, TINY_SECONDS, &r, err, sizeof err) != 0)
-        fail_msg("%s %s: %s", what, method_name(method), err);
+    struct error err;
+    if (cpu_limit_measure(m, method, TINY_RAYS, TINY_STEPS_PER_CALL, 2, TINY_SECONDS, &r, &err) != 0)
+        fail_msg("%s %s: %s", what, method_name(method), err.message);
     assert_true(r.sweeps >= 1);
     assert_true(r.steps == (long long)TINY_RAYS * TINY_STEPS_PER_CALL * r.sweeps);
     assert_true(r.seconds >= TINY_SECONDS);
@@ -248,9 +248,9 @@ static void test_measure_independent_of_threads(void **state)
     (void)state;
     struct model m = schwarzschild_demo();
     struct cpu_limit_result one, three;
-    char err[256] = "";
-    assert_int_equal(cpu_limit_measure(&m, METHOD_RK4, 1000, 5, 1, 0.0, &one, err, sizeof err), 0);
-    assert_int_equal(cpu_limit_measure(&m, METHOD_RK4, 1000, 5, 3, 0.0, &three, err, sizeof err), 0);
+    struct error err;
+    assert_int_equal(cpu_limit_measure(&m, METHOD_RK4, 1000, 5, 1, 0.0, &one, &err), 0);
+    assert_int_equal(cpu_limit_measure(&m, METHOD_RK4, 1000, 5, 3, 0.0, &three, &err), 0);
     assert_true(one.sweeps == 1 && three.sweeps == 1);
     assert_int_equal(one.threads, 1);
     assert_int_equal(three.threads, 3);
@@ -261,20 +261,21 @@ static void test_measure_refuses(void **state)
 {
     (void)state;
     struct cpu_limit_result r;
-    char err[256] = "";
+    struct error err;
     struct model flat = fixture_model(MODEL_FLAT);
-    assert_int_equal(cpu_limit_measure(&flat, METHOD_RK4, 100, 1, 1, 0.0, &r, err, sizeof err), -1);
-    assert_non_null(strstr(err, "flat"));
+    assert_int_equal(cpu_limit_measure(&flat, METHOD_RK4, 100, 1, 1, 0.0, &r, &err), -1);
+    assert_non_null(strstr(err.message, "flat"));
+    assert_int_equal(err.status, ERROR_RUNTIME);
     struct model m = schwarzschild_demo();
-    err[0] = '\0';
-    assert_int_equal(cpu_limit_measure(&m, METHOD_RK4, 0, 1, 1, 0.0, &r, err, sizeof err), -1);
-    assert_true(err[0] != '\0');
-    err[0] = '\0';
-    assert_int_equal(cpu_limit_measure(&m, METHOD_RK4, 100, 0, 1, 0.0, &r, err, sizeof err), -1);
-    assert_true(err[0] != '\0');
-    err[0] = '\0';
-    assert_int_equal(cpu_limit_measure(&m, METHOD_RK4, 100, 1, 1, -1.0, &r, err, sizeof err), -1);
-    assert_true(err[0] != '\0');
+    error_clear(&err);
+    assert_int_equal(cpu_limit_measure(&m, METHOD_RK4, 0, 1, 1, 0.0, &r, &err), -1);
+    assert_true(err.message[0] != '\0');
+    error_clear(&err);
+    assert_int_equal(cpu_limit_measure(&m, METHOD_RK4, 100, 0, 1, 0.0, &r, &err), -1);
+    assert_true(err.message[0] != '\0');
+    error_clear(&err);
+    assert_int_equal(cpu_limit_measure(&m, METHOD_RK4, 100, 1, 1, -1.0, &r, &err), -1);
+    assert_true(err.message[0] != '\0');
 }
 
 int main(void)

@@ -175,10 +175,10 @@ static void test_engines_agree_in_float(void **state)
     struct render_result res;
     gpu_frame(&s, &res);
     struct cpu_render_options o = {.threads = 0, .progress = PROGRESS_NONE, .hdr = 1};
-    char err[512];
+    struct error e;
     ref_options_default(&o.ref, &s);
     struct cpu_image cpu;
-    assert_int_equal(cpu_render(&s, &o, &cpu, err, sizeof err), 0);
+    assert_int_equal(cpu_render(&s, &o, &cpu, &e), 0);
     assert_non_null(cpu.color);
     double worst = 0.0;
     long far = 0;

@@ -131,10 +131,11 @@ static void test_script(void **state)
 {
     (void)state;
     static struct script sc;
+    struct error e;
     char err[600];
     write_file("build/test_script_good.txt", "# a tour\n0 turn speed +3\n0.5 turn mass -2\n\n1 press next_scene\n"
                                               "1 frame\n  2.25 press cycle_effects\n");
-    assert_int_equal(script_load(&sc, "build/test_script_good.txt", err, sizeof err), 0);
+    assert_int_equal(script_load(&sc, "build/test_script_good.txt", &e), 0);
     assert_int_equal(sc.n, 5);
     assert_true(sc.events[0].kind == SCRIPT_TURN && sc.events[0].knob == SCRIPT_KNOB_SPEED && sc.events[0].counts == 3);
     assert_true(sc.events[1].knob == SCRIPT_KNOB_MASS && sc.events[1].counts == -2);
@@ -158,20 +159,26 @@ static void test_script(void **state)
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         write_file("build/test_script_bad.txt", bad[i].text);
-        assert_int_equal(script_load(&sc, "build/test_script_bad.txt", err, sizeof err), -1);
+        assert_int_equal(script_load(&sc, "build/test_script_bad.txt", &e), -1);
+        assert_int_equal(e.status, ERROR_INPUT);
+        error_format(&e, err, sizeof err);
         if (!strstr(err, bad[i].want))
             fail_msg("script \"%s\": got \"%s\", want \"%s\"", bad[i].text, err, bad[i].want);
     }
-    assert_int_equal(script_load(&sc, "build/no_such_script.txt", err, sizeof err), -1);
+    assert_int_equal(script_load(&sc, "build/no_such_script.txt", &e), -1);
+    assert_int_equal(e.status, ERROR_INPUT);
+    assert_string_equal(e.where, "build/no_such_script.txt");
+    error_format(&e, err, sizeof err);
     assert_non_null(strstr(err, "no_such_script.txt: cannot open the script"));
     /* a byte-order mark and CR LF line ends, as a Windows editor saves it: read as written */
     write_file("build/test_script_crlf.txt", "\xEF\xBB\xBF" "0 frame\r\n1 turn mass +2\r\n");
-    assert_int_equal(script_load(&sc, "build/test_script_crlf.txt", err, sizeof err), 0);
+    assert_int_equal(script_load(&sc, "build/test_script_crlf.txt", &e), 0);
     assert_int_equal(sc.n, 2);
     assert_true(sc.events[1].kind == SCRIPT_TURN && sc.events[1].counts == 2);
     /* CR line ends alone would make one line of the whole file: refused, not cut at its first CR */
     write_file("build/test_script_cr.txt", "0 frame\r1 turn mass +2\r");
-    assert_int_equal(script_load(&sc, "build/test_script_cr.txt", err, sizeof err), -1);
+    assert_int_equal(script_load(&sc, "build/test_script_cr.txt", &e), -1);
+    error_format(&e, err, sizeof err);
     assert_non_null(strstr(err, "test_script_cr.txt:1: a carriage return inside the line"));
     /* a NUL byte does not end the line silently: refused with its line */
     static const char with_nul[] = "0 frame\n1 turn mass +2\0 frame\n";
@@ -179,7 +186,8 @@ static void test_script(void **state)
     assert_non_null(f);
     assert_int_equal(fwrite(with_nul, 1, sizeof with_nul - 1, f), sizeof with_nul - 1);
     assert_int_equal(fclose(f), 0);
-    assert_int_equal(script_load(&sc, "build/test_script_nul.txt", err, sizeof err), -1);
+    assert_int_equal(script_load(&sc, "build/test_script_nul.txt", &e), -1);
+    error_format(&e, err, sizeof err);
     assert_non_null(strstr(err, "test_script_nul.txt:2: the line holds a NUL byte"));
 }
 

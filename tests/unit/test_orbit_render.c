@@ -419,10 +419,10 @@ static void test_rebuild_time_printed(void **state)
         s.model.mass = masses[k];
         struct orbit_table_params p;
         struct orbit_table t;
-        char err[256];
+        struct error err;
         s.render.method = METHOD_ORBIT_TABLE;
         orbit_table_params_for(&s, &p);
-        assert_int_equal(orbit_table_build(&t, &p, err, sizeof err), 0);
+        assert_int_equal(orbit_table_build(&t, &p, &err), 0);
         print_message("M = %g: table %dx%d built in %.1f ms, %d chords at most\n", masses[k], t.width, t.height,
                       1e3 * t.build_seconds, t.max_segments);
         assert_true(t.max_segments >= 1 && t.max_segments <= s.render.max_chords);

@@ -11,6 +11,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "binet_closed_form.h"
 #include "physics/escape.h"
@@ -165,9 +166,9 @@ static void test_table_rows_exact(void **state)
 {
     (void)state;
     struct orbit_table t;
-    char err[256];
+    struct error err;
     struct orbit_table_params p = params(1.0, 10.0, 60.0, 256, 64);
-    assert_int_equal(orbit_table_build(&t, &p, err, sizeof err), 0);
+    assert_int_equal(orbit_table_build(&t, &p, &err), 0);
     print_message("table 2 x 256 rows x 64 columns built in %.1f ms\n", 1e3 * t.build_seconds);
     int bad = 0;
     for (int row = 0; row < t.height; row += 17) {
@@ -193,9 +194,9 @@ static void interpolation_error(double mass, double r_o, int rows, int columns, 
                                 double *seconds)
 {
     struct orbit_table t;
-    char err[256];
+    struct error err;
     struct orbit_table_params p = params(mass, r_o, fmax(60.0, 2.0 * r_o) * mass, rows, columns);
-    assert_int_equal(orbit_table_build(&t, &p, err, sizeof err), 0);
+    assert_int_equal(orbit_table_build(&t, &p, &err), 0);
     *seconds = t.build_seconds;
     enum { N = 400 };
     double ephi[N], epos[N];
@@ -271,9 +272,9 @@ static void test_sweep_to_infinity(void **state)
     assert_true(fabs(escape_sweep(0.0, 0.1, -0.1 / tan(0.7)) - 0.7) < 1e-14);
     /* the table's rows: phi_end to r_far and on, against the closed form to infinity */
     struct orbit_table t;
-    char err[256];
+    struct error err;
     struct orbit_table_params p = params(mass, 10.0, 60.0, 256, 64);
-    assert_int_equal(orbit_table_build(&t, &p, err, sizeof err), 0);
+    assert_int_equal(orbit_table_build(&t, &p, &err), 0);
     for (int row = 0; row < p.rows_per_side; row += 7) {
         double phi = t.phi_infinity_over_sin[row] * sin(t.psi[row]), exact = exact_phi_end(mass, 10.0, t.psi[row], 0.0);
         if (!(fabs(phi - exact) <= critical_bound(fabs(t.psi[row] - t.psi_c)))) {
@@ -289,13 +290,15 @@ static void test_refuses_bad_parameters(void **state)
 {
     (void)state;
     struct orbit_table t;
-    char err[256];
+    struct error err;
     struct orbit_table_params p = params(1.0, 1.5, 60.0, 16, 16);   /* inside the horizon */
-    assert_int_equal(orbit_table_build(&t, &p, err, sizeof err), -1);
+    assert_int_equal(orbit_table_build(&t, &p, &err), -1);
     p = params(0.0, 10.0, 60.0, 16, 16);
-    assert_int_equal(orbit_table_build(&t, &p, err, sizeof err), -1);
+    assert_int_equal(orbit_table_build(&t, &p, &err), -1);
     p = params(1.0, 10.0, 5.0, 16, 16);                             /* r_far inside the observer */
-    assert_int_equal(orbit_table_build(&t, &p, err, sizeof err), -1);
+    assert_int_equal(orbit_table_build(&t, &p, &err), -1);
+    assert_int_equal(err.status, ERROR_RUNTIME);
+    assert_non_null(strstr(err.message, "orbit table: needs M > 0"));
 }
 
 int main(void)
