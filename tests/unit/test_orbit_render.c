@@ -103,6 +103,25 @@ static void render_image_only(const struct scene *s, struct render_result *image
     renderer_destroy(r);
 }
 
+/* S drawn by the single pass and by the multipass scheme: the same dump records and image, bit for
+ * bit, and the same image drawn alone (the kiosk's path). MULTI keeps the multipass frame, for the
+ * caller to count its hits and free. */
+static void expect_single_is_multipass(struct scene *s, const char *what, struct hc_gpu *multi)
+{
+    struct hc_gpu single;
+    s->render.pipeline = PIPELINE_SINGLE;
+    hc_gpu_render(s, &single);
+    s->render.pipeline = PIPELINE_MULTIPASS;
+    hc_gpu_render(s, multi);
+    expect_same_dumps(what, &single, multi);
+    struct render_result image;
+    s->render.pipeline = PIPELINE_SINGLE;
+    render_image_only(s, &image);
+    assert_memory_equal(image.rgba, multi->res.rgba, (size_t)s->render.width * s->render.height * 4);
+    render_result_free(&image);
+    hc_gpu_free(&single);
+}
+
 /* The single pass passes over chords whose wedge about the mass an object's bounding ball cannot
  * reach (cull_meets in stage_intersect.glsl, for group_clear): a ring of small spheres around the hole at
  * every angle and height, a triangle, a rectangle and a disk across the orbit planes, seen from
@@ -155,19 +174,10 @@ static void test_single_pass_culling(void **state)
         disk->inner_radius = 3.5;
         disk->radius = 4.2;
         hc_validate(&s);
-        struct hc_gpu single, multi;
-        s.render.pipeline = PIPELINE_SINGLE;
-        hc_gpu_render(&s, &single);
-        s.render.pipeline = PIPELINE_MULTIPASS;
-        hc_gpu_render(&s, &multi);
         char what[64];
         snprintf(what, sizeof what, "culling, case %zu", k);
-        expect_same_dumps(what, &single, &multi);
-        struct render_result image;
-        s.render.pipeline = PIPELINE_SINGLE;
-        render_image_only(&s, &image);
-        assert_memory_equal(image.rgba, multi.res.rgba, (size_t)s.render.width * s.render.height * 4);
-        render_result_free(&image);
+        struct hc_gpu multi;
+        expect_single_is_multipass(&s, what, &multi);
         long hits[BALLS + 3] = {0}, seen = 0;
         for (long i = 0; i < (long)s.render.width * s.render.height; i++) {
             int o = multi.dump.records[i].outcome;
@@ -182,7 +192,6 @@ static void test_single_pass_culling(void **state)
                       hits[BALLS], hits[BALLS + 1], hits[BALLS + 2]);
         /* the culling had objects to keep and to skip on the same rays */
         assert_true(seen >= 2);
-        hc_gpu_free(&single);
         hc_gpu_free(&multi);
     }
     /* every object was met by some ray of some case */
@@ -633,20 +642,11 @@ static void test_single_pass_group_bounds(void **state)
                 assert_int_equal(placed, TURNING);
             }
             hc_validate(&s);
-            struct hc_gpu single, multi;
-            s.render.pipeline = PIPELINE_SINGLE;
-            hc_gpu_render(&s, &single);
-            s.render.pipeline = PIPELINE_MULTIPASS;
-            hc_gpu_render(&s, &multi);
             char what[64];
             snprintf(what, sizeof what, "groups, %s, chords within %g", layout == 0 ? "shell" : "periapses",
                      tolerances[k]);
-            expect_same_dumps(what, &single, &multi);
-            struct render_result image;
-            s.render.pipeline = PIPELINE_SINGLE;
-            render_image_only(&s, &image);
-            assert_memory_equal(image.rgba, multi.res.rgba, (size_t)s.render.width * s.render.height * 4);
-            render_result_free(&image);
+            struct hc_gpu multi;
+            expect_single_is_multipass(&s, what, &multi);
             int seen = 0;
             long met[BALLS + 2] = {0};
             for (long i = 0; i < (long)s.render.width * s.render.height; i++) {
@@ -660,7 +660,6 @@ static void test_single_pass_group_bounds(void **state)
             assert_true(seen >= placed / 2);
             if (layout == 0)
                 assert_true(met[BALLS] > 0 && met[BALLS + 1] > 0);
-            hc_gpu_free(&single);
             hc_gpu_free(&multi);
         }
 }
