@@ -269,15 +269,14 @@ void cull_prepare(orbit_ray ray)
 // A group of chords, whose ends all lie at angles phi_a .. phi_b (cull_phi_a, cull_phi_b) and at
 // radii r_lo .. r_hi from the mass, where (cos, sin) of phi_a and phi_b are ends.xy and .zw: can
 // any of its chords meet object `slot`? Each chord joins two such ends, so it stays inside the
-// wedge, at radii of at least r_lo cos((phi_b - phi_a) / 2), and on the side of a plane that
+// wedge, at radii of at least r_in = r_lo cos((phi_b - phi_a) / 2), and on the side of a plane that
 // holds every point of the region: the object is out of reach where its disc misses the wedge or
 // that ring, or where a flat object's plane leaves the whole region on one side (the signed
 // distance, linear in the point, is extreme at a corner of the region or where the outer arc
 // faces the plane's normal).
-bool cull_group_meets(int slot, vec4 ends, float r_lo, float r_hi)
+bool cull_group_meets(int slot, vec4 ends, float r_lo, float r_in, float r_hi)
 {
     float span = cull_phi_b - cull_phi_a;
-    float r_in = span < 0.5 * CULL_TURN ? r_lo * cos(0.5 * span) : 0.0;
     bool ring = cull_rho_hi[slot] >= r_in && cull_rho_lo[slot] <= r_hi;
     vec4 plane = cull_plane[slot];
     float f_a = plane.y * ends.x + plane.z * ends.y;
@@ -298,11 +297,14 @@ bool cull_group_meets(int slot, vec4 ends, float r_lo, float r_hi)
 bool cull_group_clear(vec4 ends, float r_lo, float r_hi)
 {
     bool meets = false;
+    // the nearest a chord of the group comes to the mass: the same for every object
+    float span = cull_phi_b - cull_phi_a;
+    float r_in = span < 0.5 * CULL_TURN ? r_lo * cos(0.5 * span) : 0.0;
 #undef TEST_SPHERE
 #undef TEST_DISK
 #undef TEST_RECT
 #undef TEST_TRIANGLE
-#define TEST_SPHERE(n) meets = meets || cull_group_meets(n, ends, r_lo, r_hi);
+#define TEST_SPHERE(n) meets = meets || cull_group_meets(n, ends, r_lo, r_in, r_hi);
 #define TEST_DISK(n) TEST_SPHERE(n)
 #define TEST_RECT(n) TEST_SPHERE(n)
 #define TEST_TRIANGLE(n) TEST_SPHERE(n)
