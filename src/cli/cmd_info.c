@@ -32,6 +32,10 @@ static void print_caps(const struct gl_caps *c)
         printf("occlusion query: works: the multipass scheme stops once every ray is retired\n");
     else
         printf("occlusion query: no: the multipass scheme runs every segment (%s)\n", c->query_why);
+    if (c->framebuffer_blit)
+        printf("framebuffer blit: works: the kiosk copies its canvas to a screen of its size\n");
+    else
+        printf("framebuffer blit: no: the kiosk draws its canvas on the screen (%s)\n", c->blit_why);
     struct render_path path;
     struct error e;
     if (render_path_choose(c, PRECISION_AUTO, MRT_AUTO, &path, &e) == 0)

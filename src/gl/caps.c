@@ -303,6 +303,64 @@ static void probe_query(struct gl_caps *c, GLuint prog)
     }
 }
 
+static GLuint probe_blit_target(GLuint *fbo, float r, float g, float b)
+{
+    GLuint tex = texture_create_nearest(GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, PROBE_SIZE, PROBE_SIZE);
+    glGenFramebuffers(1, fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, *fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+    glViewport(0, 0, PROBE_SIZE, PROBE_SIZE);
+    glClearColor(r, g, b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    return tex;
+}
+
+/* A blit of the left half of one framebuffer into another: that half must arrive byte for byte
+ * and the other stay as it was. */
+static void probe_blit(struct gl_caps *c)
+{
+    if (c->major < 3 || !bt_gl.BlitFramebuffer) {
+        snprintf(c->blit_why, sizeof c->blit_why, "%s", c->is_es ? "OpenGL ES below 3.0" : "OpenGL below 3.0");
+        return;
+    }
+    if (gl_fault("framebuffer_blit")) {
+        snprintf(c->blit_why, sizeof c->blit_why, "BT_FAULT=framebuffer_blit");
+        return;
+    }
+    GLuint from_fbo, to_fbo;
+    GLuint from = probe_blit_target(&from_fbo, 1.0f, 0.0f, 0.0f);
+    GLuint to = probe_blit_target(&to_fbo, 0.0f, 0.0f, 1.0f);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, from_fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, to_fbo);
+    const int half = PROBE_SIZE / 2;
+    glBlitFramebuffer(0, 0, half, PROBE_SIZE, 0, 0, half, PROBE_SIZE, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, to_fbo);
+    unsigned char got[4 * PROBE_SIZE * PROBE_SIZE];
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, PROBE_SIZE, PROBE_SIZE, GL_RGBA, GL_UNSIGNED_BYTE, got);
+    int wrong = 0;
+    for (int y = 0; y < PROBE_SIZE; y++)
+        for (int x = 0; x < PROBE_SIZE; x++) {
+            const unsigned char *p = got + 4 * (y * PROBE_SIZE + x);
+            int red = x < half;
+            wrong += p[0] != (red ? 255 : 0) || p[1] != 0 || p[2] != (red ? 0 : 255) || p[3] != 255;
+        }
+    if (glGetError() != GL_NO_ERROR)
+        snprintf(c->blit_why, sizeof c->blit_why, "glBlitFramebuffer raises a GL error");
+    else if (wrong)
+        snprintf(c->blit_why, sizeof c->blit_why, "glBlitFramebuffer copies %d of %d pixels wrong", wrong,
+                 PROBE_SIZE * PROBE_SIZE);
+    else
+        c->framebuffer_blit = 1;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &from_fbo);
+    glDeleteFramebuffers(1, &to_fbo);
+    glDeleteTextures(1, &from);
+    glDeleteTextures(1, &to);
+    while (glGetError() != GL_NO_ERROR) {
+    }
+}
+
 int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, struct error *e)
 {
     static const char *const vs[] = {"quad_vertex.glsl", NULL};
@@ -359,6 +417,7 @@ int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, struct error 
     for (int i = 0; i < c->n_formats; i++)
         probe_format(&c->formats[i], prog);
     probe_query(c, prog);
+    probe_blit(c);
     glDeleteProgram(prog);
     const struct float_format *best = caps_format(c, 1);
     probe_mrt(c, best ? best : caps_format(c, 0));

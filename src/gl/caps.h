@@ -35,6 +35,10 @@ struct gl_caps {
     int occlusion_query;
     GLenum query_target;
     char query_why[160];
+    /* glBlitFramebuffer copies a rectangle of one framebuffer into another, texel for texel: the
+     * kiosk puts its canvas on a screen of the same size that way (a copy, not a drawn quad) */
+    int framebuffer_blit;
+    char blit_why[160];
     int n_formats;
     struct float_format formats[CAPS_MAX_FORMATS];
     struct shader_target shader;     /* preamble settings for this context */
@@ -51,7 +55,9 @@ int gl_has_extension(const char *name);
  *   fbo_incomplete       ray-state framebuffers with 32-bit float attachments are incomplete
  *                        (render/path.c), although the probe's plain targets work
  *   half_fbo_incomplete  the same for 16-bit float attachments
- *   mrt_fbo_incomplete   ray-state framebuffers with two colour targets (MRT) are incomplete */
+ *   mrt_fbo_incomplete   ray-state framebuffers with two colour targets (MRT) are incomplete
+ *   framebuffer_blit     the probe finds glBlitFramebuffer missing (the kiosk draws its canvas)
+ *   hud_whole            the kiosk blends its whole HUD, not only the rows with something on them */
 int gl_fault(const char *name);
 /* "GL_FRAMEBUFFER_UNSUPPORTED" and the like, for messages. */
 const char *gl_framebuffer_status_name(GLenum status);

@@ -78,8 +78,8 @@
     X(void, Viewport, (GLint x, GLint y, GLsizei width, GLsizei height))
 
 /* Entry points of OpenGL ES 3 and desktop GL that a GLES2 context may offer as an extension:
- * glNAME, else glNAMEEXT (EXT_draw_buffers, EXT_occlusion_query_boolean); NULL if neither. A
- * loader may hand out a pointer for a function the context lacks: gl/caps.c proves each by
+ * glNAME, else glNAMEEXT (EXT_draw_buffers, EXT_occlusion_query_boolean); NULL if neither.
+ * glBlitFramebuffer (OpenGL ES 3) copies the kiosk's canvas to its screen. A loader may hand out a pointer for a function the context lacks: gl/caps.c proves each by
  * rendering before it is used. */
 #define BT_GL_OPTIONAL_FUNCTIONS(X) \
     X(void, DrawBuffers, (GLsizei n, const GLenum *bufs)) \
@@ -87,7 +87,9 @@
     X(void, DeleteQueries, (GLsizei n, const GLuint *ids)) \
     X(void, BeginQuery, (GLenum target, GLuint id)) \
     X(void, EndQuery, (GLenum target)) \
-    X(void, GetQueryObjectuiv, (GLuint id, GLenum pname, GLuint *params))
+    X(void, GetQueryObjectuiv, (GLuint id, GLenum pname, GLuint *params)) \
+    X(void, BlitFramebuffer, (GLint srcX0, GLint srcY0, GLint srcX1, GLint srcY1, GLint dstX0, GLint dstY0, \
+                              GLint dstX1, GLint dstY1, GLbitfield mask, GLenum filter))
 
 struct gl_api {
 #define BT_GL_MEMBER(ret, name, args) ret (GL_APIENTRY *name) args;
@@ -133,6 +135,7 @@ const char *gl_api_load(void *(*get_proc)(const char *name));
 #define glBeginQuery bt_gl.BeginQuery
 #define glEndQuery bt_gl.EndQuery
 #define glGetQueryObjectuiv bt_gl.GetQueryObjectuiv
+#define glBlitFramebuffer bt_gl.BlitFramebuffer
 #define glEnable bt_gl.Enable
 #define glEnableVertexAttribArray bt_gl.EnableVertexAttribArray
 #define glFinish bt_gl.Finish

@@ -26,6 +26,7 @@ int compositor_init(struct compositor *c, const struct gl_context *gl, int width
         return -1;
     }
     c->has_quad = 1;
+    c->framebuffer_blit = caps.framebuffer_blit;
     static const char *const vertex[] = {"kiosk_vertex.glsl", NULL};
     static const char *const blit[] = {"kiosk_blit.glsl", NULL};
     static const char *const pipeline[] = {"kiosk_pipeline.glsl", NULL};
@@ -216,6 +217,24 @@ int compositor_set_hud(struct compositor *c, const unsigned char *rgba, int widt
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
     c->hud_valid = 1;
+    /* most of the HUD is clear: only its rows with something on them are blended over the frame */
+    int top = height, bottom = -1;
+    for (int y = 0; y < height; y++) {
+        const unsigned char *row = rgba + 4 * (size_t)y * width;
+        int clear = 1;
+        for (int x = 0; x < width && clear; x++)
+            clear = row[4 * x + 3] == 0;
+        if (!clear) {
+            top = y < top ? y : top;
+            bottom = y;
+        }
+    }
+    c->hud_top = bottom < 0 ? 0 : top;
+    c->hud_rows = bottom < 0 ? 0 : bottom - top + 1;
+    if (gl_fault("hud_whole")) {
+        c->hud_top = 0;
+        c->hud_rows = height;
+    }
     return gl_check("uploading the HUD", e);
 }
 
@@ -230,26 +249,54 @@ void compositor_letterbox(const struct compositor *c, int sw, int sh, int *x, in
     *y = sh - *h - (sh - *h) / 2;
 }
 
+/* The canvas on a screen of its own size, copied texel for texel (glBlitFramebuffer): 1, or 0
+ * where the copy is not available, or this screen refused it (a GL error: then never again). */
+static int copy_canvas(struct compositor *c, const struct screen *s)
+{
+    if (!c->framebuffer_blit || s->width != c->width || s->height != c->height)
+        return 0;
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, c->canvas_fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, s->framebuffer);
+    glBlitFramebuffer(0, 0, c->width, c->height, 0, 0, c->width, c->height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, s->framebuffer);
+    if (glGetError() == GL_NO_ERROR)
+        return 1;
+    /* a screen whose framebuffer the copy cannot take (multisampled, say): drawn from now on */
+    c->framebuffer_blit = 0;
+    return 0;
+}
+
 int compositor_draw(struct compositor *c, const struct screen *s, struct error *e)
 {
-    glBindFramebuffer(GL_FRAMEBUFFER, s->framebuffer);
-    glViewport(0, 0, s->width, s->height);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
-    glClearColor(0, 0, 0, 1);
-    glClear(GL_COLOR_BUFFER_BIT);
-    /* letterbox: the canvas keeps its aspect ratio, centred */
-    int x, y, w, h;
-    compositor_letterbox(c, s->width, s->height, &x, &y, &w, &h);
-    glViewport(x, (s->height - h) / 2, w, h);
-    blit(c, c->canvas, w == c->width && h == c->height ? GL_NEAREST : GL_LINEAR, 0, 0, 1, 1);
-    if (c->hud_valid) {
+    if (!copy_canvas(c, s)) {
+        glBindFramebuffer(GL_FRAMEBUFFER, s->framebuffer);
         glViewport(0, 0, s->width, s->height);
+        glClearColor(0, 0, 0, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        /* letterbox: the canvas keeps its aspect ratio, centred */
+        int x, y, w, h;
+        compositor_letterbox(c, s->width, s->height, &x, &y, &w, &h);
+        glViewport(x, (s->height - h) / 2, w, h);
+        blit(c, c->canvas, w == c->width && h == c->height ? GL_NEAREST : GL_LINEAR, 0, 0, 1, 1);
+    }
+    if (c->hud_valid && c->hud_rows > 0) {
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        /* the HUD's rows are top-down: flip */
-        blit(c, c->hud, c->hud_width == s->width && c->hud_height == s->height ? GL_NEAREST : GL_LINEAR, 0, 1, 1,
-             -1);
+        int same_size = c->hud_width == s->width && c->hud_height == s->height;
+        if (same_size && c->hud_rows < c->hud_height) {
+            /* texel for texel, only the HUD's rows with something on them (its rows are top-down:
+             * flipped): the pixels of the whole HUD blended, where alpha 0 keeps the frame */
+            int H = c->hud_height, lo = c->hud_top, n = c->hud_rows;
+            glViewport(0, H - lo - n, s->width, n);
+            blit(c, c->hud, GL_NEAREST, 0, (float)(lo + n) / (float)H, 1, -(float)n / (float)H);
+        } else {
+            glViewport(0, 0, s->width, s->height);
+            blit(c, c->hud, same_size ? GL_NEAREST : GL_LINEAR, 0, 1, 1, -1);
+        }
         glDisable(GL_BLEND);
     }
     return gl_check("drawing the frame on the screen", e);

@@ -14,6 +14,8 @@ struct compositor {
     GLuint canvas, canvas_fbo;
     GLuint hud;                      /* RGBA8 texture of the screen's size, top row first */
     int hud_width, hud_height, hud_valid;
+    int hud_top, hud_rows;           /* the HUD's rows that are not wholly transparent (top row first) */
+    int framebuffer_blit;            /* the probe's: the canvas is copied to a screen of its size */
     GLuint blit, pipeline;           /* programs */
     int has_quad;                    /* holds a share of the pass quadrilateral */
     GLuint preview, preview_fbo;     /* a preview drawn tile by tile, shown once whole; 0 until then */

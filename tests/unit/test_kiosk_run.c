@@ -289,6 +289,32 @@ static void test_pipeline_view(void **state)
     assert_true(near_horizon[1] > 0);
 }
 
+/* The canvas is copied to a screen of its size where the GL can (glBlitFramebuffer), and the HUD
+ * blended over the rows it covers. The frames of a run with the HUD on are the same bytes as
+ * those of the plain way, the canvas drawn as a quad and the whole HUD blended over it (the fault
+ * hooks framebuffer_blit and hud_whole), and the HUD is really on them. */
+static void test_screen_copied_or_drawn(void **state)
+{
+    (void)state;
+    unsigned char *copied[FRAMES], *drawn[FRAMES];
+    run_config("tests/kiosk/headless_hud.conf", FRAMES, copied);
+    setenv("BT_FAULT", "framebuffer_blit hud_whole", 1);
+    run_config("tests/kiosk/headless_hud.conf", FRAMES, drawn);
+    unsetenv("BT_FAULT");
+    int hud_pixels = 0;
+    for (int f = 0; f < FRAMES; f++) {
+        for (int i = 0; i < width * height * 4; i++)
+            hud_pixels += copied[f][i] != frames[f][i];
+        print_message("frame %d with the HUD: largest difference copied / drawn %d\n", f + 1,
+                      max_difference(copied[f], drawn[f]));
+        assert_memory_equal(copied[f], drawn[f], (size_t)width * height * 4);
+        free(copied[f]);
+        free(drawn[f]);
+    }
+    print_message("%d bytes of the frames differ from those without the HUD\n", hud_pixels);
+    assert_true(hud_pixels > 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -297,6 +323,7 @@ int main(void)
         cmocka_unit_test(test_preview_comes_first),
         cmocka_unit_test(test_pipeline_view),
         cmocka_unit_test(test_attract_mode),
+        cmocka_unit_test(test_screen_copied_or_drawn),
     };
     return cmocka_run_group_tests(tests, run_kiosk, free_frames);
 }
