@@ -119,7 +119,7 @@ int cmd_bench(int argc, char **argv)
         {"--backend", "NAME", BACKEND}, {"--runs", "N", RUNS}, {"--size", "WxH", SIZE}, {"--only", "S[,S...]", ONLY},
         {NULL, NULL, 0},
     };
-    struct option_reader rd = {"bench", specs, NULL, usage, argc, argv, 0, 0, 0};
+    struct option_reader rd = {.cmd = "bench", .own = specs, .usage = usage, .argc = argc, .argv = argv};
     const struct option_spec *sp;
     const char *v;
     int got;

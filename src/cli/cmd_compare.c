@@ -37,7 +37,8 @@ static int parse(int argc, char **argv, const char *paths[2], int *json)
     int n = 0;
     enum { JSON };
     static const struct option_spec specs[] = {{"--json", NULL, JSON}, {NULL, NULL, 0}};
-    struct option_reader rd = {"compare", specs, NULL, usage, argc, argv, 1, 0, 0};
+    struct option_reader rd = {.cmd = "compare", .own = specs,
+                               .usage = usage, .argc = argc, .argv = argv, .arguments = 1};
     const struct option_spec *sp;
     const char *v;
     int got;

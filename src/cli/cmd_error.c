@@ -38,7 +38,8 @@ int cmd_error(int argc, char **argv)
     int json = 0, check = 0;
     enum { JSON, CHECK };
     static const struct option_spec specs[] = {{"--json", NULL, JSON}, {"--check", NULL, CHECK}, {NULL, NULL, 0}};
-    struct option_reader rd = {"error", specs, common_option_specs, usage, argc, argv, 0, 0, 0};
+    struct option_reader rd = {.cmd = "error", .own = specs, .common = common_option_specs,
+                               .usage = usage, .argc = argc, .argv = argv};
     const struct option_spec *sp;
     const char *v;
     int got;

@@ -21,6 +21,20 @@ done
 check "value that is an option" 2 "^bentray render: option --out needs a value \\(FILE\\), not the option '--force'" -- \
     $BT render --scene $S --out --force
 check "stray argument" 2 "^bentray render: unexpected argument 'extra.png'" -- $BT render --scene $S extra.png
+# read with getopt_long: a value joined with '=' or beginning with '-', unique abbreviations (named
+# in full where they are echoed), and the refusals; "--" and a single dash stay unknown options
+check "value joined with =" 2 "^bentray trace: --pixel: 5000 1 is outside" -- $BT trace --scene=$S --pixel=5000 1
+check "value beginning with -" 2 "^bentray render: --rtol: expected a relative tolerance from 1e-14 to 0.01, got '-1'" -- \
+    $BT render --scene $S --engine cpu --rtol -1 --out "$TMP/neg.png"
+check "abbreviations" 0 "on (egl|osmesa).*, 2 samples a pixel" -- $BT render --sc $S --si 8x6 --sa 2 --ou "$TMP/abbrev.png"
+check "abbreviations echoed in full" 0 "^frame 1/1 .*: bentray render --scene $S --size 16x12 --out " -- \
+    $BT animate --sc $S --fr 1 --si 16x12 --ou "$TMP/anim_abbrev"
+check "ambiguous abbreviation" 2 "^bentray render: option '--s' is ambiguous \(--scene, --shader-dir, --size, --samples, --set\); give more of its name" -- \
+    $BT render --s $S
+check "abbreviation missing its value" 2 "^bentray render: option --out needs a value \(FILE\)$" -- $BT render --scene $S --ou
+check "flag given a value" 2 "^bentray render: option --force takes no value, got '--force=yes'" -- $BT render --scene $S --force=yes
+check "double dash" 2 "^bentray compare: unknown option '--'" -- $BT compare -- a.dump b.dump
+check "single dash" 2 "^bentray render: unknown option '-scene' \(did you mean --scene\?\)" -- $BT render -scene $S
 check "info stray argument" 2 "^bentray info: unexpected argument 'egl'" -- $BT info egl
 check "bad size" 2 "\-\-size" -- $BT render --scene $S --size 10by10
 check "bad backend" 2 "\-\-backend" -- $BT render --scene $S --backend vulkan
