@@ -78,7 +78,7 @@ int cmd_error(int argc, char **argv)
     if (measure_cpu(&s, &cpu_opt, &cpu, &e) != 0) {
         fprintf(stderr, "bentray error: CPU reference: %s\n", e.message);
         measured_free(&gpu);
-        return EXIT_RUNTIME;
+        return exit_code_of(&e);
     }
     struct compare_result r;
     rc = EXIT_OK;

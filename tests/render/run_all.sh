@@ -199,6 +199,8 @@ check "trace escapes strings" 0 "^1$" -- sh -c "$BT trace --scene $W/quote.scene
 mkdir -p "$W/tx/scenes" "$W/tx/textures" "$W/tx/sky" && cp assets/sky/grid_* "$W/tx/sky/" && cp $S "$W/tx/scenes/"
 head -c $(( $(stat -c %s assets/textures/checker_grey.png) / 2 )) assets/textures/checker_grey.png > "$W/tx/textures/checker_grey.png"
 check "truncated texture" 2 "tx/scenes/test.scene:59: texture: cannot read .*checker_grey.png: the file is truncated" -- $BT render --scene "$W/tx/scenes/test.scene" --size 8x6 --out "$W/tx/o.png"
+# the CPU reference keeps that status (it was always 1 there)
+check "truncated texture, cpu engine" 2 "^bentray render: cannot read .*checker_grey.png: the file is truncated" -- $BT render --scene "$W/tx/scenes/test.scene" --size 8x6 --engine cpu --out "$W/tx/c.png"
 # settings that give no meaningful image say so, also under --quiet
 check "unfinished rays warned" 0 "warning: [0-9]+ of 192 rays \([0-9]+%\) were still travelling" -- $BT render --scene assets/scenes/lorenz.scene --size 16x12 --set render.max_path=2 --out "$W/s0.png" --quiet
 # a fixed step's budget is given one way in a file; an override replaces the file's other way
