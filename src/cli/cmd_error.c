@@ -84,7 +84,7 @@ int cmd_error(int argc, char **argv)
     rc = EXIT_OK;
     if (compare_dumps(&gpu.dump, &cpu.dump, &r, &e) != 0) {
         fprintf(stderr, "bentray error: %s\n", e.message);
-        rc = EXIT_RUNTIME;
+        rc = exit_code_of(&e);
     } else if (json) {
         print_times(stdout, &gpu, &cpu, 1);
         compare_print_json(stdout, &r);

@@ -218,6 +218,7 @@ check "render cpu" 0 "CPU reference" -- $BT render --scene $S --size 32x24 --eng
 check "render gpu dump" 0 "hit an object" -- $BT render --scene $S --size 32x24 --out "$TMP/gpu.png" --dump "$TMP/gpu.dump"
 check "compare flat" 0 "outcome differs: 0 of 768" -- $BT compare "$TMP/gpu.dump" "$TMP/cpu.dump"
 check "compare json" 0 "\"differ\": 0," -- $BT compare --json "$TMP/gpu.dump" "$TMP/cpu.dump"
+check "compare other size" 2 "small.dump: size 16x12 differs from the reference's 32x24" -- sh -c "$BT render --scene $S --size 16x12 --out $TMP/small.png --dump $TMP/small.dump >/dev/null 2>&1; $BT compare $TMP/small.dump $TMP/cpu.dump"
 check "compare other scene" 2 "scene" -- sh -c "$BT render --scene assets/scenes/lorenz.scene --size 32x24 --engine cpu --out $TMP/l.png --dump $TMP/l.dump >/dev/null 2>&1; $BT compare $TMP/l.dump $TMP/cpu.dump"
 # a well-formed dump of the largest size, with too little memory for its records: a failure of
 # the machine, exit 1, not bad input (the records are a sparse file: no disk is used)
