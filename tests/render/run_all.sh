@@ -274,6 +274,9 @@ check "bench no overwrite" 2 "exists; pass --force" -- $BT bench --out "$TMP/ben
 check "bench bad section" 2 "--only: unknown section 'speed'" -- $BT bench --out "$TMP/bench" --only speed
 check "bench without out" 2 "--out DIR is required" -- $BT bench --quick
 check "bench bad runs" 2 "--runs: expected an integer from 1 to 63" -- $BT bench --out "$TMP/bench" --runs 0
+# a section that fails ends the bench with its error's status: a data file the system refuses is 2
+mkdir -p "$TMP/bench_refused/bench/table1.csv"
+check "bench section's status" 2 "^bentray bench: table1: cannot write .*bench_refused/bench/table1.csv" -- $BT bench --out "$TMP/bench_refused" --quick --only table1
 . tests/render/kiosk.sh
 check "kiosk install" 0 "^install checks: 0 failed$" -- sh -c "sh tests/render/install_check.sh | grep -v '^ok '"
 # the limits before allocation and the GL fault paths (BT_FAULT), in a script of their own
