@@ -2,7 +2,6 @@
 #include "cli/commands.h"
 #include "io/stderr_filter.h"
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 static void usage(FILE *out)
@@ -21,7 +20,9 @@ static void usage(FILE *out)
             "  kiosk    the exhibition kiosk: knobs, buttons, preview and refined frames, HUD\n"
             "\n"
             "bentray COMMAND --help shows the options of a command; an option's value may follow it\n"
-            "or be joined to it with '=' (--scene=FILE). bentray --version prints the version.\n"
+            "or be joined to it with '=' (--scene=FILE), and an option may be shortened to any\n"
+            "beginning of its name that no other option of the command shares (--sam for --samples).\n"
+            "bentray --version prints the version.\n"
             "exit codes: 0 ok, 1 runtime failure, 2 bad usage or input, 3 a scene missed its own [quality]\n"
             "(bentray error --check)\n");
 }
@@ -30,37 +31,9 @@ static void usage(FILE *out)
 #define BENTRAY_VERSION "unknown"
 #endif
 
-/* "--name=value" becomes "--name" "value" (the first '=' splits), so that every command takes both
- * spellings of an option; other arguments are kept as they are. The array lives to the end. */
-static char **split_option_values(int *argc, char **argv)
-{
-    int extra = 0;
-    for (int i = 1; i < *argc; i++)
-        extra += strncmp(argv[i], "--", 2) == 0 && strchr(argv[i], '=') != NULL;
-    if (extra == 0)
-        return argv;
-    char **out = calloc((size_t)*argc + (size_t)extra + 1, sizeof *out);
-    if (!out)
-        return argv;
-    int n = 0;
-    for (int i = 0; i < *argc; i++) {
-        char *eq = i > 0 && strncmp(argv[i], "--", 2) == 0 ? strchr(argv[i], '=') : NULL;
-        if (eq) {
-            *eq = '\0';
-            out[n++] = argv[i];
-            out[n++] = eq + 1;
-        } else {
-            out[n++] = argv[i];
-        }
-    }
-    *argc = n;
-    return out;
-}
-
 int main(int argc, char **argv)
 {
     stderr_escape_controls();
-    argv = split_option_values(&argc, argv);
     if (argc >= 2 && strcmp(argv[1], "--version") == 0) {
         printf("bentray %s\n", BENTRAY_VERSION);
         return EXIT_OK;

@@ -365,14 +365,12 @@ int cmd_animate(int argc, char **argv)
         {"--fps", "F", FPS},       {"--out", "DIR", OUT},                         {"--video", "FILE", VIDEO},
         {"--force", NULL, FORCE},  {"--quiet", NULL, QUIET},                      {NULL, NULL, 0},
     };
-    struct option_reader rd = {"animate", specs, common_option_specs, usage, argc, argv, 0, 0, 0};
+    struct option_reader rd = {.cmd = "animate", .own = specs, .common = common_option_specs,
+                               .usage = usage, .argc = argc, .argv = argv};
     const struct option_spec *sp;
     const char *v;
     int got;
-    for (;;) {
-        int first = rd.next > 0 ? rd.next : 1;
-        if ((got = option_read(&rd, &sp, &v)) <= 0)
-            break;
+    while ((got = option_read(&rd, &sp, &v)) > 0) {
         long n;
         char *end;
         switch (sp->id) {
@@ -424,9 +422,13 @@ int cmd_animate(int argc, char **argv)
         default:
             if (options_common(&o, "animate", sp->id, v) != 0)
                 return EXIT_USAGE;
-            /* the command line's own options for render, echoed in each frame's command */
-            for (int k = first; k < rd.next && n_echo < (int)(sizeof echo / sizeof echo[0]); k++)
-                echo[n_echo++] = argv[k];
+            /* the command line's own options for render, echoed in each frame's command under
+             * their full names (an abbreviation on this line may be ambiguous to render) */
+            if (n_echo + 2 <= (int)(sizeof echo / sizeof echo[0])) {
+                echo[n_echo++] = sp->name;
+                if (v)
+                    echo[n_echo++] = v;
+            }
         }
     }
     if (got < 0)

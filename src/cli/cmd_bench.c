@@ -42,7 +42,7 @@ static void usage(FILE *out)
             "                       frame); without --out its table goes to standard output, no file written\n"
             "  --quick              tiny frames and few configurations: proves the command works, measures nothing\n"
             "  --backend NAME       egl, osmesa or auto (default)\n"
-            "exit codes: 0 ok, 1 runtime failure, 2 bad usage\n");
+            "exit codes: 0 ok, 1 runtime failure, 2 bad usage or input (a data file refused)\n");
 }
 
 static int parse_only(const char *list, int *wanted)
@@ -119,7 +119,7 @@ int cmd_bench(int argc, char **argv)
         {"--backend", "NAME", BACKEND}, {"--runs", "N", RUNS}, {"--size", "WxH", SIZE}, {"--only", "S[,S...]", ONLY},
         {NULL, NULL, 0},
     };
-    struct option_reader rd = {"bench", specs, NULL, usage, argc, argv, 0, 0, 0};
+    struct option_reader rd = {.cmd = "bench", .own = specs, .usage = usage, .argc = argc, .argv = argv};
     const struct option_spec *sp;
     const char *v;
     int got;
@@ -206,14 +206,15 @@ int cmd_bench(int argc, char **argv)
                   "the scripts in `docs/bench/`); every figure below comes from that run.%s\n\n",
             b.quick ? " **Quick mode: tiny frames, the figures mean nothing.**" : "");
     machine_line(b.md, &b);
-    /* a section that fails ends the bench with 1, whatever its error's status */
+    /* a section that fails ends the bench with its error's status: 2 for a data file the system
+     * refuses (a directory in its place), 1 where the machine fails */
     int rc = EXIT_OK;
     error_clear(&e);
     for (int k = 0; k < N_SECTIONS && rc == EXIT_OK; k++)
         if (wanted[k] && sections[k](&b, &e) != 0) {
             fprintf(stderr, "bentray bench: %s: %s%s%s\n", section_names[k], e.where, e.where[0] ? ": " : "",
                     e.message);
-            rc = EXIT_RUNTIME;
+            rc = exit_code_of(&e);
         }
     fprintf(b.md, "Total bench time: %.0f s.\n", bench_now() - b.started);
     if (out)

@@ -13,20 +13,20 @@ static void usage(FILE *out)
                  "Prints a table, or JSON with --json. Metrics are defined in docs/ERRORS.md.\n");
 }
 
-/* Read and check one dump; the messages of dump_read name the file already. EXIT_OK, EXIT_USAGE
- * for a bad dump, EXIT_RUNTIME where the machine has too little memory for a good one. */
+/* Read and check one dump; the messages of dump_read name the file already. EXIT_OK, or the exit
+ * code of the error's status: EXIT_USAGE for a bad dump (or a path refused), EXIT_RUNTIME where
+ * the machine fails (too little memory for a good dump, a read error). */
 static int load(const char *path, struct dump *d)
 {
     struct error e;
-    int rc = dump_read(path, d, &e);
-    if (rc != 0) {
+    if (dump_read(path, d, &e) != 0) {
         fprintf(stderr, "bentray compare: %s\n", e.message);
-        return rc == DUMP_READ_NO_MEMORY ? EXIT_RUNTIME : EXIT_USAGE;
+        return exit_code_of(&e);
     }
     if (compare_dump_check(d, &e) != 0) {
         fprintf(stderr, "bentray compare: %s: %s\n", path, e.message);
         dump_free(d);
-        return EXIT_USAGE;
+        return exit_code_of(&e);
     }
     return EXIT_OK;
 }
@@ -37,7 +37,8 @@ static int parse(int argc, char **argv, const char *paths[2], int *json)
     int n = 0;
     enum { JSON };
     static const struct option_spec specs[] = {{"--json", NULL, JSON}, {NULL, NULL, 0}};
-    struct option_reader rd = {"compare", specs, NULL, usage, argc, argv, 1, 0, 0};
+    struct option_reader rd = {.cmd = "compare", .own = specs,
+                               .usage = usage, .argc = argc, .argv = argv, .arguments = 1};
     const struct option_spec *sp;
     const char *v;
     int got;
@@ -89,5 +90,5 @@ int cmd_compare(int argc, char **argv)
         compare_print_table(stdout, &r);
     dump_free(&a);
     dump_free(&b);
-    return rc == 0 ? EXIT_OK : EXIT_USAGE;
+    return rc == 0 ? EXIT_OK : exit_code_of(&e);
 }

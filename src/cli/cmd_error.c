@@ -38,7 +38,8 @@ int cmd_error(int argc, char **argv)
     int json = 0, check = 0;
     enum { JSON, CHECK };
     static const struct option_spec specs[] = {{"--json", NULL, JSON}, {"--check", NULL, CHECK}, {NULL, NULL, 0}};
-    struct option_reader rd = {"error", specs, common_option_specs, usage, argc, argv, 0, 0, 0};
+    struct option_reader rd = {.cmd = "error", .own = specs, .common = common_option_specs,
+                               .usage = usage, .argc = argc, .argv = argv};
     const struct option_spec *sp;
     const char *v;
     int got;
@@ -77,13 +78,13 @@ int cmd_error(int argc, char **argv)
     if (measure_cpu(&s, &cpu_opt, &cpu, &e) != 0) {
         fprintf(stderr, "bentray error: CPU reference: %s\n", e.message);
         measured_free(&gpu);
-        return EXIT_RUNTIME;
+        return exit_code_of(&e);
     }
     struct compare_result r;
     rc = EXIT_OK;
     if (compare_dumps(&gpu.dump, &cpu.dump, &r, &e) != 0) {
         fprintf(stderr, "bentray error: %s\n", e.message);
-        rc = EXIT_RUNTIME;
+        rc = exit_code_of(&e);
     } else if (json) {
         print_times(stdout, &gpu, &cpu, 1);
         compare_print_json(stdout, &r);

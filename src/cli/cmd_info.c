@@ -59,7 +59,7 @@ int cmd_info(int argc, char **argv)
     enum { BACKEND, SHADER_DIR };
     static const struct option_spec specs[] = {
         {"--backend", "B", BACKEND}, {"--shader-dir", "DIR", SHADER_DIR}, {NULL, NULL, 0}};
-    struct option_reader rd = {"info", specs, NULL, usage, argc, argv, 0, 0, 0};
+    struct option_reader rd = {.cmd = "info", .own = specs, .usage = usage, .argc = argc, .argv = argv};
     const struct option_spec *sp;
     const char *v;
     int got;

@@ -52,7 +52,7 @@ int cmd_kiosk(int argc, char **argv)
         {"--out", "DIR", OUT},        {"--frames", "N", FRAMES},   {"--force", NULL, FORCE},
         {"--check-inputs", NULL, CHECK_INPUTS}, {NULL, NULL, 0},
     };
-    struct option_reader rd = {"kiosk", specs, NULL, usage, argc, argv, 0, 0, 0};
+    struct option_reader rd = {.cmd = "kiosk", .own = specs, .usage = usage, .argc = argc, .argv = argv};
     const struct option_spec *sp;
     const char *v;
     int got;

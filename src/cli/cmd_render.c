@@ -179,7 +179,8 @@ int cmd_render(int argc, char **argv)
         {"--quiet", NULL, QUIET},   {"--depth", "8|16", DEPTH}, {"--progress", NULL, PROGRESS},
         {NULL, NULL, 0},
     };
-    struct option_reader rd = {"render", specs, common_option_specs, usage, argc, argv, 0, 0, 0};
+    struct option_reader rd = {.cmd = "render", .own = specs, .common = common_option_specs,
+                               .usage = usage, .argc = argc, .argv = argv};
     const struct option_spec *sp;
     const char *v;
     int got;

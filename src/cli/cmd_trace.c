@@ -175,7 +175,8 @@ int cmd_trace(int argc, char **argv)
     long px = -1, py = -1;
     enum { PIXEL };
     static const struct option_spec specs[] = {{"--pixel", "I J", PIXEL}, {NULL, NULL, 0}};
-    struct option_reader rd = {"trace", specs, common_option_specs, usage, argc, argv, 0, 0, 0};
+    struct option_reader rd = {.cmd = "trace", .own = specs, .common = common_option_specs,
+                               .usage = usage, .argc = argc, .argv = argv};
     const struct option_spec *sp;
     const char *v;
     int got;

@@ -24,7 +24,9 @@ struct measured {
  * rows and samples on stderr (io/progress.h). */
 int measure_gpu(const struct scene *s, const char *backend, int need_state, enum progress_mode progress, int hdr,
                 struct measured *m, struct error *e);
-/* The CPU reference: 0, or -1 with cpu_render's error, its status always ERROR_RUNTIME (exit 1). */
+/* The CPU reference: 0, or -1 with cpu_render's error and its status (a texture that cannot be
+ * read: ERROR_INPUT where the file is refused or bad, ERROR_RUNTIME where the machine fails, as
+ * out of memory is). */
 int measure_cpu(const struct scene *s, const struct cpu_render_options *o, struct measured *m, struct error *e);
 void measured_free(struct measured *m);
 

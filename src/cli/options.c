@@ -91,50 +91,142 @@ static int read_fails(struct option_reader *r, int exit_code)
     return -1;
 }
 
+/* getopt_long's val for r->specs[k]: SPEC_VAL + k, above every character of a short option. */
+enum { SPEC_VAL = 0x100 };
+/* '-': arguments that are no option come back in order, as 1 with optarg; ':': a value missing
+ * at the end of the line is ':', not '?'; h: -h. */
+static const char short_options[] = "-:h";
+
+/* The table getopt_long reads: r's own options, the common ones that own does not name again
+ * (own wins, as it always did), then --help. */
+static int reader_build(struct option_reader *r)
+{
+    const struct option_spec *tables[2] = {r->own, r->common};
+    r->n_specs = 0;
+    for (int t = 0; t < 2; t++)
+        for (const struct option_spec *sp = tables[t]; sp && sp->name; sp++) {
+            if (t == 1 && spec_find(r->own, sp->name))
+                continue;
+            if (r->n_specs == OPTIONS_MAX_SPECS || strncmp(sp->name, "--", 2) != 0 || sp->name[2] == '\0') {
+                fprintf(stderr, "bentray %s: internal: option '%s' does not fit the table of %d long options\n",
+                        r->cmd, sp->name, OPTIONS_MAX_SPECS);
+                return -1;
+            }
+            r->specs[r->n_specs] = sp;
+            r->long_options[r->n_specs] = (struct option){sp->name + 2, sp->value ? required_argument : no_argument,
+                                                          NULL, SPEC_VAL + r->n_specs};
+            r->n_specs++;
+        }
+    r->long_options[r->n_specs] = (struct option){"help", no_argument, NULL, 'h'};
+    r->long_options[r->n_specs + 1] = (struct option){NULL, 0, NULL, 0};
+    return 0;
+}
+
+static const struct option_spec *spec_of_val(const struct option_reader *r, int val)
+{
+    return val >= SPEC_VAL && val < SPEC_VAL + r->n_specs ? r->specs[val - SPEC_VAL] : NULL;
+}
+
+static int unknown_option(struct option_reader *r, const char *arg)
+{
+    char name[128];
+    snprintf(name, sizeof name, "%.*s", (int)strcspn(arg, "="), arg);
+    const char *guess = spec_guess(r->own, r->common, name);
+    fprintf(stderr, "bentray %s: unknown option '%s'%s%s%s\n", r->cmd, arg, guess ? " (did you mean " : "",
+            guess ? guess : "", guess ? "?)" : "");
+    r->usage(stderr);
+    return read_fails(r, EXIT_USAGE);
+}
+
+/* A long option getopt_long did not take (its '?' with optopt 0): an abbreviation that more than
+ * one option begins with, or no option at all. */
+static int refused_option(struct option_reader *r, const char *arg)
+{
+    size_t len = strcspn(arg + 2, "=");
+    int matches = 0;
+    for (const struct option *lo = r->long_options; lo->name && len > 0; lo++)
+        matches += strncmp(lo->name, arg + 2, len) == 0;
+    if (matches < 2)
+        return unknown_option(r, arg);
+    fprintf(stderr, "bentray %s: option '--%.*s' is ambiguous (", r->cmd, (int)len, arg + 2);
+    const char *sep = "";
+    for (const struct option *lo = r->long_options; lo->name; lo++)
+        if (strncmp(lo->name, arg + 2, len) == 0) {
+            fprintf(stderr, "%s--%s", sep, lo->name);
+            sep = ", ";
+        }
+    fprintf(stderr, "); give more of its name\n");
+    return read_fails(r, EXIT_USAGE);
+}
+
 int option_read(struct option_reader *r, const struct option_spec **spec, const char **value)
 {
-    if (r->next < 1)
-        r->next = 1;
     *value = NULL;
-    if (r->next >= r->argc)
+    if (r->next < 1) {
+        if (reader_build(r) != 0)
+            return read_fails(r, EXIT_RUNTIME);
+        r->next = 1;
+        optind = 0;                 /* glibc's getopt starts afresh: a process may read several lines */
+    } else {
+        optind = r->next;           /* the command may have taken an argument itself (trace --pixel I J) */
+    }
+    opterr = 0;
+    /* getopt_long would read "-x" as short options and "--" as the end of the options; bentray
+     * has neither, so both are unknown options, as they always were ("-" alone is an argument) */
+    const char *arg = r->next < r->argc ? r->argv[r->next] : NULL;
+    if (arg && arg[0] == '-' && arg[1] != '\0' && strcmp(arg, "-h") != 0 && (arg[1] != '-' || arg[2] == '\0')) {
+        r->next++;
+        return unknown_option(r, arg);
+    }
+    int c = getopt_long(r->argc, r->argv, short_options, r->long_options, NULL);
+    r->next = optind;
+    const struct option_spec *sp = NULL;
+    switch (c) {
+    case -1:
         return 0;
-    const char *arg = r->argv[r->next++];
-    if (strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0) {
+    case 'h':
         r->usage(stdout);
         return read_fails(r, EXIT_OK);
-    }
-    if (arg[0] != '-' || arg[1] == '\0') {
+    case 1:
         if (!r->arguments) {
-            fprintf(stderr, "bentray %s: unexpected argument '%s' (options begin with --)\n", r->cmd, arg);
+            fprintf(stderr, "bentray %s: unexpected argument '%s' (options begin with --)\n", r->cmd, optarg);
             r->usage(stderr);
             return read_fails(r, EXIT_USAGE);
         }
         *spec = &argument_spec;
-        *value = arg;
+        *value = optarg;
+        return 1;
+    case ':':
+        sp = spec_of_val(r, optopt);
+        fprintf(stderr, "bentray %s: option %s needs a value (%s)\n", r->cmd, sp ? sp->name : r->argv[optind - 1],
+                sp ? sp->value : "?");
+        return read_fails(r, EXIT_USAGE);
+    case '?':
+        /* a flag given a value with '=' (optopt its val), or a long option not taken */
+        sp = spec_of_val(r, optopt);
+        if (sp || optopt == 'h') {
+            fprintf(stderr, "bentray %s: option %s takes no value, got '%s'\n", r->cmd, sp ? sp->name : "--help",
+                    r->argv[optind - 1]);
+            return read_fails(r, EXIT_USAGE);
+        }
+        arg = r->argv[optind - 1];
+        return strncmp(arg, "--", 2) == 0 ? refused_option(r, arg) : unknown_option(r, arg);
+    default:
+        sp = spec_of_val(r, c);
+        if (!sp) {
+            fprintf(stderr, "bentray %s: internal: getopt_long returned %d\n", r->cmd, c);
+            return read_fails(r, EXIT_RUNTIME);
+        }
+        /* a value of its own argument that is another option: the value was forgotten */
+        if (sp->value && optarg == r->argv[optind - 1] && strncmp(optarg, "--", 2) == 0 && optarg[2] != '\0') {
+            fprintf(stderr, "bentray %s: option %s needs a value (%s), not the option '%s'\n", r->cmd, sp->name,
+                    sp->value, optarg);
+            return read_fails(r, EXIT_USAGE);
+        }
+        *spec = sp;
+        *value = sp->value ? optarg : NULL;
         return 1;
     }
-    const struct option_spec *sp = spec_find(r->own, arg);
-    if (!sp)
-        sp = spec_find(r->common, arg);
-    if (!sp) {
-        const char *guess = spec_guess(r->own, r->common, arg);
-        fprintf(stderr, "bentray %s: unknown option '%s'%s%s%s\n", r->cmd, arg, guess ? " (did you mean " : "",
-                guess ? guess : "", guess ? "?)" : "");
-        r->usage(stderr);
-        return read_fails(r, EXIT_USAGE);
-    }
-    *spec = sp;
-    if (!sp->value)
-        return 1;
-    const char *next = r->next < r->argc ? r->argv[r->next] : NULL;
-    if (!next || (strncmp(next, "--", 2) == 0 && next[2] != '\0')) {
-        fprintf(stderr, "bentray %s: option %s needs a value (%s)%s%s%s\n", r->cmd, sp->name, sp->value,
-                next ? ", not the option '" : "", next ? next : "", next ? "'" : "");
-        return read_fails(r, EXIT_USAGE);
-    }
-    *value = next;
-    r->next++;
-    return 1;
 }
 
 int options_common(struct common_options *o, const char *cmd, int id, const char *v)

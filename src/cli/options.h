@@ -4,6 +4,7 @@
 #define BT_OPTIONS_H
 #include "ref/engine_cpu.h"
 #include "scene/scene.h"
+#include <getopt.h>
 #include <stdio.h>
 
 /* --set overrides on one command line; each is a pointer into argv, kept in a fixed array. */
@@ -65,9 +66,12 @@ enum {
 };
 extern const struct option_spec common_option_specs[];
 
+/* The most options one command reads: its own and the common ones together. */
+#define OPTIONS_MAX_SPECS 48
+
 /* A command's options being read, one by one, from its argument list: set cmd, own (its table),
  * common (common_option_specs, or NULL), usage, argc and argv, and arguments to 1 if the command
- * takes arguments that are not options (bentray compare's files). */
+ * takes arguments that are not options (bentray compare's files); leave the rest zero. */
 struct option_reader {
     const char *cmd;
     const struct option_spec *own, *common;
@@ -75,18 +79,30 @@ struct option_reader {
     int argc;
     char **argv;
     int arguments;
-    int next;        /* the argument read next; 0: the first after the command's name */
+    int next;        /* the argument read next; 0: the first after the command's name. A command
+                      * whose option takes a second value (trace --pixel I J) reads argv[next]
+                      * after option_read and moves next on. */
     int exit_code;   /* when option_read returned -1: EXIT_OK after --help, else EXIT_USAGE */
+    /* option_read's own: the table getopt_long reads, built on the first call from own and common */
+    int n_specs;
+    const struct option_spec *specs[OPTIONS_MAX_SPECS];
+    struct option long_options[OPTIONS_MAX_SPECS + 2];    /* the specs, --help, the end */
 };
 
 /* The next option, looked up in own and then in common: 1 with its spec and *value (the argument
- * after it, NULL for a flag), 0 at the end of the list, -1 when the command is to exit with
- * r->exit_code. Every command reads its options through here, so each fails the same way, after a
- * message on stderr naming the command and the option: an unknown option (with the nearest known
- * one within two edits, and the usage), a value missing (the end of the line, or another option
- * where the value should be), an argument where the command takes none. --help and -h print the
+ * after it, or after '=' in --name=value; NULL for a flag), 0 at the end of the list, -1 when the
+ * command is to exit with r->exit_code. Read with glibc's getopt_long, so a long option may be
+ * abbreviated to any unique beginning of its name (--sam 4 for --samples 4). Every command reads
+ * its options through here, so each fails the same way, after a message on stderr naming the
+ * command and the option: an unknown option (with the nearest known one within two edits, and
+ * the usage), an abbreviation that more than one option begins with (naming them), a value
+ * missing (the end of the line, or another option where the value should be), a value given to
+ * a flag (--force=1), an argument where the command takes none. A value may begin with '-'
+ * (--rtol -1, --pixel -1 5), but not with "--" unless joined with '='. --help and -h print the
  * usage on stdout (-1, EXIT_OK). With r->arguments, an argument that is not an option comes back
- * as OPT_ARGUMENT with itself as the value ("-" alone is an argument: standard output). */
+ * as OPT_ARGUMENT with itself as the value ("-" alone is an argument: standard output). "--" and
+ * an argument with one '-' but "-h" and "-" are unknown options. getopt_long's state is the
+ * process's: one reader is read at a time, and each starts it afresh on its first call. */
 int option_read(struct option_reader *r, const struct option_spec **spec, const char **value);
 
 /* Applies common option id with its value to o: 0, or -1 after a message that names the option

@@ -21,6 +21,20 @@ done
 check "value that is an option" 2 "^bentray render: option --out needs a value \\(FILE\\), not the option '--force'" -- \
     $BT render --scene $S --out --force
 check "stray argument" 2 "^bentray render: unexpected argument 'extra.png'" -- $BT render --scene $S extra.png
+# read with getopt_long: a value joined with '=' or beginning with '-', unique abbreviations (named
+# in full where they are echoed), and the refusals; "--" and a single dash stay unknown options
+check "value joined with =" 2 "^bentray trace: --pixel: 5000 1 is outside" -- $BT trace --scene=$S --pixel=5000 1
+check "value beginning with -" 2 "^bentray render: --rtol: expected a relative tolerance from 1e-14 to 0.01, got '-1'" -- \
+    $BT render --scene $S --engine cpu --rtol -1 --out "$TMP/neg.png"
+check "abbreviations" 0 "on (egl|osmesa).*, 2 samples a pixel" -- $BT render --sc $S --si 8x6 --sa 2 --ou "$TMP/abbrev.png"
+check "abbreviations echoed in full" 0 "^frame 1/1 .*: bentray render --scene $S --size 16x12 --out " -- \
+    $BT animate --sc $S --fr 1 --si 16x12 --ou "$TMP/anim_abbrev"
+check "ambiguous abbreviation" 2 "^bentray render: option '--s' is ambiguous \(--scene, --shader-dir, --size, --samples, --set\); give more of its name" -- \
+    $BT render --s $S
+check "abbreviation missing its value" 2 "^bentray render: option --out needs a value \(FILE\)$" -- $BT render --scene $S --ou
+check "flag given a value" 2 "^bentray render: option --force takes no value, got '--force=yes'" -- $BT render --scene $S --force=yes
+check "double dash" 2 "^bentray compare: unknown option '--'" -- $BT compare -- a.dump b.dump
+check "single dash" 2 "^bentray render: unknown option '-scene' \(did you mean --scene\?\)" -- $BT render -scene $S
 check "info stray argument" 2 "^bentray info: unexpected argument 'egl'" -- $BT info egl
 check "bad size" 2 "\-\-size" -- $BT render --scene $S --size 10by10
 check "bad backend" 2 "\-\-backend" -- $BT render --scene $S --backend vulkan
@@ -185,6 +199,8 @@ check "trace escapes strings" 0 "^1$" -- sh -c "$BT trace --scene $W/quote.scene
 mkdir -p "$W/tx/scenes" "$W/tx/textures" "$W/tx/sky" && cp assets/sky/grid_* "$W/tx/sky/" && cp $S "$W/tx/scenes/"
 head -c $(( $(stat -c %s assets/textures/checker_grey.png) / 2 )) assets/textures/checker_grey.png > "$W/tx/textures/checker_grey.png"
 check "truncated texture" 2 "tx/scenes/test.scene:59: texture: cannot read .*checker_grey.png: the file is truncated" -- $BT render --scene "$W/tx/scenes/test.scene" --size 8x6 --out "$W/tx/o.png"
+# the CPU reference keeps that status (it was always 1 there)
+check "truncated texture, cpu engine" 2 "^bentray render: cannot read .*checker_grey.png: the file is truncated" -- $BT render --scene "$W/tx/scenes/test.scene" --size 8x6 --engine cpu --out "$W/tx/c.png"
 # settings that give no meaningful image say so, also under --quiet
 check "unfinished rays warned" 0 "warning: [0-9]+ of 192 rays \([0-9]+%\) were still travelling" -- $BT render --scene assets/scenes/lorenz.scene --size 16x12 --set render.max_path=2 --out "$W/s0.png" --quiet
 # a fixed step's budget is given one way in a file; an override replaces the file's other way
@@ -202,6 +218,7 @@ check "render cpu" 0 "CPU reference" -- $BT render --scene $S --size 32x24 --eng
 check "render gpu dump" 0 "hit an object" -- $BT render --scene $S --size 32x24 --out "$TMP/gpu.png" --dump "$TMP/gpu.dump"
 check "compare flat" 0 "outcome differs: 0 of 768" -- $BT compare "$TMP/gpu.dump" "$TMP/cpu.dump"
 check "compare json" 0 "\"differ\": 0," -- $BT compare --json "$TMP/gpu.dump" "$TMP/cpu.dump"
+check "compare other size" 2 "small.dump: size 16x12 differs from the reference's 32x24" -- sh -c "$BT render --scene $S --size 16x12 --out $TMP/small.png --dump $TMP/small.dump >/dev/null 2>&1; $BT compare $TMP/small.dump $TMP/cpu.dump"
 check "compare other scene" 2 "scene" -- sh -c "$BT render --scene assets/scenes/lorenz.scene --size 32x24 --engine cpu --out $TMP/l.png --dump $TMP/l.dump >/dev/null 2>&1; $BT compare $TMP/l.dump $TMP/cpu.dump"
 # a well-formed dump of the largest size, with too little memory for its records: a failure of
 # the machine, exit 1, not bad input (the records are a sparse file: no disk is used)
@@ -257,6 +274,9 @@ check "bench no overwrite" 2 "exists; pass --force" -- $BT bench --out "$TMP/ben
 check "bench bad section" 2 "--only: unknown section 'speed'" -- $BT bench --out "$TMP/bench" --only speed
 check "bench without out" 2 "--out DIR is required" -- $BT bench --quick
 check "bench bad runs" 2 "--runs: expected an integer from 1 to 63" -- $BT bench --out "$TMP/bench" --runs 0
+# a section that fails ends the bench with its error's status: a data file the system refuses is 2
+mkdir -p "$TMP/bench_refused/bench/table1.csv"
+check "bench section's status" 2 "^bentray bench: table1: cannot write .*bench_refused/bench/table1.csv" -- $BT bench --out "$TMP/bench_refused" --quick --only table1
 . tests/render/kiosk.sh
 check "kiosk install" 0 "^install checks: 0 failed$" -- sh -c "sh tests/render/install_check.sh | grep -v '^ok '"
 # the limits before allocation and the GL fault paths (BT_FAULT), in a script of their own
