@@ -48,21 +48,21 @@ static int time_samples(struct bench *b, const struct scene *s, int runs, double
     return 0;
 }
 
-int bench_antialias(struct bench *b, struct error *e)
+/* The anti-aliasing section, its scene loaded into S. */
+static int antialias_on(struct bench *b, struct scene *s, struct error *e)
 {
-    static struct scene s;
-    if (bench_load_scene(&s, "demo", b->quick ? 32 : 0, b->quick ? 24 : 0, e) != 0)
+    if (bench_load_scene(s, "demo", b->quick ? 32 : 0, b->quick ? 24 : 0, e) != 0)
         return -1;
     FILE *csv = bench_data_file(b, "antialias.csv", e);
     if (!csv)
         return -1;
-    size_t pixels = (size_t)s.render.width * s.render.height;
+    size_t pixels = (size_t)s->render.width * s->render.height;
     fprintf(csv, "samples,seconds,rms_linear\n");
-    s.render.samples = b->quick ? 4 : AA_REFERENCE_SAMPLES;
-    bench_progress(b, "antialias: demo at %d samples a pixel (the reference)", s.render.samples);
+    s->render.samples = b->quick ? 4 : AA_REFERENCE_SAMPLES;
+    bench_progress(b, "antialias: demo at %d samples a pixel (the reference)", s->render.samples);
     double t_ref;
     unsigned char *reference;
-    if (time_samples(b, &s, 1, &t_ref, &reference, e) != 0) {
+    if (time_samples(b, s, 1, &t_ref, &reference, e) != 0) {
         fclose(csv);
         return -1;
     }
@@ -71,16 +71,16 @@ int bench_antialias(struct bench *b, struct error *e)
                    "the shared pattern, each a whole frame, averaged in linear light. Error: the root mean square "
                    "difference from the image at %d samples a pixel, in linear light (0 to 1) over the colour "
                    "channels; median seconds per image of %d runs.\n\n| samples | seconds | ratio to 1 | rms error "
-                   "| error ratio to 1 |\n|---|---|---|---|---|\n", s.render.width, s.render.height,
-            s.render.samples, b->runs);
+                   "| error ratio to 1 |\n|---|---|---|---|---|\n", s->render.width, s->render.height,
+            s->render.samples, b->runs);
     double t1 = 0.0, e1 = 0.0;
     int rc = 0;
     for (int k = 0; k < (b->quick ? 2 : AA_COUNTS) && rc == 0; k++) {
-        s.render.samples = aa_counts[k];
+        s->render.samples = aa_counts[k];
         bench_progress(b, "antialias: demo at %d samples a pixel", aa_counts[k]);
         double t;
         unsigned char *image;
-        rc = time_samples(b, &s, b->runs, &t, &image, e);
+        rc = time_samples(b, s, b->runs, &t, &image, e);
         if (rc != 0)
             break;
         b->done++;
@@ -96,5 +96,15 @@ int bench_antialias(struct bench *b, struct error *e)
     fprintf(b->md, "\n");
     free(reference);
     fclose(csv);
+    return rc;
+}
+
+int bench_antialias(struct bench *b, struct error *e)
+{
+    struct scene *s = scene_new(e);
+    if (!s)
+        return -1;
+    int rc = antialias_on(b, s, e);
+    scene_free(s);
     return rc;
 }

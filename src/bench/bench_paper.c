@@ -27,18 +27,17 @@ static int table1_scene(struct bench *b, struct scene *s, int k, int w, int h, s
     return 0;
 }
 
-/* Outcome differences and exit-direction p99 of the configuration against the reference, at a
- * quarter of the size (the reference at 800x600 would take minutes per model). */
-static int table1_errors(struct bench *b, const struct scene *base, const struct dump *ref, enum bench_accel a,
-                         struct compare_result *c, struct error *e)
+/* Outcome differences and exit-direction p99 of the configuration (made in S) against the reference,
+ * at a quarter of the size (the reference at 800x600 would take minutes per model). */
+static int table1_errors(struct bench *b, const struct scene *base, struct scene *s, const struct dump *ref,
+                         enum bench_accel a, struct compare_result *c, struct error *e)
 {
-    static struct scene s;
-    s = *base;
-    bench_apply_accel(&s, a);
+    *s = *base;
+    bench_apply_accel(s, a);
     struct bench_timing t;
     struct dump d;
     /* the error does not depend on the run: one frame */
-    int rc = bench_time(b, &s, 1, &t, &d, e);
+    int rc = bench_time(b, s, 1, &t, &d, e);
     if (rc != 0)
         return -1;
     rc = compare_dumps(&d, ref, c, e);
@@ -46,7 +45,9 @@ static int table1_errors(struct bench *b, const struct scene *base, const struct
     return rc;
 }
 
-int bench_table1(struct bench *b, struct error *e)
+/* The Table 1 section: each model's scene loaded into S, at a quarter of its size into SMALL, and
+ * each configuration made in RUN. */
+static int table1_on(struct bench *b, struct scene *s, struct scene *small, struct scene *run, struct error *e)
 {
     FILE *csv = bench_data_file(b, "table1.csv", e);
     if (!csv)
@@ -70,26 +71,24 @@ int bench_table1(struct bench *b, struct error *e)
                    "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     int met_time = 1, met_speedup = 1;
     for (int k = 0; k < T1_MODELS; k++) {
-        static struct scene s, small;
-        if (table1_scene(b, &s, k, b->width, b->height, e) != 0 ||
-            table1_scene(b, &small, k, b->width / 4, b->height / 4, e) != 0)
+        if (table1_scene(b, s, k, b->width, b->height, e) != 0 ||
+            table1_scene(b, small, k, b->width / 4, b->height / 4, e) != 0)
             return -1;
         struct cpu_image ref;
         struct cpu_render_options o = {.threads = 0, .progress = 0};
-        ref_options_default(&o.ref, &small);
-        bench_progress(b, "table 1: %s, CPU reference at %dx%d", t1_scene[k], small.render.width,
-                       small.render.height);
-        if (cpu_render(&small, &o, &ref, e) != 0)
+        ref_options_default(&o.ref, small);
+        bench_progress(b, "table 1: %s, CPU reference at %dx%d", t1_scene[k], small->render.width,
+                       small->render.height);
+        if (cpu_render(small, &o, &ref, e) != 0)
             return -1;
         struct bench_timing t[ACCEL_COUNT];
         struct compare_result c[ACCEL_COUNT];
         for (int a = 0; a < ACCEL_COUNT; a++) {
-            static struct scene run;
-            run = s;
-            bench_apply_accel(&run, (enum bench_accel)a);
+            *run = *s;
+            bench_apply_accel(run, (enum bench_accel)a);
             bench_progress(b, "table 1: %s, acceleration %s", t1_scene[k], bench_accel_names[a]);
-            if (bench_time(b, &run, b->runs, &t[a], NULL, e) != 0 ||
-                table1_errors(b, &small, &ref.dump, (enum bench_accel)a, &c[a], e) != 0) {
+            if (bench_time(b, run, b->runs, &t[a], NULL, e) != 0 ||
+                table1_errors(b, small, run, &ref.dump, (enum bench_accel)a, &c[a], e) != 0) {
                 cpu_image_free(&ref);
                 return -1;
             }
@@ -122,7 +121,18 @@ int bench_table1(struct bench *b, struct error *e)
     return 0;
 }
 
-int bench_figure5(struct bench *b, struct error *e)
+int bench_table1(struct bench *b, struct error *e)
+{
+    struct scene *s = scene_new(e), *small = s ? scene_new(e) : NULL, *run = small ? scene_new(e) : NULL;
+    int rc = run ? table1_on(b, s, small, run, e) : -1;
+    scene_free(run);
+    scene_free(small);
+    scene_free(s);
+    return rc;
+}
+
+/* The Figure 5 section, each frame's scene loaded into S. */
+static int figure5_on(struct bench *b, struct scene *s, struct error *e)
 {
     static const int counts_full[] = {1, 5, 10, 20}, counts_quick[] = {1, 2};
     const int *counts = b->quick ? counts_quick : counts_full;
@@ -139,15 +149,14 @@ int bench_figure5(struct bench *b, struct error *e)
     for (int i = 0; i < n; i++) {
         double sec[ACCEL_COUNT];
         for (int a = 0; a < ACCEL_COUNT; a++) {
-            static struct scene s;
-            if (bench_load_scene(&s, "schwarzschild", b->width, b->height, e) != 0)
+            if (bench_load_scene(s, "schwarzschild", b->width, b->height, e) != 0)
                 return -1;
-            bench_spheres(&s, counts[i]);
-            bench_paper_steps(&s, 50, 500, render_path_budget(&s.render));
-            bench_apply_accel(&s, (enum bench_accel)a);
+            bench_spheres(s, counts[i]);
+            bench_paper_steps(s, 50, 500, render_path_budget(&s->render));
+            bench_apply_accel(s, (enum bench_accel)a);
             struct bench_timing t;
             bench_progress(b, "figure 5: %d spheres, acceleration %s", counts[i], bench_accel_names[a]);
-            if (bench_time(b, &s, b->runs, &t, NULL, e) != 0)
+            if (bench_time(b, s, b->runs, &t, NULL, e) != 0)
                 return -1;
             b->done++;
             sec[a] = t.median;
@@ -170,4 +179,14 @@ int bench_figure5(struct bench *b, struct error *e)
                 "'' using 1:6 with linespoints title 'all, one fused pass a segment'\n", b->width, b->height);
     fclose(gp);
     return 0;
+}
+
+int bench_figure5(struct bench *b, struct error *e)
+{
+    struct scene *s = scene_new(e);
+    if (!s)
+        return -1;
+    int rc = figure5_on(b, s, e);
+    scene_free(s);
+    return rc;
 }

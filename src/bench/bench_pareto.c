@@ -157,35 +157,35 @@ static void mark_front(struct pareto_point *p, int n)
     }
 }
 
-static int measure_scene(struct bench *b, int k, struct pareto_point *pts, struct quality_bound *q, FILE *csv,
-                         struct error *e)
+/* Scene K of the table: its reference (BASE as loaded) and each configuration (S) timed against it; the
+ * number of configurations, or -1 with e. */
+static int measure_on(struct bench *b, int k, struct scene *base, struct scene *s, struct pareto_point *pts,
+                      struct quality_bound *q, FILE *csv, struct error *e)
 {
     const struct pareto_scene *ps = &scenes[k];
-    static struct scene base;
     int w = b->quick ? 32 : ps->paper_size ? b->width : 0, h = b->quick ? 24 : ps->paper_size ? b->height : 0;
-    if (bench_load_scene(&base, ps->scene, w, h, e) != 0)
+    if (bench_load_scene(base, ps->scene, w, h, e) != 0)
         return -1;
     if (ps->sky_only)
-        base.n_objects = 0;
-    *q = base.quality;
+        base->n_objects = 0;
+    *q = base->quality;
     struct cpu_image ref;
     struct cpu_render_options o = {.threads = 0, .progress = 0};
-    ref_options_default(&o.ref, &base);
-    bench_progress(b, "speed against error: %s, CPU reference at %dx%d", ps->title, base.render.width,
-                   base.render.height);
-    if (cpu_render(&base, &o, &ref, e) != 0)
+    ref_options_default(&o.ref, base);
+    bench_progress(b, "speed against error: %s, CPU reference at %dx%d", ps->title, base->render.width,
+                   base->render.height);
+    if (cpu_render(base, &o, &ref, e) != 0)
         return -1;
-    int n = b->quick ? 3 : base.model.type == MODEL_SCHWARZSCHILD ? N_CONFIGS : N_CONFIGS - N_ORBIT_CONFIGS;
+    int n = b->quick ? 3 : base->model.type == MODEL_SCHWARZSCHILD ? N_CONFIGS : N_CONFIGS - N_ORBIT_CONFIGS;
     for (int c = 0; c < n; c++) {
-        static struct scene s;
-        s = base;
-        if (!config_applies(&base, &configs[c])) {
+        *s = *base;
+        if (!config_applies(base, &configs[c])) {
             pts[c] = (struct pareto_point){NAN, NAN, NAN, NAN, 0, 0};
             continue;
         }
-        apply_config(&s, &configs[c]);
+        apply_config(s, &configs[c]);
         struct error why;
-        if (scene_validate(&s, &why) != 0) {
+        if (scene_validate(s, &why) != 0) {
             error_set(e, ERROR_RUNTIME, NULL, "internal: configuration %s of %s: %s", configs[c].name, ps->title,
                       why.message);
             cpu_image_free(&ref);
@@ -195,7 +195,7 @@ static int measure_scene(struct bench *b, int k, struct pareto_point *pts, struc
         struct dump d;
         struct compare_result cr;
         bench_progress(b, "speed against error: %s, %s", ps->title, configs[c].name);
-        if (bench_time(b, &s, b->runs, &t, &d, e) != 0) {
+        if (bench_time(b, s, b->runs, &t, &d, e) != 0) {
             cpu_image_free(&ref);
             return -1;
         }
@@ -214,6 +214,16 @@ static int measure_scene(struct bench *b, int k, struct pareto_point *pts, struc
     for (int c = 0; c < n; c++)
         fprintf(csv, "\"%s\",\"%s\",%.5f,%.4f,%.4g,%.4g,%d\n", ps->title, configs[c].name, pts[c].seconds, pts[c].outcome_pct,
                 pts[c].sky_p99, pts[c].hit_p99, pts[c].front);
+    return n;
+}
+
+static int measure_scene(struct bench *b, int k, struct pareto_point *pts, struct quality_bound *q, FILE *csv,
+                         struct error *e)
+{
+    struct scene *base = scene_new(e), *s = base ? scene_new(e) : NULL;
+    int n = s ? measure_on(b, k, base, s, pts, q, csv, e) : -1;
+    scene_free(s);
+    scene_free(base);
     return n;
 }
 

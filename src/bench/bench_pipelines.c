@@ -29,7 +29,8 @@ static const struct pipeline_case cases[] = {
 static const enum pipeline_choice row_pipelines[3] = {PIPELINE_MULTIPASS, PIPELINE_FUSED, PIPELINE_SINGLE};
 static const char *const row_names[3] = {"multipass", "fused", "single"};
 
-int bench_pipelines(struct bench *b, struct error *e)
+/* The pipelines section, each case's scene loaded into S. */
+static int pipelines_on(struct bench *b, struct scene *s, struct error *e)
 {
     FILE *csv = bench_data_file(b, "pipelines.csv", e);
     if (!csv)
@@ -54,21 +55,20 @@ int bench_pipelines(struct bench *b, struct error *e)
         struct dump d[3];
         int ran[3] = {0, 0, 0};
         double differ[3] = {0.0, 0.0, 0.0};
-        static struct scene s;
         int rc = 0;
         for (int p = 0; p < 3 && rc == 0; p++) {
-            if (bench_load_scene(&s, cases[k].scene, b->quick ? 32 : 0, b->quick ? 24 : 0, e) != 0) {
+            if (bench_load_scene(s, cases[k].scene, b->quick ? 32 : 0, b->quick ? 24 : 0, e) != 0) {
                 rc = -1;
                 break;
             }
             if (cases[k].integrated)
-                s.render.method = METHOD_RK4;
+                s->render.method = METHOD_RK4;
             /* exact orbits have no fused pass */
-            if (row_pipelines[p] == PIPELINE_FUSED && s.render.method == METHOD_ORBIT_TABLE)
+            if (row_pipelines[p] == PIPELINE_FUSED && s->render.method == METHOD_ORBIT_TABLE)
                 continue;
-            s.render.pipeline = row_pipelines[p];
+            s->render.pipeline = row_pipelines[p];
             bench_progress(b, "pipelines: %s, %s", cases[k].label, row_names[p]);
-            rc = bench_time(b, &s, b->runs, &t[p], &d[p], e);
+            rc = bench_time(b, s, b->runs, &t[p], &d[p], e);
             ran[p] = rc == 0;
             b->done++;
         }
@@ -90,8 +90,8 @@ int bench_pipelines(struct bench *b, struct error *e)
             }
             double ms = 1e3 * t[p].median / (double)(t[p].passes > 0 ? t[p].passes : 1);
             snprintf(cell[p], sizeof cell[p], "%.3f | %ld | %.2f", t[p].median, t[p].passes, ms);
-            fprintf(csv, "%s,%s,%d,%d,%.4f,%ld,%.3f,%.4f\n", cases[k].label, row_names[p], s.render.width,
-                    s.render.height, t[p].median, t[p].passes, ms, differ[p]);
+            fprintf(csv, "%s,%s,%d,%d,%.4f,%ld,%.3f,%.4f\n", cases[k].label, row_names[p], s->render.width,
+                    s->render.height, t[p].median, t[p].passes, ms, differ[p]);
         }
         double single_speedup = t[0].median / t[2].median;
         if (ran[1]) {
@@ -105,7 +105,7 @@ int bench_pipelines(struct bench *b, struct error *e)
             met &= single_speedup >= FLOW_TARGET_SPEEDUP;
             worst = single_speedup < worst ? single_speedup : worst;
         }
-        fprintf(b->md, "| %s | %dx%d | %s | %s | %s | %s | %s |\n", cases[k].label, s.render.width, s.render.height,
+        fprintf(b->md, "| %s | %dx%d | %s | %s | %s | %s | %s |\n", cases[k].label, s->render.width, s->render.height,
                 cell[0], cell[1], cell[2], speedup, differing);
     }
     fclose(csv);
@@ -113,4 +113,14 @@ int bench_pipelines(struct bench *b, struct error *e)
                    "potential and refraction: **%s** (smallest speed-up %.2f).\n\n", FLOW_TARGET_SPEEDUP,
             met ? "met" : "missed", worst);
     return 0;
+}
+
+int bench_pipelines(struct bench *b, struct error *e)
+{
+    struct scene *s = scene_new(e);
+    if (!s)
+        return -1;
+    int rc = pipelines_on(b, s, e);
+    scene_free(s);
+    return rc;
 }

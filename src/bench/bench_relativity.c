@@ -30,34 +30,34 @@ static int reference(const struct scene *s, struct cpu_image *ref, struct error 
     return cpu_render(s, &o, ref, e);
 }
 
-static int moving_objects(struct bench *b, FILE *csv, struct error *e)
+/* The approaching cube: BASE as loaded, S as each row varies it. */
+static int moving_objects(struct bench *b, FILE *csv, struct scene *base, struct scene *s, struct error *e)
 {
-    static struct scene base, s;
-    if (bench_load_scene(&base, "cube_approach", b->quick ? 32 : b->width, b->quick ? 24 : b->height, e) != 0)
+    if (bench_load_scene(base, "cube_approach", b->quick ? 32 : b->width, b->quick ? 24 : b->height, e) != 0)
         return -1;
     struct cpu_image ref;
     bench_progress(b, "moving objects: CPU reference");
-    if (reference(&base, &ref, e) != 0)
+    if (reference(base, &ref, e) != 0)
         return -1;
     fprintf(b->md, "### Moving objects: rays against polygons\n\nThe approaching cube (cube_approach, 0.95 c) at "
                    "%dx%d: traced per pixel in its rest frame, and drawn by the polygon method with N segments per "
                    "edge of each face; median seconds per frame of %d runs and the error against the CPU "
                    "reference.\n\n| method | seconds | differing pixels | hit p99 (of size) |\n|---|---|---|---|\n",
-            base.render.width, base.render.height, b->runs);
+            base->render.width, base->render.height, b->runs);
     int n = b->quick ? 2 : N_SUBDIVISIONS + 1;
     for (int k = 0; k < n; k++) {
-        s = base;
+        *s = *base;
         char what[64];
         if (k == 0) {
             snprintf(what, sizeof what, "rays");
         } else {
-            s.render.moving_objects = MOVING_POLYGONS;
-            s.render.polygon_subdivision = subdivisions[k - 1];
+            s->render.moving_objects = MOVING_POLYGONS;
+            s->render.polygon_subdivision = subdivisions[k - 1];
             snprintf(what, sizeof what, "polygons, N = %d", subdivisions[k - 1]);
         }
         struct bench_timing t;
         struct compare_result cr;
-        if (time_against(b, &s, &ref, what, &t, &cr, e) != 0) {
+        if (time_against(b, s, &ref, what, &t, &cr, e) != 0) {
             cpu_image_free(&ref);
             return -1;
         }
@@ -73,7 +73,7 @@ static int moving_objects(struct bench *b, FILE *csv, struct error *e)
 
 /* The same frame with every effect off, at rest, and with the scene's own observer: the cost of
  * aberration and colour. */
-static int effects(struct bench *b, FILE *csv, struct error *e)
+static int effects(struct bench *b, FILE *csv, struct scene *moving, struct scene *rest, struct error *e)
 {
     static const char *const scenes[] = {"starflight", "blackhole_flight"};
     fprintf(b->md, "### What the observer's effects cost\n\nEach scene at %dx%d at rest with `effects = "
@@ -81,19 +81,18 @@ static int effects(struct bench *b, FILE *csv, struct error *e)
                    "| scene | at rest, geometry | moving, with its effects | ratio |\n|---|---|---|---|\n",
             b->quick ? 32 : b->width, b->quick ? 24 : b->height);
     for (int k = 0; k < (b->quick ? 1 : 2); k++) {
-        static struct scene moving, rest;
-        if (bench_load_scene(&moving, scenes[k], b->quick ? 32 : b->width, b->quick ? 24 : b->height, e) != 0)
+        if (bench_load_scene(moving, scenes[k], b->quick ? 32 : b->width, b->quick ? 24 : b->height, e) != 0)
             return -1;
-        rest = moving;
-        rest.observer.velocity = v3(0.0, 0.0, 0.0);
-        rest.observer.effects = EFFECTS_GEOMETRY;
+        *rest = *moving;
+        rest->observer.velocity = v3(0.0, 0.0, 0.0);
+        rest->observer.effects = EFFECTS_GEOMETRY;
         struct bench_timing t_rest, t_moving;
         bench_progress(b, "effects: %s at rest", scenes[k]);
-        if (bench_time(b, &rest, b->runs, &t_rest, NULL, e) != 0)
+        if (bench_time(b, rest, b->runs, &t_rest, NULL, e) != 0)
             return -1;
         b->done++;
         bench_progress(b, "effects: %s moving", scenes[k]);
-        if (bench_time(b, &moving, b->runs, &t_moving, NULL, e) != 0)
+        if (bench_time(b, moving, b->runs, &t_moving, NULL, e) != 0)
             return -1;
         b->done++;
         fprintf(b->md, "| %s | %.4f | %.4f | %.2f |\n", scenes[k], t_rest.median, t_moving.median,
@@ -112,7 +111,10 @@ int bench_relativity(struct bench *b, struct error *e)
         return -1;
     fprintf(csv, "scene,configuration,seconds,outcome_pct,hit_p99_rel\n");
     fprintf(b->md, "## Relativity\n\n");
-    int rc = moving_objects(b, csv, e) != 0 || effects(b, csv, e) != 0 ? -1 : 0;
+    struct scene *s1 = scene_new(e), *s2 = s1 ? scene_new(e) : NULL;
+    int rc = !s2 || moving_objects(b, csv, s1, s2, e) != 0 || effects(b, csv, s1, s2, e) != 0 ? -1 : 0;
+    scene_free(s2);
+    scene_free(s1);
     fclose(csv);
     return rc;
 }

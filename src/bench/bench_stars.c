@@ -45,29 +45,29 @@ static int time_stars(struct bench *b, const struct scene *s, int runs, double *
     return 0;
 }
 
-int bench_stars(struct bench *b, struct error *e)
+/* The stars section, its scene loaded into S. */
+static int stars_on(struct bench *b, struct scene *s, struct error *e)
 {
-    static struct scene s;
-    if (bench_load_scene(&s, "star_sky", b->quick ? 64 : 1920, b->quick ? 36 : 1080, e) != 0)
+    if (bench_load_scene(s, "star_sky", b->quick ? 64 : 1920, b->quick ? 36 : 1080, e) != 0)
         return -1;
     FILE *csv = bench_data_file(b, "stars.csv", e);
     if (!csv)
         return -1;
     fprintf(csv, "stars,milky_way,gpu_seconds,star_seconds\n");
-    double milky_way = s.sky.milky_way;
+    double milky_way = s->sky.milky_way;
     fprintf(b->md, "## Stars of the sky\n\n`[sky] stars` and `milky_way` (docs/STARS.md): star_sky.scene at %dx%d. "
                    "The GPU traces the rays; the stars and the Milky Way are then drawn on the CPU's cores from "
                    "the rays' exit directions. Median seconds per frame of %d runs.\n\n"
                    "| sky | GPU seconds | star seconds | total | ratio to no stars |\n|---|---|---|---|---|\n",
-            s.render.width, s.render.height, b->runs);
+            s->render.width, s->render.height, b->runs);
     double none = 0.0;
     int rc = 0;
     for (int k = 0; k < (b->quick ? 2 : STAR_CONFIGS) && rc == 0; k++) {
-        s.sky.stars = star_configs[k].stars;
-        s.sky.milky_way = star_configs[k].milky_way ? milky_way : 0.0;
+        s->sky.stars = star_configs[k].stars;
+        s->sky.milky_way = star_configs[k].milky_way ? milky_way : 0.0;
         bench_progress(b, "stars: %s", star_configs[k].what);
         double gpu, stars;
-        rc = time_stars(b, &s, b->runs, &gpu, &stars, e);
+        rc = time_stars(b, s, b->runs, &gpu, &stars, e);
         if (rc != 0)
             break;
         b->done++;
@@ -75,9 +75,19 @@ int bench_stars(struct bench *b, struct error *e)
         none = k == 0 ? total : none;
         fprintf(b->md, "| %s | %.3f | %.3f | %.3f | %.2f |\n", star_configs[k].what, gpu, stars, total,
                 none > 0.0 ? total / none : 0.0);
-        fprintf(csv, "%d,%g,%.5f,%.5f\n", s.sky.stars, s.sky.milky_way, gpu, stars);
+        fprintf(csv, "%d,%g,%.5f,%.5f\n", s->sky.stars, s->sky.milky_way, gpu, stars);
     }
     fprintf(b->md, "\n");
     fclose(csv);
+    return rc;
+}
+
+int bench_stars(struct bench *b, struct error *e)
+{
+    struct scene *s = scene_new(e);
+    if (!s)
+        return -1;
+    int rc = stars_on(b, s, e);
+    scene_free(s);
     return rc;
 }

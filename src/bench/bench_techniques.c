@@ -34,7 +34,7 @@ struct sweep {
     void (*apply)(struct scene *s, int value);
 };
 
-static int run_sweep(struct bench *b, const struct sweep *w, double *speedup, struct error *e)
+static int sweep_on(struct bench *b, const struct sweep *w, struct scene *s, double *speedup, struct error *e)
 {
     FILE *csv = bench_data_file(b, w->csv, e);
     if (!csv)
@@ -43,16 +43,15 @@ static int run_sweep(struct bench *b, const struct sweep *w, double *speedup, st
     fprintf(b->md, "| %s | seconds | passes | speed-up over %d |\n|---|---|---|---|\n", w->column, w->values[0]);
     double base = 0.0;
     for (int i = 0; i < w->n; i++) {
-        static struct scene s;
-        if (technique_scene(b, &s, w->segments, e) != 0) {
+        if (technique_scene(b, s, w->segments, e) != 0) {
             fclose(csv);
             return -1;
         }
-        w->apply(&s, w->values[i]);
+        w->apply(s, w->values[i]);
         char what[96];
         snprintf(what, sizeof what, "%s %d", w->what, w->values[i]);
         struct bench_timing t;
-        if (time_one(b, &s, what, &t, e) != 0) {
+        if (time_one(b, s, what, &t, e) != 0) {
             fclose(csv);
             return -1;
         }
@@ -63,6 +62,16 @@ static int run_sweep(struct bench *b, const struct sweep *w, double *speedup, st
     }
     fclose(csv);
     return 0;
+}
+
+static int run_sweep(struct bench *b, const struct sweep *w, double *speedup, struct error *e)
+{
+    struct scene *s = scene_new(e);
+    if (!s)
+        return -1;
+    int rc = sweep_on(b, w, s, speedup, e);
+    scene_free(s);
+    return rc;
 }
 
 static void apply_unroll(struct scene *s, int k)
@@ -107,7 +116,8 @@ int bench_batching(struct bench *b, struct error *e)
     return 0;
 }
 
-int bench_early_z(struct bench *b, struct error *e)
+/* The early-z section, each case's scene loaded into S. */
+static int early_z_on(struct bench *b, struct scene *s, struct error *e)
 {
     FILE *csv = bench_data_file(b, "early_z.csv", e);
     if (!csv)
@@ -125,20 +135,19 @@ int bench_early_z(struct bench *b, struct error *e)
     };
     double retired[2] = {0, 0};
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        static struct scene s;
-        if (technique_scene(b, &s, 30, e) != 0)
+        if (technique_scene(b, s, 30, e) != 0)
             return -1;
         if (cases[i].enclosed) {
-            s.objects[0].center = s.camera.position;
-            s.objects[0].radius = 0.05 * v3_len(v3_sub(s.camera.look_at, s.camera.position));
+            s->objects[0].center = s->camera.position;
+            s->objects[0].radius = 0.05 * v3_len(v3_sub(s->camera.look_at, s->camera.position));
         }
-        s.render.early_z = cases[i].early_z;
-        s.render.termination_interval = cases[i].interval;
+        s->render.early_z = cases[i].early_z;
+        s->render.termination_interval = cases[i].interval;
         char what[96];
         snprintf(what, sizeof what, "early-z: %s, early_z %d, interval %d", cases[i].name, cases[i].early_z,
                  cases[i].interval);
         struct bench_timing t;
-        if (time_one(b, &s, what, &t, e) != 0)
+        if (time_one(b, s, what, &t, e) != 0)
             return -1;
         if (cases[i].enclosed)
             retired[cases[i].early_z] = t.median;
@@ -152,29 +161,38 @@ int bench_early_z(struct bench *b, struct error *e)
     return 0;
 }
 
+int bench_early_z(struct bench *b, struct error *e)
+{
+    struct scene *s = scene_new(e);
+    if (!s)
+        return -1;
+    int rc = early_z_on(b, s, e);
+    scene_free(s);
+    return rc;
+}
+
 /* GL integration steps per second: no objects, a bounding sphere no ray leaves, fixed RK4 steps,
  * 60 per pass; against the C kernel doing the same float arithmetic on every core. */
-int bench_limit(struct bench *b, struct error *e)
+static int limit_on(struct bench *b, struct scene *s, struct error *e)
 {
-    static struct scene s;
-    if (bench_load_scene(&s, "schwarzschild", b->width, b->height, e) != 0)
+    if (bench_load_scene(s, "schwarzschild", b->width, b->height, e) != 0)
         return -1;
-    s.n_objects = 0;
-    s.render.method = METHOD_RK4;
-    s.render.step_control = STEP_FIXED;
-    s.render.bound_radius = 1e4;
-    s.render.segments = b->quick ? 1 : 10;
-    s.render.steps_per_segment = 60;
-    s.render.steps_per_pass = 60;
-    s.render.early_z = 0;
+    s->n_objects = 0;
+    s->render.method = METHOD_RK4;
+    s->render.step_control = STEP_FIXED;
+    s->render.bound_radius = 1e4;
+    s->render.segments = b->quick ? 1 : 10;
+    s->render.steps_per_segment = 60;
+    s->render.steps_per_pass = 60;
+    s->render.early_z = 0;
     struct bench_timing t;
-    if (time_one(b, &s, "limit: GL integration throughput", &t, e) != 0)
+    if (time_one(b, s, "limit: GL integration throughput", &t, e) != 0)
         return -1;
-    double gl_rate = (double)s.render.width * s.render.height * s.render.segments * s.render.steps_per_segment /
+    double gl_rate = (double)s->render.width * s->render.height * s->render.segments * s->render.steps_per_segment /
                      t.median;
     struct cpu_limit_result c;
     bench_progress(b, "limit: C kernel on every core");
-    if (cpu_limit_measure(&s.model, METHOD_RK4, 65536, 60, 0, b->quick ? 0.05 : 2.0, &c, e) != 0)
+    if (cpu_limit_measure(&s->model, METHOD_RK4, 65536, 60, 0, b->quick ? 0.05 : 2.0, &c, e) != 0)
         return -1;
     b->done++;
     FILE *csv = bench_data_file(b, "limit.csv", e);
@@ -188,7 +206,17 @@ int bench_limit(struct bench *b, struct error *e)
                    "float arithmetic (src/bench/cpu_limit.c), vectorised by the compiler, %d threads.\n\n"
                    "| path | steps per second |\n|---|---|\n| GL (%s) | %.3g |\n| C kernel | %.3g |\n\n"
                    "The GL path reaches %.2f of the C kernel. Target: at least 0.5: **%s**.\n\n",
-            s.render.width, s.render.height, s.render.segments * s.render.steps_per_segment, b->runs, c.threads,
+            s->render.width, s->render.height, s->render.segments * s->render.steps_per_segment, b->runs, c.threads,
             b->renderer, gl_rate, c.steps_per_second, fraction, fraction >= 0.5 ? "met" : "missed");
     return 0;
+}
+
+int bench_limit(struct bench *b, struct error *e)
+{
+    struct scene *s = scene_new(e);
+    if (!s)
+        return -1;
+    int rc = limit_on(b, s, e);
+    scene_free(s);
+    return rc;
 }

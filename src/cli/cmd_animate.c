@@ -348,6 +348,104 @@ static int make_video(const char *dir, int frames, double fps, const char *video
     return EXIT_OK;
 }
 
+/* Where and how the frames go: the options of the command line besides the animation's own. */
+struct animate_out {
+    const char *dir, *video;
+    int force, quiet;
+    double fps;
+    const char *const *echo;          /* the command line's own options for render */
+    int n_echo;
+};
+
+/* Loads BASE from O, checks every frame's scene (in S) and file, then renders and writes them. */
+static int animate(const struct common_options *o, const struct animation *a, const struct animate_out *out,
+                   struct scene *base, struct scene *s)
+{
+    int rc = options_load_scene(o, "animate", base);
+    if (rc)
+        return rc;
+    /* everything checked before any work: every frame's scene, the directory, each frame's file */
+    static char sets[ANIMATE_MAX_RANGES + 1][384];
+    int n_sets;
+    for (int k = 0; k < a->frames; k++)
+        if ((rc = frame_scene(a, base, k, s, sets, &n_sets)) != 0)
+            return rc;
+    struct stat st;
+    if (stat(out->dir, &st) != 0) {
+        if (errno != ENOENT || mkdir(out->dir, 0777) != 0) {
+            fprintf(stderr, "bentray animate: --out %s: %s\n", out->dir, strerror(errno));
+            return EXIT_USAGE;
+        }
+    } else if (!S_ISDIR(st.st_mode)) {
+        fprintf(stderr, "bentray animate: --out %s: not a directory\n", out->dir);
+        return EXIT_USAGE;
+    }
+    char path[4200];
+    struct error why;
+    for (int k = 0; k < a->frames; k++) {
+        frame_path(out->dir, k, a->frames, path, sizeof path);
+        if (output_check(path, out->force, &why) != 0) {
+            fprintf(stderr, "bentray animate: --out: %s\n", why.message);
+            return exit_code_of(&why);
+        }
+    }
+    if (out->video && output_check(out->video, out->force, &why) != 0) {
+        fprintf(stderr, "bentray animate: --video: %s\n", why.message);
+        return exit_code_of(&why);
+    }
+    struct progress p;
+    progress_begin(&p, PROGRESS_NONE);
+    for (int k = 0; k < a->frames; k++) {
+        frame_scene(a, base, k, s, sets, &n_sets);
+        frame_path(out->dir, k, a->frames, path, sizeof path);
+        struct measured m;
+        struct error e;
+        int failed;
+        if (options_engine_cpu(o)) {
+            struct cpu_render_options opt;
+            options_cpu(o, s, &opt);
+            opt.progress = PROGRESS_NONE;
+            failed = measure_cpu(s, &opt, &m, &e);
+        } else {
+            failed = measure_gpu(s, o->backend, 0, PROGRESS_NONE, 0, &m, &e);
+        }
+        if (failed) {
+            fprintf(stderr, "bentray animate: frame %d: %s\n", k + 1, e.message);
+            return exit_code_of(&e);
+        }
+        if (png_write_rgba8(path, m.dump.width, m.dump.height, m.rgba, out->force, &e) != 0) {
+            fprintf(stderr, "bentray animate: frame %d: %s\n", k + 1, e.message);
+            measured_free(&m);
+            return exit_code_of(&e);
+        }
+        measured_free(&m);
+        double elapsed = progress_now() - p.start, left = elapsed * (a->frames - k - 1) / (k + 1);
+        if (out->quiet) {
+            printf("%s\n", path);
+        } else {
+            printf("frame %d/%d (%.1f s, about %.0f s left): bentray render", k + 1, a->frames, elapsed, left);
+            for (int i = 0; i < out->n_echo; i++) {
+                putchar(' ');
+                shell_word(stdout, out->echo[i]);
+            }
+            for (int i = 0; i < n_sets; i++) {
+                fputs(" --set ", stdout);
+                shell_word(stdout, sets[i]);
+            }
+            fputs(" --out ", stdout);
+            shell_word(stdout, path);
+            putchar('\n');
+        }
+        fflush(stdout);
+    }
+    if (out->video) {
+        rc = make_video(out->dir, a->frames, out->fps, out->video, out->force);
+        if (rc == EXIT_OK && !out->quiet)
+            printf("video: %s (%d frames at %g per second)\n", out->video, a->frames, out->fps);
+    }
+    return rc;
+}
+
 int cmd_animate(int argc, char **argv)
 {
     struct common_options o = {.backend = "auto"};
@@ -458,88 +556,13 @@ int cmd_animate(int argc, char **argv)
         fprintf(stderr, "\n");
         return EXIT_RUNTIME;
     }
-    static struct scene base, s;
-    int rc = options_load_scene(&o, "animate", &base);
-    if (rc)
-        return rc;
-    /* everything checked before any work: every frame's scene, the directory, each frame's file */
-    static char sets[ANIMATE_MAX_RANGES + 1][384];
-    int n_sets;
-    for (int k = 0; k < a.frames; k++)
-        if ((rc = frame_scene(&a, &base, k, &s, sets, &n_sets)) != 0)
-            return rc;
-    struct stat st;
-    if (stat(dir, &st) != 0) {
-        if (errno != ENOENT || mkdir(dir, 0777) != 0) {
-            fprintf(stderr, "bentray animate: --out %s: %s\n", dir, strerror(errno));
-            return EXIT_USAGE;
-        }
-    } else if (!S_ISDIR(st.st_mode)) {
-        fprintf(stderr, "bentray animate: --out %s: not a directory\n", dir);
-        return EXIT_USAGE;
-    }
-    char path[4200];
-    struct error why;
-    for (int k = 0; k < a.frames; k++) {
-        frame_path(dir, k, a.frames, path, sizeof path);
-        if (output_check(path, force, &why) != 0) {
-            fprintf(stderr, "bentray animate: --out: %s\n", why.message);
-            return exit_code_of(&why);
-        }
-    }
-    if (video && output_check(video, force, &why) != 0) {
-        fprintf(stderr, "bentray animate: --video: %s\n", why.message);
-        return exit_code_of(&why);
-    }
-    struct progress p;
-    progress_begin(&p, PROGRESS_NONE);
-    for (int k = 0; k < a.frames; k++) {
-        frame_scene(&a, &base, k, &s, sets, &n_sets);
-        frame_path(dir, k, a.frames, path, sizeof path);
-        struct measured m;
-        struct error e;
-        int failed;
-        if (options_engine_cpu(&o)) {
-            struct cpu_render_options opt;
-            options_cpu(&o, &s, &opt);
-            opt.progress = PROGRESS_NONE;
-            failed = measure_cpu(&s, &opt, &m, &e);
-        } else {
-            failed = measure_gpu(&s, o.backend, 0, PROGRESS_NONE, 0, &m, &e);
-        }
-        if (failed) {
-            fprintf(stderr, "bentray animate: frame %d: %s\n", k + 1, e.message);
-            return exit_code_of(&e);
-        }
-        if (png_write_rgba8(path, m.dump.width, m.dump.height, m.rgba, force, &e) != 0) {
-            fprintf(stderr, "bentray animate: frame %d: %s\n", k + 1, e.message);
-            measured_free(&m);
-            return exit_code_of(&e);
-        }
-        measured_free(&m);
-        double elapsed = progress_now() - p.start, left = elapsed * (a.frames - k - 1) / (k + 1);
-        if (quiet) {
-            printf("%s\n", path);
-        } else {
-            printf("frame %d/%d (%.1f s, about %.0f s left): bentray render", k + 1, a.frames, elapsed, left);
-            for (int i = 0; i < n_echo; i++) {
-                putchar(' ');
-                shell_word(stdout, echo[i]);
-            }
-            for (int i = 0; i < n_sets; i++) {
-                fputs(" --set ", stdout);
-                shell_word(stdout, sets[i]);
-            }
-            fputs(" --out ", stdout);
-            shell_word(stdout, path);
-            putchar('\n');
-        }
-        fflush(stdout);
-    }
-    if (video) {
-        rc = make_video(dir, a.frames, fps, video, force);
-        if (rc == EXIT_OK && !quiet)
-            printf("video: %s (%d frames at %g per second)\n", video, a.frames, fps);
-    }
+    struct animate_out out = {dir, video, force, quiet, fps, echo, n_echo};
+    struct error e;
+    struct scene *base = scene_new(&e), *s = base ? scene_new(&e) : NULL;
+    int rc = s ? animate(&o, &a, &out, base, s) : EXIT_RUNTIME;
+    if (!s)
+        fprintf(stderr, "bentray animate: %s\n", e.message);
+    scene_free(s);
+    scene_free(base);
     return rc;
 }

@@ -32,6 +32,57 @@ static void print_times(FILE *f, const struct measured *gpu, const struct measur
                 cpu->engine, cpu->seconds, cpu->work);
 }
 
+/* Renders S (loaded here from O) on both engines and reports the error; the command's exit code. */
+static int error_scene(const struct common_options *o, int json, int check, struct scene *s)
+{
+    int rc = options_load_scene(o, "error", s);
+    if (rc)
+        return rc;
+    if (check && !quality_stated(&s->quality)) {
+        fprintf(stderr, "bentray error: --check: %s states no [quality] (differing_percent, exit_p99, hit_p99)\n",
+                s->path);
+        return EXIT_USAGE;
+    }
+    struct cpu_render_options cpu_opt;
+    options_cpu(o, s, &cpu_opt);
+    struct measured gpu, cpu;
+    struct error e;
+    if (measure_gpu(s, o->backend, 1, PROGRESS_AUTO, 0, &gpu, &e) != 0) {
+        fprintf(stderr, "bentray error: GPU engine: %s\n", e.message);
+        return exit_code_of(&e);
+    }
+    if (measure_cpu(s, &cpu_opt, &cpu, &e) != 0) {
+        fprintf(stderr, "bentray error: CPU reference: %s\n", e.message);
+        measured_free(&gpu);
+        return exit_code_of(&e);
+    }
+    struct compare_result r;
+    rc = EXIT_OK;
+    if (compare_dumps(&gpu.dump, &cpu.dump, &r, &e) != 0) {
+        fprintf(stderr, "bentray error: %s\n", e.message);
+        rc = exit_code_of(&e);
+    } else if (json) {
+        print_times(stdout, &gpu, &cpu, 1);
+        compare_print_json(stdout, &r);
+        printf("}\n");
+    } else {
+        compare_print_table(stdout, &r);
+        print_times(stdout, &gpu, &cpu, 0);
+    }
+    if (rc == EXIT_OK && check) {
+        char report[512];
+        int missed = quality_check(&s->quality, &r, report, sizeof report);
+        fprintf(json ? stderr : stdout, "quality of %s:\n%s", s->path, report);
+        if (missed > 0) {
+            fprintf(stderr, "bentray error: %s misses %d of its [quality] bounds\n", s->path, missed);
+            rc = EXIT_QUALITY;
+        }
+    }
+    measured_free(&gpu);
+    measured_free(&cpu);
+    return rc;
+}
+
 int cmd_error(int argc, char **argv)
 {
     struct common_options o = {.backend = "auto", .both_engines = 1};
@@ -58,51 +109,13 @@ int cmd_error(int argc, char **argv)
     }
     if (got < 0)
         return rd.exit_code;
-    static struct scene s;
-    int rc = options_load_scene(&o, "error", &s);
-    if (rc)
-        return rc;
-    if (check && !quality_stated(&s.quality)) {
-        fprintf(stderr, "bentray error: --check: %s states no [quality] (differing_percent, exit_p99, hit_p99)\n",
-                s.path);
-        return EXIT_USAGE;
-    }
-    struct cpu_render_options cpu_opt;
-    options_cpu(&o, &s, &cpu_opt);
-    struct measured gpu, cpu;
     struct error e;
-    if (measure_gpu(&s, o.backend, 1, PROGRESS_AUTO, 0, &gpu, &e) != 0) {
-        fprintf(stderr, "bentray error: GPU engine: %s\n", e.message);
-        return exit_code_of(&e);
-    }
-    if (measure_cpu(&s, &cpu_opt, &cpu, &e) != 0) {
-        fprintf(stderr, "bentray error: CPU reference: %s\n", e.message);
-        measured_free(&gpu);
-        return exit_code_of(&e);
-    }
-    struct compare_result r;
-    rc = EXIT_OK;
-    if (compare_dumps(&gpu.dump, &cpu.dump, &r, &e) != 0) {
+    struct scene *s = scene_new(&e);
+    if (!s) {
         fprintf(stderr, "bentray error: %s\n", e.message);
-        rc = exit_code_of(&e);
-    } else if (json) {
-        print_times(stdout, &gpu, &cpu, 1);
-        compare_print_json(stdout, &r);
-        printf("}\n");
-    } else {
-        compare_print_table(stdout, &r);
-        print_times(stdout, &gpu, &cpu, 0);
+        return exit_code_of(&e);
     }
-    if (rc == EXIT_OK && check) {
-        char report[512];
-        int missed = quality_check(&s.quality, &r, report, sizeof report);
-        fprintf(json ? stderr : stdout, "quality of %s:\n%s", s.path, report);
-        if (missed > 0) {
-            fprintf(stderr, "bentray error: %s misses %d of its [quality] bounds\n", s.path, missed);
-            rc = EXIT_QUALITY;
-        }
-    }
-    measured_free(&gpu);
-    measured_free(&cpu);
+    int rc = error_scene(&o, json, check, s);
+    scene_free(s);
     return rc;
 }

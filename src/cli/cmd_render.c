@@ -168,6 +168,64 @@ static void default_output_name(const char *scene_name, char *out, size_t len)
 }
 
 
+/* What the command line asks of a render besides the scene. */
+struct render_job {
+    const char *out_path, *dump_path;
+    int force, quiet, progress, to_stdout;
+    enum image_format format;
+};
+
+/* Loads S from O, renders it and writes what J asks for; the command's exit code. */
+static int render_scene(const struct common_options *o, const struct render_job *j, struct scene *s)
+{
+    const char *out_path = j->out_path, *dump_path = j->dump_path;
+    int force = j->force, quiet = j->quiet, progress = j->progress, to_stdout = j->to_stdout;
+    enum image_format format = j->format;
+    struct error why;
+    int rc = options_load_scene(o, "render", s);
+    if (rc)
+        return rc;
+    char default_out[SCENE_NAME_LEN + 8];
+    if (!out_path) {
+        default_output_name(s->name, default_out, sizeof default_out);
+        out_path = default_out;
+    }
+    /* refuse before the work, not after: a long render must not end in "file exists" */
+    const char *outputs[2] = {to_stdout ? NULL : out_path, dump_path};
+    for (int k = 0; k < 2; k++) {
+        if (outputs[k] && output_check(outputs[k], force, &why) != 0) {
+            fprintf(stderr, "bentray render: %s: %s\n", k ? "--dump" : "--out", why.message);
+            return exit_code_of(&why);
+        }
+    }
+    if (dump_path && !to_stdout && output_same(out_path, dump_path)) {
+        fprintf(stderr, "bentray render: --out and --dump name the same file %s: give them different names\n",
+                dump_path);
+        return EXIT_USAGE;
+    }
+    struct measured r = {0};
+    struct error err;
+    rc = render_with(o, s, dump_path != NULL, quiet ? PROGRESS_NONE : progress ? PROGRESS_ALWAYS : PROGRESS_AUTO,
+                     image_format_float(format), &r);
+    if (rc == EXIT_OK &&
+        image_write(out_path, format, r.dump.width, r.dump.height, r.rgba, r.color, force, &err) != 0) {
+        fprintf(stderr, "bentray render: --out: %s\n", err.message);
+        rc = exit_code_of(&err);
+    } else if (rc == EXIT_OK && dump_path && dump_write(dump_path, &r.dump, force, &err) != 0) {
+        fprintf(stderr, "bentray render: --dump: %s\n", err.message);
+        rc = exit_code_of(&err);
+    }
+    if (rc == EXIT_OK) {
+        if (!quiet)
+            summarise(&r, s);
+        warn_meaningless(&r, s);
+        if (!to_stdout)
+            printf("%s\n", out_path);
+    }
+    measured_free(&r);
+    return rc;
+}
+
 int cmd_render(int argc, char **argv)
 {
     struct common_options o = {.backend = "auto"};
@@ -232,47 +290,13 @@ int cmd_render(int argc, char **argv)
                         "(bentray render ... --out - > image.png)\n");
         return EXIT_USAGE;
     }
-    static struct scene s;
-    int rc = options_load_scene(&o, "render", &s);
-    if (rc)
-        return rc;
-    char default_out[SCENE_NAME_LEN + 8];
-    if (!out_path) {
-        default_output_name(s.name, default_out, sizeof default_out);
-        out_path = default_out;
+    struct render_job job = {out_path, dump_path, force, quiet, progress, to_stdout, format};
+    struct scene *s = scene_new(&why);
+    if (!s) {
+        fprintf(stderr, "bentray render: %s\n", why.message);
+        return exit_code_of(&why);
     }
-    /* refuse before the work, not after: a long render must not end in "file exists" */
-    const char *outputs[2] = {to_stdout ? NULL : out_path, dump_path};
-    for (int k = 0; k < 2; k++) {
-        if (outputs[k] && output_check(outputs[k], force, &why) != 0) {
-            fprintf(stderr, "bentray render: %s: %s\n", k ? "--dump" : "--out", why.message);
-            return exit_code_of(&why);
-        }
-    }
-    if (dump_path && !to_stdout && output_same(out_path, dump_path)) {
-        fprintf(stderr, "bentray render: --out and --dump name the same file %s: give them different names\n",
-                dump_path);
-        return EXIT_USAGE;
-    }
-    struct measured r = {0};
-    struct error err;
-    rc = render_with(&o, &s, dump_path != NULL, quiet ? PROGRESS_NONE : progress ? PROGRESS_ALWAYS : PROGRESS_AUTO,
-                     image_format_float(format), &r);
-    if (rc == EXIT_OK &&
-        image_write(out_path, format, r.dump.width, r.dump.height, r.rgba, r.color, force, &err) != 0) {
-        fprintf(stderr, "bentray render: --out: %s\n", err.message);
-        rc = exit_code_of(&err);
-    } else if (rc == EXIT_OK && dump_path && dump_write(dump_path, &r.dump, force, &err) != 0) {
-        fprintf(stderr, "bentray render: --dump: %s\n", err.message);
-        rc = exit_code_of(&err);
-    }
-    if (rc == EXIT_OK) {
-        if (!quiet)
-            summarise(&r, &s);
-        warn_meaningless(&r, &s);
-        if (!to_stdout)
-            printf("%s\n", out_path);
-    }
-    measured_free(&r);
+    int rc = render_scene(&o, &job, s);
+    scene_free(s);
     return rc;
 }

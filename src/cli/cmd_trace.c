@@ -169,6 +169,32 @@ static int trace_cpu(const struct common_options *o, const struct scene *s, long
     return EXIT_OK;
 }
 
+/* Loads S from O and follows the ray through pixel (px, py); the command's exit code. */
+static int trace_scene(const struct common_options *o, struct scene *s, long px, long py)
+{
+    int rc = options_load_scene(o, "trace", s);
+    if (rc)
+        return rc;
+    if (px >= s->render.width || py >= s->render.height) {
+        fprintf(stderr, "bentray trace: --pixel: %ld %ld is outside the %dx%d image\n", px, py, s->render.width,
+                s->render.height);
+        return EXIT_USAGE;
+    }
+    /* one point per segment end, and the end of the ray */
+    struct polyline pl = {0, render_segments(&s->render) + 2, NULL};
+    pl.points = calloc((size_t)pl.cap, sizeof *pl.points);
+    if (!pl.points) {
+        fprintf(stderr, "bentray trace: out of memory\n");
+        return EXIT_RUNTIME;
+    }
+    /* The per-segment read-back looks at the live ray state, which early ray termination stops
+     * updating once a ray is retired; early-z never changes a ray's path (test_acceleration). */
+    s->render.early_z = 0;
+    rc = options_engine_cpu(o) ? trace_cpu(o, s, px, py, &pl) : trace_gpu(o, s, px, py, &pl);
+    free(pl.points);
+    return rc;
+}
+
 int cmd_trace(int argc, char **argv)
 {
     struct common_options o = {.backend = "auto"};
@@ -207,26 +233,13 @@ int cmd_trace(int argc, char **argv)
                         "render.samples applies to images (bentray render)\n");
         return EXIT_USAGE;
     }
-    static struct scene s;
-    int rc = options_load_scene(&o, "trace", &s);
-    if (rc)
-        return rc;
-    if (px >= s.render.width || py >= s.render.height) {
-        fprintf(stderr, "bentray trace: --pixel: %ld %ld is outside the %dx%d image\n", px, py, s.render.width,
-                s.render.height);
-        return EXIT_USAGE;
+    struct error e;
+    struct scene *s = scene_new(&e);
+    if (!s) {
+        fprintf(stderr, "bentray trace: %s\n", e.message);
+        return exit_code_of(&e);
     }
-    /* one point per segment end, and the end of the ray */
-    struct polyline pl = {0, render_segments(&s.render) + 2, NULL};
-    pl.points = calloc((size_t)pl.cap, sizeof *pl.points);
-    if (!pl.points) {
-        fprintf(stderr, "bentray trace: out of memory\n");
-        return EXIT_RUNTIME;
-    }
-    /* The per-segment read-back looks at the live ray state, which early ray termination stops
-     * updating once a ray is retired; early-z never changes a ray's path (test_acceleration). */
-    s.render.early_z = 0;
-    rc = options_engine_cpu(&o) ? trace_cpu(&o, &s, px, py, &pl) : trace_gpu(&o, &s, px, py, &pl);
-    free(pl.points);
+    int rc = trace_scene(&o, s, px, py);
+    scene_free(s);
     return rc;
 }

@@ -66,6 +66,7 @@ struct kiosk {
     struct input_source *inputs[KIOSK_MAX_INPUTS];
     struct kiosk_state state;
     struct scene *scenes;            /* every scene file, read and checked once at start */
+    struct scene *trial;             /* a scene a state is tried on before it is taken */
     int virtual_clock;
     long long turn;                  /* turns of the loop so far */
     double now;
@@ -213,9 +214,8 @@ static void notice(struct kiosk *k, const char *what, const char *why)
  * when the state was taken (as proposed or so corrected). */
 static int take_state(struct kiosk *k, const struct kiosk_state *proposed)
 {
-    static struct scene trial;
     struct error serr;
-    if (kiosk_state_apply(proposed, &k->scenes[proposed->scene], &trial, &serr) == 0) {
+    if (kiosk_state_apply(proposed, &k->scenes[proposed->scene], k->trial, &serr) == 0) {
         k->state = *proposed;
         return 1;
     }
@@ -466,6 +466,9 @@ static int preflight(struct kiosk *k, struct error *e)
     k->scenes = calloc((size_t)c->kiosk.n_scenes, sizeof *k->scenes);
     if (!k->scenes)
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory for %d scenes", c->kiosk.n_scenes);
+    k->trial = scene_new(e);
+    if (!k->trial)
+        return -1;
     for (int i = 0; i < c->kiosk.n_scenes; i++) {
         struct error serr;
         if (scene_load(&k->scenes[i], c->kiosk.scenes[i], e) != 0)
@@ -478,20 +481,20 @@ static int preflight(struct kiosk *k, struct error *e)
             fprintf(k->log, "%s: [sky] stars and milky_way are drawn into bentray render's images; the kiosk shows "
                             "the sky without them\n", c->kiosk.scenes[i]);
         /* every scene must take the knobs' start values: reset and a scene change fall back to them */
-        static struct scene trial;
+        struct scene *trial = k->trial;
         struct kiosk_state start;
         kiosk_state_reset(&start, c);
         start.scene = i;
-        if (kiosk_state_apply(&start, &k->scenes[i], &trial, &serr) != 0)
+        if (kiosk_state_apply(&start, &k->scenes[i], trial, &serr) != 0)
             return error_set(e, ERROR_INPUT, c->path, "the knobs' start values (speed %g c, mass %g) do not fit %s: "
                              "%.512s", c->speed.start, c->mass.start, c->kiosk.scenes[i], serr.message);
         /* a black hole whose mass the [mass] knob sets directly (no [kiosk] mass_key): at the knob's
          * largest mass its shadow spans at most the share of the view a scene's [kiosk] may reach */
         const struct scene *sc = &k->scenes[i];
         if (sc->model.type == MODEL_SCHWARZSCHILD && sc->kiosk.mass.key[0] == '\0') {
-            trial = *sc;
-            trial.model.mass = c->mass.max;
-            double across = scene_shadow_diameter_deg(&trial);
+            *trial = *sc;
+            trial->model.mass = c->mass.max;
+            double across = scene_shadow_diameter_deg(trial);
             double limit = SCENE_KIOSK_SHADOW_MAX_FRACTION * sc->camera.fov_deg;
             if (across > limit) {
                 char what[96];
@@ -595,6 +598,12 @@ static struct screen *open_screen(struct kiosk *k, struct error *e)
     }
 }
 
+static void free_scenes(struct kiosk *k)
+{
+    free(k->scenes);
+    scene_free(k->trial);
+}
+
 static void kiosk_close(struct kiosk *k)
 {
     for (int i = 0; i < k->cfg->n_inputs; i++)
@@ -603,7 +612,7 @@ static void kiosk_close(struct kiosk *k)
         kiosk_view_release(&k->view);
     hud_font_close(k->font);
     free(k->hud_rgba);
-    free(k->scenes);
+    free_scenes(k);
     image_cache_release();
     if (k->screen)
         screen_close(k->screen);
@@ -637,20 +646,20 @@ enum kiosk_status kiosk_run(const struct kiosk_config *c, const struct kiosk_run
     error_clear(&e);
     if (preflight(&k, &e) != 0) {
         fprintf(k.log, "bentray kiosk: %s%s%s\n", ERROR_TEXT(&e));
-        free(k.scenes);
+        free_scenes(&k);
         return KIOSK_BAD_CONFIG;
     }
     int headless = c->display.backend == KIOSK_BACKEND_HEADLESS;
     if (headless && headless_preflight(&k, &e) != 0) {
         fprintf(k.log, "bentray kiosk: %s%s%s\n", ERROR_TEXT(&e));
-        free(k.scenes);
+        free_scenes(&k);
         return KIOSK_BAD_CONFIG;
     }
     catch_stop_signals();
     k.screen = open_screen(&k, &e);
     if (!k.screen) {
         fprintf(k.log, "bentray kiosk: no screen: %s%s%s\n", ERROR_TEXT(&e));
-        free(k.scenes);
+        free_scenes(&k);
         return stop_requested ? KIOSK_STOPPED : KIOSK_FAILED;
     }
     k.virtual_clock = strcmp(k.screen->name, "headless") == 0;

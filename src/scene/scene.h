@@ -285,6 +285,11 @@ int scene_has_moving_objects(const struct scene *s);
 
 /* Defaults for every field (flat space, one sphere-free empty scene). */
 void scene_defaults(struct scene *s);
+/* A zeroed scene on the heap, owned by the caller; NULL with e filled (ERROR_RUNTIME) when there
+ * is no memory for one. */
+struct scene *scene_new(struct error *e);
+/* Frees a scene of scene_new; NULL is nothing to free. */
+void scene_free(struct scene *s);
 /* Parse FILE into s (defaults first). 0 ok, -1 with err filled. */
 int scene_load(struct scene *s, const char *path, struct error *err);
 /* Apply one "section.key=value" override (sections of objects: object.NAME.key). */

@@ -1,6 +1,7 @@
 /* Values every scene starts from; a scene file only names what differs. The numbers are the ones
  * documented in docs/SCENES.md: change both together. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include "scene/scene.h"
 #include "physics/blackbody.h"
@@ -212,6 +213,19 @@ void scene_defaults(struct scene *s)
     s->sky.galactic_center = v3(0.0, 0.0, -1.0);
     s->ambient_light = v3(1.0, 1.0, 1.0);
     s->quality = (struct quality_bound){-1.0, -1.0, -1.0};
+}
+
+struct scene *scene_new(struct error *e)
+{
+    struct scene *s = calloc(1, sizeof *s);
+    if (!s)
+        error_set(e, ERROR_RUNTIME, NULL, "out of memory for a scene");
+    return s;
+}
+
+void scene_free(struct scene *s)
+{
+    free(s);
 }
 
 void scene_object_defaults(struct object *o, const char *name)

@@ -203,6 +203,23 @@ static int validate_knob_shadow(const struct scene *s, const char *knob, const s
                    value, across, trial->camera.fov_deg, 100.0 * SCENE_KIOSK_SHADOW_MAX_FRACTION, hint);
 }
 
+/* [kiosk]: the knob's key set to either end of its range in TRIAL, a copy of s, is taken, and
+ * keeps a black hole's shadow within the view. */
+static int validate_knob_ends(const struct scene *s, const char *knob, const struct knob_mapping *m,
+                              struct scene *trial, struct error *err)
+{
+    const double ends[2] = {m->min, m->max};
+    for (int i = 0; i < 2; i++) {
+        struct error e;
+        *trial = *s;
+        if (scene_set_number(trial, m->key, ends[i], &e) != 0)
+            return invalid(s, err, "[kiosk] %s_%s = %g: %s", knob, i ? "max" : "min", ends[i], e.message);
+        if (validate_knob_shadow(s, knob, m, trial, i, ends[i], err) != 0)
+            return -1;
+    }
+    return 0;
+}
+
 /* [kiosk]: a knob mapped to a key names a number this scene has, over a range that the key takes
  * at both ends. */
 static int validate_knob(const struct scene *s, const char *knob, const struct knob_mapping *m,
@@ -227,17 +244,12 @@ static int validate_knob(const struct scene *s, const char *knob, const struct k
     if (m->steps < 1)
         return invalid(s, err, "[kiosk] %s_steps: the detents from %s_min to %s_max, 1 to %d", knob, knob, knob,
                        SCENE_KIOSK_MAX_STEPS);
-    static struct scene trial;
-    const double ends[2] = {m->min, m->max};
-    for (int i = 0; i < 2; i++) {
-        struct error e;
-        trial = *s;
-        if (scene_set_number(&trial, m->key, ends[i], &e) != 0)
-            return invalid(s, err, "[kiosk] %s_%s = %g: %s", knob, i ? "max" : "min", ends[i], e.message);
-        if (validate_knob_shadow(s, knob, m, &trial, i, ends[i], err) != 0)
-            return -1;
-    }
-    return 0;
+    struct scene *trial = scene_new(err);
+    if (!trial)
+        return -1;
+    int rc = validate_knob_ends(s, knob, m, trial, err);
+    scene_free(trial);
+    return rc;
 }
 
 int scene_kiosk_validate(const struct scene *s, struct error *err)

@@ -159,46 +159,61 @@ static int report_variation(FILE *f, struct scene *s, enum variation v, const st
     return rc;
 }
 
-static int report_scene(FILE *f, const char *path, int width, int height, char *gpu_device, char *cpu_device,
-                        size_t device_len)
+/* The reference of the scene at PATH (loaded into BASE) and every variation of it (in S) against it. */
+static int report_scene_on(struct scene *base, struct scene *s, FILE *f, const char *path, int width, int height,
+                           char *gpu_device, char *cpu_device, size_t device_len)
 {
-    static struct scene base, s;
     struct error serr;
-    if (scene_load(&base, path, &serr) != 0) {
+    if (scene_load(base, path, &serr) != 0) {
         error_print(&serr, NULL, stderr);
         return -1;
     }
     if (width) {
-        base.render.width = width;
-        base.render.height = height;
+        base->render.width = width;
+        base->render.height = height;
     }
     struct cpu_render_options ref_opt = {.progress = 0};
-    ref_options_default(&ref_opt.ref, &base);
-    fprintf(stderr, "accuracy: %s: reference\n", base.name);
+    ref_options_default(&ref_opt.ref, base);
+    fprintf(stderr, "accuracy: %s: reference\n", base->name);
     struct measured ref;
     struct error e;
-    if (measure_cpu(&base, &ref_opt, &ref, &e) != 0) {
+    if (measure_cpu(base, &ref_opt, &ref, &e) != 0) {
         fprintf(stderr, "%s: CPU reference: %s\n", path, e.message);
         return -1;
     }
     snprintf(cpu_device, device_len, "%s", ref.device);
     fprintf(f, "| %s | reference (%dx%d) | %s | dopri5 | – | – | – | – | %.3f | – | – | – | – | – | – | – |\n",
-            base.name, base.render.width, base.render.height, ref.engine, ref.seconds);
+            base->name, base->render.width, base->render.height, ref.engine, ref.seconds);
     int rc = 0;
     for (int v = 0; v < VAR_COUNT && rc == 0; v++) {
-        s = base;
-        if (!vary(&s, v))
+        *s = *base;
+        if (!vary(s, v))
             continue;
-        fprintf(stderr, "accuracy: %s: %s\n", base.name, variation_names[v]);
+        fprintf(stderr, "accuracy: %s: %s\n", base->name, variation_names[v]);
         struct error verr;
-        if (scene_validate(&s, &verr) != 0) {
+        if (scene_validate(s, &verr) != 0) {
             fprintf(stderr, "%s (%s): %s\n", path, variation_names[v], verr.message);
             rc = -1;
             break;
         }
-        rc = report_variation(f, &s, v, &ref_opt, &ref, gpu_device, device_len, width != 0);
+        rc = report_variation(f, s, v, &ref_opt, &ref, gpu_device, device_len, width != 0);
     }
     measured_free(&ref);
+    return rc;
+}
+
+static int report_scene(FILE *f, const char *path, int width, int height, char *gpu_device, char *cpu_device,
+                        size_t device_len)
+{
+    struct error e;
+    struct scene *base = scene_new(&e), *s = base ? scene_new(&e) : NULL;
+    int rc = -1;
+    if (s)
+        rc = report_scene_on(base, s, f, path, width, height, gpu_device, cpu_device, device_len);
+    else
+        fprintf(stderr, "%s: %s\n", path, e.message);
+    scene_free(s);
+    scene_free(base);
     return rc;
 }
 
