@@ -180,8 +180,12 @@ static int trace_scene(const struct common_options *o, struct scene *s, long px,
                 s->render.height);
         return EXIT_USAGE;
     }
-    /* one point per segment end, and the end of the ray */
-    struct polyline pl = {0, render_segments(&s->render) + 2, NULL};
+    /* one point per segment end, and the end of the ray; on exact orbits a segment is a chord, of
+     * which a ray has up to render.max_chords (the integrated count where the GPU falls back) */
+    int segments = render_segments(&s->render);
+    if (s->render.method == METHOD_ORBIT_TABLE && s->render.max_chords > segments)
+        segments = s->render.max_chords;
+    struct polyline pl = {0, segments + 2, NULL};
     pl.points = calloc((size_t)pl.cap, sizeof *pl.points);
     if (!pl.points) {
         fprintf(stderr, "bentray trace: out of memory\n");

@@ -101,6 +101,7 @@ check "trace doppler ahead" 0 "\"doppler\": 1\.99" -- $BT trace --scene assets/s
 check "trace doppler behind" 0 "\"doppler\": 0\.50" -- $BT trace --scene assets/scenes/starflight.scene --size 32x24 --pixel 16 12 --set "camera.look_at=0 0 1"
 check "trace colour" 0 "\"color\": \[[0-9]+, [0-9]+, [0-9]+\]," -- $BT trace --scene $S --size 32x24 --pixel 16 12 --engine cpu
 check "trace json" 0 "\"outcome\": \"(object|sky)\"" -- $BT trace --scene $S --size 32x24 --pixel 16 12
+check "trace of a ray with more chords than segments" 0 "\"outcome\": \"sky\"" -- $BT trace --scene assets/scenes/demo.scene --size 32x24 --pixel 3 3
 check "info" 0 "RGBA32F +works" -- $BT info
 # each context has its own pass quad: OSMesa probed after EGL works as well as alone
 check "info both back-ends work" 0 "^2$" -- sh -c "$BT info | grep -cE '^render path: +fp32\+mrt'"
