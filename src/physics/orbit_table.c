@@ -463,6 +463,37 @@ static void *build_rows(void *arg)
     return NULL;
 }
 
+/* Rows closer to psi_c than this many of its double roundings would not be launched at angles
+ * of their own (psi_c + d rounds back to psi_c, or to too few values): the nearest row is at
+ * least this far, and a side needs ORBIT_SIDE_ROUNDINGS of them to be tabulated at all. */
+#define ORBIT_ROW_ROUNDINGS 64.0
+#define ORBIT_SIDE_ROUNDINGS (4.0 * ORBIT_ROW_ROUNDINGS)
+
+/* Each side's extent (psi_c to the outermost row) and epsilon; 0, or -1 where a side is too narrow
+ * for rows of their own in double precision. */
+static int table_sides(double psi_c, double extent[2], double epsilon[2])
+{
+    double rounding = nextafter(psi_c, 4.0) - psi_c;
+    double psi_min = fmin(ORBIT_RADIAL_GAP, 0.5 * psi_c), psi_max = fmax(pi - ORBIT_RADIAL_GAP, 0.5 * (psi_c + pi));
+    extent[0] = psi_c - psi_min;
+    extent[1] = psi_max - psi_c;
+    int ok = 1;
+    for (int side = 0; side < 2; side++) {
+        /* a small mass's capture cone (or an observer next to the horizon's escape cone) is narrower
+         * than epsilon: its rows then start a thousandth of its width from psi_c */
+        epsilon[side] = fmax(fmin(ORBIT_CRITICAL_EPSILON, 1e-3 * extent[side]), ORBIT_ROW_ROUNDINGS * rounding);
+        ok = ok && extent[side] >= ORBIT_SIDE_ROUNDINGS * rounding && epsilon[side] > 0.0;
+    }
+    return ok ? 0 : -1;
+}
+
+int orbit_table_resolves(double mass, double r_observer)
+{
+    double extent[2], epsilon[2];
+    return mass > 0.0 && r_observer > 2.0 * mass &&
+           table_sides(orbit_critical_angle(mass, r_observer), extent, epsilon) == 0;
+}
+
 int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p, struct error *e)
 {
     double t0 = seconds_now();
@@ -476,16 +507,14 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
     t->critical_from_axis = orbit_critical_from_axis(p->mass, p->r_observer, &t->critical_inward);
     t->psi_min = fmin(ORBIT_RADIAL_GAP, 0.5 * t->psi_c);
     t->psi_max = fmax(pi - ORBIT_RADIAL_GAP, 0.5 * (t->psi_c + pi));
-    double extent[2] = {t->psi_c - t->psi_min, t->psi_max - t->psi_c};
-    for (int side = 0; side < 2; side++) {
-        /* a small mass's capture cone (or an observer next to the horizon's escape cone) is narrower
-         * than epsilon: its rows then start a thousandth of its width from psi_c */
-        t->epsilon[side] = fmin(ORBIT_CRITICAL_EPSILON, 1e-3 * extent[side]);
-        if (!(extent[side] > 0.0) || !(t->epsilon[side] > 0.0))
-            return error_set(e, ERROR_RUNTIME, NULL, "orbit table: the observer at r = %.17g (M = %.17g) leaves no "
-                             "launch angles on one side of the critical angle %.17g", p->r_observer, p->mass, t->psi_c);
+    double extent[2];
+    if (table_sides(t->psi_c, extent, t->epsilon) != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "orbit table: the observer at r = %.17g (M = %.17g) leaves too few "
+                         "launch angles in double precision on one side of the critical angle %.17g (the renderer "
+                         "takes such a mass's rays as straight: orbit_table_resolves)", p->r_observer, p->mass,
+                         t->psi_c);
+    for (int side = 0; side < 2; side++)
         t->log_span[side] = row_coordinate(extent[side], t->epsilon[side]);
-    }
     t->u_observer = 1.0 / p->r_observer;
     t->u_far = 1.0 / p->r_far;
     t->u_capture = 1.0 / (2.0 * p->mass * (1.0 - ORBIT_HORIZON_MARGIN));

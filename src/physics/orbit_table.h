@@ -89,6 +89,12 @@ struct orbit_table {
 /* Build the table; 0, or -1 with e (no place; ERROR_RUNTIME: bad parameters, out of memory, an
  * orbit that does not end, all of which a validated scene never gives). */
 int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p, struct error *e);
+/* Whether a table can be built for (mass, r_observer): 0 where one side of psi_c is too narrow for
+ * rows of their own in double precision, the capture cone of a mass below about 4e-14 r_o. Such a
+ * mass bends a camera ray by at most about 2e-13 / theta rad (theta: the ray's angle from the
+ * mass), under a float direction's rounding except within about 3e-6 rad of the mass, and the
+ * renderer takes its rays as straight (render/renderer.c). */
+int orbit_table_resolves(double mass, double r_observer);
 void orbit_table_free(struct orbit_table *t);
 
 /* orbit_critical_angle and orbit_critical_from_axis: physics/model.h */

@@ -42,10 +42,15 @@ static uint64_t assets_key(const struct scene *s)
 static int renderer_follow_scene(struct renderer *r, struct error *e)
 {
     const struct scene *scene = r->scene;
-    /* a model with its fields off is flat space: nothing is integrated (model_is_straight) */
-    r->straight = model_is_straight(&scene->model);
     /* exact orbits need fp32 textures; without them the rays are integrated (the path says so) */
     r->method = scene->render.method == METHOD_ORBIT_TABLE && !r->path.fp32 ? METHOD_RK4 : scene->render.method;
+    /* a model with its fields off is flat space: nothing is integrated (model_is_straight); so is
+     * a mass too small for an orbit table in double precision, on exact orbits: it bends no
+     * camera ray by a float rounding but those within a few microradians of it (orbit_table.h) */
+    r->straight = model_is_straight(&scene->model) ||
+                  (r->method == METHOD_ORBIT_TABLE && scene->model.type == MODEL_SCHWARZSCHILD &&
+                   !orbit_table_resolves(scene->model.mass,
+                                         v3_len(v3_sub(scene->camera.position, scene->model.center))));
     r->exact_orbits = !r->straight && r->method == METHOD_ORBIT_TABLE;
     /* integrated rays around a mass look the sky up along their direction at infinity (exact
      * orbits take it from the orbit table) */
