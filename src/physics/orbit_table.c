@@ -336,12 +336,16 @@ static double chord_sag(struct orbit_knots *k, const double *warp, int n, double
     const int inner = 8;
     double u_clear = clear_radius > 0.0 ? 1.0 / clear_radius : INFINITY;
     double phi_end = k->phi[k->n - 1], worst = 0.0;
+    /* each chord starts where the one before ended: that end is evaluated once */
+    double pb = phi_end * warp_at(warp, 0.0), ub, w;
+    knots_eval(k, pb, &ub, &w);
+    double bx = cos(pb) / ub, by = sin(pb) / ub;
     for (int p = 0; p < n; p++) {
-        double pa = phi_end * warp_at(warp, (double)p / n), pb = phi_end * warp_at(warp, (double)(p + 1) / n);
-        double ua, ub, w;
-        knots_eval(k, pa, &ua, &w);
+        double pa = pb, ax = bx, ay = by;
+        pb = phi_end * warp_at(warp, (double)(p + 1) / n);
         knots_eval(k, pb, &ub, &w);
-        double ax = cos(pa) / ua, ay = sin(pa) / ua, bx = cos(pb) / ub, by = sin(pb) / ub;
+        bx = cos(pb) / ub;
+        by = sin(pb) / ub;
         double dx = bx - ax, dy = by - ay, len = hypot(dx, dy);
         for (int j = 1; j < inner; j++) {
             double phi = pa + (pb - pa) * j / inner, u;
