@@ -9,6 +9,22 @@ static double clamp(double x, double lo, double hi)
     return x < lo ? lo : x > hi ? hi : x;
 }
 
+/* A knob's value is a sum of detents, whose roundings can leave 1e-17 where a visitor turned back
+ * to 0 (0.12 - 12 x 0.01): within KNOB_SETTLE of the range it settles on an end of the range or on
+ * 0, values the scene and the HUD treat as such (a mass of 0 is flat space, "M = 0"). */
+#define KNOB_SETTLE 1e-9
+
+static double knob_settle(double x, double lo, double hi)
+{
+    double near = KNOB_SETTLE * (hi - lo);
+    x = clamp(x, lo, hi);
+    if (fabs(x - lo) <= near)
+        return lo;
+    if (fabs(x - hi) <= near)
+        return hi;
+    return lo < 0.0 && hi > 0.0 && fabs(x) <= near ? 0.0 : x;
+}
+
 double knob_turn(const struct kiosk_knob *k, double value, long counts)
 {
     double v;
@@ -26,7 +42,7 @@ double knob_turn(const struct kiosk_knob *k, double value, long counts)
         v = value + k->step * (double)counts;
         break;
     }
-    return clamp(v, k->min, k->max);
+    return knob_settle(v, k->min, k->max);
 }
 
 double knob_position(const struct kiosk_knob *k, double p)
@@ -47,7 +63,7 @@ double knob_turn_mapped(const struct knob_mapping *m, const struct scene *scene,
     double value = param;
     if (isnan(value) && scene_get_number(scene, m->key, &value) != 0)
         value = m->min;
-    return clamp(value + (m->max - m->min) * (double)counts / m->steps, m->min, m->max);
+    return knob_settle(value + (m->max - m->min) * (double)counts / m->steps, m->min, m->max);
 }
 
 void kiosk_state_reset(struct kiosk_state *st, const struct kiosk_config *c)

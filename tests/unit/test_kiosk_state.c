@@ -55,6 +55,27 @@ static void test_mass_knob(void **state)
     assert_true(fabs(knob_turn(&lg, 0.25, 2) - 1.0) <= 1e-12);   /* each count doubles */
     assert_true(fabs(knob_turn(&lg, 0.0, 1) - 0.02) <= 1e-12);   /* from 0: starts at min */
     assert_true(knob_turn(&lg, 1.0, 0) == 1.0);
+    /* detents back to where the range starts give its end exactly, not what the sums' roundings
+     * leave (0.12 - 12 x 0.01 is 1.04e-17 in double): a mass of 0 is flat space, shown as M = 0 */
+    struct kiosk_knob fine = {.min = 0.0, .max = 0.25, .step = 0.01, .curve = KIOSK_CURVE_LINEAR};
+    struct knob_mapping map = {.key = "model.mass", .min = 0.0, .max = 0.25, .steps = 25};
+    double a = 0.12, b = 0.12;
+    for (int i = 0; i < 12; i++) {
+        a = knob_turn(&fine, a, -1);
+        b = knob_turn_mapped(&map, NULL, b, -1);
+    }
+    assert_true(a == 0.0);
+    assert_true(b == 0.0);
+    for (int i = 0; i < 25; i++)
+        b = knob_turn_mapped(&map, NULL, b, 1);
+    assert_true(b == 0.25);
+    /* and across 0 of a range on both sides */
+    struct kiosk_knob both = {.min = -1.0, .max = 1.0, .step = 0.1, .curve = KIOSK_CURVE_LINEAR};
+    double c = 0.3;
+    for (int i = 0; i < 3; i++)
+        c = knob_turn(&both, c, -1);
+    assert_true(c == 0.0);
+    assert_true(fabs(knob_turn(&both, c, -1) + 0.1) <= 1e-12);
 }
 
 static void test_actions(void **state)
