@@ -557,11 +557,8 @@ int cmd_animate(int argc, char **argv)
         return EXIT_RUNTIME;
     }
     struct animate_out out = {dir, video, force, quiet, fps, echo, n_echo};
-    struct error e;
-    struct scene *base = scene_new(&e), *s = base ? scene_new(&e) : NULL;
+    struct scene *base = options_scene_new("animate"), *s = base ? options_scene_new("animate") : NULL;
     int rc = s ? animate(&o, &a, &out, base, s) : EXIT_RUNTIME;
-    if (!s)
-        fprintf(stderr, "bentray animate: %s\n", e.message);
     scene_free(s);
     scene_free(base);
     return rc;

@@ -109,12 +109,9 @@ int cmd_error(int argc, char **argv)
     }
     if (got < 0)
         return rd.exit_code;
-    struct error e;
-    struct scene *s = scene_new(&e);
-    if (!s) {
-        fprintf(stderr, "bentray error: %s\n", e.message);
-        return exit_code_of(&e);
-    }
+    struct scene *s = options_scene_new("error");
+    if (!s)
+        return EXIT_RUNTIME;
     int rc = error_scene(&o, json, check, s);
     scene_free(s);
     return rc;

@@ -291,11 +291,9 @@ int cmd_render(int argc, char **argv)
         return EXIT_USAGE;
     }
     struct render_job job = {out_path, dump_path, force, quiet, progress, to_stdout, format};
-    struct scene *s = scene_new(&why);
-    if (!s) {
-        fprintf(stderr, "bentray render: %s\n", why.message);
-        return exit_code_of(&why);
-    }
+    struct scene *s = options_scene_new("render");
+    if (!s)
+        return EXIT_RUNTIME;
     int rc = render_scene(&o, &job, s);
     scene_free(s);
     return rc;

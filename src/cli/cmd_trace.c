@@ -237,12 +237,9 @@ int cmd_trace(int argc, char **argv)
                         "render.samples applies to images (bentray render)\n");
         return EXIT_USAGE;
     }
-    struct error e;
-    struct scene *s = scene_new(&e);
-    if (!s) {
-        fprintf(stderr, "bentray trace: %s\n", e.message);
-        return exit_code_of(&e);
-    }
+    struct scene *s = options_scene_new("trace");
+    if (!s)
+        return EXIT_RUNTIME;
     int rc = trace_scene(&o, s, px, py);
     scene_free(s);
     return rc;

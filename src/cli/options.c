@@ -400,3 +400,12 @@ int options_load_scene(const struct common_options *o, const char *cmd, struct s
 }
 
 enum exit_code exit_code_of(const struct error *e) { return e->status == ERROR_INPUT ? EXIT_USAGE : EXIT_RUNTIME; }
+
+struct scene *options_scene_new(const char *cmd)
+{
+    struct error e;
+    struct scene *s = scene_new(&e);
+    if (!s)
+        fprintf(stderr, "bentray %s: %s\n", cmd, e.message);
+    return s;
+}

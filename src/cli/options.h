@@ -118,4 +118,8 @@ int options_engine_cpu(const struct common_options *o);
 /* Options of the CPU engine for scene s (tolerances default from the scene). */
 void options_cpu(const struct common_options *o, const struct scene *s, struct cpu_render_options *out);
 
+/* A scene of the command's own, on the heap (scene_new), or NULL after "bentray CMD: out of
+ * memory ..." on stderr: the command then ends with EXIT_RUNTIME. */
+struct scene *options_scene_new(const char *cmd);
+
 #endif
