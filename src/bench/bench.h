@@ -54,6 +54,10 @@ void bench_apply_accel(struct scene *s, enum bench_accel a);
 /* The committed scene assets/scenes/NAME.scene at w x h (0 x 0: its own size). 0, or -1 with
  * scene_load's error (its place the scene file). */
 int bench_load_scene(struct scene *s, const char *name, int w, int h, struct error *e);
+/* A section that works on a scene of its own: run on one from scene_new, freed after. section's
+ * result, or -1 with e where there is no memory for the scene. */
+typedef int (*bench_scene_section)(struct bench *b, struct scene *s, struct error *e);
+int bench_with_scene(struct bench *b, bench_scene_section section, struct error *e);
 /* Replace the objects of s by n spheres in view, in a ring around the camera's look_at. */
 void bench_spheres(struct scene *s, int n);
 /* The paper's Table 1 / Figure 5 settings: n_segs segments, n_steps steps in all over a path of

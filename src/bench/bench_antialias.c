@@ -101,10 +101,5 @@ static int antialias_on(struct bench *b, struct scene *s, struct error *e)
 
 int bench_antialias(struct bench *b, struct error *e)
 {
-    struct scene *s = scene_new(e);
-    if (!s)
-        return -1;
-    int rc = antialias_on(b, s, e);
-    scene_free(s);
-    return rc;
+    return bench_with_scene(b, antialias_on, e);
 }

@@ -183,10 +183,5 @@ static int figure5_on(struct bench *b, struct scene *s, struct error *e)
 
 int bench_figure5(struct bench *b, struct error *e)
 {
-    struct scene *s = scene_new(e);
-    if (!s)
-        return -1;
-    int rc = figure5_on(b, s, e);
-    scene_free(s);
-    return rc;
+    return bench_with_scene(b, figure5_on, e);
 }

@@ -117,10 +117,5 @@ static int pipelines_on(struct bench *b, struct scene *s, struct error *e)
 
 int bench_pipelines(struct bench *b, struct error *e)
 {
-    struct scene *s = scene_new(e);
-    if (!s)
-        return -1;
-    int rc = pipelines_on(b, s, e);
-    scene_free(s);
-    return rc;
+    return bench_with_scene(b, pipelines_on, e);
 }

@@ -40,6 +40,16 @@ void bench_apply_accel(struct scene *s, enum bench_accel a)
     r->pipeline = a == ACCEL_FUSED ? PIPELINE_FUSED : PIPELINE_SINGLE;
 }
 
+int bench_with_scene(struct bench *b, bench_scene_section section, struct error *e)
+{
+    struct scene *s = scene_new(e);
+    if (!s)
+        return -1;
+    int rc = section(b, s, e);
+    scene_free(s);
+    return rc;
+}
+
 int bench_load_scene(struct scene *s, const char *name, int w, int h, struct error *e)
 {
     char path[256];

@@ -84,10 +84,5 @@ static int stars_on(struct bench *b, struct scene *s, struct error *e)
 
 int bench_stars(struct bench *b, struct error *e)
 {
-    struct scene *s = scene_new(e);
-    if (!s)
-        return -1;
-    int rc = stars_on(b, s, e);
-    scene_free(s);
-    return rc;
+    return bench_with_scene(b, stars_on, e);
 }

@@ -163,12 +163,7 @@ static int early_z_on(struct bench *b, struct scene *s, struct error *e)
 
 int bench_early_z(struct bench *b, struct error *e)
 {
-    struct scene *s = scene_new(e);
-    if (!s)
-        return -1;
-    int rc = early_z_on(b, s, e);
-    scene_free(s);
-    return rc;
+    return bench_with_scene(b, early_z_on, e);
 }
 
 /* GL integration steps per second: no objects, a bounding sphere no ray leaves, fixed RK4 steps,
@@ -213,10 +208,5 @@ static int limit_on(struct bench *b, struct scene *s, struct error *e)
 
 int bench_limit(struct bench *b, struct error *e)
 {
-    struct scene *s = scene_new(e);
-    if (!s)
-        return -1;
-    int rc = limit_on(b, s, e);
-    scene_free(s);
-    return rc;
+    return bench_with_scene(b, limit_on, e);
 }
