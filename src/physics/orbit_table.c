@@ -473,14 +473,15 @@ static void *build_rows(void *arg)
 #define ORBIT_ROW_ROUNDINGS 64.0
 #define ORBIT_SIDE_ROUNDINGS (4.0 * ORBIT_ROW_ROUNDINGS)
 
-/* Each side's extent (psi_c to the outermost row) and epsilon; 0, or -1 where a side is too narrow
- * for rows of their own in double precision. */
-static int table_sides(double psi_c, double extent[2], double epsilon[2])
+/* The outermost rows (psi_min, psi_max), each side's extent (psi_c to its outermost row) and
+ * epsilon; 0, or -1 where a side is too narrow for rows of their own in double precision. */
+static int table_sides(double psi_c, double outer[2], double extent[2], double epsilon[2])
 {
     double rounding = nextafter(psi_c, 4.0) - psi_c;
-    double psi_min = fmin(ORBIT_RADIAL_GAP, 0.5 * psi_c), psi_max = fmax(pi - ORBIT_RADIAL_GAP, 0.5 * (psi_c + pi));
-    extent[0] = psi_c - psi_min;
-    extent[1] = psi_max - psi_c;
+    outer[0] = fmin(ORBIT_RADIAL_GAP, 0.5 * psi_c);
+    outer[1] = fmax(pi - ORBIT_RADIAL_GAP, 0.5 * (psi_c + pi));
+    extent[0] = psi_c - outer[0];
+    extent[1] = outer[1] - psi_c;
     int ok = 1;
     for (int side = 0; side < 2; side++) {
         /* a small mass's capture cone (or an observer next to the horizon's escape cone) is narrower
@@ -493,9 +494,9 @@ static int table_sides(double psi_c, double extent[2], double epsilon[2])
 
 int orbit_table_resolves(double mass, double r_observer)
 {
-    double extent[2], epsilon[2];
+    double outer[2], extent[2], epsilon[2];
     return mass > 0.0 && r_observer > 2.0 * mass &&
-           table_sides(orbit_critical_angle(mass, r_observer), extent, epsilon) == 0;
+           table_sides(orbit_critical_angle(mass, r_observer), outer, extent, epsilon) == 0;
 }
 
 int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p, struct error *e)
@@ -509,10 +510,11 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
                          "orbit table: needs M > 0, 2M < r_o < r_far, 4 rows and columns, a chord tolerance > 0");
     t->psi_c = orbit_critical_angle(p->mass, p->r_observer);
     t->critical_from_axis = orbit_critical_from_axis(p->mass, p->r_observer, &t->critical_inward);
-    t->psi_min = fmin(ORBIT_RADIAL_GAP, 0.5 * t->psi_c);
-    t->psi_max = fmax(pi - ORBIT_RADIAL_GAP, 0.5 * (t->psi_c + pi));
-    double extent[2];
-    if (table_sides(t->psi_c, extent, t->epsilon) != 0)
+    double outer[2], extent[2];
+    int sides = table_sides(t->psi_c, outer, extent, t->epsilon);
+    t->psi_min = outer[0];
+    t->psi_max = outer[1];
+    if (sides != 0)
         return error_set(e, ERROR_RUNTIME, NULL, "orbit table: the observer at r = %.17g (M = %.17g) leaves too few "
                          "launch angles in double precision on one side of the critical angle %.17g (the renderer "
                          "takes such a mass's rays as straight: orbit_table_resolves)", p->r_observer, p->mass,
