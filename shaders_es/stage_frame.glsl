@@ -1,9 +1,9 @@
 // The whole frame in one pass (render.pipeline = single) for integrated rays: each pixel sets its
 // ray up (as the setup stage), integrates it segment by segment (integrate_pass, as the
 // integration stage, PASSES_PER_SEGMENT times a segment), tests every object of the scene against
-// each segment's chord (intersect_chord, as the intersection stage) and ends at the first hit or
-// where the segment's end left the bounding sphere, fell into the horizon or stopped being finite
-// (as the termination stage). The same functions, in the same order, on the same 32-bit values,
+// each segment's chord that comes near one (intersect_chord, as the intersection stage; a chord
+// that comes near none can meet none) and ends at the first hit or where the segment's end left
+// the bounding sphere, fell into the horizon or stopped being finite (as the termination stage). The same functions, in the same order, on the same 32-bit values,
 // so the rays are the multipass scheme's bit for bit (tests/unit/test_acceleration.c). It writes
 // what that scheme leaves in the result textures: image and velocity, all the sky stage needs
 // (FRAME_STATE undefined), or hit and position (FRAME_STATE 1), only when they are read.
@@ -34,38 +34,69 @@ void main()
     float code = CODE_UNFINISHED;
     float end_key = NO_HIT;
     candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
+    // Segments are taken in an inner loop that integrates them and asks of each chord only whether
+    // it comes near an object (chord_near, stage_intersect.glsl: a few multiplications an object);
+    // a chord that does not cannot meet one, and its end is decided at once. A chord that does ends
+    // the inner loop, and the outer loop's turn tests it against every object (intersect_chord) and
+    // decides its end with that. The same tests on the same chords as the multipass scheme where it
+    // matters, in the same order: the same rays bit for bit (tests/unit/test_acceleration.c). Why:
+    // a GPU that runs fragments in groups (llvmpipe: 8) pays for an object's test on every chord
+    // whatever the test's `if`s say; a loop's turns it pays only while one of the group needs them.
+    // The inner loop's turns cost a segment's steps, the outer's the objects' tests.
+    float next_segment = 0.0;
+    bool pending = false;   // chord a -> x, segment k_last, comes near an object: its tests are due
+    chord_cull_prepare();
     for (highp int i = 0; i < FRAME_MAX_SEGMENTS; i++) {
-        float k = float(i);
-        if (k >= u_segments || stop)
+        if (stop || next_segment >= u_segments)
             break;
-        a = x;
-        v_a = v;
-        steps_a = steps;
-        h_a = h;
-        k_last = k;
-        bool clean = true;
+        for (highp int j = 0; j < FRAME_MAX_SEGMENTS; j++) {
+            float k = next_segment;
+            if (k >= u_segments || stop || pending)
+                break;
+            a = x;
+            v_a = v;
+            steps_a = steps;
+            h_a = h;
+            k_last = k;
+            bool clean = true;
 #if defined(MODEL_FLAT) || defined(CHECK_EVERY_STEP)
-        for (int p = 0; p < PASSES_PER_SEGMENT; p++) {
-            bool running = steps >= 0.0 && travelling(x);
-            integrate_pass(x, v, steps, h, running);
-        }
+            for (int p = 0; p < PASSES_PER_SEGMENT; p++) {
+                bool running = steps >= 0.0 && travelling(x);
+                integrate_pass(x, v, steps, h, running);
+            }
 #else
-        // the segment's steps unchecked (stage_integrate.glsl); a ray that left, fell in or failed
-        // within them takes the segment again after this loop, from its start, each step checked
-        for (int p = 0; p < PASSES_PER_SEGMENT; p++)
-            for (int j = 0; j < STEPS_PER_PASS; j++)
-                step_unchecked(x, v, steps, h, clean);
+            // the segment's steps unchecked (stage_integrate.glsl); a ray that left, fell in or
+            // failed within them takes the segment again after these loops, from its start, each
+            // step checked
+            for (int p = 0; p < PASSES_PER_SEGMENT; p++)
+                for (int q = 0; q < STEPS_PER_PASS; q++)
+                    step_unchecked(x, v, steps, h, clean);
 #endif
+            bool near = chord_near(a, x);
+            float new_code = code;
+            float new_end_key = end_key;
+            bool ended = segment_end(x, steps, k, best, new_code, new_end_key);
+            bool decided = clean && !near;
+            code = decided ? new_code : code;
+            end_key = decided ? new_end_key : end_key;
+            again = !clean;
+            // A segment that changed nothing (an adaptive ray that has spent its path takes steps
+            // of length 0) leaves every later one the same: the ray stops there, the same bit for bit.
+            bool still = x == a && v == v_a && steps == steps_a && h == h_a;
+            pending = clean && near;
+            stop = again || (decided && ended) || still;
+            next_segment = k + 1.0;
+        }
         candidate tested = best;
-        intersect_chord(a, x, k, tested);
-        best = clean ? tested : best;
+        intersect_chord(a, x, k_last, tested);
+        best = pending ? tested : best;
         float new_code = code;
         float new_end_key = end_key;
-        bool ended = segment_end(x, steps, k, best, new_code, new_end_key);
-        code = clean ? new_code : code;
-        end_key = clean ? new_end_key : end_key;
-        again = !clean;
-        stop = again || ended;
+        bool ended = segment_end(x, steps, k_last, best, new_code, new_end_key);
+        code = pending ? new_code : code;
+        end_key = pending ? new_end_key : end_key;
+        stop = stop || (pending && ended);
+        pending = false;
     }
     // The segment in which a ray left, fell into the horizon or failed, from its start, as the
     // multipass scheme integrates, intersects and ends it: the same rays bit for bit

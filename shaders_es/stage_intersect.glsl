@@ -321,6 +321,108 @@ bool cull_group_clear(vec4 ends, float r_lo, float r_hi)
 #define TEST_TRIANGLE(slot) TEST_TRIANGLE_FULL(slot)
 #endif
 
+#ifdef CHORD_CULL
+// Which chords of the integrated single pass (stage_frame.glsl) may meet an object: each object
+// lies inside a ball (a sphere or disk: its own; a rectangle: around its centre, to its corners; a
+// triangle: around its centroid, to its farthest corner), and a flat one within its plane. A chord
+// a -> b lies inside the ball of radius |b - a| / 2 about its midpoint, so it can meet the object
+// only where that ball meets the object's ball and, for a flat object, its plane. The exact tests
+// report a hit only at a point of the chord inside the object, to float roundings (a grazing
+// sphere's square root can move it by about |a - c|^2 / r times a rounding): the balls are taken
+// CHORD_CULL_MARGIN of their reach (relative to the object's radius) and CHORD_CULL_POSITION_MARGIN
+// of the points' coordinates larger, hundreds of times what those roundings can move a point. An
+// object that moves (MOVING_TEST) comes near every chord.
+const float CHORD_CULL_MARGIN = 1e-3;
+const float CHORD_CULL_POSITION_MARGIN = 1e-5;
+vec4 chord_ball[BATCH_SIZE];    // centre, radius
+vec4 chord_plane[BATCH_SIZE];   // a flat object's unit normal, 1; 0 for the others
+vec2 chord_scale[BATCH_SIZE];   // 1 / radius (0: every chord is near), the centre's position margin
+
+void chord_ball_of(int n, vec3 centre, float radius, vec3 normal, float is_flat)
+{
+    chord_ball[n] = vec4(centre, radius);
+    chord_plane[n] = vec4(normal, is_flat);
+    chord_scale[n] = vec2(1.0 / max(radius, 1e-30),
+                          CHORD_CULL_POSITION_MARGIN * (abs(centre.x) + abs(centre.y) + abs(centre.z)));
+}
+
+// Each object's ball and plane (BATCH_TESTS, each test replaced by them), once per pixel.
+void chord_cull_prepare()
+{
+#undef TEST_SPHERE
+#undef TEST_DISK
+#undef TEST_RECT
+#undef TEST_TRIANGLE
+#undef MOVING_TEST
+#define TEST_SPHERE(n) { vec4 g0 = GEOMETRY(n, 0); chord_ball_of(n, g0.xyz, g0.w, vec3(0.0), 0.0); }
+#define TEST_DISK(n) { vec4 g0 = GEOMETRY(n, 0); \
+                       chord_ball_of(n, g0.xyz, g0.w, normalize(GEOMETRY(n, 1).xyz), 1.0); }
+#define TEST_RECT(n) { vec4 g0 = GEOMETRY(n, 0); vec3 g1 = GEOMETRY(n, 1).xyz, g2 = GEOMETRY(n, 2).xyz; \
+                       chord_ball_of(n, g0.xyz, max(length(g1 + g2), length(g1 - g2)), \
+                                     normalize(cross(g1, g2)), 1.0); }
+#define TEST_TRIANGLE(n) { vec3 v0 = GEOMETRY(n, 0).xyz, v1 = GEOMETRY(n, 1).xyz, v2 = GEOMETRY(n, 2).xyz; \
+                           vec3 c = (v0 + v1 + v2) / 3.0; \
+                           chord_ball_of(n, c, max(length(v0 - c), max(length(v1 - c), length(v2 - c))), \
+                                         normalize(cross(v1 - v0, v2 - v0)), 1.0); }
+#define MOVING_TEST(n, test) { test chord_ball[n].w = 1e30; chord_plane[n].w = 0.0; chord_scale[n].x = 0.0; }
+    BATCH_TESTS
+#undef TEST_SPHERE
+#undef TEST_DISK
+#undef TEST_RECT
+#undef TEST_TRIANGLE
+#undef MOVING_TEST
+}
+
+bool chord_near_object(int n, vec3 mid, float half_length, float mid_margin)
+{
+    vec3 from_centre = mid - chord_ball[n].xyz;
+    float reach = chord_ball[n].w + half_length;
+    float margin = CHORD_CULL_MARGIN * reach * (1.0 + reach * chord_scale[n].x) + mid_margin + chord_scale[n].y;
+    float within = reach + margin;
+    bool ball = dot(from_centre, from_centre) <= within * within;
+    bool plane = chord_plane[n].w == 0.0 || abs(dot(from_centre, chord_plane[n].xyz)) <= half_length + margin;
+    return ball && plane;
+}
+
+// Whether chord a -> b comes near an object of the batch: where it does not, it can meet none.
+bool chord_near(vec3 a, vec3 b)
+{
+    vec3 mid = 0.5 * (a + b);
+    float half_length = 0.5 * length(b - a);
+    float mid_margin = CHORD_CULL_POSITION_MARGIN * (abs(mid.x) + abs(mid.y) + abs(mid.z));
+    bool near = false;
+#define TEST_SPHERE(n) near = near || chord_near_object(n, mid, half_length, mid_margin);
+#define TEST_DISK(n) TEST_SPHERE(n)
+#define TEST_RECT(n) TEST_SPHERE(n)
+#define TEST_TRIANGLE(n) TEST_SPHERE(n)
+#define MOVING_TEST(n, test) test
+    BATCH_TESTS
+#undef TEST_SPHERE
+#undef TEST_DISK
+#undef TEST_RECT
+#undef TEST_TRIANGLE
+#undef MOVING_TEST
+#define TEST_SPHERE(slot) TEST_SPHERE_FULL(slot)
+#define TEST_DISK(slot) TEST_DISK_FULL(slot)
+#define TEST_RECT(slot) TEST_RECT_FULL(slot)
+#define TEST_TRIANGLE(slot) TEST_TRIANGLE_FULL(slot)
+#ifdef MOVING_OBJECTS
+#define MOVING_TEST(slot, test) MOVING_TEST_FULL(slot, test)
+#endif
+    return near;
+}
+#else
+void chord_cull_prepare()
+{
+}
+
+// Every chord may meet an object.
+bool chord_near(vec3 a, vec3 b)
+{
+    return true;
+}
+#endif
+
 // Every object of the batch against chord a -> b of segment `segment`: best keeps the closest hit
 // (a closer one replaces it, in scene order, exactly as one pass per object would).
 void intersect_chord(vec3 a, vec3 b, float segment, inout candidate best)

@@ -125,7 +125,7 @@ int stage_frame(struct renderer *r, enum frame_output output, struct error *e)
         snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define MAX_SEGMENTS %d\n%s%s", r->model_defines,
                  batch, s->render.max_chords, written, a.batch.count == 0 ? "#define ORBIT_NOTHING_TO_MEET 1\n" : "");
     else
-        snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define PASSES_PER_SEGMENT %d\n%s",
+        snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define CHORD_CULL 1\n#define PASSES_PER_SEGMENT %d\n%s",
                  r->model_defines, batch, r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass,
                  written);
     const struct stage_program *sp =
