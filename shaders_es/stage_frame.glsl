@@ -113,7 +113,7 @@ void main()
         if (!again)
             break;
         bool running = steps_checked >= 0.0 && travelling(x_checked);
-        integrate_pass(x_checked, v_checked, steps_checked, h_checked, running);
+        integrate_pass_checked(x_checked, v_checked, steps_checked, h_checked, running);
     }
     // selected, not assigned in the loop that may break (see the precision note in common.glsl)
     x = again ? x_checked : x;

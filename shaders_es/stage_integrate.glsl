@@ -278,6 +278,31 @@ void integrate_pass(inout vec3 x, inout vec3 v, inout float steps, inout float h
 #endif
 }
 
+// integrate_pass where its steps are known not to all hold unchecked (the single pass's segment in
+// which a ray left, fell in or failed): the checked steps alone, the same state bit for bit.
+void integrate_pass_checked(inout vec3 x, inout vec3 v, inout float steps, inout float h, bool running)
+{
+#ifdef MODEL_FLAT
+    integrate_pass(x, v, steps, h, running);
+#else
+    vec3 x_checked = x;
+    vec3 v_checked = v;
+    float steps_checked = steps;
+    float h_checked = h;
+    bool running_checked = running;
+    for (int i = 0; i < STEPS_PER_PASS; i++) {
+        if (!running_checked)
+            break;
+        step_checked(x_checked, v_checked, steps_checked, h_checked, running_checked);
+    }
+    // selected, not assigned in the loop that may break (see the precision note in common.glsl)
+    x = running ? x_checked : x;
+    v = running ? v_checked : v;
+    steps = running ? steps_checked : steps;
+    h = running ? h_checked : h;
+#endif
+}
+
 #ifndef SINGLE_PASS
 void main()
 {
