@@ -1,12 +1,12 @@
 // Rays following the Lorenz flow (paper section 5.1), scaled about a centre: f = strength * F((x - c) / scale).
 uniform vec3 u_model_center;
-uniform float u_model_scale;
+uniform float u_model_inv_scale;     // 1 / scale, rounded once from double (a product is cheaper than a quotient)
 uniform float u_model_strength;
 uniform vec3 u_lorenz;          // sigma, rho, beta
 
 vec3 model_accel(vec3 x, vec3 v)
 {
-    vec3 u = (x - u_model_center) / u_model_scale;
+    vec3 u = (x - u_model_center) * u_model_inv_scale;
     vec3 flow = vec3(u_lorenz.x * (u.y - u.x),
                      u.x * (u_lorenz.y - u.z) - u.y,
                      u.x * u.y - u_lorenz.z * u.z);

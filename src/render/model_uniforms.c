@@ -5,12 +5,12 @@
 void model_set_uniforms(const struct program_uniforms *p, const struct model *m)
 {
     uniform_vec3(p, "u_model_center", m->center);
-    uniform_float(p, "u_model_scale", m->scale);
+    uniform_float(p, "u_model_inv_scale", 1.0 / m->scale);   /* scale > 0 (scene_keys.c) */
     uniform_float(p, "u_model_strength", m->strength);
     glUniform3f(program_uniform(p, "u_lorenz"), (float)m->sigma, (float)m->rho, (float)m->beta);
     glUniform3f(program_uniform(p, "u_rossler"), (float)m->ross_a, (float)m->ross_b, (float)m->ross_c);
     glUniform2f(program_uniform(p, "u_yukawa"), (float)m->zeta, (float)m->mu);
-    uniform_float(p, "u_poly_radius", m->radius);
+    uniform_float(p, "u_poly_inv_radius", m->radius > 0.0 ? 1.0 / m->radius : 0.0);
     glUniform4f(program_uniform(p, "u_refraction"), (float)m->amplitude, (float)m->shell_radius,
                 (float)m->shell_width, (float)m->noise_amplitude);
     uniform_float(p, "u_noise_frequency", m->noise_frequency);
