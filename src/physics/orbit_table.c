@@ -90,6 +90,7 @@ static void binet_in_u(double mass, double u0, double u_end, double *phi, double
 /* The accepted steps of one orbit: knots (phi, u, w). */
 struct orbit_knots {
     double *phi, *u, *w;
+    double *a;                    /* u'' = binet_accel(mass, u) at each knot, for the interpolant */
     int n, cap;
     double mass;
     int hint;                     /* the step of the last evaluation: evaluations mostly move on */
@@ -106,14 +107,18 @@ static int knots_push(struct orbit_knots *k, double phi, double u, double w)
         if (uu)
             k->u = uu;
         double *ww = uu ? realloc(k->w, cap * sizeof *ww) : NULL;
-        if (!ww)
+        if (ww)
+            k->w = ww;
+        double *aa = ww ? realloc(k->a, cap * sizeof *aa) : NULL;
+        if (!aa)
             return -1;
-        k->w = ww;
+        k->a = aa;
         k->cap = cap;
     }
     k->phi[k->n] = phi;
     k->u[k->n] = u;
     k->w[k->n] = w;
+    k->a[k->n] = binet_accel(k->mass, u);
     k->n++;
     return 0;
 }
@@ -123,24 +128,18 @@ static void knots_free(struct orbit_knots *k)
     free(k->phi);
     free(k->u);
     free(k->w);
+    free(k->a);
     memset(k, 0, sizeof *k);
 }
 
-/* u and du/dphi at phi: quintic Hermite through the knots' u, u' and u'' = 3 M u^2 - u, which
- * keeps the integration's order between the steps. */
-static void knots_eval(struct orbit_knots *k, double phi, double *u, double *w)
+/* The knots' step [lo, lo + 1] that holds phi, or -1 (below the first knot) or -2 (beyond the last). */
+static int knots_locate(struct orbit_knots *k, double phi)
 {
     int lo = 0, hi = k->n - 1;
-    if (phi <= k->phi[0]) {
-        *u = k->u[0];
-        *w = k->w[0];
-        return;
-    }
-    if (phi >= k->phi[hi]) {
-        *u = k->u[hi];
-        *w = k->w[hi];
-        return;
-    }
+    if (phi <= k->phi[0])
+        return -1;
+    if (phi >= k->phi[hi])
+        return -2;
     int last = k->hint;
     if (last >= 0 && last + 1 < k->n && k->phi[last] <= phi && phi < k->phi[last + 1]) {
         lo = last;
@@ -157,18 +156,53 @@ static void knots_eval(struct orbit_knots *k, double phi, double *u, double *w)
             hi = mid;
     }
     k->hint = lo;
+    return lo;
+}
+
+/* u at phi in step lo: quintic Hermite through the knots' u, u' and u'' = 3 M u^2 - u, which
+ * keeps the integration's order between the steps. */
+static double knots_u(const struct orbit_knots *k, int lo, double phi, double *t_out)
+{
+    int hi = lo + 1;
     double h = k->phi[hi] - k->phi[lo];
     double t = (phi - k->phi[lo]) / h, t2 = t * t, t3 = t2 * t, t4 = t3 * t, t5 = t4 * t;
-    double u0 = k->u[lo], w0 = k->w[lo], a0 = binet_accel(k->mass, u0);
-    double u1 = k->u[hi], w1 = k->w[hi], a1 = binet_accel(k->mass, u1);
     double h0 = 1 - 10 * t3 + 15 * t4 - 6 * t5, h1 = t - 6 * t3 + 8 * t4 - 3 * t5,
            h2 = 0.5 * (t2 - 3 * t3 + 3 * t4 - t5), h3 = 10 * t3 - 15 * t4 + 6 * t5, h4 = -4 * t3 + 7 * t4 - 3 * t5,
            h5 = 0.5 * (t3 - 2 * t4 + t5);
+    *t_out = t;
+    return h0 * k->u[lo] + h1 * h * k->w[lo] + h2 * h * h * k->a[lo] + h3 * k->u[hi] + h4 * h * k->w[hi] +
+           h5 * h * h * k->a[hi];
+}
+
+/* u alone at phi, as knots_eval gives it: the chords' sag needs no slope. */
+static double knots_eval_u(struct orbit_knots *k, double phi)
+{
+    int lo = knots_locate(k, phi);
+    if (lo < 0)
+        return lo == -1 ? k->u[0] : k->u[k->n - 1];
+    double t;
+    return knots_u(k, lo, phi, &t);
+}
+
+/* u and du/dphi at phi (knots_u, and the interpolant's derivative). */
+static void knots_eval(struct orbit_knots *k, double phi, double *u, double *w)
+{
+    int lo = knots_locate(k, phi);
+    if (lo < 0) {
+        int at = lo == -1 ? 0 : k->n - 1;
+        *u = k->u[at];
+        *w = k->w[at];
+        return;
+    }
+    int hi = lo + 1;
+    double h = k->phi[hi] - k->phi[lo], t;
+    *u = knots_u(k, lo, phi, &t);
+    double t2 = t * t, t3 = t2 * t, t4 = t3 * t;
     double d0 = -30 * t2 + 60 * t3 - 30 * t4, d1 = 1 - 18 * t2 + 32 * t3 - 15 * t4,
            d2 = 0.5 * (2 * t - 9 * t2 + 12 * t3 - 5 * t4), d3 = 30 * t2 - 60 * t3 + 30 * t4,
            d4 = -12 * t2 + 28 * t3 - 15 * t4, d5 = 0.5 * (3 * t2 - 8 * t3 + 5 * t4);
-    *u = h0 * u0 + h1 * h * w0 + h2 * h * h * a0 + h3 * u1 + h4 * h * w1 + h5 * h * h * a1;
-    *w = (d0 * u0 + d1 * h * w0 + d2 * h * h * a0 + d3 * u1 + d4 * h * w1 + d5 * h * h * a1) / h;
+    *w = (d0 * k->u[lo] + d1 * h * k->w[lo] + d2 * h * h * k->a[lo] + d3 * k->u[hi] + d4 * h * k->w[hi] +
+          d5 * h * h * k->a[hi]) / h;
 }
 
 /* Integrate the orbit of launch angle psi to its end; knots hold every accepted step, the last
@@ -333,23 +367,26 @@ static double warp_at(const double *warp, double x)
  * points inside the clear radius, where nothing can be met, do not count. */
 static double chord_sag(struct orbit_knots *k, const double *warp, int n, double clear_radius)
 {
-    const int inner = 8;
+    enum { inner = 8 };
     double u_clear = clear_radius > 0.0 ? 1.0 / clear_radius : INFINITY;
     double phi_end = k->phi[k->n - 1], worst = 0.0;
     /* each chord starts where the one before ended: that end is evaluated once */
-    double pb = phi_end * warp_at(warp, 0.0), ub, w;
-    knots_eval(k, pb, &ub, &w);
+    double pb = phi_end * warp_at(warp, 0.0), ub = knots_eval_u(k, pb);
     double bx = cos(pb) / ub, by = sin(pb) / ub;
     for (int p = 0; p < n; p++) {
         double pa = pb, ax = bx, ay = by;
         pb = phi_end * warp_at(warp, (double)(p + 1) / n);
-        knots_eval(k, pb, &ub, &w);
+        /* the points between the ends first, in the order of phi: the knots' search then moves on
+         * from where it was rather than starting again */
+        double u_between[inner];
+        for (int j = 1; j < inner; j++)
+            u_between[j] = knots_eval_u(k, pa + (pb - pa) * j / inner);
+        ub = knots_eval_u(k, pb);
         bx = cos(pb) / ub;
         by = sin(pb) / ub;
         double dx = bx - ax, dy = by - ay, len = hypot(dx, dy);
         for (int j = 1; j < inner; j++) {
-            double phi = pa + (pb - pa) * j / inner, u;
-            knots_eval(k, phi, &u, &w);
+            double phi = pa + (pb - pa) * j / inner, u = u_between[j];
             if (u > u_clear)
                 continue;
             double x = cos(phi) / u - ax, y = sin(phi) / u - ay;
