@@ -111,6 +111,10 @@ static void apply_config(struct scene *s, const struct pareto_config *c)
         if (c->control != STEP_FIXED)
             r->tolerance = c->tolerance;
     }
+    /* fixed steps take their budget from the segments alone: where they were set above (from the
+     * path of a scene whose default is adaptive), the path is theirs already */
+    if (r->step_control == STEP_FIXED && r->segments > 0)
+        r->max_path = 0.0;
     if (c->step_max_factor > 0)
         r->step_max = r->step_size * c->step_max_factor;
     r->early_z = 1;
@@ -227,6 +231,35 @@ static int measure_scene(struct bench *b, int k, struct pareto_point *pts, struc
     return n;
 }
 
+/* Every configuration of every scene of the table applied and validated, nothing rendered: a scene
+ * whose defaults a configuration cannot be applied to is found before any timing, and by the quick
+ * bench that make test runs (which times only a few). 0, or -1 with e. */
+static int validate_configs(struct error *e)
+{
+    struct scene *base = scene_new(e), *s = base ? scene_new(e) : NULL;
+    int rc = s ? 0 : -1;
+    for (int k = 0; k < N_SCENES && rc == 0; k++) {
+        if (bench_load_scene(base, scenes[k].scene, 0, 0, e) != 0) {
+            rc = -1;
+            break;
+        }
+        int n = base->model.type == MODEL_SCHWARZSCHILD ? N_CONFIGS : N_CONFIGS - N_ORBIT_CONFIGS;
+        for (int c = 0; c < n && rc == 0; c++) {
+            if (!config_applies(base, &configs[c]))
+                continue;
+            *s = *base;
+            apply_config(s, &configs[c]);
+            struct error why;
+            if (scene_validate(s, &why) != 0)
+                rc = error_set(e, ERROR_RUNTIME, NULL, "internal: configuration %s of %s: %s", configs[c].name,
+                               scenes[k].title, why.message);
+        }
+    }
+    scene_free(s);
+    scene_free(base);
+    return rc;
+}
+
 static int cheapest(const struct pareto_point *p, int n, int sky, double level)
 {
     int best = -1;
@@ -340,6 +373,8 @@ static void write_plot_data(FILE *dat, const char *title, const struct pareto_po
 
 int bench_pareto(struct bench *b, struct error *e)
 {
+    if (validate_configs(e) != 0)
+        return -1;
     FILE *csv = bench_data_file(b, "pareto.csv", e);
     FILE *dat = bench_data_file(b, "pareto.dat", e);
     if (!csv || !dat) {
