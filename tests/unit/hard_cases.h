@@ -67,6 +67,24 @@ static inline struct object *hc_add_object(struct scene *s, enum primitive_type 
     return o;
 }
 
+/* Every position of the scene moved by t (camera, look_at, model centre, bound, lights, objects);
+ * directions, sizes and the lights' colours unchanged: the same picture, far from the origin. */
+static inline void hc_translate(struct scene *s, vec3d t)
+{
+    s->camera.position = v3_add(s->camera.position, t);
+    s->camera.look_at = v3_add(s->camera.look_at, t);
+    s->model.center = v3_add(s->model.center, t);
+    s->render.bound_center = v3_add(s->render.bound_center, t);
+    for (int i = 0; i < s->n_lights; i++)
+        s->lights[i].position = v3_add(s->lights[i].position, t);
+    for (int i = 0; i < s->n_objects; i++) {
+        struct object *o = &s->objects[i];
+        o->center = v3_add(o->center, t);
+        for (int v = 0; v < 3; v++)
+            o->vertex[v] = v3_add(o->vertex[v], t);
+    }
+}
+
 struct hc_gpu {
     struct render_result res;  /* with the ray state */
     struct dump dump;

@@ -494,24 +494,6 @@ static void test_single_pass_many_objects(void **state)
     hc_gpu_free(&single);
 }
 
-/* Every object of s moved by t, and the camera, the field, the bounding sphere and the lights
- * with them: the same scene far from the origin. */
-static void translate_scene(struct scene *s, vec3d t)
-{
-    s->camera.position = v3_add(s->camera.position, t);
-    s->camera.look_at = v3_add(s->camera.look_at, t);
-    s->model.center = v3_add(s->model.center, t);
-    s->render.bound_center = v3_add(s->render.bound_center, t);
-    for (int i = 0; i < s->n_lights; i++)
-        s->lights[i].position = v3_add(s->lights[i].position, t);
-    for (int i = 0; i < s->n_objects; i++) {
-        struct object *o = &s->objects[i];
-        o->center = v3_add(o->center, t);
-        for (int k = 0; k < 3; k++)
-            o->vertex[k] = v3_add(o->vertex[k], t);
-    }
-}
-
 /* Every object of s shrunk by f about its centre (a triangle about its centroid). */
 static void shrink_objects(struct scene *s, double f)
 {
@@ -556,7 +538,7 @@ static void test_chord_cull_is_exact(void **state)
         struct hc_gpu multi, single;
         hc_load(&s, cases[k].scene, W, H, cases[k].sets);
         shrink_objects(&s, cases[k].shrink);
-        translate_scene(&s, v3(cases[k].offset, -0.6 * cases[k].offset, 0.8 * cases[k].offset));
+        hc_translate(&s, v3(cases[k].offset, -0.6 * cases[k].offset, 0.8 * cases[k].offset));
         hc_validate(&s);
         s.render.pipeline = PIPELINE_MULTIPASS;
         hc_gpu_render(&s, &multi);
