@@ -3,8 +3,9 @@
 // integration stage, PASSES_PER_SEGMENT times a segment), tests every object of the scene against
 // each segment's chord that comes near one (intersect_chord, as the intersection stage; a chord
 // that comes near none can meet none) and ends at the first hit or where the segment's end left
-// the bounding sphere, fell into the horizon or stopped being finite (as the termination stage). The same functions, in the same order, on the same 32-bit values,
-// so the rays are the multipass scheme's bit for bit (tests/unit/test_acceleration.c). It writes
+// the bounding sphere, fell into the horizon or stopped being finite (as the termination stage).
+// The same functions, in the same order, on the same 32-bit values, so the rays are the
+// multipass scheme's bit for bit (tests/unit/test_acceleration.c). It writes
 // what that scheme leaves in the result textures: image and velocity, all the sky stage needs
 // (FRAME_STATE undefined), or hit and position (FRAME_STATE 1), only when they are read.
 uniform float u_step_size;

@@ -128,6 +128,18 @@ static void apply_config(struct scene *s, const struct pareto_config *c)
         r->pipeline = c->multipass ? PIPELINE_MULTIPASS : PIPELINE_AUTO;
 }
 
+/* S = BASE in configuration C, validated; 0, or -1 with e naming the configuration and the scene. */
+static int configure(struct scene *s, const struct scene *base, int c, const char *title, struct error *e)
+{
+    *s = *base;
+    apply_config(s, &configs[c]);
+    struct error why;
+    if (scene_validate(s, &why) == 0)
+        return 0;
+    return error_set(e, ERROR_RUNTIME, NULL, "internal: configuration %s of %s: %s", configs[c].name, title,
+                     why.message);
+}
+
 /* The orbit table needs 32-bit floats: a scene on exact orbits has no fp16 variant of its default. */
 static int config_applies(const struct scene *s, const struct pareto_config *c)
 {
@@ -182,16 +194,11 @@ static int measure_on(struct bench *b, int k, struct scene *base, struct scene *
         return -1;
     int n = b->quick ? 3 : base->model.type == MODEL_SCHWARZSCHILD ? N_CONFIGS : N_CONFIGS - N_ORBIT_CONFIGS;
     for (int c = 0; c < n; c++) {
-        *s = *base;
         if (!config_applies(base, &configs[c])) {
             pts[c] = (struct pareto_point){NAN, NAN, NAN, NAN, 0, 0};
             continue;
         }
-        apply_config(s, &configs[c]);
-        struct error why;
-        if (scene_validate(s, &why) != 0) {
-            error_set(e, ERROR_RUNTIME, NULL, "internal: configuration %s of %s: %s", configs[c].name, ps->title,
-                      why.message);
+        if (configure(s, base, c, ps->title, e) != 0) {
             cpu_image_free(&ref);
             return -1;
         }
@@ -245,14 +252,8 @@ static int validate_configs(struct error *e)
         }
         int n = base->model.type == MODEL_SCHWARZSCHILD ? N_CONFIGS : N_CONFIGS - N_ORBIT_CONFIGS;
         for (int c = 0; c < n && rc == 0; c++) {
-            if (!config_applies(base, &configs[c]))
-                continue;
-            *s = *base;
-            apply_config(s, &configs[c]);
-            struct error why;
-            if (scene_validate(s, &why) != 0)
-                rc = error_set(e, ERROR_RUNTIME, NULL, "internal: configuration %s of %s: %s", configs[c].name,
-                               scenes[k].title, why.message);
+            if (config_applies(base, &configs[c]))
+                rc = configure(s, base, c, scenes[k].title, e);
         }
     }
     scene_free(s);
