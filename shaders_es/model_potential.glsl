@@ -1,5 +1,7 @@
 // Radial force field around a centre (paper section 5.2): Yukawa, or the polynomial xi(r) when the
 // preamble defines PROFILE_POLYNOMIAL.
+// The step is small: two steps to a loop turn (STEPS_UNCHECKED, stage_integrate.glsl).
+#define MODEL_STEPS_A_TURN 2
 uniform vec3 u_model_center;
 #ifdef PROFILE_POLYNOMIAL
 uniform float u_model_strength;

@@ -1,6 +1,9 @@
 // Continuous refraction in a procedural explosion (paper section 5.3):
 // n = 1 + amplitude s(r) (1 + noise_amplitude N(y)), s a Gaussian shell, N three plane waves.
 // With ds = n dsigma the ray equation becomes d2x/dsigma2 = n grad n and |dx/dsigma| = n.
+// The step is large (three waves' sines and cosines, a Gaussian): one step to a loop turn
+// (STEPS_UNCHECKED, stage_integrate.glsl).
+#define MODEL_STEPS_A_TURN 1
 uniform vec3 u_model_center;
 uniform vec4 u_refraction;      // amplitude, shell_radius, shell_width, noise_amplitude
 uniform float u_noise_frequency; // 1 / scene length
@@ -30,10 +33,10 @@ float model_refraction_index(vec3 x, out vec3 grad_n)
     float modulation = 1.0 + u_refraction.w * noise;
     grad_n = (u_refraction.x * shell * u_refraction.w) * noise_grad;
     // The shell is a cone at r = 0 with no defined slope: its radial term is dropped there.
-    if (r > MODEL_GUARD_RADIUS) {
-        float dshell_dr = -2.0 * q / u_refraction.z * shell;
-        grad_n += (u_refraction.x * dshell_dr * modulation) * (y / r);
-    }
+    // (selected, not branched: a branch in the step costs llvmpipe more than the term)
+    float dshell_dr = -2.0 * q / u_refraction.z * shell;
+    vec3 with_radial = grad_n + (u_refraction.x * dshell_dr * modulation) * (y / r);
+    grad_n = r > MODEL_GUARD_RADIUS ? with_radial : grad_n;
     return 1.0 + u_refraction.x * shell * modulation;
 }
 

@@ -1,4 +1,6 @@
 // Rays following the Roessler flow (paper section 5.1), scaled about a centre: f = strength * F((x - c) / scale).
+// The step is small: two steps to a loop turn (STEPS_UNCHECKED, stage_integrate.glsl).
+#define MODEL_STEPS_A_TURN 2
 uniform vec3 u_model_center;
 uniform float u_model_inv_scale;     // 1 / scale, rounded once from double (a product is cheaper than a quotient)
 uniform float u_model_strength;

@@ -1,5 +1,7 @@
 // Light near a non-rotating black hole (paper section 5.4): the spatial photon orbit obeys Binet's
 // u'' + u = 3 M u^2, which is the central force f = -3 M h^2 y / r^5 with h = |y x v| conserved.
+// The step is small: two steps to a loop turn (STEPS_UNCHECKED, stage_integrate.glsl).
+#define MODEL_STEPS_A_TURN 2
 uniform vec3 u_model_center;
 uniform float u_mass;           // M in scene length units (G = c = 1)
 

@@ -69,9 +69,7 @@ void main()
             // the segment's steps unchecked (stage_integrate.glsl); a ray that left, fell in or
             // failed within them takes the segment again after these loops, from its start, each
             // step checked
-            for (int p = 0; p < PASSES_PER_SEGMENT; p++)
-                for (int q = 0; q < STEPS_PER_PASS; q++)
-                    step_unchecked(x, v, steps, h, clean);
+            STEPS_UNCHECKED(PASSES_PER_SEGMENT * STEPS_PER_PASS, x, v, steps, h, clean)
 #endif
             bool near = chord_near(a, x);
             float new_code = code;

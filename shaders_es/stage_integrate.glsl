@@ -213,6 +213,26 @@ void step_unchecked(inout vec3 x, inout vec3 v, inout float steps, inout float h
     clean = clean && inside && finite_state(x, v);
 }
 
+
+// N unchecked steps from (x, v) (N a constant expression), MODEL_STEPS_A_TURN of them to a loop
+// turn. The model file says how many: 2 for a light model whose step is small (Lorenz, Roessler,
+// the potential, Schwarzschild), 1 for one whose step is large (refraction's noise). The same
+// steps in the same order either way, so the same rays bit for bit. Why: on llvmpipe a loop turn
+// costs a good part of a small step, so two small steps a turn run faster than one; two large
+// steps a turn, or three or more small ones, ran slower than one (docs/PIPELINE.md).
+#if MODEL_STEPS_A_TURN == 2
+#define STEPS_UNCHECKED(N, x, v, steps, h, clean) \
+    for (int turn = 0; turn < (N) / 2; turn++) { \
+        step_unchecked(x, v, steps, h, clean); \
+        step_unchecked(x, v, steps, h, clean); \
+    } \
+    if ((N) - 2 * ((N) / 2) == 1) \
+        step_unchecked(x, v, steps, h, clean);
+#else
+#define STEPS_UNCHECKED(N, x, v, steps, h, clean) \
+    for (int turn = 0; turn < (N); turn++) \
+        step_unchecked(x, v, steps, h, clean);
+#endif
 #endif
 
 // One pass's worth of the ray's motion: STEPS_PER_PASS steps from (x, v) with step h, or flat
@@ -250,8 +270,7 @@ void integrate_pass(inout vec3 x, inout vec3 v, inout float steps, inout float h
     // every step checked, as the scheme states it: what tests/unit/test_acceleration.c compares with
     clean = false;
 #else
-    for (int i = 0; i < STEPS_PER_PASS; i++)
-        step_unchecked(x, v, steps, h, clean);
+    STEPS_UNCHECKED(STEPS_PER_PASS, x, v, steps, h, clean)
 #endif
     // where the ray stopped within the pass, the pass again from its start, each step checked
     bool again = running && !clean;
