@@ -364,7 +364,10 @@ static double warp_at(const double *warp, double x)
 }
 
 /* Largest distance of the orbit from its n chords, from points between the chords' exact ends;
- * points inside the clear radius, where nothing can be met, do not count. */
+ * points inside the clear radius, where nothing can be met, do not count. Each chord is measured
+ * in the plane turned so that its start lies on the x axis: the points' angles from there are
+ * multiples of one small angle, whose cosines and sines follow by turning (one sincos a chord,
+ * not eight). */
 static double chord_sag(struct orbit_knots *k, const double *warp, int n, double clear_radius)
 {
     enum { inner = 8 };
@@ -372,9 +375,8 @@ static double chord_sag(struct orbit_knots *k, const double *warp, int n, double
     double phi_end = k->phi[k->n - 1], worst = 0.0;
     /* each chord starts where the one before ended: that end is evaluated once */
     double pb = phi_end * warp_at(warp, 0.0), ub = knots_eval_u(k, pb);
-    double bx = cos(pb) / ub, by = sin(pb) / ub;
     for (int p = 0; p < n; p++) {
-        double pa = pb, ax = bx, ay = by;
+        double pa = pb, ua = ub;
         pb = phi_end * warp_at(warp, (double)(p + 1) / n);
         /* the points between the ends first, in the order of phi: the knots' search then moves on
          * from where it was rather than starting again */
@@ -382,15 +384,21 @@ static double chord_sag(struct orbit_knots *k, const double *warp, int n, double
         for (int j = 1; j < inner; j++)
             u_between[j] = knots_eval_u(k, pa + (pb - pa) * j / inner);
         ub = knots_eval_u(k, pb);
-        bx = cos(pb) / ub;
-        by = sin(pb) / ub;
-        double dx = bx - ax, dy = by - ay, len = hypot(dx, dy);
+        double turn_c = cos((pb - pa) / inner), turn_s = sin((pb - pa) / inner);
+        double c[inner + 1], sn[inner + 1];
+        c[0] = 1.0;
+        sn[0] = 0.0;
+        for (int j = 1; j <= inner; j++) {
+            c[j] = c[j - 1] * turn_c - sn[j - 1] * turn_s;
+            sn[j] = sn[j - 1] * turn_c + c[j - 1] * turn_s;
+        }
+        double ax = 1.0 / ua, dx = c[inner] / ub - ax, dy = sn[inner] / ub, len = sqrt(dx * dx + dy * dy);
         for (int j = 1; j < inner; j++) {
-            double phi = pa + (pb - pa) * j / inner, u = u_between[j];
+            double u = u_between[j];
             if (u > u_clear)
                 continue;
-            double x = cos(phi) / u - ax, y = sin(phi) / u - ay;
-            worst = fmax(worst, len > 0.0 ? fabs(x * dy - y * dx) / len : hypot(x, y));
+            double x = c[j] / u - ax, y = sn[j] / u;
+            worst = fmax(worst, len > 0.0 ? fabs(x * dy - y * dx) / len : sqrt(x * x + y * y));
         }
     }
     return worst;
