@@ -364,7 +364,9 @@ static double warp_at(const double *warp, double x)
 }
 
 /* Largest distance of the orbit from its n chords, from points between the chords' exact ends;
- * points inside the clear radius, where nothing can be met, do not count. Each chord is measured
+ * a chord whose two ends lie inside the clear radius stays inside it, where nothing can be met,
+ * and does not count. (Every point of a chord with an end outside counts: the orbit runs outside
+ * between that end and the first point inside, and strays from the chord there too.) Each chord is measured
  * in the plane turned so that its start lies on the x axis: the points' angles from there are
  * multiples of one small angle, whose cosines and sines follow by turning (one sincos a chord,
  * not eight). */
@@ -393,10 +395,10 @@ static double chord_sag(struct orbit_knots *k, const double *warp, int n, double
             sn[j] = sn[j - 1] * turn_c + c[j - 1] * turn_s;
         }
         double ax = 1.0 / ua, dx = c[inner] / ub - ax, dy = sn[inner] / ub, len = sqrt(dx * dx + dy * dy);
+        if (ua > u_clear && ub > u_clear)
+            continue;
         for (int j = 1; j < inner; j++) {
             double u = u_between[j];
-            if (u > u_clear)
-                continue;
             double x = c[j] / u - ax, y = sn[j] / u;
             worst = fmax(worst, len > 0.0 ? fabs(x * dy - y * dx) / len : sqrt(x * x + y * y));
         }

@@ -286,6 +286,71 @@ static void test_sweep_to_infinity(void **state)
     orbit_table_free(&t);
 }
 
+/* Each row's chord schedule against its own orbit, traced directly (not through the table or the
+ * schedule's own sampling): the largest distance of the orbit from its n chords, measured at 32
+ * points a chord, stays within the chord tolerance. Slack 2%: the schedule measures 7 points a
+ * chord and the table keeps its chord ends in float. On both sides of the critical angle, for an
+ * observer near the photon sphere and one far out, and with a clear radius (only points outside
+ * it count). */
+static void test_chord_schedule_holds_tolerance(void **state)
+{
+    (void)state;
+    static const struct { double r_o, clear; } cases[] = {{10.0, 0.0}, {3.2, 0.0}, {40.0, 4.0}};
+    enum { inner = 32 };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        struct orbit_table t;
+        struct error err;
+        struct orbit_table_params p = params(1.0, cases[c].r_o, 60.0 + cases[c].r_o, 64, 64);
+        p.chord_tolerance = 1e-3;
+        p.max_segments = 1000;
+        p.clear_radius = cases[c].clear;
+        assert_int_equal(orbit_table_build(&t, &p, &err), 0);
+        double worst = 0.0;
+        long chords = 0;
+        for (int row = 3; row < t.height; row += 7) {
+            double psi = t.psi[row], phi_end = t.phi_over_sin[row] * sin(psi);
+            int n = t.segments[row];
+            assert_true(n >= 1 && n < p.max_segments);
+            chords += n;
+            size_t count = (size_t)n * inner + 1;
+            double *phi = malloc(count * sizeof *phi), *u = malloc(count * sizeof *u), *du = malloc(count * sizeof *du);
+            assert_non_null(phi);
+            assert_non_null(u);
+            assert_non_null(du);
+            for (int k = 0; k < n; k++) {
+                double s_a = orbit_table_chord_end(&t, psi, k, n), s_b = orbit_table_chord_end(&t, psi, k + 1, n);
+                for (int j = 0; j < inner; j++)
+                    phi[(size_t)k * inner + j] = fmin(phi_end * (s_a + (s_b - s_a) * j / inner), phi_end);
+            }
+            phi[count - 1] = phi_end;
+            double traced_end;
+            int captured;
+            assert_int_equal(orbit_trace(1.0, cases[c].r_o, psi, t.u_far, t.u_capture, phi, (int)count, u, du,
+                                         &traced_end, &captured), 0);
+            for (int k = 0; k < n; k++) {
+                size_t a = (size_t)k * inner, b = a + inner;
+                double ax = cos(phi[a]) / u[a], ay = sin(phi[a]) / u[a];
+                double dx = cos(phi[b]) / u[b] - ax, dy = sin(phi[b]) / u[b] - ay, len = hypot(dx, dy);
+                for (size_t j = a + 1; j < b; j++) {
+                    if (p.clear_radius > 0.0 && 1.0 / u[j] < p.clear_radius)
+                        continue;
+                    double x = cos(phi[j]) / u[j] - ax, y = sin(phi[j]) / u[j] - ay;
+                    worst = fmax(worst, fabs(x * dy - y * dx) / len);
+                }
+            }
+            free(phi);
+            free(u);
+            free(du);
+        }
+        print_message("r_o %g, clear radius %g: %ld chords of %d rows, farthest from the orbit %.3g (tolerance %g); "
+                      "built in %.1f ms\n", cases[c].r_o, cases[c].clear, chords, (t.height - 3 + 6) / 7, worst,
+                      p.chord_tolerance, 1e3 * t.build_seconds);
+        assert_true(worst <= 1.02 * p.chord_tolerance);
+        assert_true(worst >= 0.3 * p.chord_tolerance);   /* not needlessly many chords */
+        orbit_table_free(&t);
+    }
+}
+
 static void test_refuses_bad_parameters(void **state)
 {
     (void)state;
@@ -309,6 +374,7 @@ int main(void)
         cmocka_unit_test(test_table_rows_exact),
         cmocka_unit_test(test_sweep_to_infinity),
         cmocka_unit_test(test_table_interpolation),
+        cmocka_unit_test(test_chord_schedule_holds_tolerance),
         cmocka_unit_test(test_refuses_bad_parameters),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
