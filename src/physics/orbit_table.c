@@ -94,6 +94,10 @@ struct orbit_knots {
     int n, cap;
     double mass;
     int hint;                     /* the step of the last evaluation: evaluations mostly move on */
+    /* the interpolant of one step as a polynomial in t (knots_sag_u): its step, start, 1 / length
+     * and coefficients of t^0 .. t^5 */
+    int power_step;
+    double power_phi, power_inv_h, power[6];
 };
 
 static int knots_push(struct orbit_knots *k, double phi, double u, double w)
@@ -174,14 +178,34 @@ static double knots_u(const struct orbit_knots *k, int lo, double phi, double *t
            h5 * h * h * k->a[hi];
 }
 
-/* u alone at phi, as knots_eval gives it: the chords' sag needs no slope. */
-static double knots_eval_u(struct orbit_knots *k, double phi)
+/* u alone at phi, knots_u's interpolant written as a polynomial in t and evaluated by Horner's
+ * rule, its coefficients kept from one call to the next in the same step: what the chords' sag
+ * measures, many points a step (not the table's samples, which knots_eval gives). The same
+ * quintic; its roundings differ from knots_u's by parts in 1e16. */
+static double knots_sag_u(struct orbit_knots *k, double phi)
 {
     int lo = knots_locate(k, phi);
     if (lo < 0)
         return lo == -1 ? k->u[0] : k->u[k->n - 1];
-    double t;
-    return knots_u(k, lo, phi, &t);
+    if (lo != k->power_step) {
+        int hi = lo + 1;
+        double h = k->phi[hi] - k->phi[lo];
+        double u0 = k->u[lo], w0 = h * k->w[lo], a0 = h * h * k->a[lo];
+        double u1 = k->u[hi], w1 = h * k->w[hi], a1 = h * h * k->a[hi];
+        double *c = k->power;
+        c[0] = u0;
+        c[1] = w0;
+        c[2] = 0.5 * a0;
+        c[3] = 10.0 * (u1 - u0) - 6.0 * w0 - 4.0 * w1 - 1.5 * a0 + 0.5 * a1;
+        c[4] = 15.0 * (u0 - u1) + 8.0 * w0 + 7.0 * w1 + 1.5 * a0 - a1;
+        c[5] = 6.0 * (u1 - u0) - 3.0 * (w0 + w1) - 0.5 * (a0 - a1);
+        k->power_step = lo;
+        k->power_phi = k->phi[lo];
+        k->power_inv_h = 1.0 / h;
+    }
+    const double *c = k->power;
+    double t = (phi - k->power_phi) * k->power_inv_h;
+    return ((((c[5] * t + c[4]) * t + c[3]) * t + c[2]) * t + c[1]) * t + c[0];
 }
 
 /* u and du/dphi at phi (knots_u, and the interpolant's derivative). */
@@ -212,6 +236,7 @@ static int trace_knots(double mass, double r_observer, double psi, double u_far,
 {
     memset(k, 0, sizeof *k);
     k->mass = mass;
+    k->power_step = -1;
     double u = 1.0 / r_observer;
     double w = -u * sqrt(1.0 - 2.0 * mass * u) * cos(psi) / sin(psi);
     double phi = 0.0;
@@ -376,7 +401,7 @@ static double chord_sag(struct orbit_knots *k, const double *warp, int n, double
     double u_clear = clear_radius > 0.0 ? 1.0 / clear_radius : INFINITY;
     double phi_end = k->phi[k->n - 1], worst = 0.0;
     /* each chord starts where the one before ended: that end is evaluated once */
-    double pb = phi_end * warp_at(warp, 0.0), ub = knots_eval_u(k, pb);
+    double pb = phi_end * warp_at(warp, 0.0), ub = knots_sag_u(k, pb);
     for (int p = 0; p < n; p++) {
         double pa = pb, ua = ub;
         pb = phi_end * warp_at(warp, (double)(p + 1) / n);
@@ -384,8 +409,8 @@ static double chord_sag(struct orbit_knots *k, const double *warp, int n, double
          * from where it was rather than starting again */
         double u_between[inner];
         for (int j = 1; j < inner; j++)
-            u_between[j] = knots_eval_u(k, pa + (pb - pa) * j / inner);
-        ub = knots_eval_u(k, pb);
+            u_between[j] = knots_sag_u(k, pa + (pb - pa) * j / inner);
+        ub = knots_sag_u(k, pb);
         double turn_c = cos((pb - pa) / inner), turn_s = sin((pb - pa) / inner);
         double c[inner + 1], sn[inner + 1];
         c[0] = 1.0;
