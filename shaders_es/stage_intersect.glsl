@@ -536,13 +536,15 @@ void intersect_shade(candidate best, vec3 a, vec3 b, out vec4 new_hit, out vec4 
 #ifdef ORBIT_HITS
 // Hits on the orbit, not on its chord (render.method = orbit_table; orbit_table.glsl comes first): a hit found on chord a -> b,
 // which runs from fraction s_a to s_b of the ray's orbit, is found again on the two halves of that
-// stretch of orbit, split where the hit was, ORBIT_HIT_LEVELS times: every split brings both ends
-// of the chord that carries the hit back onto the orbit, and the chord's distance from the orbit
-// falls about fourfold each time. Every object is tested again on each half, so a hit that the
-// orbit reaches first is the one kept. Where neither half meets anything (a chord that grazed an
-// edge the orbit misses), the chord's hit stays. Used by the intersection stage and by the single
-// pass alike, with the same arithmetic, so both find the same hits.
-const int ORBIT_HIT_LEVELS = 3;
+// stretch of orbit, ORBIT_HIT_LEVELS times: first split where the hit was, which puts an end of the
+// chord that carries it on the orbit next to it; then in the middle, so that the carrying chord
+// halves at every level and its distance from the orbit falls fourfold (a split at the hit alone
+// leaves the hit at the end of its half, and the next split falls at nearly the same point). Every
+// object is tested again on each half, so a hit that the orbit reaches first is the one kept.
+// Where neither half meets anything (a chord that grazed an edge the orbit misses), the chord's
+// hit stays. Used by the intersection stage and by the single pass alike, with the same
+// arithmetic, so both find the same hits.
+const int ORBIT_HIT_LEVELS = 4;
 
 // best: the hit on chord a -> b (segment `segment`); a and b become the ends of the short chord
 // that carries the hit, and best its fraction, normal and uv there (its depth key is kept).
@@ -554,7 +556,8 @@ void orbit_refine_hit(orbit_ray ray, float s_a, float s_b, float segment, inout 
     float none = NO_HIT;
     float no_slot = -1.0;
     for (int level = 0; level < ORBIT_HIT_LEVELS; level++) {
-        float s_m = lo + best.t * (hi - lo);
+        float split = level == 0 ? best.t : 0.5;
+        float s_m = lo + split * (hi - lo);
         vec2 q = orbit_at(ray, s_m);
         vec3 m = orbit_point(ray, q, s_m);
         candidate first = candidate(none, 0.0, no_slot, vec3(0.0), vec3(0.0));
