@@ -200,7 +200,7 @@ static int limit_on(struct bench *b, struct scene *s, struct error *e)
                    "no objects, the frame's time (median of %d) includes its few non-integration passes. C: the same "
                    "float arithmetic (src/bench/cpu_limit.c), vectorised by the compiler, %d threads.\n\n"
                    "| path | steps per second |\n|---|---|\n| GL (%s) | %.3g |\n| C kernel | %.3g |\n\n"
-                   "The GL path reaches %.2f of the C kernel. Target: at least 0.5: **%s**.\n\n",
+                   "The GL path reaches %.3f of the C kernel. Target: at least 0.5: **%s**.\n\n",
             s->render.width, s->render.height, s->render.segments * s->render.steps_per_segment, b->runs, c.threads,
             b->renderer, gl_rate, c.steps_per_second, fraction, fraction >= 0.5 ? "met" : "missed");
     return 0;
