@@ -67,8 +67,8 @@ void main()
             }
 #else
             // the segment's steps unchecked (stage_integrate.glsl); a ray that left, fell in or
-            // failed within them takes the segment again after these loops, from its start, each
-            // step checked
+            // failed within them takes the segment again after the segments' loops, from its
+            // start, each step checked
             STEPS_UNCHECKED(PASSES_PER_SEGMENT * STEPS_PER_PASS, x, v, steps, h, clean)
 #endif
             bool near = chord_near(a, x);

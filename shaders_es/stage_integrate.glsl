@@ -213,7 +213,6 @@ void step_unchecked(inout vec3 x, inout vec3 v, inout float steps, inout float h
     clean = clean && inside && finite_state(x, v);
 }
 
-
 // N unchecked steps from (x, v) (N a constant expression), MODEL_STEPS_A_TURN of them to a loop
 // turn. The model file says how many: 2 for a light model whose step is small (Lorenz, Roessler,
 // the potential, Schwarzschild), 1 for one whose step is large (refraction's noise). The same

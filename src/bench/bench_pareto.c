@@ -128,6 +128,13 @@ static void apply_config(struct scene *s, const struct pareto_config *c)
         r->pipeline = c->multipass ? PIPELINE_MULTIPASS : PIPELINE_AUTO;
 }
 
+/* How many of the configurations a scene's model takes: the exact-orbit ones (last in the list)
+ * only for Schwarzschild. */
+static int configs_of(const struct scene *base)
+{
+    return base->model.type == MODEL_SCHWARZSCHILD ? N_CONFIGS : N_CONFIGS - N_ORBIT_CONFIGS;
+}
+
 /* S = BASE in configuration C, validated; 0, or -1 with e naming the configuration and the scene. */
 static int configure(struct scene *s, const struct scene *base, int c, const char *title, struct error *e)
 {
@@ -192,7 +199,7 @@ static int measure_on(struct bench *b, int k, struct scene *base, struct scene *
                    base->render.height);
     if (cpu_render(base, &o, &ref, e) != 0)
         return -1;
-    int n = b->quick ? 3 : base->model.type == MODEL_SCHWARZSCHILD ? N_CONFIGS : N_CONFIGS - N_ORBIT_CONFIGS;
+    int n = b->quick ? 3 : configs_of(base);
     for (int c = 0; c < n; c++) {
         if (!config_applies(base, &configs[c])) {
             pts[c] = (struct pareto_point){NAN, NAN, NAN, NAN, 0, 0};
@@ -250,8 +257,7 @@ static int validate_configs(struct error *e)
             rc = -1;
             break;
         }
-        int n = base->model.type == MODEL_SCHWARZSCHILD ? N_CONFIGS : N_CONFIGS - N_ORBIT_CONFIGS;
-        for (int c = 0; c < n && rc == 0; c++) {
+        for (int c = 0; c < configs_of(base) && rc == 0; c++) {
             if (config_applies(base, &configs[c]))
                 rc = configure(s, base, c, scenes[k].title, e);
         }

@@ -411,6 +411,8 @@ static double chord_sag(struct orbit_knots *k, const double *warp, int n, double
         for (int j = 1; j < inner; j++)
             u_between[j] = knots_sag_u(k, pa + (pb - pa) * j / inner);
         ub = knots_sag_u(k, pb);
+        if (ua > u_clear && ub > u_clear)
+            continue;
         double turn_c = cos((pb - pa) / inner), turn_s = sin((pb - pa) / inner);
         double c[inner + 1], sn[inner + 1];
         c[0] = 1.0;
@@ -420,8 +422,6 @@ static double chord_sag(struct orbit_knots *k, const double *warp, int n, double
             sn[j] = sn[j - 1] * turn_c + c[j - 1] * turn_s;
         }
         double ax = 1.0 / ua, dx = c[inner] / ub - ax, dy = sn[inner] / ub, len = sqrt(dx * dx + dy * dy);
-        if (ua > u_clear && ub > u_clear)
-            continue;
         for (int j = 1; j < inner; j++) {
             double u = u_between[j];
             double x = c[j] / u - ax, y = sn[j] / u;
