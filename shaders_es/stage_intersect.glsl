@@ -541,16 +541,19 @@ void intersect_shade(candidate best, vec3 a, vec3 b, out vec4 new_hit, out vec4 
 // halves at every level and its distance from the orbit falls fourfold (a split at the hit alone
 // leaves the hit at the end of its half, and the next split falls at nearly the same point). Every
 // object is tested again on each half, so a hit that the orbit reaches first is the one kept.
-// Where neither half meets anything (a chord that grazed an edge the orbit misses), the chord's
-// hit stays. Used by the intersection stage and by the single pass alike, with the same
-// arithmetic, so both find the same hits.
+// Where at some level neither half meets anything (a chord that crossed an object, or an edge of
+// one, that the orbit passes by), the hit is lost: its caller keeps no hit there and the ray goes
+// on from the chord's end. Used by the intersection stage and by the single pass alike, with the
+// same arithmetic, so both find the same hits.
 const int ORBIT_HIT_LEVELS = 4;
 
 // best: the hit on chord a -> b (segment `segment`); a and b become the ends of the short chord
-// that carries the hit, and best its fraction, normal and uv there (its depth key is kept).
+// that carries the hit, and best its fraction, normal and uv there (its depth key is kept); lost:
+// whether the orbit misses what the chord met.
 void orbit_refine_hit(orbit_ray ray, float s_a, float s_b, float segment, inout vec3 a, inout vec3 b,
-                      inout candidate best)
+                      inout candidate best, out bool lost)
 {
+    lost = false;
     float lo = s_a;
     float hi = s_b;
     float none = NO_HIT;
@@ -566,6 +569,7 @@ void orbit_refine_hit(orbit_ray ray, float s_a, float s_b, float segment, inout 
         intersect_chord(m, b, segment, second);
         bool in_first = first.slot >= 0.0;
         bool in_second = !in_first && second.slot >= 0.0;
+        lost = lost || !(in_first || in_second);
         float key = best.key;
         best = in_first ? first : in_second ? second : best;
         best.key = key;
@@ -600,7 +604,10 @@ void main()
     float s_b;
     bool leaves;
     orbit_chord_from(ray, s_a, u_segment_index, q_b, s_b, leaves);
-    orbit_refine_hit(ray, s_a, s_b, u_segment_index, a, b, best);
+    bool lost;
+    orbit_refine_hit(ray, s_a, s_b, u_segment_index, a, b, best, lost);
+    // a hit the orbit misses is not kept: the ray goes on (or ends at the chord's end)
+    found = found && !lost;
 #endif
     // computed before the select: see the precision note in common.glsl
     vec4 new_hit, new_image;

@@ -39,6 +39,8 @@ const float ORBIT_GROUP = 4.0;
 // How far, relative to the radius, the interpolated orbit might stray from the radii of its ends
 // between them (float roundings, and the interpolant's wiggle where the orbit is nearly circular)
 const float GROUP_RADIUS_MARGIN = 1e-3;
+// How many times a ray goes on after a hit its orbit misses (the last hit found is kept)
+const int ORBIT_HIT_TRIES = 3;
 
 // Whether the chords between fractions s_a and s_b of the orbit (where it has u, du/ds = q_a and
 // q_b) can meet no object, end inside the capture sphere or leave the bounding sphere. Without a
@@ -102,6 +104,11 @@ void main()
     float k = 0.0;
     float k_end = 0.0;                   // end of the group being followed chord by chord
     bool done = false;
+    bool falls = false;                  // whether the last chord tested ends inside the capture sphere
+    // A hit is found again on the orbit (orbit_refine_hit) after the loop; where the orbit misses
+    // what the chord met, the ray goes on from that chord's end (as the multipass scheme, whose
+    // intersection stage keeps no such hit), up to ORBIT_HIT_TRIES times.
+    for (int attempt = 0; attempt < ORBIT_HIT_TRIES; attempt++) {
     for (int i = 0; i < 2 * MAX_SEGMENTS + 2; i++) {
         if (k >= ray.segments || leaving || done)
             break;
@@ -146,6 +153,7 @@ void main()
         hit_segment = tested ? k : hit_segment;
         vec3 from_mass = p1 - u_capture_center;
         bool captured = tested && u_capture_radius2 > 0.0 && dot(from_mass, from_mass) <= u_capture_radius2;
+        falls = captured;
         bool found = best.slot >= 0.0;
         bool ends = !found && captured;
         code = ends ? CODE_CAPTURED : code;
@@ -153,6 +161,8 @@ void main()
         done = found || ends;
         a = moves && !done ? p1 : a;
         k = moves && !done ? k1 : k;
+        if (k >= ray.segments || leaving || done)
+            break;
     }
     if (leaving) {
         // the leaving chord as the orbit stage makes it (orbit_chord_from): from its end outside
@@ -172,16 +182,32 @@ void main()
         code = found ? code : CODE_SKY;
         end_key = found ? end_key : steps;
     }
+    // the hit found again on the orbit itself; where the orbit misses (lost), the chord's end
+    // decides as it would have without the hit: the ray leaves, falls in or goes on from there
+    bool lost = false;
+    if (best.slot >= 0.0)
+        orbit_refine_hit(ray, hit_s_a, hit_s_b, hit_segment, hit_a, hit_b, best, lost);
+    lost = lost && attempt < ORBIT_HIT_TRIES - 1;
+    bool goes_on = lost && !leaving && !falls;
+    bool stops = lost && !goes_on;
+    code = stops ? (leaving ? CODE_SKY : CODE_CAPTURED) : code;
+    end_key = stops ? steps : end_key;
+    best.slot = lost ? -1.0 : best.slot;
+    best.key = lost ? NO_HIT : best.key;
+    a = goes_on ? b : a;
+    k = goes_on ? steps : k;
+    done = !goes_on;
+    // at the turn's end, not at the next one's start: llvmpipe runs a loop's turn for a pixel
+    // group while any of its pixels has not left the loop
+    if (!goes_on)
+        break;
+    }
     // the final state again from (q, s), outside the loop: see the precision note in common.glsl
     vec3 end = orbit_chord_point(ray, q, s, leaves);
     // a ray that leaves looks the sky up along its direction at infinity (as the orbit stage)
     vec3 along_orbit = orbit_tangent(ray, q, s);
     vec3 escape = orbit_direction_at_infinity(ray);
     vec3 tangent = leaves ? escape : along_orbit;
-    // a hit is found again on the orbit itself; a ray without one skips that (no pixel group of
-    // the sky-only frame runs it)
-    if (best.slot >= 0.0)
-        orbit_refine_hit(ray, hit_s_a, hit_s_b, hit_segment, hit_a, hit_b, best);
     vec4 new_hit, new_image;
     intersect_shade(best, hit_a, hit_b, new_hit, new_image);
     bool found = best.slot >= 0.0;
