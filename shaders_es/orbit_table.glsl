@@ -210,6 +210,9 @@ void orbit_crossing(orbit_ray ray, float s0, float s1, vec3 from_bound, inout ve
         float newton = s - g / slope;
         float middle = half_sum * (inside + outside);
         s = newton >= inside && newton <= outside ? newton : middle;
+        // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
+        if (i == ORBIT_CROSSING_ITERATIONS - 1)
+            break;
     }
     q = orbit_at(ray, s);
 }

@@ -64,6 +64,8 @@ void main()
             for (int p = 0; p < PASSES_PER_SEGMENT; p++) {
                 bool running = steps >= 0.0 && travelling(x);
                 integrate_pass(x, v, steps, h, running);
+                if (p == PASSES_PER_SEGMENT - 1)
+                    break;
             }
 #else
             // the segment's steps unchecked (stage_integrate.glsl); a ray that left, fell in or
@@ -85,6 +87,9 @@ void main()
             pending = clean && near;
             stop = again || (decided && ended) || still;
             next_segment = k + 1.0;
+            // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
+            if (next_segment >= u_segments || stop || pending)
+                break;
         }
         candidate tested = best;
         intersect_chord(a, x, k_last, tested);
@@ -96,6 +101,9 @@ void main()
         end_key = pending ? new_end_key : end_key;
         stop = stop || (pending && ended);
         pending = false;
+        // at the turn's end, as every loop here (docs/PIPELINE.md, "Loops that end at a turn's end")
+        if (stop || next_segment >= u_segments)
+            break;
     }
     // The segment in which a ray left, fell into the horizon or failed, from its start, as the
     // multipass scheme integrates, intersects and ends it: the same rays bit for bit
@@ -113,6 +121,8 @@ void main()
             break;
         bool running = steps_checked >= 0.0 && travelling(x_checked);
         integrate_pass_checked(x_checked, v_checked, steps_checked, h_checked, running);
+        if (p == PASSES_PER_SEGMENT - 1)
+            break;
     }
     // selected, not assigned in the loop that may break (see the precision note in common.glsl)
     x = again ? x_checked : x;

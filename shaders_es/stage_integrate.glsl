@@ -218,19 +218,26 @@ void step_unchecked(inout vec3 x, inout vec3 v, inout float steps, inout float h
 // the potential, Schwarzschild), 1 for one whose step is large (refraction's noise). The same
 // steps in the same order either way, so the same rays bit for bit. Why: on llvmpipe a loop turn
 // costs a good part of a small step, so two small steps a turn run faster than one; two large
-// steps a turn, or three or more small ones, ran slower than one (docs/PIPELINE.md).
+// steps a turn, or three or more small ones, ran slower than one (docs/PIPELINE.md). The loop
+// breaks after its last turn, not only at the top of the next (docs/PIPELINE.md, "Loops that end
+// at a turn's end").
 #if MODEL_STEPS_A_TURN == 2
 #define STEPS_UNCHECKED(N, x, v, steps, h, clean) \
     for (int turn = 0; turn < (N) / 2; turn++) { \
         step_unchecked(x, v, steps, h, clean); \
         step_unchecked(x, v, steps, h, clean); \
+        if (turn == (N) / 2 - 1) \
+            break; \
     } \
     if ((N) - 2 * ((N) / 2) == 1) \
         step_unchecked(x, v, steps, h, clean);
 #else
 #define STEPS_UNCHECKED(N, x, v, steps, h, clean) \
-    for (int turn = 0; turn < (N); turn++) \
-        step_unchecked(x, v, steps, h, clean);
+    for (int turn = 0; turn < (N); turn++) { \
+        step_unchecked(x, v, steps, h, clean); \
+        if (turn == (N) - 1) \
+            break; \
+    }
 #endif
 #endif
 
@@ -282,6 +289,9 @@ void integrate_pass(inout vec3 x, inout vec3 v, inout float steps, inout float h
         if (!again)
             break;
         step_checked(x_checked, v_checked, steps_checked, h_checked, running_checked);
+        // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
+        if (i == STEPS_PER_PASS - 1)
+            break;
     }
     // the checked state kept apart until here: selected, not assigned in the loop that may break
     // (see the precision note in common.glsl); a ray that was not travelling keeps its state
@@ -312,6 +322,9 @@ void integrate_pass_checked(inout vec3 x, inout vec3 v, inout float steps, inout
         if (!running_checked)
             break;
         step_checked(x_checked, v_checked, steps_checked, h_checked, running_checked);
+        // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
+        if (!running_checked || i == STEPS_PER_PASS - 1)
+            break;
     }
     // selected, not assigned in the loop that may break (see the precision note in common.glsl)
     x = running ? x_checked : x;

@@ -536,14 +536,14 @@ void intersect_shade(candidate best, vec3 a, vec3 b, out vec4 new_hit, out vec4 
 #ifdef ORBIT_HITS
 // Hits on the orbit, not on its chord (render.method = orbit_table; orbit_table.glsl comes first): a hit found on chord a -> b,
 // which runs from fraction s_a to s_b of the ray's orbit, is found again on the two halves of that
-// stretch of orbit, ORBIT_HIT_LEVELS times: first split where the hit was, which puts an end of the
-// chord that carries it on the orbit next to it; then in the middle, so that the carrying chord
-// halves at every level and its distance from the orbit falls fourfold (a split at the hit alone
-// leaves the hit at the end of its half, and the next split falls at nearly the same point). Every
-// object is tested again on each half, so a hit that the orbit reaches first is the one kept.
-// Where at some level neither half meets anything (a chord that crossed an object, or an edge of
-// one, that the orbit passes by), the hit is lost: its caller keeps no hit there and the ray goes
-// on from the chord's end. Used by the intersection stage and by the single pass alike, with the
+// stretch of orbit, split in its middle, ORBIT_HIT_LEVELS times: the chord that carries the hit
+// halves at every level and its distance from the orbit falls fourfold. Every object is tested
+// again on each half, so a hit that the orbit reaches first is the one kept. Where at some level
+// neither half meets anything (a chord that crossed an object, or an edge of one, that the orbit
+// passes by), the hit is lost: its caller keeps no hit there and the ray goes on from the chord's
+// end. The split is never at the hit itself: the orbit there lies within the chord's error of the
+// object's surface, often closer than a float rounding, where both halves could miss a surface
+// that the orbit does cross. Used by the intersection stage and by the single pass alike, with the
 // same arithmetic, so both find the same hits.
 const int ORBIT_HIT_LEVELS = 4;
 
@@ -559,8 +559,7 @@ void orbit_refine_hit(orbit_ray ray, float s_a, float s_b, float segment, inout 
     float none = NO_HIT;
     float no_slot = -1.0;
     for (int level = 0; level < ORBIT_HIT_LEVELS; level++) {
-        float split = level == 0 ? best.t : 0.5;
-        float s_m = lo + split * (hi - lo);
+        float s_m = lo + 0.5 * (hi - lo);
         vec2 q = orbit_at(ray, s_m);
         vec3 m = orbit_point(ray, q, s_m);
         candidate first = candidate(none, 0.0, no_slot, vec3(0.0), vec3(0.0));
@@ -581,6 +580,10 @@ void orbit_refine_hit(orbit_ray ray, float s_a, float s_b, float segment, inout 
         hi = new_hi;
         a = new_a;
         b = new_b;
+        // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end"); a lost hit is
+        // not kept, so its later levels would change nothing that is written
+        if (lost || level == ORBIT_HIT_LEVELS - 1)
+            break;
     }
 }
 #endif

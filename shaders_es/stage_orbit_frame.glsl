@@ -161,6 +161,7 @@ void main()
         done = found || ends;
         a = moves && !done ? p1 : a;
         k = moves && !done ? k1 : k;
+        // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
         if (k >= ray.segments || leaving || done)
             break;
     }
@@ -197,8 +198,7 @@ void main()
     a = goes_on ? b : a;
     k = goes_on ? steps : k;
     done = !goes_on;
-    // at the turn's end, not at the next one's start: llvmpipe runs a loop's turn for a pixel
-    // group while any of its pixels has not left the loop
+    // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
     if (!goes_on)
         break;
     }

@@ -31,6 +31,9 @@ void main()
     for (int p = 0; p < PASSES_PER_SEGMENT; p++) {
         bool running = waiting && steps >= 0.0 && travelling(x);
         integrate_pass(x, v, steps, h, running);
+        // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
+        if (p == PASSES_PER_SEGMENT - 1)
+            break;
     }
     float k = u_segment_index;
     candidate best = candidate(hit.w, 0.0, -1.0, vec3(0.0), vec3(0.0));
