@@ -593,6 +593,20 @@ static int periapsis(const struct scene *s, int i, int j, vec3d *at, double *r_p
  * disk and a rectangle; then a few spheres alone, each just inside the periapsis of one ray, so
  * that nothing else keeps the groups around those periapses from being passed over. Hits, state
  * and image must be the multipass scheme's (which follows every chord), bit for bit. */
+/* The hole at 96x72 seen from 12 M, its chords within chord_tolerance of the orbits: the view
+ * of the shells of objects below. */
+static void shell_view(struct scene *s, double chord_tolerance)
+{
+    orbit_hole(s, 30.0);
+    s->render.width = 96;
+    s->render.height = 72;
+    s->render.chord_tolerance = chord_tolerance;
+    s->camera.position = v3(0.0, 0.5, 12.0);
+    s->camera.look_at = v3(0.0, 0.0, 0.0);
+    s->camera.up = v3(0.0, 1.0, 0.0);
+    s->camera.fov_deg = 60.0;
+}
+
 /* A shell of SHELL_BALLS small spheres from 3.2 to 4.6 around the hole (a golden-angle spiral),
  * then a narrow disk and a small plate near the photon sphere: the number of objects added. */
 enum { SHELL_BALLS = 40 };
@@ -627,14 +641,7 @@ static void test_single_pass_group_bounds(void **state)
     for (int layout = 0; layout < 2; layout++)
         for (size_t k = 0; k < sizeof tolerances / sizeof tolerances[0]; k++) {
             static struct scene s;
-            orbit_hole(&s, 30.0);
-            s.render.width = 96;
-            s.render.height = 72;
-            s.render.chord_tolerance = tolerances[k];
-            s.camera.position = v3(0.0, 0.5, 12.0);
-            s.camera.look_at = v3(0.0, 0.0, 0.0);
-            s.camera.up = v3(0.0, 1.0, 0.0);
-            s.camera.fov_deg = 60.0;
+            shell_view(&s, tolerances[k]);
             int placed = 0;
             if (layout == 0) {
                 placed = shell_of_balls(&s);
@@ -701,14 +708,7 @@ static void test_hits_the_orbit_misses(void **state)
     static const double tolerances[] = {0.2, 0.02};
     for (size_t k = 0; k < sizeof tolerances / sizeof tolerances[0]; k++) {
         static struct scene s;
-        orbit_hole(&s, 30.0);
-        s.render.width = 96;
-        s.render.height = 72;
-        s.render.chord_tolerance = tolerances[k];
-        s.camera.position = v3(0.0, 0.5, 12.0);
-        s.camera.look_at = v3(0.0, 0.0, 0.0);
-        s.camera.up = v3(0.0, 1.0, 0.0);
-        s.camera.fov_deg = 60.0;
+        shell_view(&s, tolerances[k]);
         int placed = shell_of_balls(&s);
         struct object *wall = hc_add_object(&s, PRIM_RECT, "wall");
         wall->center = v3(0.0, 0.0, -9.0);
@@ -757,8 +757,7 @@ static void test_star_keeps_its_hits(void **state)
         hc_load(&s, "neutron_star", 320, 240, sets);
         struct cpu_image cpu;
         struct hc_gpu g;
-        hc_cpu_render(&s, &cpu);
-        hc_gpu_render(&s, &g);
+        hc_render_both(&s, 320, 240, &cpu, &g);
         struct compare_result cr;
         hc_compare(&g.dump, &cpu.dump, &cr);
         print_message("neutron_star, %s: %ld pixels differ, hit p99 %.2e of size\n", tolerances[k],
