@@ -109,98 +109,99 @@ void main()
     // what the chord met, the ray goes on from that chord's end (as the multipass scheme, whose
     // intersection stage keeps no such hit), up to ORBIT_HIT_TRIES times.
     for (int attempt = 0; attempt < ORBIT_HIT_TRIES; attempt++) {
-    for (int i = 0; i < 2 * MAX_SEGMENTS + 2; i++) {
-        if (k >= ray.segments || leaving || done)
-            break;
-        bool probe = k >= k_end;
-        float group_end = min(k + ORBIT_GROUP, ray.segments);
-        float k1 = probe ? group_end : k + 1.0;
-        float s_a = s;
-        float s1 = orbit_chord_end(ray, k1);
-        vec2 q1 = orbit_at(ray, s1);
-        vec3 p1 = orbit_point(ray, q1, s1);
-        float phi1 = s1 * ray.phi_end;
-        vec2 cs1 = vec2(cos(phi1), sin(phi1));
-        bool clear = group_clear(ray, s_a, q_group, cs_group, s1, q1, cs1);
-        bool passes = probe && clear;
-        bool chord = !probe;
-        k_end = probe ? group_end : k_end;
-        vec3 from_bound = p1 - u_bound_center;
-        leaving = chord && dot(from_bound, from_bound) >= u_bound_radius2;
-        leave_a = a;
-        leave_s = s_a;
-        leave_k = k;
-        leave_s1 = s1;
-        leave_q1 = q1;
-        leave_from_bound = from_bound;
-        bool tested = chord && !leaving;
-        bool moves = passes || tested;
-        q = moves ? q1 : q;
-        s = moves ? s1 : s;
-        b = moves ? p1 : b;
-        steps = moves ? k1 : steps;
-        q_group = moves ? q1 : q_group;
-        cs_group = moves ? cs1 : cs_group;
-        candidate trial = best;
-        intersect_chord(a, p1, k, trial);
-        best.key = tested ? trial.key : best.key;
-        best.t = tested ? trial.t : best.t;
-        best.slot = tested ? trial.slot : best.slot;
-        hit_a = tested ? a : hit_a;
-        hit_b = tested ? p1 : hit_b;
-        hit_s_a = tested ? s_a : hit_s_a;
-        hit_s_b = tested ? s1 : hit_s_b;
-        hit_segment = tested ? k : hit_segment;
-        vec3 from_mass = p1 - u_capture_center;
-        bool captured = tested && u_capture_radius2 > 0.0 && dot(from_mass, from_mass) <= u_capture_radius2;
-        falls = captured;
-        bool found = best.slot >= 0.0;
-        bool ends = !found && captured;
-        code = ends ? CODE_CAPTURED : code;
-        end_key = ends ? steps : end_key;
-        done = found || ends;
-        a = moves && !done ? p1 : a;
-        k = moves && !done ? k1 : k;
+        for (int i = 0; i < 2 * MAX_SEGMENTS + 2; i++) {
+            if (k >= ray.segments || leaving || done)
+                break;
+            bool probe = k >= k_end;
+            float group_end = min(k + ORBIT_GROUP, ray.segments);
+            float k1 = probe ? group_end : k + 1.0;
+            float s_a = s;
+            float s1 = orbit_chord_end(ray, k1);
+            vec2 q1 = orbit_at(ray, s1);
+            vec3 p1 = orbit_point(ray, q1, s1);
+            float phi1 = s1 * ray.phi_end;
+            vec2 cs1 = vec2(cos(phi1), sin(phi1));
+            bool clear = group_clear(ray, s_a, q_group, cs_group, s1, q1, cs1);
+            bool passes = probe && clear;
+            bool chord = !probe;
+            k_end = probe ? group_end : k_end;
+            vec3 from_bound = p1 - u_bound_center;
+            leaving = chord && dot(from_bound, from_bound) >= u_bound_radius2;
+            leave_a = a;
+            leave_s = s_a;
+            leave_k = k;
+            leave_s1 = s1;
+            leave_q1 = q1;
+            leave_from_bound = from_bound;
+            bool tested = chord && !leaving;
+            bool moves = passes || tested;
+            q = moves ? q1 : q;
+            s = moves ? s1 : s;
+            b = moves ? p1 : b;
+            steps = moves ? k1 : steps;
+            q_group = moves ? q1 : q_group;
+            cs_group = moves ? cs1 : cs_group;
+            candidate trial = best;
+            intersect_chord(a, p1, k, trial);
+            best.key = tested ? trial.key : best.key;
+            best.t = tested ? trial.t : best.t;
+            best.slot = tested ? trial.slot : best.slot;
+            hit_a = tested ? a : hit_a;
+            hit_b = tested ? p1 : hit_b;
+            hit_s_a = tested ? s_a : hit_s_a;
+            hit_s_b = tested ? s1 : hit_s_b;
+            hit_segment = tested ? k : hit_segment;
+            vec3 from_mass = p1 - u_capture_center;
+            bool captured = tested && u_capture_radius2 > 0.0 &&
+                            dot(from_mass, from_mass) <= u_capture_radius2;
+            falls = captured;
+            bool found = best.slot >= 0.0;
+            bool ends = !found && captured;
+            code = ends ? CODE_CAPTURED : code;
+            end_key = ends ? steps : end_key;
+            done = found || ends;
+            a = moves && !done ? p1 : a;
+            k = moves && !done ? k1 : k;
+            // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
+            if (k >= ray.segments || leaving || done)
+                break;
+        }
+        if (leaving) {
+            // the leaving chord as the orbit stage makes it (orbit_chord_from): from its end outside
+            // the sphere back to where the orbit crosses it, on the same values
+            q = leave_q1;
+            orbit_crossing(ray, leave_s, leave_s1, leave_from_bound, q, s);
+            leaves = true;
+            b = orbit_chord_point(ray, q, s, leaves);
+            steps = leave_k + 1.0;
+            intersect_chord(leave_a, b, leave_k, best);
+            hit_a = leave_a;
+            hit_b = b;
+            hit_s_a = leave_s;
+            hit_s_b = s;
+            hit_segment = leave_k;
+            bool found = best.slot >= 0.0;
+            code = found ? code : CODE_SKY;
+            end_key = found ? end_key : steps;
+        }
+        // the hit found again on the orbit itself; where the orbit misses (lost), the chord's end
+        // decides as it would have without the hit: the ray leaves, falls in or goes on from there
+        bool lost = false;
+        if (best.slot >= 0.0)
+            orbit_refine_hit(ray, hit_s_a, hit_s_b, hit_segment, hit_a, hit_b, best, lost);
+        lost = lost && attempt < ORBIT_HIT_TRIES - 1;
+        bool goes_on = lost && !leaving && !falls;
+        bool stops = lost && !goes_on;
+        code = stops ? (leaving ? CODE_SKY : CODE_CAPTURED) : code;
+        end_key = stops ? steps : end_key;
+        best.slot = lost ? -1.0 : best.slot;
+        best.key = lost ? NO_HIT : best.key;
+        a = goes_on ? b : a;
+        k = goes_on ? steps : k;
+        done = !goes_on;
         // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
-        if (k >= ray.segments || leaving || done)
+        if (!goes_on)
             break;
-    }
-    if (leaving) {
-        // the leaving chord as the orbit stage makes it (orbit_chord_from): from its end outside
-        // the sphere back to where the orbit crosses it, on the same values
-        q = leave_q1;
-        orbit_crossing(ray, leave_s, leave_s1, leave_from_bound, q, s);
-        leaves = true;
-        b = orbit_chord_point(ray, q, s, leaves);
-        steps = leave_k + 1.0;
-        intersect_chord(leave_a, b, leave_k, best);
-        hit_a = leave_a;
-        hit_b = b;
-        hit_s_a = leave_s;
-        hit_s_b = s;
-        hit_segment = leave_k;
-        bool found = best.slot >= 0.0;
-        code = found ? code : CODE_SKY;
-        end_key = found ? end_key : steps;
-    }
-    // the hit found again on the orbit itself; where the orbit misses (lost), the chord's end
-    // decides as it would have without the hit: the ray leaves, falls in or goes on from there
-    bool lost = false;
-    if (best.slot >= 0.0)
-        orbit_refine_hit(ray, hit_s_a, hit_s_b, hit_segment, hit_a, hit_b, best, lost);
-    lost = lost && attempt < ORBIT_HIT_TRIES - 1;
-    bool goes_on = lost && !leaving && !falls;
-    bool stops = lost && !goes_on;
-    code = stops ? (leaving ? CODE_SKY : CODE_CAPTURED) : code;
-    end_key = stops ? steps : end_key;
-    best.slot = lost ? -1.0 : best.slot;
-    best.key = lost ? NO_HIT : best.key;
-    a = goes_on ? b : a;
-    k = goes_on ? steps : k;
-    done = !goes_on;
-    // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
-    if (!goes_on)
-        break;
     }
     // the final state again from (q, s), outside the loop: see the precision note in common.glsl
     vec3 end = orbit_chord_point(ray, q, s, leaves);
