@@ -64,6 +64,7 @@ void main()
             for (int p = 0; p < PASSES_PER_SEGMENT; p++) {
                 bool running = steps >= 0.0 && travelling(x);
                 integrate_pass(x, v, steps, h, running);
+                // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
                 if (p == PASSES_PER_SEGMENT - 1)
                     break;
             }
@@ -121,6 +122,7 @@ void main()
             break;
         bool running = steps_checked >= 0.0 && travelling(x_checked);
         integrate_pass_checked(x_checked, v_checked, steps_checked, h_checked, running);
+        // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
         if (p == PASSES_PER_SEGMENT - 1)
             break;
     }

@@ -568,7 +568,7 @@ void orbit_refine_hit(orbit_ray ray, float s_a, float s_b, float segment, inout 
         intersect_chord(m, b, segment, second);
         bool in_first = first.slot >= 0.0;
         bool in_second = !in_first && second.slot >= 0.0;
-        lost = lost || !(in_first || in_second);
+        lost = !(in_first || in_second);
         float key = best.key;
         best = in_first ? first : in_second ? second : best;
         best.key = key;
@@ -581,7 +581,7 @@ void orbit_refine_hit(orbit_ray ray, float s_a, float s_b, float segment, inout 
         a = new_a;
         b = new_b;
         // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end"); a lost hit is
-        // not kept, so its later levels would change nothing that is written
+        // not kept, so the levels stop at the first that loses it
         if (lost || level == ORBIT_HIT_LEVELS - 1)
             break;
     }
