@@ -124,11 +124,9 @@ static int renderer_open(struct renderer *r, const struct gl_context *ctx, const
     r->programs_ready = 1;
     if (renderer_follow_scene(r, e) != 0)
         return -1;
-    struct object_batch all;
-    char why[200];
-    if ((scene->render.pipeline == PIPELINE_SINGLE && frame_batch(r, &all, e) != 0) ||
-        (scene->render.pipeline == PIPELINE_FUSED && segment_fused_choose(r, why, sizeof why, e) < 0)) {
-        e->status = ERROR_INPUT;     /* asked for, and refused before any work */
+    struct pipeline_choice_made forced;
+    if (pipeline_choose(r, 0, &forced, e) != 0) {
+        e->status = ERROR_INPUT;     /* render.pipeline asked for it, and it is refused before any work */
         return -1;
     }
     if (textures_load(r, e) != 0 || polygons_load(r, e) != 0)
@@ -168,60 +166,27 @@ void renderer_set_subpixel(struct renderer *r, double dx, double dy)
     r->subpixel_y = dy;
 }
 
-int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, int origin_y, int width, int height,
-                 segment_hook hook, void *hook_arg, struct error *e)
+/* The whole ray in one pass (stage_frame.c); the sky stage after it, unless the pass drew the colour
+ * itself, which it does where only the image is read. */
+static int run_single_pass(struct renderer *r, struct error *e)
 {
-    if (assets_key(scene) != r->assets_key)
-        return error_set(e, ERROR_RUNTIME, NULL, "internal: a run of scene '%s' on the renderer made for '%s', whose "
-                         "objects, textures or sky it loaded: make a renderer for the new scene", scene->name,
-                         r->scene->name);
-    r->scene = scene;
+    int colour = r->reads == RENDER_READ_IMAGE && !r->hdr;
+    if ((r->exact_orbits && orbit_prepare(r, e) != 0) ||
+        stage_frame(r, colour ? FRAME_WRITES_COLOUR : FRAME_WRITES_OUTCOMES, e) != 0 ||
+        (!colour && stage_sky(r, e) != 0))
+        return -1;
+    r->state_pending = 1;
+    r->outcomes_pending = colour;
+    return 0;
+}
+
+/* The paper's Figure 1, segment by segment: setup; per segment, move the rays (integrate K steps, or
+ * follow their orbits), intersect them with the objects and end those that are done (or all three in
+ * one fused pass); every termination_interval segments, retire the ended rays behind the early-z test;
+ * then the polygons of moving objects and the sky. */
+static int run_segments(struct renderer *r, int fused, segment_hook hook, void *hook_arg, struct error *e)
+{
     const struct scene *s = r->scene;
-    if (!r->have_state || r->rs.width != width || r->rs.height != height) {
-        if (r->have_state)
-            raystate_release(&r->rs);
-        r->have_state = 0;
-        if (raystate_init(&r->rs, &r->path, width, height, e) != 0)
-            return -1;
-        r->have_state = 1;
-    }
-    if (renderer_follow_scene(r, e) != 0)
-        return -1;
-    double t0 = now_seconds();
-    r->passes = 0;
-    r->quad_z = 0.0f;
-    r->depth_write_last = 0;
-    glDisable(GL_BLEND);
-    glDisable(GL_DEPTH_TEST);
-    r->origin_x = origin_x;
-    r->origin_y = origin_y;
-    if (frame_choose(r, hook != NULL, r->pipeline_why, sizeof r->pipeline_why)) {
-        /* the whole ray in one pass */
-        /* where only the image is read, the pass draws it itself (the sky stage's colour in it) */
-        int colour = r->reads == RENDER_READ_IMAGE && !r->hdr;
-        if ((r->exact_orbits && orbit_prepare(r, e) != 0) ||
-            stage_frame(r, colour ? FRAME_WRITES_COLOUR : FRAME_WRITES_OUTCOMES, e) != 0 ||
-            (!colour && stage_sky(r, e) != 0))
-            return -1;
-        r->pipeline_name = "single pass";
-        r->state_pending = 1;
-        r->outcomes_pending = colour;
-        glFinish();
-        r->seconds = now_seconds() - t0;
-        r->image_width = width;
-        r->image_height = height;
-        return 0;
-    }
-    char fused_why[200];
-    int fused = segment_fused_choose(r, fused_why, sizeof fused_why, e);
-    if (fused < 0)
-        return -1;
-    if (s->render.pipeline == PIPELINE_AUTO) {
-        /* why not the single pass, then why (not) fused */
-        size_t used = strlen(r->pipeline_why);
-        snprintf(r->pipeline_why + used, sizeof r->pipeline_why - used, "; %s%s", fused ? "" : "not fused: ", fused_why);
-    }
-    r->pipeline_name = fused ? "fused segment" : "multipass";
     r->state_pending = 0;
     r->outcomes_pending = 0;
     if (stage_setup(r, e) != 0)
@@ -286,12 +251,45 @@ int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, in
     if (stage_retire(r, 1, e) != 0 || stage_polygons(r, e) != 0)
         return -1;
     glDisable(GL_DEPTH_TEST);
-    if (stage_sky(r, e) != 0)
+    return stage_sky(r, e);
+}
+
+int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, int origin_y, int width, int height,
+                 segment_hook hook, void *hook_arg, struct error *e)
+{
+    if (assets_key(scene) != r->assets_key)
+        return error_set(e, ERROR_RUNTIME, NULL, "internal: a run of scene '%s' on the renderer made for '%s', whose "
+                         "objects, textures or sky it loaded: make a renderer for the new scene", scene->name,
+                         r->scene->name);
+    r->scene = scene;
+    if (!r->have_state || r->rs.width != width || r->rs.height != height) {
+        if (r->have_state)
+            raystate_release(&r->rs);
+        r->have_state = 0;
+        if (raystate_init(&r->rs, &r->path, width, height, e) != 0)
+            return -1;
+        r->have_state = 1;
+    }
+    if (renderer_follow_scene(r, e) != 0)
+        return -1;
+    double t0 = now_seconds();
+    r->passes = 0;
+    r->quad_z = 0.0f;
+    r->depth_write_last = 0;
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    r->origin_x = origin_x;
+    r->origin_y = origin_y;
+    struct pipeline_choice_made run;
+    if (pipeline_choose(r, hook != NULL, &run, e) != 0)
+        return -1;
+    r->pipeline_name = pipeline_name(run.kind);
+    snprintf(r->pipeline_why, sizeof r->pipeline_why, "%s", run.why);
+    if ((run.kind == PIPELINE_RUN_SINGLE ? run_single_pass(r, e)
+                                         : run_segments(r, run.kind == PIPELINE_RUN_FUSED, hook, hook_arg, e)) != 0)
         return -1;
     glFinish();
     r->seconds = now_seconds() - t0;
-    r->image_width = width;
-    r->image_height = height;
     return 0;
 }
 

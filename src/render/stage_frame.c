@@ -11,40 +11,6 @@
 #include <stdio.h>
 #include <string.h>
 
-void frame_objects_why(const struct renderer *r, char *why, size_t whylen)
-{
-    snprintf(why, whylen, "the scene's objects do not fit one pass (at most %d here%s)", frame_object_limit(r),
-             r->scene->render.moving_objects == MOVING_POLYGONS ? ", or are drawn as polygons" : "");
-}
-
-int frame_choose(const struct renderer *r, int per_segment_hook, char *why, size_t whylen)
-{
-    const struct scene *s = r->scene;
-    struct object_batch b;
-    if (s->render.pipeline == PIPELINE_MULTIPASS || s->render.pipeline == PIPELINE_FUSED) {
-        snprintf(why, whylen, "render.pipeline = %s", s->render.pipeline == PIPELINE_FUSED ? "fused" : "multipass");
-        return 0;
-    }
-    if (per_segment_hook) {
-        snprintf(why, whylen, "the rays are read back after every segment");
-        return 0;
-    }
-    if (s->render.pipeline == PIPELINE_SINGLE) {
-        snprintf(why, whylen, "render.pipeline = single");
-        return 1;
-    }
-    if (!r->caps.long_loops) {
-        snprintf(why, whylen, "%s", r->caps.long_loops_why);
-        return 0;
-    }
-    if (object_batch_all(r, &b) != 0) {
-        frame_objects_why(r, why, whylen);
-        return 0;
-    }
-    snprintf(why, whylen, "%s", r->caps.long_loops_why);
-    return 1;
-}
-
 int frame_batch(const struct renderer *r, struct object_batch *b, struct error *e)
 {
     if (object_batch_all(r, b) == 0)

@@ -7,47 +7,6 @@
 #include "render/stages.h"
 #include <stdio.h>
 
-/* Why this frame cannot run fused (NULL: it can). */
-static const char *fused_missing(const struct renderer *r, char *buf, size_t n)
-{
-    struct object_batch b;
-    if (r->exact_orbits)
-        return "render.method = orbit_table runs its own orbit stage";
-    if (!r->path.mrt)
-        return r->caps.mrt_works ? "the render path writes one target a pass (mrt = off)" : "MRT does not work here";
-    if (!render_path_can_fuse(&r->caps, r->path.mrt)) {
-        snprintf(buf, n, "GL_MAX_DRAW_BUFFERS is %d, the fused pass writes %d", r->caps.max_draw_buffers,
-                 SEGMENT_FUSED_TARGETS);
-        return buf;
-    }
-    if (object_batch_all(r, &b) != 0) {
-        frame_objects_why(r, buf, n);
-        return buf;
-    }
-    return NULL;
-}
-
-int segment_fused_choose(const struct renderer *r, char *why, size_t whylen, struct error *e)
-{
-    enum pipeline_choice choice = r->scene->render.pipeline;
-    char buf[160];
-    if (choice == PIPELINE_MULTIPASS) {
-        snprintf(why, whylen, "render.pipeline = multipass");
-        return 0;
-    }
-    const char *missing = fused_missing(r, buf, sizeof buf);
-    if (choice == PIPELINE_FUSED && missing)
-        return error_set(e, ERROR_INPUT, NULL, "render.pipeline = fused: %s; use render.pipeline = multipass or auto",
-                         missing);
-    if (missing) {
-        snprintf(why, whylen, "%s", missing);
-        return 0;
-    }
-    snprintf(why, whylen, choice == PIPELINE_FUSED ? "render.pipeline = fused"
-                                                   : "%d draw buffers: one pass a segment", r->caps.max_draw_buffers);
-    return 1;
-}
-
 struct segment_args {
     const struct renderer *r;
     struct object_batch batch;    /* every object; its segment is this pass's (u_segment_index) */

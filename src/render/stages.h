@@ -43,7 +43,6 @@ struct renderer {
     enum integration_method method;  /* the scene's, or rk4 where orbit_table lacks fp32 textures */
     int exact_orbits;             /* rays follow tabulated exact orbits (not straight, orbit_table) */
     int sky_at_infinity;          /* integrated rays around a mass: the sky along the direction at infinity */
-    int image_width, image_height;
     const char *pipeline_name;    /* of the last run: "multipass", "fused segment", "single pass" */
     char pipeline_why[200];       /* why the last run took it */
     int state_pending;            /* single pass: hit and position not yet written */
@@ -131,21 +130,23 @@ int object_batch_defines(const struct object_batch *b, char *out, size_t len);
 int object_batch_files(const struct object_batch *b, const char **files, int n);
 void object_batch_set_uniforms(const struct program_uniforms *p, const void *batch);
 int object_batch_all(const struct renderer *r, struct object_batch *b);
-/* render.pipeline (stage_frame.c): 1 when this frame runs in one pass, with why in words (the
- * choice forced, or auto: this GPU runs long fragment loops, every object fits one intersection
- * batch and no hook reads the rays back after every segment); 0 for the multipass scheme, with
- * why. */
-int frame_choose(const struct renderer *r, int per_segment_hook, char *why, size_t whylen);
-/* render.pipeline = fused (stage_segment.c): whether this frame's segments each run as one pass
- * (integrate, intersect and terminate fused; four draw buffers), with why in words; forced where
- * it cannot run: -1 with e (ERROR_INPUT: render.pipeline = fused asked for what this GPU or scene lacks).
- * The pass of segment k itself. */
-/* Why every object of the scene does not fit one pass (for the pipeline's why). */
-void frame_objects_why(const struct renderer *r, char *why, size_t whylen);
+/* render.pipeline (pipeline.c): the schedule of this frame, chosen once, with why in words (the
+ * choice forced, or auto: the single pass where this GPU runs long fragment loops, every object fits
+ * one intersection batch and no hook reads the rays back after every segment; else the fused segment
+ * pass where four draw buffers work; else the paper's multipass scheme). -1 with e (ERROR_INPUT) where
+ * render.pipeline forces a schedule this GPU or scene cannot run. */
+enum pipeline_kind { PIPELINE_RUN_SINGLE, PIPELINE_RUN_FUSED, PIPELINE_RUN_MULTIPASS };
+struct pipeline_choice_made {
+    enum pipeline_kind kind;
+    char why[200];
+};
+int pipeline_choose(const struct renderer *r, int per_segment_hook, struct pipeline_choice_made *out,
+                    struct error *e);
+const char *pipeline_name(enum pipeline_kind kind);   /* "single pass", "fused segment", "multipass" */
 /* The defines of a pass that tests every object (b from frame_batch; none: an empty slot). */
 int frame_batch_defines(const struct renderer *r, const struct object_batch *b, char *out, size_t len,
                         struct error *e);
-int segment_fused_choose(const struct renderer *r, char *why, size_t whylen, struct error *e);
+/* The fused pass of segment k. */
 int stage_segment(struct renderer *r, int segment, struct error *e);
 /* What a single-pass frame writes: the outcome textures (image and velocity, what the sky stage
  * reads), the state (hit and position, for a read-back of the ray state), or the final colour itself

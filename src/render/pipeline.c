@@ -1,0 +1,120 @@
+/* render.pipeline: which of the three schedules draws a frame, chosen here and nowhere else.
+ *
+ *   single pass     the whole ray in one fragment-shader loop (stage_frame.c): where the GPU runs
+ *                   long loops and every object fits one intersection batch;
+ *   fused segment   integration, intersection and termination of one segment in one pass with four
+ *                   draw buffers (stage_segment.c);
+ *   multipass       the paper's scheme (Figure 1): integrate, intersect per batch, terminate, retire,
+ *                   one pass each per segment.
+ *
+ * All three give the same rays bit for bit (tests/unit/test_acceleration.c). */
+#include "render/stages.h"
+#include <stdio.h>
+#include <string.h>
+
+static const char *const pipeline_names[] = {"single pass", "fused segment", "multipass"};
+
+const char *pipeline_name(enum pipeline_kind kind) { return pipeline_names[kind]; }
+
+static void objects_why(const struct renderer *r, char *why, size_t whylen)
+{
+    snprintf(why, whylen, "the scene's objects do not fit one pass (at most %d here%s)", frame_object_limit(r),
+             r->scene->render.moving_objects == MOVING_POLYGONS ? ", or are drawn as polygons" : "");
+}
+
+/* Whether the whole ray runs in one pass, with why in words. */
+static int single_pass_fits(const struct renderer *r, int per_segment_hook, char *why, size_t whylen,
+                            struct error *e)
+{
+    const struct scene *s = r->scene;
+    struct object_batch b;
+    if (s->render.pipeline == PIPELINE_MULTIPASS || s->render.pipeline == PIPELINE_FUSED) {
+        snprintf(why, whylen, "render.pipeline = %s", s->render.pipeline == PIPELINE_FUSED ? "fused" : "multipass");
+        return 0;
+    }
+    if (per_segment_hook) {
+        snprintf(why, whylen, "the rays are read back after every segment");
+        return 0;
+    }
+    if (s->render.pipeline == PIPELINE_SINGLE) {
+        if (frame_batch(r, &b, e) != 0)
+            return -1;
+        snprintf(why, whylen, "render.pipeline = single");
+        return 1;
+    }
+    if (!r->caps.long_loops) {
+        snprintf(why, whylen, "%s", r->caps.long_loops_why);
+        return 0;
+    }
+    if (object_batch_all(r, &b) != 0) {
+        objects_why(r, why, whylen);
+        return 0;
+    }
+    snprintf(why, whylen, "%s", r->caps.long_loops_why);
+    return 1;
+}
+
+/* Why this frame's segments cannot each run as one fused pass (NULL: they can). */
+static const char *fused_missing(const struct renderer *r, char *buf, size_t n)
+{
+    struct object_batch b;
+    if (r->exact_orbits)
+        return "render.method = orbit_table runs its own orbit stage";
+    if (!r->path.mrt)
+        return r->caps.mrt_works ? "the render path writes one target a pass (mrt = off)" : "MRT does not work here";
+    if (!render_path_can_fuse(&r->caps, r->path.mrt)) {
+        snprintf(buf, n, "GL_MAX_DRAW_BUFFERS is %d, the fused pass writes %d", r->caps.max_draw_buffers,
+                 SEGMENT_FUSED_TARGETS);
+        return buf;
+    }
+    if (object_batch_all(r, &b) != 0) {
+        objects_why(r, buf, n);
+        return buf;
+    }
+    return NULL;
+}
+
+/* Whether the segments run fused, with why in words. */
+static int fused_fits(const struct renderer *r, char *why, size_t whylen, struct error *e)
+{
+    enum pipeline_choice choice = r->scene->render.pipeline;
+    char buf[160];
+    if (choice == PIPELINE_MULTIPASS) {
+        snprintf(why, whylen, "render.pipeline = multipass");
+        return 0;
+    }
+    const char *missing = fused_missing(r, buf, sizeof buf);
+    if (choice == PIPELINE_FUSED && missing)
+        return error_set(e, ERROR_INPUT, NULL, "render.pipeline = fused: %s; use render.pipeline = multipass or auto",
+                         missing);
+    if (missing) {
+        snprintf(why, whylen, "%s", missing);
+        return 0;
+    }
+    snprintf(why, whylen, choice == PIPELINE_FUSED ? "render.pipeline = fused"
+                                                   : "%d draw buffers: one pass a segment", r->caps.max_draw_buffers);
+    return 1;
+}
+
+int pipeline_choose(const struct renderer *r, int per_segment_hook, struct pipeline_choice_made *out,
+                    struct error *e)
+{
+    int single = single_pass_fits(r, per_segment_hook, out->why, sizeof out->why, e);
+    if (single < 0)
+        return -1;
+    if (single) {
+        out->kind = PIPELINE_RUN_SINGLE;
+        return 0;
+    }
+    char fused_why[200];
+    int fused = fused_fits(r, fused_why, sizeof fused_why, e);
+    if (fused < 0)
+        return -1;
+    if (r->scene->render.pipeline == PIPELINE_AUTO) {
+        /* why not the single pass, then why (not) fused */
+        size_t used = strlen(out->why);
+        snprintf(out->why + used, sizeof out->why - used, "; %s%s", fused ? "" : "not fused: ", fused_why);
+    }
+    out->kind = fused ? PIPELINE_RUN_FUSED : PIPELINE_RUN_MULTIPASS;
+    return 0;
+}
