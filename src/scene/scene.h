@@ -137,7 +137,8 @@ struct observer {
 
 struct render_settings {
     int width, height;
-    enum integration_method method;
+    enum integration_method method;  /* unnamed: scene_default_method */
+    int method_named;        /* render.method was written in the file or by --set */
     double step_size;        /* integration step h, scene length units (affine parameter) */
     int steps_per_segment;   /* paper's n_integration */
     int segments;            /* paper's n_segs; 0: derived from the path budget (render_segments) */
@@ -292,6 +293,10 @@ struct scene *scene_new(struct error *e);
 void scene_free(struct scene *s);
 /* Parse FILE into s (defaults first). 0 ok, -1 with err filled. */
 int scene_load(struct scene *s, const char *path, struct error *err);
+/* A scene that names no render.method takes the cheapest exact one that applies: orbit_table
+ * (exact orbits, no steps) around a Schwarzschild mass with fixed steps, rk4 elsewhere.
+ * scene_load and scene_set apply it; a scene built field by field calls it itself. */
+void scene_default_method(struct scene *s);
 /* Apply one "section.key=value" override (sections of objects: object.NAME.key). */
 int scene_set(struct scene *s, const char *assignment, struct error *err);
 /* The value of a numeric key of an unnamed section ("model.rho"); 0, or -1 where there is none. */

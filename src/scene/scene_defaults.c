@@ -41,6 +41,14 @@ static void render_defaults(struct render_settings *r)
     r->sky_alpha = 1.0;
 }
 
+void scene_default_method(struct scene *s)
+{
+    if (s->render.method_named)
+        return;
+    s->render.method = s->model.type == MODEL_SCHWARZSCHILD && s->render.step_control == STEP_FIXED
+                           ? METHOD_ORBIT_TABLE : METHOD_RK4;
+}
+
 double render_step_min(const struct render_settings *r)
 {
     return r->step_min > 0.0 ? r->step_min : r->step_size / 1024.0;

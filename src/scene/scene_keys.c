@@ -186,6 +186,15 @@ static int set_height(void *owner, void *t, const union conf_parsed *v, char *r,
     return 0;
 }
 
+static int set_method(void *owner, void *t, const union conf_parsed *v, char *r, size_t n)
+{
+    struct scene *s = owner;
+    (void)t, (void)r, (void)n;
+    s->render.method = (enum integration_method)v->integer;
+    s->render.method_named = 1;
+    return 0;
+}
+
 static int set_frame_origin(void *owner, void *t, const union conf_parsed *v, char *r, size_t n)
 {
     (void)owner, (void)r, (void)n;
@@ -314,7 +323,7 @@ const struct conf_key scene_keys[] = {
 
     {SECTION_RENDER, "width", CONF_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .set = set_width},
     {SECTION_RENDER, "height", CONF_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .set = set_height},
-    {SECTION_RENDER, "method", CHOICE(method_names, AT_SCENE(render.method))},
+    {SECTION_RENDER, "method", .kind = CONF_CHOICE, .choices = method_names, .set = set_method},
     {SECTION_RENDER, "step", CONF_NUMBER, .lo = 0.0, .hi = 1e6, .flags = CONF_ABOVE_LO,
      .offset = AT_SCENE(render.step_size)},
     {SECTION_RENDER, "steps_per_segment", CONF_INTEGER, .lo = 1, .hi = SCENE_MAX_STEPS_PER_SEGMENT,

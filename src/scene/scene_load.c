@@ -102,6 +102,7 @@ int scene_load(struct scene *s, const char *path, struct error *err)
     if (conf_read(path, &scene_schema, s, err) != 0)
         return -1;
     memcpy(err->where, path, path_len + 1);
+    scene_default_method(s);
     return scene_kiosk_validate(s, err);
 }
 
@@ -177,6 +178,8 @@ int scene_set(struct scene *s, const char *assignment, struct error *err)
     free(value);
     if (rc != 0)
         err->status = ERROR_INPUT;
+    /* a model or a step control set here may change what an unnamed method defaults to */
+    scene_default_method(s);
     /* An override of a fixed step's budget replaces the file's other way of giving it (a file
      * that gives both is refused by scene_validate). */
     struct render_settings *r = &s->render;

@@ -817,6 +817,33 @@ static void test_set_overrides(void **state)
     assert_string_equal(s.description, "");
 }
 
+/* A scene that names no method takes exact orbits where they apply: around a Schwarzschild mass
+ * with fixed steps, also when --set makes it one; a named method, or adaptive steps, keep their own. */
+static void test_method_defaults_to_exact_orbits(void **state)
+{
+    struct scene s;
+    struct error err;
+    (void)state;
+    assert_int_equal(load_text(&s, "[model]\ntype = schwarzschild\nmass = 0.5\n", &err), 0);
+    assert_int_equal(s.render.method, METHOD_ORBIT_TABLE);
+    assert_int_equal(scene_set(&s, "render.step_control=doubling", &err), 0);
+    assert_int_equal(s.render.method, METHOD_RK4);
+    assert_int_equal(scene_set(&s, "render.step_control=fixed", &err), 0);
+    assert_int_equal(s.render.method, METHOD_ORBIT_TABLE);
+    assert_int_equal(scene_set(&s, "model.type=lorenz", &err), 0);
+    assert_int_equal(s.render.method, METHOD_RK4);
+    assert_int_equal(load_text(&s, "[render]\nmethod = rk4\n[model]\ntype = schwarzschild\nmass = 0.5\n", &err), 0);
+    assert_int_equal(s.render.method, METHOD_RK4);
+    assert_int_equal(load_text(&s, "[model]\ntype = flat\n", &err), 0);
+    assert_int_equal(s.render.method, METHOD_RK4);
+    assert_int_equal(scene_set(&s, "model.type=schwarzschild", &err), 0);
+    assert_int_equal(s.render.method, METHOD_ORBIT_TABLE);
+    assert_int_equal(scene_set(&s, "render.method=dopri5", &err), 0);
+    assert_int_equal(scene_set(&s, "model.type=flat", &err), 0);
+    assert_int_equal(scene_set(&s, "model.type=schwarzschild", &err), 0);
+    assert_int_equal(s.render.method, METHOD_DOPRI5);
+}
+
 /* Switching the model keeps every parameter: --set model.type=x then model.mass=y, in order. */
 static void test_set_model_type_resets_nothing(void **state)
 {
@@ -1079,6 +1106,7 @@ int main(void)
         cmocka_unit_test(test_limits),
         cmocka_unit_test(test_nul_byte),
         cmocka_unit_test(test_set_overrides),
+        cmocka_unit_test(test_method_defaults_to_exact_orbits),
         cmocka_unit_test(test_set_model_type_resets_nothing),
         cmocka_unit_test(test_set_rejects),
         cmocka_unit_test(test_validate),
