@@ -32,7 +32,6 @@ struct bench_timing {
     char path[16];               /* render path, "fp32+mrt" */
 };
 
-double bench_now(void);
 /* Progress on stderr: "[done/total] what (elapsed)". */
 void bench_progress(struct bench *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 

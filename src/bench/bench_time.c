@@ -3,17 +3,10 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
+#include "io/clock.h"
 #include "bench/bench.h"
 #include "render/frame.h"
 #include "render/renderer.h"
-
-double bench_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 void bench_progress(struct bench *b, const char *fmt, ...)
 {
@@ -22,7 +15,7 @@ void bench_progress(struct bench *b, const char *fmt, ...)
     va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);
     va_end(ap);
-    fprintf(stderr, " (%.0f s)\n", bench_now() - b->started);
+    fprintf(stderr, " (%.0f s)\n", clock_seconds() - b->started);
 }
 
 static int by_value(const void *a, const void *b)

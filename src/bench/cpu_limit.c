@@ -16,6 +16,7 @@
  * ray from the velocity texture (0.5 h and h / 6 are hoisted out of the loop), and no a*b+c is fused
  * where a GPU compiler fuses freely. The shaders' products with the zero components of the refraction
  * noise directions are left out, as GPU compilers fold them. */
+#include "io/clock.h"
 #include "bench/cpu_limit.h"
 
 #include <math.h>
@@ -24,7 +25,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #define MAX_THREADS 256
@@ -486,20 +486,13 @@ static void *run_slice(void *arg)
     return NULL;
 }
 
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 /* Every slice swept `sweeps` times, slice 0 on the calling thread; a slice whose thread cannot start
  * is swept here afterwards, so the work is always complete. Returns the wall time. */
 static double run_round(struct slice_job *jobs, int n_jobs, long long sweeps)
 {
     pthread_t threads[MAX_THREADS];
     int started[MAX_THREADS] = {0};
-    double start = now_s();
+    double start = clock_seconds();
     for (int t = 0; t < n_jobs; t++)
         jobs[t].sweeps = sweeps;
     for (int t = 1; t < n_jobs; t++)
@@ -511,7 +504,7 @@ static double run_round(struct slice_job *jobs, int n_jobs, long long sweeps)
         else
             run_slice(&jobs[t]);
     }
-    return now_s() - start;
+    return clock_seconds() - start;
 }
 
 /* Slices of whole cache lines of rays, as even as that allows; returns how many are non-empty. */

@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include "io/clock.h"
 #include "cli/commands.h"
 #include "cli/measure.h"
 #include "cli/options.h"
@@ -419,7 +420,7 @@ static int animate(const struct common_options *o, const struct animation *a, co
             return exit_code_of(&e);
         }
         measured_free(&m);
-        double elapsed = progress_now() - p.start, left = elapsed * (a->frames - k - 1) / (k + 1);
+        double elapsed = clock_seconds() - p.start, left = elapsed * (a->frames - k - 1) / (k + 1);
         if (out->quiet) {
             printf("%s\n", path);
         } else {

@@ -6,6 +6,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "io/clock.h"
 #include "bench/bench.h"
 #include "cli/commands.h"
 #include "cli/options.h"
@@ -201,7 +202,7 @@ int cmd_bench(int argc, char **argv)
     section_steps[5] = bench_pareto_count;
     for (int k = 0; k < N_SECTIONS; k++)
         b.total += wanted[k] ? (b.quick ? section_steps_quick : section_steps)[k] : 0;
-    b.started = bench_now();
+    b.started = clock_seconds();
     fprintf(b.md, "# Benchmarks\n\nWritten by `make bench` (`bentray bench --out docs --force`, then gnuplot on "
                   "the scripts in `docs/bench/`); every figure below comes from that run.%s\n\n",
             b.quick ? " **Quick mode: tiny frames, the figures mean nothing.**" : "");
@@ -216,7 +217,7 @@ int cmd_bench(int argc, char **argv)
                     e.message);
             rc = exit_code_of(&e);
         }
-    fprintf(b.md, "Total bench time: %.0f s.\n", bench_now() - b.started);
+    fprintf(b.md, "Total bench time: %.0f s.\n", clock_seconds() - b.started);
     if (out)
         fclose(b.md);
     gl_context_destroy(b.ctx);

@@ -2,14 +2,6 @@
  * loop's clock. */
 #include "input/input.h"
 #include <stdlib.h>
-#include <time.h>
-
-double input_clock(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 struct input_source *input_open(const struct kiosk_input *in, int index, FILE *log, double now)
 {

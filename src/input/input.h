@@ -25,7 +25,7 @@ enum input_event_kind {
 enum input_knob { INPUT_KNOB_SPEED, INPUT_KNOB_MASS };
 
 struct input_event {
-    double t;                        /* s, on the loop's clock (input_clock) */
+    double t;                        /* s, on the loop's clock (clock_seconds) */
     enum input_event_kind kind;
     int source;                      /* index of the [input NAME] in the configuration */
     long counts;                     /* INPUT_TURN, INPUT_KNOB */
@@ -77,6 +77,5 @@ struct input_source *input_source_new(const struct kiosk_input *in, int index, F
 struct input_event input_event_at(enum input_event_kind kind, int source, double t);
 
 /* The loop's clock: CLOCK_MONOTONIC in seconds. */
-double input_clock(void);
 
 #endif

@@ -5,7 +5,7 @@
  * Two clocks meet here. Edges carry the kernel's timestamps (libgpiod v1: CLOCK_MONOTONIC since
  * Linux 5.7, CLOCK_REALTIME before), and the debounce works on them alone, so that bounce is
  * judged by when the edges happened, not by when the loop read them. The loop's clock
- * (input_clock, CLOCK_MONOTONIC) stamps the events and asks for the debounce timeouts.
+ * (clock_seconds, CLOCK_MONOTONIC) stamps the events and asks for the debounce timeouts.
  * offset_ns is the edge clock minus the loop clock, in ns (0 when they are the same clock). */
 #ifndef BT_KIOSK_INPUT_GPIO_DECODE_H
 #define BT_KIOSK_INPUT_GPIO_DECODE_H

@@ -1,22 +1,15 @@
+#include "io/clock.h"
 #include "io/progress.h"
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
-
-double progress_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 void progress_begin(struct progress *p, enum progress_mode mode)
 {
     memset(p, 0, sizeof *p);
     p->mode = mode;
-    p->start = progress_now();
+    p->start = clock_seconds();
     p->terminal = isatty(STDERR_FILENO);
 }
 
@@ -39,7 +32,7 @@ void progress_report(struct progress *p, const char *label, double done, int fin
 {
     if (p->mode == PROGRESS_NONE)
         return;
-    double now = progress_now(), elapsed = now - p->start;
+    double now = clock_seconds(), elapsed = now - p->start;
     if (p->mode == PROGRESS_AUTO && elapsed < PROGRESS_AFTER_S)
         return;
     double every = p->terminal ? PROGRESS_TERMINAL_EVERY_S : p->mode == PROGRESS_AUTO ? PROGRESS_LOG_EVERY_S : 0.0;

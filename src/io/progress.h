@@ -17,13 +17,12 @@ enum progress_mode {
 
 struct progress {
     enum progress_mode mode;
-    double start;        /* progress_now() when the work began */
+    double start;        /* clock_seconds() when the work began */
     double last;         /* when the last line was shown */
     int terminal;        /* stderr is a terminal */
     int shown;           /* a line was shown */
 };
 
-double progress_now(void);
 void progress_begin(struct progress *p, enum progress_mode mode);
 /* Report done (0..1) of the work with a label ("gpu: sample 1/4, 300/720 rows"): shown with the
  * elapsed time and the time left when the mode and the clock say so; always when final. */

@@ -1,4 +1,5 @@
 /* The kiosk's loop. */
+#include "io/clock.h"
 #include "kiosk/kiosk_loop.h"
 #include "io/output_file.h"
 #include <dirent.h>
@@ -93,7 +94,7 @@ struct kiosk {
 
 static double kiosk_now(const struct kiosk *k)
 {
-    return k->virtual_clock ? (double)k->turn / KIOSK_VIRTUAL_FPS : input_clock();
+    return k->virtual_clock ? (double)k->turn / KIOSK_VIRTUAL_FPS : clock_seconds();
 }
 
 /* The scene's view of the knobs and what the HUD says about them. */
@@ -353,7 +354,7 @@ static void start_attract(struct kiosk *k)
 /* One turn of the loop; 1 to go on, 0 to stop, -1 on failure (e). */
 static int kiosk_turn(struct kiosk *k, struct error *e)
 {
-    double started = input_clock();
+    double started = clock_seconds();
     const char *did = "reading inputs";
     k->now = kiosk_now(k);
     struct input_event ev[KIOSK_MAX_EVENTS];
@@ -420,7 +421,7 @@ static int kiosk_turn(struct kiosk *k, struct error *e)
     }
     /* a turn that keeps signals, input and the watchdog waiting long says what it did: the journal
      * then explains a watchdog restart on a machine too slow for the scene */
-    double took = input_clock() - started;
+    double took = clock_seconds() - started;
     if (took >= KIOSK_SLOW_TURN_SECONDS && !k->virtual_clock)
         fprintf(k->log, "bentray kiosk: one turn of the loop took %.1f s (%s of %s)\n", took, did,
                 k->scenes[k->state.scene].name);
@@ -717,7 +718,7 @@ int kiosk_check_inputs(const struct kiosk_config *c, FILE *out, FILE *log)
 {
     struct input_source *inputs[KIOSK_MAX_INPUTS] = {0};
     catch_stop_signals();
-    double now = input_clock();
+    double now = clock_seconds();
     for (int i = 0; i < c->n_inputs; i++) {
         inputs[i] = input_open(&c->inputs[i], i, log, now);
         if (inputs[i] && inputs[i]->present)
@@ -726,7 +727,7 @@ int kiosk_check_inputs(const struct kiosk_config *c, FILE *out, FILE *log)
     fflush(out);
     int rc = 0;
     while (!stop_requested) {
-        now = input_clock();
+        now = clock_seconds();
         struct input_event ev[KIOSK_MAX_EVENTS];
         int n = 0, open = 0, quit = 0;
         struct pollfd fds[KIOSK_MAX_INPUTS * INPUT_MAX_FDS];

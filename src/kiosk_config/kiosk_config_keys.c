@@ -79,14 +79,6 @@ const char *kiosk_section_list(void)
     return "kiosk, display, speed, mass, attract, button NAME, input NAME";
 }
 
-int kiosk_section_find(const char *name)
-{
-    for (int i = 0; i < KSEC_COUNT; i++)
-        if (strcmp(sections[i].name, name) == 0)
-            return i;
-    return -1;
-}
-
 void kiosk_section_label(const struct kiosk_config *c, enum kiosk_section section, int instance,
                          char *buf, size_t len)
 {

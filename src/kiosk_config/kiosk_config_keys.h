@@ -34,8 +34,6 @@ extern const int kiosk_key_count;
 extern const struct conf_key_table kiosk_key_table;
 
 const char *kiosk_section_name(enum kiosk_section section);
-/* Section kind called NAME, -1 if there is none. */
-int kiosk_section_find(const char *name);
 int kiosk_section_named(enum kiosk_section section);
 /* "kiosk, display, ...", for messages. */
 const char *kiosk_section_list(void);

@@ -1,6 +1,7 @@
 /* The force laws f(x, v) of eq. (1) and their integrators, in double precision.
  * shaders_es/model_*.glsl must compute the same functions; change both together. */
 #include "physics/model.h"
+#include "physics/dormand_prince.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -226,33 +227,22 @@ double model_capture_radius(const struct model *m)
     return 0.0;
 }
 
-/* Dormand and Prince's RK5(4)7M tableau (Hairer, Norsett, Wanner, Table II.5.2); the fifth-order
- * weights are the last row. The GPU's shaders_es/stage_integrate.glsl uses the same numbers. */
-static const double dp_a[6][6] = {
-    {1.0 / 5.0},
-    {3.0 / 40.0, 9.0 / 40.0},
-    {44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0},
-    {19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0},
-    {9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0, 49.0 / 176.0, -5103.0 / 18656.0},
-    {35.0 / 384.0, 0.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0},
-};
-
 static void dopri5_fixed_step(const struct model *m, double h, vec3d *x, vec3d *v)
 {
     vec3d kx[6], kv[6];
     for (int s = 0; s < 6; s++) {
         vec3d xs = *x, vs = *v;
         for (int j = 0; j < s; j++) {
-            xs = v3_axpy(h * dp_a[s - 1][j], kx[j], xs);
-            vs = v3_axpy(h * dp_a[s - 1][j], kv[j], vs);
+            xs = v3_axpy(h * dormand_prince_a[s - 1][j], kx[j], xs);
+            vs = v3_axpy(h * dormand_prince_a[s - 1][j], kv[j], vs);
         }
         kx[s] = vs;
         kv[s] = model_accel(m, xs, vs);
     }
     vec3d x1 = *x, v1 = *v;
     for (int j = 0; j < 6; j++) {
-        x1 = v3_axpy(h * dp_a[5][j], kx[j], x1);
-        v1 = v3_axpy(h * dp_a[5][j], kv[j], v1);
+        x1 = v3_axpy(h * dormand_prince_a[5][j], kx[j], x1);
+        v1 = v3_axpy(h * dormand_prince_a[5][j], kv[j], v1);
     }
     *x = x1;
     *v = v1;

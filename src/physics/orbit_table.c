@@ -1,5 +1,7 @@
 /* Photon orbits of Schwarzschild space tabulated for a static observer (orbit_table.h). */
+#include "io/clock.h"
 #include "physics/orbit_table.h"
+#include "physics/dormand_prince.h"
 #include "physics/escape.h"
 #include <math.h>
 #include <pthread.h>
@@ -7,7 +9,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 static const double pi = 3.14159265358979323846;
 
@@ -32,16 +33,8 @@ static double binet_accel(double mass, double u)
 static void binet_step(double mass, double u, double w, double h, double *u1, double *w1, double *eu, double *ew)
 {
     double ku[7], kw[7];
-    static const double a[6][6] = {
-        {1.0 / 5},
-        {3.0 / 40, 9.0 / 40},
-        {44.0 / 45, -56.0 / 15, 32.0 / 9},
-        {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729},
-        {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656},
-        {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84},
-    };
-    static const double e[7] = {71.0 / 57600, 0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200, 22.0 / 525,
-                                -1.0 / 40};
+    const double (*a)[6] = dormand_prince_a;
+    const double *e = dormand_prince_e;
     ku[0] = w;
     kw[0] = binet_accel(mass, u);
     for (int s = 1; s < 7; s++) {
@@ -451,13 +444,6 @@ static int row_segments(const struct orbit_table *t, struct orbit_knots *k, cons
     return n;
 }
 
-static double seconds_now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 /* One row: its orbit traced, sampled, its chord schedule. 0, or -1 with e. */
 static int build_row(struct orbit_table *t, int row, double *phi_s, struct error *e)
 {
@@ -573,7 +559,7 @@ int orbit_table_resolves(double mass, double r_observer)
 
 int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p, struct error *e)
 {
-    double t0 = seconds_now();
+    double t0 = clock_seconds();
     memset(t, 0, sizeof *t);
     t->p = *p;
     if (!(p->mass > 0.0) || !(p->r_observer > 2.0 * p->mass) || !(p->r_far > p->r_observer) ||
@@ -656,7 +642,7 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
             texel[3] = below[1];
         }
     }
-    t->build_seconds = seconds_now() - t0;
+    t->build_seconds = clock_seconds() - t0;
     return 0;
 }
 
@@ -729,21 +715,6 @@ void orbit_table_eval(const struct orbit_table *t, double psi, double s, struct 
     out->u = u;
     out->phi = s * *phi_end;
     out->du_dphi = *phi_end > 0.0 ? du / *phi_end : 0.0;
-}
-
-double orbit_table_phi_infinity(const struct orbit_table *t, double psi)
-{
-    enum orbit_side side;
-    int rps = t->p.rows_per_side, cols = t->p.columns;
-    double f, wr[4], sum = 0.0;
-    int i = row_stencil(t, psi, &side, &f);
-    catmull_rom(f, wr);
-    for (int m = 0; m < 4; m++) {
-        int r = i - 1 + m;
-        r = r < 0 ? 0 : r > rps - 1 ? rps - 1 : r;
-        sum += wr[m] * t->texels[((size_t)(side * rps + r) * t->width + cols) * 4 + 2];
-    }
-    return sum * sin(psi);
 }
 
 double orbit_table_chord_end(const struct orbit_table *t, double psi, int k, int n)

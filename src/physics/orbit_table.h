@@ -110,9 +110,6 @@ struct orbit_point {
 void orbit_table_eval(const struct orbit_table *t, double psi, double s, struct orbit_point *out, double *phi_end,
                       int *segments);
 double orbit_table_chord_end(const struct orbit_table *t, double psi, int k, int n);
-/* The angle an escaping ray of launch angle psi sweeps to infinity, as the shader interpolates it:
- * its sky is seen along cos(phi) e1 + sin(phi) e2. */
-double orbit_table_phi_infinity(const struct orbit_table *t, double psi);
 
 /* One orbit traced directly (no table): phi_end and whether it is captured, and u, du/dphi at
  * n_at angles phi_at[] (ascending, <= phi_end; NULL for none). 0, or -1 when it does not end. */

@@ -1,20 +1,8 @@
 #include "ref/dopri5.h"
+#include "physics/dormand_prince.h"
 #include <math.h>
 #include <string.h>
 
-/* Butcher tableau (Dormand & Prince 1980, Hairer's DOPRI5). The nodes c_i are not needed: no model
- * depends on the curve parameter itself. */
-static const double A21 = 1.0 / 5;
-static const double A31 = 3.0 / 40, A32 = 9.0 / 40;
-static const double A41 = 44.0 / 45, A42 = -56.0 / 15, A43 = 32.0 / 9;
-static const double A51 = 19372.0 / 6561, A52 = -25360.0 / 2187, A53 = 64448.0 / 6561, A54 = -212.0 / 729;
-static const double A61 = 9017.0 / 3168, A62 = -355.0 / 33, A63 = 46732.0 / 5247, A64 = 49.0 / 176,
-                    A65 = -5103.0 / 18656;
-static const double A71 = 35.0 / 384, A73 = 500.0 / 1113, A74 = 125.0 / 192, A75 = -2187.0 / 6784,
-                    A76 = 11.0 / 84;
-/* b - b*: the order-4 error estimate */
-static const double E1 = 71.0 / 57600, E3 = -71.0 / 16695, E4 = 71.0 / 1920, E5 = -17253.0 / 339200,
-                    E6 = 22.0 / 525, E7 = -1.0 / 40;
 /* dense output (CONTD5) */
 static const double D1 = -12715105075.0 / 11282082432.0, D3 = 87487479700.0 / 32700410799.0,
                     D4 = -10690763975.0 / 1880347072.0, D5 = 701980252875.0 / 199316789632.0,
@@ -66,18 +54,17 @@ static double attempt(const struct dopri5 *d, double h, double (*k)[6], double *
     const struct model *m = d->model;
     double ys[6];
     memcpy(k[0], d->dy, sizeof k[0]);
-    const double a2[] = {A21}, a3[] = {A31, A32}, a4[] = {A41, A42, A43}, a5[] = {A51, A52, A53, A54},
-                 a6[] = {A61, A62, A63, A64, A65}, a7[] = {A71, 0.0, A73, A74, A75, A76};
-    const double *rows[] = {a2, a3, a4, a5, a6};
     for (int s = 1; s <= 5; s++) {
-        stage(ys, d->y, h, rows[s - 1], k, s);
+        stage(ys, d->y, h, dormand_prince_a[s - 1], k, s);
         derivative(m, ys, k[s]);
     }
-    stage(y1, d->y, h, a7, k, 6);
+    stage(y1, d->y, h, dormand_prince_a[5], k, 6);
     derivative(m, y1, k[6]);
     double sum = 0.0;
     for (int c = 0; c < 6; c++) {
-        double e = h * (E1 * k[0][c] + E3 * k[2][c] + E4 * k[3][c] + E5 * k[4][c] + E6 * k[5][c] + E7 * k[6][c]);
+        const double *w = dormand_prince_e;   /* its second weight is 0 */
+        double e = h * (w[0] * k[0][c] + w[2] * k[2][c] + w[3] * k[3][c] + w[4] * k[4][c] + w[5] * k[5][c] +
+                        w[6] * k[6][c]);
         double scale = d->atol[c] + d->rtol * fmax(fabs(d->y[c]), fabs(y1[c]));
         sum += (e / scale) * (e / scale);
         if (!isfinite(y1[c]) || !isfinite(k[6][c]))

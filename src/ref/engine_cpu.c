@@ -1,3 +1,4 @@
+#include "io/clock.h"
 #include "ref/engine_cpu.h"
 #include "results/dump_scene.h"
 #include "ref/shade_cpu.h"
@@ -13,7 +14,6 @@
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
-
 
 /* One whole image of rays started (dx, dy) off the pixels' centres, before the stars of the sky are
  * added to it (results/star_light.h needs every pixel's neighbours): colours, exit directions,
@@ -39,13 +39,6 @@ struct job {
     atomic_long steps, rejected;
     int threads_started;
 };
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 void ref_ray_to_record(const struct ref_ray *ray, const unsigned char rgba[4], struct dump_record *rec)
 {
@@ -309,7 +302,7 @@ int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct
     atomic_init(&job.steps, 0);
     atomic_init(&job.rejected, 0);
     int n = thread_count(o, h), rc = 0;
-    double start = now_s();
+    double start = clock_seconds();
     struct progress p;
     progress_begin(&p, o->progress);
     if (star_sky_wanted(s))
@@ -322,7 +315,7 @@ int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct
         cpu_image_free(out);
         return -1;
     }
-    out->seconds = now_s() - start;
+    out->seconds = clock_seconds() - start;
     out->threads = job.threads_started;
     out->steps = atomic_load(&job.steps);
     out->rejected = atomic_load(&job.rejected);

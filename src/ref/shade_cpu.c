@@ -185,12 +185,6 @@ static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray
     return v3_add(color, black_bodies);
 }
 
-static unsigned char to_unorm8(double c)
-{
-    c = c < 0.0 ? 0.0 : c > 1.0 ? 1.0 : c;
-    return (unsigned char)lrint(c * 255.0);
-}
-
 /* sky_colour.glsl: an RGB sky, or black bodies at infinity lent their luminance by the sky's texels */
 static vec3d shade_sky(const struct cpu_materials *mat, const struct ref_ray *ray, vec3d view)
 {
@@ -220,10 +214,3 @@ void cpu_shade_color(const struct cpu_materials *mat, const struct ref_ray *ray,
     rgba[3] = ray->outcome == DUMP_SKY ? mat->scene->render.sky_alpha : 1.0;
 }
 
-void cpu_shade(const struct cpu_materials *mat, const struct ref_ray *ray, vec3d view, unsigned char rgba[4])
-{
-    double c[4];
-    cpu_shade_color(mat, ray, view, c);
-    for (int k = 0; k < 4; k++)
-        rgba[k] = to_unorm8(c[k]);
-}

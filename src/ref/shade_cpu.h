@@ -24,9 +24,6 @@ struct cpu_materials {
  * in its message (a file refused or not a PNG is the user's), or out of memory (the machine's). */
 int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, struct error *e);
 void cpu_materials_free(struct cpu_materials *mat);
-/* Final RGBA8 colour of a ray's result; view is the direction the observer looked in (its own frame).
- * Alpha is render.sky_alpha where the ray reached the sky, else 1. */
-void cpu_shade(const struct cpu_materials *mat, const struct ref_ray *ray, vec3d view, unsigned char rgba[4]);
 /* The same colour unclamped above 1 (sRGB-encoded, as the GPU's float target holds it) and its alpha. */
 void cpu_shade_color(const struct cpu_materials *mat, const struct ref_ray *ray, vec3d view, double rgba[4]);
 

@@ -1,3 +1,4 @@
+#include "io/clock.h"
 #include "render/frame.h"
 #include "render/frame_bands.h"
 #include "io/sample_average.h"
@@ -36,12 +37,12 @@ static int run_image(struct renderer *r, const struct scene *s, const struct sta
         return frame_run_image(r, s, dx, dy, out, with_state, p, e);
     if (frame_run_image(r, s, dx, dy, out, render_read_with_sky(with_state), p, e) != 0)
         return -1;
-    double t0 = progress_now();
+    double t0 = clock_seconds();
     if (add_star_light(stars, out, dx, dy, e) != 0) {
         render_result_free(out);
         return -1;
     }
-    out->sky_seconds += progress_now() - t0;
+    out->sky_seconds += clock_seconds() - t0;
     return 0;
 }
 

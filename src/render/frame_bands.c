@@ -1,3 +1,4 @@
+#include "io/clock.h"
 #include "render/frame_bands.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -78,9 +79,9 @@ int frame_run_image(struct renderer *r, const struct scene *s, double dx, double
         int rows = h / 32 > 0 ? h / 32 : 1;
         for (int top = 0; top < h && rc == 0;) {
             rows = rows < h - top ? rows : h - top;
-            double t0 = progress_now();
+            double t0 = clock_seconds();
             rc = run_rows(r, s, top, rows, out, with_state, e);
-            double per_row = (progress_now() - t0) / rows;
+            double per_row = (clock_seconds() - t0) / rows;
             top += rows;
             report(p, top, h);
             double next = per_row > 0.0 ? FRAME_BAND_SECONDS / per_row : h;

@@ -11,11 +11,6 @@
 #include "gl/gl_api.h"
 #include "render/path.h"
 
-/* Outcome codes stored in the image texture's alpha (object ids are >= 0). */
-#define OUTCOME_SKY (-1)
-#define OUTCOME_CAPTURED (-2)
-#define OUTCOME_UNFINISHED (-3)
-#define OUTCOME_FAILED (-4)
 #define DEPTH_NO_HIT 60000.0f      /* depth key of a ray still travelling (fits fp16) */
 
 #define RAYSTATE_MAX_FBOS 32

@@ -1,4 +1,5 @@
 /* The pass schedule of one frame (paper Figure 1). */
+#include "io/clock.h"
 #include "gl/quad.h"
 #include "gl/readback.h"
 #include "render/stages.h"
@@ -6,14 +7,6 @@
 #include <stdlib.h>
 #include <stdint.h>
 #include <string.h>
-#include <time.h>
-
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static uint64_t fnv1a(uint64_t h, const void *bytes, size_t n)
 {
@@ -272,7 +265,7 @@ int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, in
     }
     if (renderer_follow_scene(r, e) != 0)
         return -1;
-    double t0 = now_seconds();
+    double t0 = clock_seconds();
     r->passes = 0;
     r->quad_z = 0.0f;
     r->depth_write_last = 0;
@@ -289,7 +282,7 @@ int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, in
                                          : run_segments(r, run.kind == PIPELINE_RUN_FUSED, hook, hook_arg, e)) != 0)
         return -1;
     glFinish();
-    r->seconds = now_seconds() - t0;
+    r->seconds = clock_seconds() - t0;
     return 0;
 }
 

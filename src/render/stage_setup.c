@@ -1,6 +1,7 @@
 /* Stage 1, ray setup (paper section 3.1): hit and image start as "no hit", positions at the
  * camera, velocities from the pinhole camera through the model's initial-velocity map. */
 #include "render/stages.h"
+#include "results/dump.h"
 #include <stdio.h>
 #include <math.h>
 
@@ -10,7 +11,7 @@ static void set_fill(const struct program_uniforms *p, const void *arg)
 {
     (void)arg;
     glUniform4f(program_uniform(p, "u_fill0"), 0.0f, 0.0f, 0.0f, DEPTH_NO_HIT);
-    glUniform4f(program_uniform(p, "u_fill1"), 0.0f, 0.0f, 0.0f, (float)OUTCOME_UNFINISHED);
+    glUniform4f(program_uniform(p, "u_fill1"), 0.0f, 0.0f, 0.0f, (float)DUMP_UNFINISHED);
 }
 
 static void set_camera(const struct program_uniforms *p, const void *arg)

@@ -18,7 +18,8 @@
 #define DUMP_MAX_PIXELS (1L << 23)  /* records, width x height: 436 MB of records in memory */
 #define DUMP_MAX_OBJECTS 64         /* entries of the object-size table */
 
-/* Outcome of a ray: object index >= 0, or one of these. */
+/* Outcome of a ray: object index >= 0, or one of these; both engines write them, the GPU in the alpha
+ * of its image texture. */
 enum dump_outcome { DUMP_SKY = -1, DUMP_CAPTURED = -2, DUMP_UNFINISHED = -3, DUMP_FAILED = -4 };
 
 struct dump_record {
