@@ -35,12 +35,25 @@ static double object_distance(const struct object *o, vec3d c)
     return d;
 }
 
+/* The camera's radius as the table takes it: rounded to ORBIT_RADIUS_BITS significant bits (a
+ * relative step of 2^-40, 1e-12, far below a float texel's rounding), so that a camera turned about
+ * the centre, whose radius changes in its last bits only, finds the table it already has, and a fresh
+ * render of the same view builds the same one. Only a radius within a few of its roundings of a step's
+ * middle (about one view in a thousand) falls on either side. */
+#define ORBIT_RADIUS_BITS 40
+static double table_radius(double r)
+{
+    int exponent;
+    double m = frexp(r, &exponent);
+    return ldexp(nearbyint(ldexp(m, ORBIT_RADIUS_BITS)), exponent - ORBIT_RADIUS_BITS);
+}
+
 void orbit_table_params_for(const struct scene *s, struct orbit_table_params *p)
 {
     const struct render_settings *r = &s->render;
     memset(p, 0, sizeof *p);
     p->mass = s->model.mass;
-    p->r_observer = v3_len(v3_sub(s->camera.position, s->model.center));
+    p->r_observer = table_radius(v3_len(v3_sub(s->camera.position, s->model.center)));
     p->r_far = (v3_len(v3_sub(r->bound_center, s->model.center)) + r->bound_radius) * (1.0 + ORBIT_FAR_MARGIN);
     p->rows_per_side = r->orbit_rows;
     p->columns = r->orbit_columns;
