@@ -21,6 +21,7 @@ struct bench {
     int width, height;           /* the paper's 800x600 unless quick */
     char out_dir[BENCH_PATH_LEN];
     char data_dir[BENCH_PATH_LEN]; /* out_dir/bench: CSV files and gnuplot scripts */
+    char kiosk_config[BENCH_PATH_LEN]; /* --config; empty: the shipped one (kiosk_config_default_path) */
     FILE *md;                    /* BENCH.md being written */
     int done, total;             /* progress */
     double started;

@@ -39,8 +39,12 @@ static void usage(FILE *out)
             "  --size WxH           frame size of the paper's measurements (default 800x600)\n"
             "  --only S[,S...]      sections: table1, figure5, unrolling, batching, early-z, pareto, pipelines, limit,\n"
             "                       relativity, antialias, stars, kiosk\n"
-            "  --kiosk              the kiosk's section alone (previews per second, time to the refined\n"
-            "                       frame); without --out its table goes to standard output, no file written\n"
+            "  --kiosk              the kiosk's section alone (previews per second for each knob, orbit-table\n"
+            "                       milliseconds per detent, first frame, time to the refined frame); without\n"
+            "                       --out its table goes to standard output, no file written\n"
+            "  --config FILE        the kiosk configuration whose scenes the kiosk's section measures (default:\n"
+            "                       kiosk/kiosk.conf of the source tree this program was built in, else\n"
+            "                       /etc/bentray/kiosk.conf)\n"
             "  --quick              tiny frames and few configurations: proves the command works, measures nothing\n"
             "  --backend NAME       egl, osmesa or auto (default)\n"
             "exit codes: 0 ok, 1 runtime failure, 2 bad usage or input (a data file refused)\n");
@@ -114,11 +118,11 @@ int cmd_bench(int argc, char **argv)
     long runs = 3;
     b.width = 800;
     b.height = 600;
-    enum { FORCE, QUICK, KIOSK, OUT, BACKEND, RUNS, SIZE, ONLY };
+    enum { FORCE, QUICK, KIOSK, OUT, BACKEND, RUNS, SIZE, ONLY, CONFIG };
     static const struct option_spec specs[] = {
         {"--force", NULL, FORCE}, {"--quick", NULL, QUICK}, {"--kiosk", NULL, KIOSK}, {"--out", "DIR", OUT},
         {"--backend", "NAME", BACKEND}, {"--runs", "N", RUNS}, {"--size", "WxH", SIZE}, {"--only", "S[,S...]", ONLY},
-        {NULL, NULL, 0},
+        {"--config", "FILE", CONFIG}, {NULL, NULL, 0},
     };
     struct option_reader rd = {.cmd = "bench", .own = specs, .usage = usage, .argc = argc, .argv = argv};
     const struct option_spec *sp;
@@ -157,6 +161,14 @@ int cmd_bench(int argc, char **argv)
                         "got '%s'\n", SCENE_MAX_SIZE, SCENE_MAX_PIXELS, v);
                 return EXIT_USAGE;
             }
+            break;
+        case CONFIG:
+            if (strlen(v) >= sizeof b.kiosk_config) {
+                fprintf(stderr, "bentray bench: --config: the path is longer than %d characters\n",
+                        (int)sizeof b.kiosk_config - 1);
+                return EXIT_USAGE;
+            }
+            snprintf(b.kiosk_config, sizeof b.kiosk_config, "%s", v);
             break;
         case ONLY:
             if (parse_only(v, wanted) != 0)

@@ -34,6 +34,7 @@ int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *b
     renderer_destroy(v->renderer);
     v->renderer = NULL;
     v->scene_index = -1;
+    v->prefetched = 0;
     if (base)
         v->base = *base;
     else if (scene_load(&v->base, v->cfg->kiosk.scenes[scene_index], e) != 0)
@@ -155,7 +156,7 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, struc
      * view shows every ray's final state too */
     renderer_set_reads(v->renderer, v->pipeline_view ? RENDER_READ_STATE : RENDER_READ_IMAGE);
     if (v->preview.count > 1)
-        return preview_tile(v, e);
+        return preview_tile(v, e) != 0 || kiosk_view_prefetch(v, st, e) != 0 ? -1 : 0;
     v->preview.next = v->preview.count;
     /* the pipeline view shows every ray's final state, which a single-pass frame writes on demand */
     if (renderer_run(v->renderer, &v->live, 0, 0, k->preview_width, k->preview_height, NULL, NULL, e) != 0 ||
@@ -168,7 +169,7 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, struc
                               : compositor_put_preview(&v->comp, t.image, e);
     /* the pipeline view shows the preview's own state: it is not refined */
     v->refined_rows = v->pipeline_view ? k->height : 0;
-    return rc;
+    return rc != 0 ? rc : kiosk_view_prefetch(v, st, e);
 }
 
 int kiosk_view_preview_pending(const struct kiosk_view *v)

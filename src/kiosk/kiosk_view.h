@@ -23,6 +23,7 @@
 #include "kiosk/compositor.h"
 #include "kiosk/kiosk_state.h"
 #include "render/renderer.h"
+#include "physics/orbit_table.h"
 
 #define PREVIEW_STEP_FACTOR 2
 #define PREVIEW_SEGMENT_FACTOR 2
@@ -60,6 +61,8 @@ struct kiosk_view {
     int refined_rows;                /* rows of the canvas at full quality, from the bottom */
     struct kiosk_tiles preview;      /* the preview being drawn; next == count: shown */
     struct kiosk_tiles refine;       /* the refinement's tiles */
+    int prefetched;                  /* the orbit tables around prefetched_for were asked for */
+    struct orbit_table_params prefetched_for;   /* the refined table of the state they were asked for */
 };
 
 /* 0, or -1 with e (compositor_init's). */
@@ -78,6 +81,13 @@ int kiosk_view_refine(struct kiosk_view *v, struct error *e);
 /* A preview is still being drawn, tile by tile (not yet shown). */
 int kiosk_view_preview_pending(const struct kiosk_view *v);
 int kiosk_view_refined(const struct kiosk_view *v);
+/* Detents of each knob, on each side, whose orbit tables are built ahead (kiosk_view_prefetch). */
+#define KIOSK_PREFETCH_DETENTS 16
+/* The orbit tables the knobs' next KIOSK_PREFETCH_DETENTS detents on either side will ask for
+ * (previews first, nearest first, then the refined tables of the detents beside st), built by the
+ * renderer's worker while the exhibit shows st; nothing for a scene without a table. kiosk_view_preview
+ * calls it. 0, or -1 with e (no memory). */
+int kiosk_view_prefetch(struct kiosk_view *v, const struct kiosk_state *st, struct error *e);
 /* The preview of a full scene: the preview size, and longer steps over the same path length. */
 void kiosk_preview_scene(const struct scene *full, const struct kiosk_main *k, struct scene *out);
 

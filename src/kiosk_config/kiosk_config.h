@@ -105,6 +105,10 @@ void kiosk_config_defaults(struct kiosk_config *c);
 /* Defaults, then the file at PATH. 0, or -1 with the first error in ERR. Values are checked one
  * by one here; call kiosk_config_check() for what involves several keys. */
 int kiosk_config_load(struct kiosk_config *c, const char *path, struct error *err);
+/* The shipped configuration as seen from this program: kiosk/kiosk.conf of the source tree the
+ * binary was built in (its directory or up to three above), else the installed
+ * /etc/bentray/kiosk.conf. 0 with its path, or -1 with e (ERROR_INPUT) naming where it looked. */
+int kiosk_config_default_path(char *out, size_t len, struct error *e);
 /* Checks across keys and sections: references between sections, one knob's range and start,
  * frame sizes, an input's settings against its type and its use. 0, or -1 with ERR. */
 int kiosk_config_check(const struct kiosk_config *c, struct error *err);

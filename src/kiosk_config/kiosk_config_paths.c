@@ -7,7 +7,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <limits.h>
 #include <sys/stat.h>
+#include <unistd.h>
 #include "kiosk_config/kiosk_config_keys.h"
 #include "conf/conf_path.h"
 
@@ -162,4 +164,29 @@ int kiosk_scene_find(const struct kiosk_config *c, const char *name)
         }
     }
     return found;
+}
+
+#define KIOSK_CONFIG_IN_TREE "kiosk/kiosk.conf"
+#define KIOSK_CONFIG_INSTALLED "/etc/bentray/kiosk.conf"
+
+int kiosk_config_default_path(char *out, size_t len, struct error *e)
+{
+    char exe[PATH_MAX];
+    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (n > 0) {
+        exe[n] = '\0';
+        for (int up = 0; up <= 3; up++) {
+            char *slash = strrchr(exe, '/');
+            if (!slash)
+                break;
+            *slash = '\0';
+            if (snprintf(out, len, "%s/%s", exe, KIOSK_CONFIG_IN_TREE) < (int)len && access(out, R_OK) == 0)
+                return 0;
+        }
+    }
+    if (access(KIOSK_CONFIG_INSTALLED, R_OK) == 0 && snprintf(out, len, "%s", KIOSK_CONFIG_INSTALLED) < (int)len)
+        return 0;
+    return error_set(e, ERROR_INPUT, NULL, "no kiosk configuration found: none at %s beside this program or above it, "
+                     "none at %s (kiosk/install.sh puts one there); name one with --config FILE",
+                     KIOSK_CONFIG_IN_TREE, KIOSK_CONFIG_INSTALLED);
 }

@@ -101,5 +101,15 @@ void renderer_destroy(struct renderer *r);
  * the bounding sphere, the chord tolerance and the objects' distances from the mass). */
 struct orbit_table_params;
 void orbit_table_params_for(const struct scene *s, struct orbit_table_params *p);
+/* Orbit tables the next runs are expected to ask for, most wanted first (the kiosk: the tables of
+ * the knobs' next detents), built by a worker thread while the GPU draws; what was still waiting
+ * from an earlier call is dropped. 0, or -1 with e (no memory). */
+int renderer_orbit_prefetch(struct renderer *r, const struct orbit_table_params *p, int n, struct error *e);
+/* Tables still waiting for the worker or being built. */
+int renderer_orbit_pending(const struct renderer *r);
+/* Tables this renderer's runs built themselves (none kept, none being built ahead). */
+int renderer_orbit_tables_built(const struct renderer *r);
+/* Seconds this renderer's runs have spent building orbit tables or waiting for the worker's. */
+double renderer_orbit_build_seconds(const struct renderer *r);
 
 #endif

@@ -1,7 +1,8 @@
 /* Stage 2 without integration, for Schwarzschild (render.method = orbit_table): each segment is a
  * chord between exact points of the ray's orbit, read from the orbit table (physics/orbit_table.h)
  * that the CPU builds in double precision for the scene's mass and the camera's radius, and
- * rebuilds when either changes (the kiosk's mass knob, a moving camera). */
+ * builds again when either changes (the kiosk's mass knob, a moving camera), or takes from the
+ * tables built ahead (render/orbit_store.h). */
 #include "render/stages.h"
 #include "gl/texture.h"
 #include <math.h>
@@ -35,25 +36,26 @@ static double object_distance(const struct object *o, vec3d c)
     return d;
 }
 
-/* The camera's radius as the table takes it: rounded to ORBIT_RADIUS_BITS significant bits (a
- * relative step of 2^-40, 1e-12, far below a float texel's rounding), so that a camera turned about
- * the centre, whose radius changes in its last bits only, finds the table it already has, and a fresh
- * render of the same view builds the same one. Only a radius within a few of its roundings of a step's
- * middle (about one view in a thousand) falls on either side. */
-#define ORBIT_RADIUS_BITS 40
-static double table_radius(double r)
+/* The mass and the camera's radius as the table takes them: rounded to ORBIT_TABLE_BITS significant
+ * bits (a relative step of 2^-40, 1e-12, far below a float texel's rounding). A camera turned about
+ * the centre changes its radius in the last bits only, and so does a knob's value reached by another
+ * sequence of detents (0.12 + 0.01 + 0.01 against 0.12 + 2 x 0.01): each finds the table it already
+ * has, or one built ahead, and a fresh render of the same view builds the same one. Only a value
+ * within a few roundings of a step's middle (about one in a thousand) falls on either side. */
+#define ORBIT_TABLE_BITS 40
+static double table_value(double x)
 {
     int exponent;
-    double m = frexp(r, &exponent);
-    return ldexp(nearbyint(ldexp(m, ORBIT_RADIUS_BITS)), exponent - ORBIT_RADIUS_BITS);
+    double m = frexp(x, &exponent);
+    return ldexp(nearbyint(ldexp(m, ORBIT_TABLE_BITS)), exponent - ORBIT_TABLE_BITS);
 }
 
 void orbit_table_params_for(const struct scene *s, struct orbit_table_params *p)
 {
     const struct render_settings *r = &s->render;
     memset(p, 0, sizeof *p);
-    p->mass = s->model.mass;
-    p->r_observer = table_radius(v3_len(v3_sub(s->camera.position, s->model.center)));
+    p->mass = table_value(s->model.mass);
+    p->r_observer = table_value(v3_len(v3_sub(s->camera.position, s->model.center)));
     p->r_far = (v3_len(v3_sub(r->bound_center, s->model.center)) + r->bound_radius) * (1.0 + ORBIT_FAR_MARGIN);
     p->rows_per_side = r->orbit_rows;
     p->columns = r->orbit_columns;
@@ -85,38 +87,65 @@ static void release_table(struct orbit_table *t, GLuint *texture)
     orbit_table_free(t);
 }
 
-/* Two tables are kept: the kiosk's coarse preview table and its refined frame's, which alternate
- * while the knobs rest, are each built once. */
+/* The renderer keeps two tables on the GPU: the kiosk's coarse preview table and its refined
+ * frame's, which alternate while the knobs rest, are each uploaded once. Any other comes from the
+ * store: built ahead where the kiosk asked for it (renderer_orbit_prefetch), else built now. */
 int orbit_prepare(struct renderer *r, struct error *e)
 {
     struct orbit_table_params p;
     orbit_table_params_for(r->scene, &p);
-    if (r->orbit_texture && memcmp(&p, &r->orbit.p, sizeof p) == 0)
+    if (r->orbit_texture && orbit_params_same(&p, &r->orbit.p))
         return 0;
     swap_tables(r);
-    if (r->orbit_texture && memcmp(&p, &r->orbit.p, sizeof p) == 0)
+    if (r->orbit_texture && orbit_params_same(&p, &r->orbit.p))
         return 0;
     release_table(&r->orbit, &r->orbit_texture);
-    if (orbit_table_build(&r->orbit, &p, e) != 0)
+    if (!r->orbit_store && !(r->orbit_store = orbit_store_create(ORBIT_STORE_BUDGET, e)))
         return -1;
-    if (r->orbit.width > r->caps.max_texture_size || r->orbit.height > r->caps.max_texture_size) {
-        error_set(e, ERROR_INPUT, NULL, "the orbit table (%dx%d) exceeds this GPU's texture limit %d: lower "
-                  "render.orbit_rows or render.orbit_columns", r->orbit.width, r->orbit.height,
-                  r->caps.max_texture_size);
-        release_table(&r->orbit, &r->orbit_texture);
+    const struct orbit_table *t = orbit_store_get(r->orbit_store, &p, e);
+    if (!t)
         return -1;
-    }
+    if (t->width > r->caps.max_texture_size || t->height > r->caps.max_texture_size)
+        return error_set(e, ERROR_INPUT, NULL, "the orbit table (%dx%d) exceeds this GPU's texture limit %d: lower "
+                         "render.orbit_rows or render.orbit_columns", t->width, t->height, r->caps.max_texture_size);
     const struct float_format *f = r->path.format;
-    r->orbit_texture = texture_create_nearest(f->internal_format, f->format, GL_FLOAT, r->orbit.width, r->orbit.height);
+    r->orbit_texture = texture_create_nearest(f->internal_format, f->format, GL_FLOAT, t->width, t->height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, r->orbit.width, r->orbit.height, f->format, GL_FLOAT, r->orbit.texels);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, t->width, t->height, f->format, GL_FLOAT, t->texels);
+    r->orbit = *t;
+    r->orbit.texels = NULL;
     return gl_check("uploading the orbit table", e);
+}
+
+int renderer_orbit_prefetch(struct renderer *r, const struct orbit_table_params *p, int n, struct error *e)
+{
+    if (!r->orbit_store && !(r->orbit_store = orbit_store_create(ORBIT_STORE_BUDGET, e)))
+        return -1;
+    orbit_store_prefetch(r->orbit_store, p, n);
+    return 0;
+}
+
+int renderer_orbit_pending(const struct renderer *r)
+{
+    return r->orbit_store ? orbit_store_pending(r->orbit_store) : 0;
+}
+
+int renderer_orbit_tables_built(const struct renderer *r)
+{
+    return r->orbit_store ? orbit_store_caller_builds(r->orbit_store) : 0;
+}
+
+double renderer_orbit_build_seconds(const struct renderer *r)
+{
+    return r->orbit_store ? orbit_store_caller_seconds(r->orbit_store) : 0.0;
 }
 
 void orbit_release(struct renderer *r)
 {
     release_table(&r->orbit, &r->orbit_texture);
     release_table(&r->orbit_spare, &r->orbit_spare_texture);
+    orbit_store_destroy(r->orbit_store);
+    r->orbit_store = NULL;
 }
 
 struct orbit_args {

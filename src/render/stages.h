@@ -6,6 +6,7 @@
 #include "render/raystate.h"
 #include "render/renderer.h"
 #include "physics/orbit_table.h"
+#include "render/orbit_store.h"
 
 /* Texture units: ray-state inputs first, then scene textures. */
 #define UNIT_SKY 6
@@ -50,7 +51,9 @@ struct renderer {
     int reads;                    /* enum render_read: what the caller reads after a run */
     long passes;
     double seconds;
-    struct orbit_table orbit;     /* render.method = orbit_table: the table of the last run */
+    struct orbit_store *orbit_store;  /* the tables built, and those built ahead (NULL before the first) */
+    struct orbit_table orbit;     /* render.method = orbit_table: the table of the last run (its scalars;
+                                     the texels are the store's) */
     GLuint orbit_texture;         /* the same as a float texture; 0 before the first */
     struct orbit_table orbit_spare;  /* the one before it (stage_orbit.c) */
     GLuint orbit_spare_texture;

@@ -270,7 +270,10 @@ check "bench sections" 0 "^12 sections, table1 21 rows, pipelines 23 rows, figur
       \$(wc -l < $TMP/bench/bench/figure5.csv) \$(wc -l < $TMP/bench/bench/limit.csv) \
       \$(wc -l < $TMP/bench/bench/pareto.csv) \$(wc -l < $TMP/bench/bench/relativity.csv) \
       \$(wc -l < $TMP/bench/bench/kiosk.csv) \$(wc -l < $TMP/bench/bench/antialias.csv) \$(wc -l < $TMP/bench/bench/stars.csv)"
-check "bench kiosk to stdout" 0 "^\| schwarzschild.scene \| [0-9.]+ \| [0-9.]+ \| (met|MISSED) \|" -- $BT bench --kiosk --quick
+check "bench kiosk to stdout" 0 "^\| schwarzschild.scene( \| [0-9.]+){6} \| [0-9]+ \| (met|MISSED) \| (met|MISSED) \| (met|MISSED) \| (met|MISSED) \|$" -- $BT bench --kiosk --quick
+# the shipped configuration is found from the program's own place, whatever the working directory
+check "bench kiosk elsewhere" 0 "--config $(pwd)/kiosk/kiosk.conf" -- sh -c "cd '$TMP' && $(cd "$(dirname "$BT")" && pwd)/$(basename "$BT") bench --kiosk --quick"
+check "bench kiosk config missing" 2 "^bentray bench: kiosk: $TMP/none.conf" -- $BT bench --kiosk --quick --config "$TMP/none.conf"
 check "bench no overwrite" 2 "exists; pass --force" -- $BT bench --out "$TMP/bench" --quick
 check "bench bad section" 2 "--only: unknown section 'speed'" -- $BT bench --out "$TMP/bench" --only speed
 check "bench without out" 2 "--out DIR is required" -- $BT bench --quick
