@@ -12,6 +12,17 @@
 
 #define BENCH_PATH_LEN 512
 
+/* A file of the report, written in memory while the bench runs and to its path only at the end,
+ * when every section has succeeded (bench_files_write), through io/output_file.h: an interrupted or
+ * failed bench leaves the earlier report as it was. */
+struct bench_file {
+    char path[BENCH_PATH_LEN + 64];
+    FILE *fp;                    /* an open_memstream; its text once closed */
+    char *text;
+    size_t len;
+};
+#define BENCH_MAX_FILES 32
+
 struct bench {
     struct gl_context *ctx;
     char renderer[160];          /* GL_RENDERER of the context */
@@ -25,6 +36,8 @@ struct bench {
     FILE *md;                    /* BENCH.md being written */
     int done, total;             /* progress */
     double started;
+    struct bench_file files[BENCH_MAX_FILES];
+    int n_files;
 };
 
 struct bench_timing {
@@ -87,8 +100,17 @@ int bench_antialias(struct bench *b, struct error *e);
 /* the cost of the stars of the sky, drawn on the CPU (bench_stars.c) */
 int bench_stars(struct bench *b, struct error *e);
 
-/* Open out_dir/bench/NAME for writing (CSV, gnuplot script). NULL with e ("cannot write PATH", no
- * place; its status from error_status_of_errno). */
+/* out_dir/bench/NAME (CSV, gnuplot script) to write, in memory until bench_files_write; the caller
+ * closes it with fclose. NULL with e ("cannot write PATH": a path that cannot be written, checked
+ * now, ERROR_INPUT for a directory or a device there; no memory). */
 FILE *bench_data_file(struct bench *b, const char *name, struct error *e);
+/* The same for a path of its own (the report, BENCH.md). */
+FILE *bench_file(struct bench *b, const char *path, struct error *e);
+/* Every file of the report to its path, each through a temporary moved into place (data files first,
+ * then the report); the files' texts freed. 0, or -1 with e (the first that failed; those before it
+ * are written). */
+int bench_files_write(struct bench *b, struct error *e);
+/* The texts freed, nothing written. */
+void bench_files_drop(struct bench *b);
 
 #endif

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "io/clock.h"
+#include "io/output_file.h"
 #include "bench/bench.h"
 #include "render/frame.h"
 #include "render/renderer.h"
@@ -64,13 +65,67 @@ double bench_median(double *times, int n)
     return n % 2 ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
 }
 
+FILE *bench_file(struct bench *b, const char *path, struct error *e)
+{
+    if (b->n_files == BENCH_MAX_FILES) {
+        error_set(e, ERROR_RUNTIME, NULL, "internal: more than %d report files", BENCH_MAX_FILES);
+        return NULL;
+    }
+    struct bench_file *f = &b->files[b->n_files];
+    memset(f, 0, sizeof *f);
+    snprintf(f->path, sizeof f->path, "%s", path);
+    /* refused now, before the section's work, as a write would be (a directory at the path) */
+    if (output_check(f->path, 1, e) != 0) {
+        if (strncmp(e->message, "cannot write ", 13) != 0) {
+            char why[sizeof e->message];
+            snprintf(why, sizeof why, "%s", e->message);
+            error_set(e, e->status, NULL, "cannot write %s (%s)", f->path, why);
+        }
+        return NULL;
+    }
+    f->fp = open_memstream(&f->text, &f->len);
+    if (!f->fp) {
+        error_set(e, ERROR_RUNTIME, NULL, "cannot write %s: out of memory", f->path);
+        return NULL;
+    }
+    b->n_files++;
+    return f->fp;
+}
+
 FILE *bench_data_file(struct bench *b, const char *name, struct error *e)
 {
     char path[BENCH_PATH_LEN + 64];
     snprintf(path, sizeof path, "%s/%s", b->data_dir, name);
-    errno = 0;
-    FILE *f = fopen(path, "w");
-    if (!f)
-        error_set(e, error_status_of_errno(errno), NULL, "cannot write %s", path);
-    return f;
+    return bench_file(b, path, e);
+}
+
+void bench_files_drop(struct bench *b)
+{
+    for (int i = 0; i < b->n_files; i++)
+        free(b->files[i].text);
+    b->n_files = 0;
+}
+
+int bench_files_write(struct bench *b, struct error *e)
+{
+    int rc = 0;
+    for (int i = 0; i < b->n_files && rc == 0; i++) {
+        struct bench_file *f = &b->files[i];
+        struct output_file o;
+        /* a section's file left open by a failure is not part of a finished report */
+        if (!f->text) {
+            rc = error_set(e, ERROR_RUNTIME, NULL, "internal: %s was not closed", f->path);
+            break;
+        }
+        if (output_open(&o, f->path, 1, e) != 0)
+            rc = -1;
+        else if (fwrite(f->text, 1, f->len, o.fp) != f->len) {
+            error_set(e, ERROR_RUNTIME, NULL, "cannot write %s", f->path);
+            output_abort(&o);
+            rc = -1;
+        } else if (output_commit(&o, e) != 0)
+            rc = -1;
+    }
+    bench_files_drop(b);
+    return rc;
 }

@@ -205,11 +205,12 @@ int cmd_bench(int argc, char **argv)
     }
     snprintf(b.backend, sizeof b.backend, "%s", b.ctx->backend);
     snprintf(b.renderer, sizeof b.renderer, "%s", (const char *)glGetString(GL_RENDERER));
-    b.md = out ? fopen(md_path, "w") : stdout;
+    struct error md_err;
+    b.md = out ? bench_file(&b, md_path, &md_err) : stdout;
     if (!b.md) {
-        fprintf(stderr, "bentray bench: cannot write %s: %s\n", md_path, strerror(errno));
+        fprintf(stderr, "bentray bench: %s\n", md_err.message);
         gl_context_destroy(b.ctx);
-        return EXIT_RUNTIME;
+        return exit_code_of(&md_err);
     }
     section_steps[5] = bench_pareto_count;
     for (int k = 0; k < N_SECTIONS; k++)
@@ -233,7 +234,15 @@ int cmd_bench(int argc, char **argv)
     if (out)
         fclose(b.md);
     gl_context_destroy(b.ctx);
-    if (rc == EXIT_OK && out)
+    /* the report and its data are written only whole: a bench that failed or was interrupted
+     * leaves the earlier ones as they were */
+    if (rc != EXIT_OK) {
+        bench_files_drop(&b);
+    } else if (bench_files_write(&b, &e) != 0) {
+        fprintf(stderr, "bentray bench: %s\n", e.message);
+        rc = exit_code_of(&e);
+    } else if (out) {
         fprintf(stderr, "bentray bench: wrote %s and %s/\n", md_path, b.data_dir);
+    }
     return rc;
 }

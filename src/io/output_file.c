@@ -189,6 +189,11 @@ int output_open(struct output_file *o, const char *path, int overwrite, struct e
         o->tmp = NULL;
         return -1;
     }
+    /* a file replaced keeps its permissions (a report kept private stays private); a link is
+     * replaced by a file of the default mode, never followed */
+    struct stat old;
+    if (overwrite && lstat(path, &old) == 0 && S_ISREG(old.st_mode))
+        (void)fchmod(fd, old.st_mode & 07777);
     o->fp = fdopen(fd, "wb");
     if (!o->fp) {
         error_set(e, ERROR_RUNTIME, NULL, "cannot write %s: %s", path, strerror(errno));

@@ -275,6 +275,14 @@ check "bench kiosk to stdout" 0 "^\| schwarzschild.scene( \| [0-9.]+){6} \| [0-9
 check "bench kiosk elsewhere" 0 "--config $(pwd)/kiosk/kiosk.conf" -- sh -c "cd '$TMP' && $(cd "$(dirname "$BT")" && pwd)/$(basename "$BT") bench --kiosk --quick"
 check "bench kiosk config missing" 2 "^bentray bench: kiosk: $TMP/none.conf" -- $BT bench --kiosk --quick --config "$TMP/none.conf"
 check "bench no overwrite" 2 "exists; pass --force" -- $BT bench --out "$TMP/bench" --quick
+# the report is written whole or not at all: an interrupt keeps the earlier one byte for byte, a
+# replaced report keeps its mode, and a link at a data file is replaced, its target untouched
+chmod 600 "$TMP/bench/BENCH.md"
+cp "$TMP/bench/BENCH.md" "$TMP/bench_before.md"
+check "bench interrupted keeps the report" 0 "^same$" -- sh -c "timeout -s INT 2 $BT bench --out '$TMP/bench' --quick --force >/dev/null 2>&1; cmp -s '$TMP/bench/BENCH.md' '$TMP/bench_before.md' && echo same"
+echo kept > "$TMP/bench_target"
+ln -sf "$TMP/bench_target" "$TMP/bench/bench/kiosk.csv"
+check "bench replaces a link, keeps the mode" 0 "^kept 600 regular$" -- sh -c "$BT bench --out '$TMP/bench' --quick --force --only kiosk >/dev/null 2>&1; echo \$(cat '$TMP/bench_target') \$(stat -c %a '$TMP/bench/BENCH.md') \$(stat -c %F '$TMP/bench/bench/kiosk.csv' | cut -d' ' -f1)"
 check "bench bad section" 2 "--only: unknown section 'speed'" -- $BT bench --out "$TMP/bench" --only speed
 check "bench without out" 2 "--out DIR is required" -- $BT bench --quick
 check "bench bad runs" 2 "--runs: expected an integer from 1 to 63" -- $BT bench --out "$TMP/bench" --runs 0
