@@ -26,11 +26,13 @@ LDLIBS  += $(PKG_LIBS) -lm -lpthread
 # Tests only: cmocka, and GSL's special functions as an independent source of closed forms.
 TEST_LIBS := -lcmocka $(shell pkg-config --libs gsl 2>/dev/null)
 
-# Debian packages: build tools, GL stacks (EGL surfaceless + OSMesa on Mesa), libraries, test tools.
+# Debian packages: build tools, GL stacks (EGL surfaceless + OSMesa on Mesa), libraries, test tools
+# (glslang's validator checks that the shaders bentray prints keep to GLSL ES 1.00).
 DEB_PACKAGES := make gcc pkg-config libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri \
                 libosmesa6-dev libinih-dev libpng-dev libcmocka-dev libgsl-dev \
                 libhidapi-dev libgpiod-dev libsystemd-dev libfreetype-dev fonts-dejavu-core \
-                libgbm-dev libdrm-dev libx11-dev xvfb xauth valgrind groff-base
+                libgbm-dev libdrm-dev libx11-dev xvfb xauth valgrind groff-base \
+                glslang-tools
 
 LIB_SRCS  := $(shell find src -name '*.c' ! -path 'src/tools/*' ! -name main.c | sort)
 LIB_OBJS  := $(LIB_SRCS:%.c=$(BUILD)/%.o) $(BUILD)/gen/shaders_embedded.o

@@ -31,7 +31,7 @@ _bentray()
         bench) opts="--out --force --runs --size --only --kiosk --config --quick --backend --help" ;;
         kiosk) opts="--config --display --backend --out --frames --force --check-inputs --help" ;;
         compare) [[ $cur == -* ]] && COMPREPLY=($(compgen -W "--json --help" -- "$cur")) || COMPREPLY=($(compgen -f -- "$cur")); return ;;
-        info) opts="--backend --shader-dir --help" ;;
+        info) opts="--backend --shader-dir --shader --scene --set --no-mrt --help" ;;
         *) opts="--help" ;;
     esac
     COMPREPLY=($(compgen -W "$opts" -- "$cur"))

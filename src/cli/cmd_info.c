@@ -2,16 +2,26 @@
 #include "cli/commands.h"
 #include "cli/options.h"
 #include "gl/caps.h"
+#include "gl/shader.h"
 #include "render/path.h"
+#include "render/renderer.h"
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static void usage(FILE *out)
 {
     fprintf(out, "usage: bentray info [--backend egl|osmesa|auto|all] [--shader-dir DIR]\n"
+                 "       bentray info --shader STAGE --scene FILE [--set SECTION.KEY=V ...] [--backend B]\n"
                  "Probe the headless GL back-ends and print their versions, renderer, the float\n"
                  "render-target formats that really work, MRT, fragment highp, and the render path\n"
-                 "and pipeline bentray would choose. --backend all (the default) probes every back-end built in.\n");
+                 "and pipeline bentray would choose. --backend all (the default) probes every back-end built in.\n"
+                 "With --shader, print the fragment shader of pipeline stage STAGE (shaders_es/stage_STAGE.glsl)\n"
+                 "as the GL compiles it for that scene, as `bentray render` draws it: the preamble, the\n"
+                 "scene's defines, then each file after a comment with its name and a #line with its\n"
+                 "number. A stage the scene's pipeline does not run prints nothing (exit 1).\n"
+                 "  --shader STAGE       one of: frame, orbit_frame (single pass), segment (fused), setup,\n"
+                 "                       integrate, orbit, intersect, terminate, retire, sky (multipass), fill\n");
 }
 
 static void print_caps(const struct gl_caps *c)
@@ -53,16 +63,94 @@ static void print_caps(const struct gl_caps *c)
         printf("pipeline:        %s; the single pass only when forced (%s)\n", else_path, c->long_loops_why);
 }
 
+/* The sources of the stage's programs, as compiled, in order. */
+struct captured {
+    char *source[8];
+    int n, more;
+};
+
+static void keep_source(const char *source, void *arg)
+{
+    struct captured *c = arg;
+    for (int i = 0; i < c->n; i++)
+        if (strcmp(c->source[i], source) == 0)
+            return;
+    if (c->n == 8) {
+        c->more++;
+        return;
+    }
+    c->source[c->n] = strdup(source);
+    c->n += c->source[c->n] != NULL;
+}
+
+/* bentray info --shader STAGE --scene FILE: one frame of the scene at 8x8 (no program depends on
+ * the size), its renderer handing over what it compiles from stage_STAGE.glsl. */
+static int print_shader(const struct common_options *o, const char *backend, const char *stage)
+{
+    char file[64], stages[256];
+    snprintf(file, sizeof file, "stage_%s.glsl", stage);
+    shader_stage_names(stages, sizeof stages);
+    struct error e;
+    char *text = strlen(stage) < 40 ? shader_load_text(file, &e) : NULL;
+    if (!text) {
+        fprintf(stderr, "bentray info: --shader: no stage '%s' (stages: %s)\n", stage, stages);
+        return EXIT_USAGE;
+    }
+    free(text);
+    struct scene *s = options_scene_new("info");
+    if (!s)
+        return EXIT_RUNTIME;
+    int rc = options_load_scene(o, "info", s);
+    struct gl_context *ctx = NULL;
+    struct renderer *r = NULL;
+    struct captured c = {0};
+    if (rc == EXIT_OK && !(ctx = gl_context_create(strcmp(backend, "all") == 0 ? "auto" : backend, &e))) {
+        fprintf(stderr, "bentray info: %s\n", e.message);
+        rc = EXIT_RUNTIME;
+    }
+    if (rc == EXIT_OK && !(r = renderer_create(ctx, s, &e))) {
+        fprintf(stderr, "bentray info: %s%s%s\n", e.where, e.where[0] ? ": " : "", e.message);
+        rc = exit_code_of(&e);
+    }
+    if (rc == EXIT_OK) {
+        renderer_capture_shaders(r, file, keep_source, &c);
+        renderer_set_reads(r, RENDER_READ_IMAGE);
+        if (renderer_run(r, s, 0, 0, 8, 8, NULL, NULL, &e) != 0) {
+            fprintf(stderr, "bentray info: %s\n", e.message);
+            rc = exit_code_of(&e);
+        }
+    }
+    if (rc == EXIT_OK && c.n == 0) {
+        fprintf(stderr, "bentray info: --shader %s: the scene's frame runs no program of %s (%s: %s)\n", stage,
+                file, renderer_pipeline(r), renderer_pipeline_why(r));
+        rc = EXIT_RUNTIME;
+    }
+    if (rc == EXIT_OK) {
+        fputs(c.source[0], stdout);
+        fprintf(stderr, "bentray info: %s, the first of %d variant%s compiled for this scene's frame (%s: %s)\n",
+                file, c.n + c.more, c.n + c.more == 1 ? "" : "s", renderer_pipeline(r), renderer_pipeline_why(r));
+    }
+    for (int i = 0; i < c.n; i++)
+        free(c.source[i]);
+    renderer_destroy(r);
+    if (ctx)
+        gl_context_destroy(ctx);
+    scene_free(s);
+    return rc;
+}
+
 int cmd_info(int argc, char **argv)
 {
-    const char *backend = "all";
-    enum { BACKEND, SHADER_DIR };
-    static const struct option_spec specs[] = {
-        {"--backend", "B", BACKEND}, {"--shader-dir", "DIR", SHADER_DIR}, {NULL, NULL, 0}};
-    struct option_reader rd = {.cmd = "info", .own = specs, .usage = usage, .argc = argc, .argv = argv};
+    const char *backend = "all", *stage = NULL;
+    struct common_options o = {.backend = "auto"};
+    enum { BACKEND, SHADER_DIR, SHADER };
+    static const struct option_spec specs[] = {{"--backend", "B", BACKEND}, {"--shader-dir", "DIR", SHADER_DIR},
+                                               {"--shader", "STAGE", SHADER}, {NULL, NULL, 0}};
+    struct option_reader rd = {.cmd = "info", .own = specs, .common = common_option_specs, .usage = usage,
+                               .argc = argc, .argv = argv};
     const struct option_spec *sp;
     const char *v;
-    int got;
+    int got, scene_options = 0;
     while ((got = option_read(&rd, &sp, &v)) > 0) {
         switch (sp->id) {
         case BACKEND:
@@ -71,10 +159,31 @@ int cmd_info(int argc, char **argv)
         case SHADER_DIR:
             shader_set_directory(v);
             break;
+        case SHADER:
+            stage = v;
+            break;
+        default:
+            if (options_common(&o, "info", sp->id, v) != 0)
+                return EXIT_USAGE;
+            scene_options = 1;
         }
     }
     if (got < 0)
         return rd.exit_code;
+    if (stage && !o.scene_path) {
+        fprintf(stderr, "bentray info: --shader STAGE needs --scene FILE: the shader depends on the scene\n");
+        return EXIT_USAGE;
+    }
+    if (!stage && scene_options) {
+        fprintf(stderr, "bentray info: --scene and the scene's options go with --shader STAGE\n");
+        return EXIT_USAGE;
+    }
+    if (stage && strcmp(backend, "all") != 0 && !option_backend_valid(backend)) {
+        fprintf(stderr, "bentray info: --backend: unknown back-end '%s' (expected egl, osmesa or auto)\n", backend);
+        return EXIT_USAGE;
+    }
+    if (stage)
+        return print_shader(&o, backend, stage);
     static const char *const all[] = {"egl", "osmesa", NULL};
     const char *one[] = {backend, NULL};
     const char *const *list = strcmp(backend, "all") == 0 ? all : one;

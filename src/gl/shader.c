@@ -41,18 +41,85 @@ static char *read_file(const char *path, struct error *e)
     return buf;
 }
 
+/* GLSL ES 1.00 has no line continuation (ES 3.00 added it; Mesa accepts it in 1.00, drivers that
+ * keep to the 1.00 grammar do not): a macro written over several lines with a backslash at their
+ * ends is joined into one line here, in place, and the newlines it took are put after it, so that
+ * every later line keeps its number in compiler messages. */
+static char *join_continued_lines(char *text)
+{
+    char *out = text;
+    int owed = 0;
+    for (const char *in = text; *in;) {
+        if (in[0] == '\\' && in[1] == '\n') {
+            *out++ = ' ';
+            in += 2;
+            owed++;
+            continue;
+        }
+        *out++ = *in;
+        if (*in++ == '\n')
+            for (; owed > 0; owed--)
+                *out++ = '\n';
+    }
+    *out = '\0';
+    return text;
+}
+
 char *shader_load_text(const char *name, struct error *e)
 {
     if (shader_dir) {
         char path[1024];
         snprintf(path, sizeof path, "%s/%s", shader_dir, name);
-        return read_file(path, e);
+        char *text = read_file(path, e);
+        return text ? join_continued_lines(text) : NULL;
     }
     for (const struct embedded_file *f = embedded_shaders; f->name; f++)
-        if (strcmp(f->name, name) == 0)
-            return strdup(f->text);
+        if (strcmp(f->name, name) == 0) {
+            char *text = strdup(f->text);
+            if (!text)
+                error_set(e, ERROR_RUNTIME, NULL, "cannot read shader %s: out of memory", name);
+            return text ? join_continued_lines(text) : NULL;
+        }
     error_set(e, ERROR_RUNTIME, NULL, "no shader named %s is built in", name);
     return NULL;
+}
+
+void shader_stage_names(char *out, size_t n)
+{
+    size_t used = 0;
+    out[0] = '\0';
+    for (const struct embedded_file *f = embedded_shaders; f->name && used < n; f++) {
+        size_t len = strlen(f->name);
+        if (strncmp(f->name, "stage_", 6) == 0 && len > 11)
+            used += snprintf(out + used, n - used, "%s%.*s", used ? ", " : "", (int)(len - 11), f->name + 6);
+    }
+}
+
+/* The whole source of a shader whose own (last) file is the capture's, its parts joined, to the
+ * target's capture. */
+static void capture_source(const struct shader_target *t, const char *const *files, const char *const *src,
+                           int n_src)
+{
+    /* a stage's own file comes last, after the files whose functions it calls */
+    int last = 0;
+    while (files[last + 1])
+        last++;
+    if (strcmp(files[last], t->capture_file) != 0)
+        return;
+    size_t len = 1;
+    for (int i = 0; i < n_src; i++)
+        len += strlen(src[i]);
+    char *whole = malloc(len);
+    if (!whole)
+        return;
+    whole[0] = '\0';
+    for (int i = 0, used = 0; i < n_src; i++) {
+        size_t part = strlen(src[i]);
+        memcpy(whole + used, src[i], part + 1);
+        used += (int)part;
+    }
+    t->capture(whole, t->capture_arg);
+    free(whole);
 }
 
 static void preamble(const struct shader_target *t, GLenum stage, char *out, size_t n)
@@ -99,7 +166,7 @@ static GLuint compile(const struct shader_target *t, GLenum stage, const char *d
 {
     const char *src[2 * SHADER_MAX_FILES + 2];
     char *texts[SHADER_MAX_FILES] = {0};
-    char lines[SHADER_MAX_FILES][32];
+    char lines[SHADER_MAX_FILES][96];
     char pre[256];
     int n_files = 0, n_src = 0;
     GLuint sh = 0;
@@ -115,10 +182,15 @@ static GLuint compile(const struct shader_target *t, GLenum stage, const char *d
         texts[n_files] = shader_load_text(files[n_files], e);
         if (!texts[n_files])
             goto out;
-        snprintf(lines[n_files], sizeof lines[n_files], "\n#line 1 %d\n", n_files + 1);
+        /* the file's name in a comment, so that a reader of the whole source (bentray info --shader)
+         * knows which file each #line's number stands for */
+        snprintf(lines[n_files], sizeof lines[n_files], "\n// shaders_es/%.48s\n#line 1 %d\n", files[n_files],
+                 n_files + 1);
         src[n_src++] = lines[n_files];
         src[n_src++] = texts[n_files];
     }
+    if (t->capture && stage == GL_FRAGMENT_SHADER)
+        capture_source(t, files, src, n_src);
     sh = glCreateShader(stage);
     glShaderSource(sh, n_src, src, NULL);
     glCompileShader(sh);

@@ -10,6 +10,11 @@ struct shader_target {
     enum shading_dialect dialect;
     int fragment_highp;        /* the fragment stage has highp float */
     int draw_buffers_ext;      /* GLSL ES 1.00 needs #extension GL_EXT_draw_buffers for gl_FragData[1] */
+    /* every fragment shader compiled whose files include capture_file is handed to capture whole, as
+     * the GL compiles it: preamble, defines, each file after its #line (bentray info --shader) */
+    const char *capture_file;
+    void (*capture)(const char *source, void *arg);
+    void *capture_arg;
 };
 
 /* Load shader files from DIR instead of the embedded copies (development); NULL resets. */
@@ -18,6 +23,8 @@ void shader_set_directory(const char *dir);
  * be opened (error_status_of_errno) or is too large is the user's, the rest the machine's. */
 char *shader_load_text(const char *name, struct error *e);
 
+/* The stages of the pipeline, the built-in stage_NAME.glsl files, as "fill, frame, ..." into out. */
+void shader_stage_names(char *out, size_t n);
 /* Compile and link a program. vertex/fragment are NULL-terminated lists of file names,
  * concatenated in order after the preamble; defines is extra preamble text ("#define X 1\n...").
  * The vertex attribute a_corner is bound to location 0. Returns 0 with E filled on failure

@@ -151,6 +151,14 @@ const char *renderer_pipeline(const struct renderer *r) { return r->pipeline_nam
 const char *renderer_pipeline_why(const struct renderer *r) { return r->pipeline_why; }
 
 void renderer_set_hdr(struct renderer *r, int on) { r->hdr = on; }
+
+void renderer_capture_shaders(struct renderer *r, const char *file, void (*sink)(const char *source, void *arg),
+                              void *arg)
+{
+    r->programs.target.capture_file = file;
+    r->programs.target.capture = sink;
+    r->programs.target.capture_arg = arg;
+}
 int renderer_hdr(const struct renderer *r) { return r->hdr; }
 
 void renderer_set_subpixel(struct renderer *r, double dx, double dy)

@@ -97,6 +97,11 @@ const char *renderer_pipeline(const struct renderer *r);
  * runs fragment-shader loops of any length", ...). */
 const char *renderer_pipeline_why(const struct renderer *r);
 void renderer_destroy(struct renderer *r);
+/* From now on every fragment shader this renderer compiles from shader file `file` ("stage_frame.glsl")
+ * goes to sink whole, as the GL compiles it (bentray info --shader). Programs already built are not
+ * compiled again: call it before the first run. */
+void renderer_capture_shaders(struct renderer *r, const char *file, void (*sink)(const char *source, void *arg),
+                              void *arg);
 /* render.method = orbit_table: the orbit table this scene needs now (its mass, the camera's radius,
  * the bounding sphere, the chord tolerance and the objects' distances from the mass). */
 struct orbit_table_params;

@@ -261,6 +261,23 @@ check "galactic center along pole" 2 "galactic_center lies along galactic_pole" 
 check "starflight egl" 0 "76800 sky" -- $BT render --scene assets/scenes/starflight.scene --backend egl --out "$TMP/sf_egl.png"
 check "starflight osmesa" 0 "76800 sky" -- $BT render --scene assets/scenes/starflight.scene --backend osmesa --out "$TMP/sf_osm.png"
 check "starflight backends agree" 0 "outcome differs: 0 of" -- sh -c "$BT render --scene assets/scenes/starflight.scene --size 64x48 --backend egl --out $TMP/a1.png --dump $TMP/a1.dump >/dev/null && $BT render --scene assets/scenes/starflight.scene --size 64x48 --backend osmesa --out $TMP/a2.png --dump $TMP/a2.dump >/dev/null && $BT compare $TMP/a1.dump $TMP/a2.dump"
+# info --shader: the stage's fragment shader as the GL compiles it for the scene, which glslang's
+# GLSL ES 1.00 front end (stricter than Mesa's: no line continuation) compiles too; without MRT, as
+# no draw-buffers extension is known to glslang
+for case in "frame lorenz" "orbit_frame schwarzschild" "integrate lorenz" "intersect three_ships" "orbit neutron_star" \
+            "terminate potential" "sky demo" "setup refraction"; do
+    set -- $case
+    check "info --shader $1 ($2) compiles" 0 "^compiled$" -- sh -c "$BT info --shader $1 --scene assets/scenes/$2.scene \
+        --set render.pipeline=\$( [ $1 = frame ] || [ $1 = orbit_frame ] && echo auto || echo multipass) --no-mrt \
+        > '$TMP/stage.frag' && head -1 '$TMP/stage.frag' | grep -q '^#version 100$' && grep -q 'void main' '$TMP/stage.frag' \
+        && glslangValidator -S frag '$TMP/stage.frag' > '$TMP/glslang.log' && echo compiled || cat '$TMP/glslang.log'"
+done
+check "info --shader unknown stage" 2 "no stage 'integrator' \(stages: fill, frame, integrate, intersect, orbit, orbit_frame," -- \
+    $BT info --shader integrator --scene $S
+check "info --shader a stage not run" 1 "runs no program of stage_integrate.glsl \(single pass" -- \
+    $BT info --shader integrate --scene assets/scenes/lorenz.scene
+check "info --shader without scene" 2 "needs --scene FILE" -- $BT info --shader frame
+check "info scene without shader" 2 "go with --shader STAGE" -- $BT info --scene $S
 # bench: the tiny configuration proves the command and its report work; it times nothing that matters
 mkdir -p "$TMP/bench"
 check "bench quick" 0 "wrote .*BENCH.md" -- $BT bench --out "$TMP/bench" --quick
