@@ -1,6 +1,7 @@
 /* bentray: light on curved paths, traced on the GPU (Weiskopf, Schafhitzel, Ertl 2004). */
 #include "cli/commands.h"
 #include "io/stderr_filter.h"
+#include "io/std_streams.h"
 #include <stdio.h>
 #include <string.h>
 
@@ -33,8 +34,13 @@ static void usage(FILE *out)
 
 int main(int argc, char **argv)
 {
+    std_streams_guard();
     stderr_escape_controls();
     if (argc >= 2 && strcmp(argv[1], "--version") == 0) {
+        if (argc > 2) {
+            fprintf(stderr, "bentray --version: unexpected argument '%s'\n", argv[2]);
+            return EXIT_USAGE;
+        }
         printf("bentray %s\n", BENTRAY_VERSION);
         return EXIT_OK;
     }

@@ -383,12 +383,23 @@ static int animate(const struct common_options *o, const struct animation *a, co
     }
     char path[4200];
     struct error why;
+    char which[SCENE_PATH_LEN + 64];
     for (int k = 0; k < a->frames; k++) {
         frame_path(out->dir, k, a->frames, path, sizeof path);
         if (output_check(path, out->force, &why) != 0) {
             fprintf(stderr, "bentray animate: --out: %s\n", why.message);
             return exit_code_of(&why);
         }
+        if (scene_input_named(base, path, which, sizeof which)) {
+            fprintf(stderr, "bentray animate: --out: frame %s is %s, which the animation reads: name another "
+                            "directory\n", path, which);
+            return EXIT_USAGE;
+        }
+    }
+    if (out->video && scene_input_named(base, out->video, which, sizeof which)) {
+        fprintf(stderr, "bentray animate: --video %s is %s, which the animation reads: name another file\n",
+                out->video, which);
+        return EXIT_USAGE;
     }
     if (out->video && output_check(out->video, out->force, &why) != 0) {
         fprintf(stderr, "bentray animate: --video: %s\n", why.message);
@@ -453,7 +464,7 @@ int cmd_animate(int argc, char **argv)
     static struct animation a;
     memset(&a, 0, sizeof a);
     const char *dir = NULL, *video = NULL;
-    int force = 0, quiet = 0;
+    int force = 0, quiet = 0, fps_given = 0;
     double fps = 24.0;
     /* the command line's own options for render, echoed in each frame's command */
     const char *echo[2 * OPTIONS_MAX_SETS + 64];
@@ -505,6 +516,7 @@ int cmd_animate(int argc, char **argv)
                         ANIMATE_MAX_FPS, v);
                 return EXIT_USAGE;
             }
+            fps_given = 1;
             break;
         case OUT:
             dir = v;
@@ -535,6 +547,26 @@ int cmd_animate(int argc, char **argv)
     if (!a.frames || !dir) {
         fprintf(stderr, "bentray animate: %s is required\n", !a.frames ? "--frames N" : "--out DIR");
         return EXIT_USAGE;
+    }
+    if (fps_given && !video) {
+        fprintf(stderr, "bentray animate: --fps sets the video's frame rate and goes with --video FILE\n");
+        return EXIT_USAGE;
+    }
+    /* one value a key: two ranges, or a range and a --set, of one key would fight */
+    for (int i = 0; i < a.n_ranges; i++) {
+        size_t len = strlen(a.ranges[i].key);
+        for (int j = i + 1; j < a.n_ranges; j++)
+            if (strcmp(a.ranges[i].key, a.ranges[j].key) == 0) {
+                fprintf(stderr, "bentray animate: --set-range %s given twice: give one range a key\n",
+                        a.ranges[i].key);
+                return EXIT_USAGE;
+            }
+        for (int j = 0; j < o.n_sets; j++)
+            if (strncmp(o.sets[j], a.ranges[i].key, len) == 0 && (o.sets[j][len] == '=' || o.sets[j][len] == ' ')) {
+                fprintf(stderr, "bentray animate: --set %s and --set-range %s: the range sets the key in every "
+                                "frame; give one or the other\n", o.sets[j], a.ranges[i].key);
+                return EXIT_USAGE;
+            }
     }
     /* the orbit turns the scene's own camera: a range that moves it too would fight it */
     for (int i = 0; i < a.n_ranges && a.orbit; i++)

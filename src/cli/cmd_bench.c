@@ -54,6 +54,11 @@ static int parse_only(const char *list, int *wanted)
 {
     char buf[256];
     snprintf(buf, sizeof buf, "%s", list);
+    if (strspn(buf, ", ") == strlen(buf)) {
+        fprintf(stderr, "bentray bench: --only: name at least one section (sections: table1, figure5, unrolling, "
+                        "batching, early-z, pareto, pipelines, limit, relativity, antialias, stars, kiosk)\n");
+        return -1;
+    }
     for (char *save = NULL, *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
         int found = 0;
         for (int k = 0; k < N_SECTIONS; k++)
@@ -179,6 +184,14 @@ int cmd_bench(int argc, char **argv)
     }
     if (got < 0)
         return rd.exit_code;
+    int only_given = 0;
+    for (int k = 0; k < N_SECTIONS - 1; k++)
+        only_given |= wanted[k];
+    if (kiosk_only && only_given) {
+        fprintf(stderr, "bentray bench: --kiosk runs the kiosk's section alone, --only names others: give one or the "
+                        "other (--only kiosk,... for several)\n");
+        return EXIT_USAGE;
+    }
     if (!out && !kiosk_only) {
         fprintf(stderr, "bentray bench: --out DIR is required\n");
         usage(stderr);

@@ -1,6 +1,7 @@
 /* bentray render: one scene, headless, to a PNG and optionally a per-pixel dump. */
 #include "cli/commands.h"
 #include "cli/options.h"
+#include "io/std_streams.h"
 #include "io/image_out.h"
 #include "io/output_file.h"
 #include "cli/measure.h"
@@ -198,6 +199,15 @@ static int render_scene(const struct common_options *o, const struct render_job 
             return exit_code_of(&why);
         }
     }
+    /* no input is ever an output: the scene being rendered, its textures and its sky stay as they are */
+    for (int k = 0; k < 2; k++) {
+        char which[SCENE_PATH_LEN + 64];
+        if (outputs[k] && scene_input_named(s, outputs[k], which, sizeof which)) {
+            fprintf(stderr, "bentray render: %s %s is %s, which this render reads: name another file\n",
+                    k ? "--dump" : "--out", outputs[k], which);
+            return EXIT_USAGE;
+        }
+    }
     if (dump_path && !to_stdout && output_same(out_path, dump_path)) {
         fprintf(stderr, "bentray render: --out and --dump name the same file %s: give them different names\n",
                 dump_path);
@@ -285,6 +295,15 @@ int cmd_render(int argc, char **argv)
         return EXIT_USAGE;
     }
     int to_stdout = out_path && strcmp(out_path, "-") == 0;
+    if (dump_path && strcmp(dump_path, "-") == 0) {
+        fprintf(stderr, "bentray render: --dump -: a dump is written to a file (only --out - goes to standard "
+                        "output); name one, e.g. --dump scene.dump\n");
+        return EXIT_USAGE;
+    }
+    if (to_stdout && std_stdout_closed()) {
+        fprintf(stderr, "bentray render: --out -: standard output is closed; nothing rendered\n");
+        return EXIT_RUNTIME;
+    }
     if (to_stdout && isatty(STDOUT_FILENO)) {
         fprintf(stderr, "bentray render: --out -: standard output is a terminal; send the PNG to a file or a pipe "
                         "(bentray render ... --out - > image.png)\n");

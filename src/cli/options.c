@@ -122,6 +122,13 @@ static int reader_build(struct option_reader *r)
     return 0;
 }
 
+/* The options that add a value each time they are given; every other option with a value is given
+ * at most once. */
+static int option_repeats(const char *name)
+{
+    return strcmp(name, "--set") == 0 || strcmp(name, "--set-range") == 0;
+}
+
 static const struct option_spec *spec_of_val(const struct option_reader *r, int val)
 {
     return val >= SPEC_VAL && val < SPEC_VAL + r->n_specs ? r->specs[val - SPEC_VAL] : NULL;
@@ -222,6 +229,15 @@ int option_read(struct option_reader *r, const struct option_spec **spec, const 
             fprintf(stderr, "bentray %s: option %s needs a value (%s), not the option '%s'\n", r->cmd, sp->name,
                     sp->value, optarg);
             return read_fails(r, EXIT_USAGE);
+        }
+        if (sp->value && !option_repeats(sp->name)) {
+            int k = c - SPEC_VAL;
+            if (r->given[k]) {
+                fprintf(stderr, "bentray %s: option %s given twice ('%s', then '%s'): give it once\n", r->cmd,
+                        sp->name, r->given[k], optarg);
+                return read_fails(r, EXIT_USAGE);
+            }
+            r->given[k] = optarg;
         }
         *spec = sp;
         *value = sp->value ? optarg : NULL;

@@ -87,6 +87,7 @@ struct option_reader {
     int n_specs;
     const struct option_spec *specs[OPTIONS_MAX_SPECS];
     struct option long_options[OPTIONS_MAX_SPECS + 2];    /* the specs, --help, the end */
+    const char *given[OPTIONS_MAX_SPECS];                 /* each valued option's value, once given */
 };
 
 /* The next option, looked up in own and then in common: 1 with its spec and *value (the argument
@@ -101,7 +102,8 @@ struct option_reader {
  * (--rtol -1, --pixel -1 5), but not with "--" unless joined with '='. --help and -h print the
  * usage on stdout (-1, EXIT_OK). With r->arguments, an argument that is not an option comes back
  * as OPT_ARGUMENT with itself as the value ("-" alone is an argument: standard output). "--" and
- * an argument with one '-' but "-h" and "-" are unknown options. getopt_long's state is the
+ * an argument with one '-' but "-h" and "-" are unknown options. An option with a value given twice is
+ * refused, naming both values (--set and --set-range add one each time; a flag may be repeated). getopt_long's state is the
  * process's: one reader is read at a time, and each starts it afresh on its first call. */
 int option_read(struct option_reader *r, const struct option_spec **spec, const char **value);
 

@@ -1,5 +1,8 @@
 #include "gl/shader.h"
 #include <errno.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,10 +21,26 @@ void shader_set_directory(const char *dir) { shader_dir = dir; }
  * large is the user's, no memory for it the machine's. */
 static char *read_file(const char *path, struct error *e)
 {
-    FILE *f = fopen(path, "rb");
+    /* never waits: a FIFO or a device there is refused, not read */
+    int fd = open(path, O_RDONLY | O_NONBLOCK);
+    struct stat st;
+    if (fd < 0 || fstat(fd, &st) != 0) {
+        int errnum = errno;
+        if (fd >= 0)
+            close(fd);
+        error_set(e, error_status_of_errno(errnum), NULL, "cannot read shader %s: %s", path, strerror(errnum));
+        return NULL;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        close(fd);
+        error_set(e, ERROR_INPUT, NULL, "cannot read shader %s: not a regular file", path);
+        return NULL;
+    }
+    FILE *f = fdopen(fd, "rb");
     if (!f) {
         int errnum = errno;
-        error_set(e, error_status_of_errno(errnum), NULL, "cannot read shader %s: %s", path, strerror(errnum));
+        close(fd);
+        error_set(e, ERROR_RUNTIME, NULL, "cannot read shader %s: %s", path, strerror(errnum));
         return NULL;
     }
     char *buf = malloc(SHADER_MAX_BYTES + 1);
@@ -31,7 +50,13 @@ static char *read_file(const char *path, struct error *e)
         return NULL;
     }
     size_t n = fread(buf, 1, SHADER_MAX_BYTES + 1, f);
+    int failed = ferror(f);
     fclose(f);
+    if (failed) {
+        error_set(e, ERROR_INPUT, NULL, "cannot read shader %s: a read failed", path);
+        free(buf);
+        return NULL;
+    }
     if (n > SHADER_MAX_BYTES) {
         error_set(e, ERROR_INPUT, NULL, "shader %s is larger than %d bytes", path, SHADER_MAX_BYTES);
         free(buf);

@@ -156,13 +156,22 @@ int output_same(const char *a, const char *b)
 static int open_temp(const char *path, char *tmp, size_t tmplen)
 {
     static unsigned counter;
+    /* NAME.tmp-PID-N beside the file; where that name is longer than the file system allows (a
+     * file's own name of 240 bytes or more), a short one in the same directory */
+    const char *slash = strrchr(path, '/');
+    int dir_len = slash ? (int)(slash - path + 1) : 0, short_name = 0;
     for (int attempt = 0; attempt < 100; attempt++) {
-        int n = snprintf(tmp, tmplen, "%s.tmp-%ld-%u", path, (long)getpid(), counter++);
+        int n = short_name ? snprintf(tmp, tmplen, "%.*s.bentray-%ld-%u.tmp", dir_len, path, (long)getpid(), counter++)
+                           : snprintf(tmp, tmplen, "%s.tmp-%ld-%u", path, (long)getpid(), counter++);
         if (n < 0 || (size_t)n >= tmplen) {
             errno = ENAMETOOLONG;
             return -1;
         }
         int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd < 0 && errno == ENAMETOOLONG && !short_name) {
+            short_name = 1;
+            continue;
+        }
         if (fd >= 0 || errno != EEXIST)
             return fd;
     }

@@ -7,6 +7,7 @@
 #include <string.h>
 #include "kiosk_config/kiosk_config.h"
 #include "kiosk_config/kiosk_config_keys.h"
+#include "io/output_file.h"
 #include "scene/scene.h"
 
 #define NO_BIT (-1)
@@ -359,10 +360,33 @@ static int check_input(const struct kiosk_config *c, struct error *err, int i)
     return 0;
 }
 
+/* The log is appended to: a file the kiosk reads (this configuration, a scene, the tour, the font)
+ * would take its lines and fail the next start. */
+static int check_log(const struct kiosk_config *c, struct error *err)
+{
+    const struct kiosk_main *k = &c->kiosk;
+    if (!k->log[0] || strcmp(k->log, "stderr") == 0)
+        return 0;
+    const char *what = NULL, *file = NULL;
+    if (c->path[0] && output_same(k->log, c->path))
+        what = "this configuration", file = c->path;
+    for (int i = 0; i < k->n_scenes && !what; i++)
+        if (output_same(k->log, k->scenes[i]))
+            what = "a scene of the list", file = k->scenes[i];
+    if (!what && c->attract.script[0] && output_same(k->log, c->attract.script))
+        what = "the attract tour", file = c->attract.script;
+    if (!what && k->font[0] && output_same(k->log, k->font))
+        what = "the HUD's font", file = k->font;
+    if (!what)
+        return 0;
+    return bad_key(c, err, KSEC_KIOSK, 0, "log", ": %s is %s (%s), which the kiosk reads: log lines would be "
+                   "appended to it; name a file of its own, or stderr (the journal)", k->log, what, file);
+}
+
 int kiosk_config_check(const struct kiosk_config *c, struct error *err)
 {
     memset(err, 0, sizeof *err);
-    if (check_kiosk(c, err) != 0 || check_display(c, err) != 0)
+    if (check_kiosk(c, err) != 0 || check_log(c, err) != 0 || check_display(c, err) != 0)
         return -1;
     for (int i = 0; i < c->n_inputs; i++)
         if (check_input(c, err, i) != 0)

@@ -315,6 +315,9 @@ double scene_shadow_diameter_deg(const struct scene *s);
 /* The largest mass whose shadow, seen from the camera of s, spans at most `diameter_deg`, rounded
  * down to three significant digits (as messages print it). */
 double scene_mass_for_shadow(const struct scene *s, double diameter_deg);
+/* 1 when path names one of the files the scene is read from (its file, a texture, a cube face: by
+ * name or as the same file through links), with which one in words; 0 otherwise ("-" included). */
+int scene_input_named(const struct scene *s, const char *path, char *which, size_t len);
 /* Cross-field checks after all overrides (e.g. camera not inside the horizon). */
 int scene_validate(const struct scene *s, struct error *err);
 

@@ -307,6 +307,7 @@ check "bench bad runs" 2 "--runs: expected an integer from 1 to 63" -- $BT bench
 mkdir -p "$TMP/bench_refused/bench/table1.csv"
 check "bench section's status" 2 "^bentray bench: table1: cannot write .*bench_refused/bench/table1.csv" -- $BT bench --out "$TMP/bench_refused" --quick --only table1
 . tests/render/kiosk.sh
+. tests/render/reliability.sh
 check "kiosk install" 0 "^install checks: 0 failed$" -- sh -c "sh tests/render/install_check.sh | grep -v '^ok '"
 # the limits before allocation and the GL fault paths (BT_FAULT), in a script of their own
 BT=$BT tests/render/limits.sh || fails=$((fails + 1))

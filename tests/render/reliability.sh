@@ -1,0 +1,44 @@
+# Sourced by run_all.sh: the hostile trial's cases, each failing before its fix. No input is an
+# output, a repeated or conflicting option is refused naming both, standard output closed is an
+# error, no reader waits on a FIFO, and a legal long file name is written.
+R=$TMP/reliability
+mkdir -p "$R"
+# the scene, its textures and its sky are never written over, whatever --out, --dump or --force say
+sed 's|\.\./|'"$(pwd)"'/assets/|g' assets/scenes/test.scene > "$R/own.scene"
+cp "$R/own.scene" "$R/own.before"
+check "render: --dump is the scene" 2 "--dump .*own.scene is the scene file .*, which this render reads" -- \
+    $BT render --scene "$R/own.scene" --dump "$R/own.scene" --force --out "$R/own.png"
+check "render: the scene is kept" 0 "^kept$" -- sh -c "cmp -s '$R/own.scene' '$R/own.before' && echo kept"
+# (a sky of its own: a failing run must not write over the project's)
+cp assets/sky/grid_*.png "$R/"
+sed 's|^cubemap = .*|cubemap = '"$R"'/grid|; s|\.\./|'"$(pwd)"'/assets/|g' assets/scenes/schwarzschild.scene > "$R/sky.scene"
+check "render: --out is a cube face" 2 "--out .*grid_px.png is the sky's cube face" -- \
+    $BT render --scene "$R/sky.scene" --out "$R/grid_px.png" --force
+ln -s "$R/own.scene" "$R/link.dump"
+check "render: --dump through a link to the scene" 2 "is the scene file" -- \
+    $BT render --scene "$R/own.scene" --dump "$R/link.dump" --force --out "$R/own.png"
+sed 's|^log = stderr|log = '"$R"'/kiosk.conf|; s|\.\./assets|'"$(pwd)"'/assets|g' kiosk/kiosk.conf > "$R/kiosk.conf"
+check "kiosk: log is its configuration" 2 "kiosk.conf:[0-9]+: key 'log' in \[kiosk\]: .* is this configuration" -- \
+    timeout 60 $BT kiosk --config "$R/kiosk.conf" --display headless --frames 1 --out "$R/kf"
+# options given twice, or against each other
+check "option given twice" 2 "option --scene given twice \('a.scene', then 'b.scene'\)" -- $BT render --scene a.scene --scene b.scene
+check "--out given twice" 2 "option --out given twice" -- $BT render --scene $S --out a.png --out b.png
+check "--version with an argument" 2 "unexpected argument 'extra'" -- $BT --version extra
+check "animate --fps without --video" 2 "--fps sets the video's frame rate and goes with --video" -- \
+    $BT animate --scene $S --frames 2 --out "$R/an" --fps 10
+check "animate --set and --set-range of one key" 2 "--set model.mass=1 and --set-range model.mass" -- \
+    $BT animate --scene assets/scenes/demo.scene --frames 2 --out "$R/an" --set-range model.mass=0:1 --set model.mass=1
+check "animate two ranges of one key" 2 "--set-range model.mass given twice" -- \
+    $BT animate --scene assets/scenes/demo.scene --frames 2 --out "$R/an" --set-range model.mass=0:1 --set-range model.mass=1:2
+check "bench --kiosk with --only" 2 "--kiosk runs the kiosk's section alone" -- $BT bench --kiosk --only table1
+check "bench --only nothing" 2 "--only: name at least one section" -- $BT bench --out "$R" --only ''
+# standard output closed: an error, not a PNG in stderr's file
+check "render --out - with standard output closed" 1 "standard output is closed" -- sh -c "$BT render --scene $S --size 16x12 --out - >&-"
+check "render --dump -" 2 "--dump -: a dump is written to a file" -- $BT render --scene $S --dump - --out "$R/d.png"
+# a FIFO or a directory where a shader file should be: refused at once, never waited on
+mkdir -p "$R/shaders" && cp shaders_es/*.glsl "$R/shaders/" && rm "$R/shaders/common.glsl" && mkfifo "$R/shaders/common.glsl"
+check "--shader-dir with a FIFO" 2 "cannot read shader .*common.glsl: not a regular file" -- \
+    timeout 60 $BT render --scene $S --size 16x12 --shader-dir "$R/shaders" --out "$R/fifo.png"
+# a file name of 250 bytes is legal; its temporary's name is not what decides
+long=$(printf 'n%.0s' $(seq 1 246))
+check "a 250-byte file name" 0 "^written$" -- sh -c "$BT render --scene $S --size 16x12 --out '$R/$long.png' --quiet >/dev/null && test -s '$R/$long.png' && echo written"
