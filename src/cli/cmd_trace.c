@@ -161,8 +161,13 @@ static int trace_cpu(const struct common_options *o, const struct scene *s, long
     double segment_length = s->render.steps_per_segment * s->render.step_size;
     ref_trace(s, &opt.ref, x0, v0, &ray, segment_length, record_sample, pl);
     struct dump_record rec;
-    unsigned char no_colour[4] = {0, 0, 0, 0};
-    ref_ray_to_record(&ray, no_colour, &rec);
+    unsigned char colour[4];
+    struct error e;
+    if (ref_pixel_colour(s, &ray, (int)px, (int)py, colour, &e) != 0) {
+        fprintf(stderr, "bentray trace: %s%s%s\n", e.where, e.where[0] ? ": " : "", e.message);
+        return exit_code_of(&e);
+    }
+    ref_ray_to_record(&ray, colour, &rec);
     char engine[40];
     snprintf(engine, sizeof engine, "cpu dopri5 rtol %.0e", opt.ref.rtol);
     print_json(s, px, py, engine, &rec, pl);

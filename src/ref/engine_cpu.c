@@ -66,6 +66,20 @@ static void trace_at(struct job *job, int i, int j, double dx, double dy, struct
     cpu_shade_color(job->materials, ray, camera_view_direction_at(s, i, j, dx, dy), color);
 }
 
+int ref_pixel_colour(const struct scene *s, const struct ref_ray *ray, int i, int j, unsigned char rgba[4],
+                     struct error *e)
+{
+    struct cpu_materials materials;
+    if (cpu_materials_load(&materials, s, e) != 0)
+        return -1;
+    double color[4];
+    cpu_shade_color(&materials, ray, camera_view_direction_at(s, i, j, 0.0, 0.0), color);
+    for (int c = 0; c < 4; c++)
+        rgba[c] = unorm8(color[c]);
+    cpu_materials_free(&materials);
+    return 0;
+}
+
 /* A sample into the pixel's average as the GPU's images are summed (io/sample_average.c): its 8-bit
  * codes, or with a float image its colour itself. */
 static void add_sample(struct pixel_average *p, const double color[4], int hdr)

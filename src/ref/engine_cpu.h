@@ -32,5 +32,10 @@ int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct
 void cpu_image_free(struct cpu_image *img);
 /* The dump record of one traced ray with its colour. */
 void ref_ray_to_record(const struct ref_ray *ray, const unsigned char rgba[4], struct dump_record *rec);
+/* The 8-bit colour of pixel (i, j) for a ray traced through its centre, as the CPU image writes it
+ * with one sample and before the point stars of [sky] stars are added (results/star_light.h needs
+ * the whole image). 0, or -1 with e (a texture that cannot be read). */
+int ref_pixel_colour(const struct scene *s, const struct ref_ray *ray, int i, int j, unsigned char rgba[4],
+                     struct error *e);
 
 #endif

@@ -236,6 +236,9 @@ check "compare damaged header" 2 "unsupported dump \(version 2, 8192x8192.*at mo
 check "compare not a dump" 2 "not a bentray dump" -- $BT compare "$TMP/cpu.png" "$TMP/cpu.dump"
 check "error table" 0 "time: gpu .*cpu dopri5" -- $BT error --scene assets/scenes/schwarzschild.scene --size 24x18
 check "trace cpu" 0 "\"engine\": \"cpu dopri5" -- $BT trace --scene $S --size 32x24 --pixel 16 12 --engine cpu
+# the CPU trace's colour is the pixel's as the CPU image writes it (it was always black)
+check "trace cpu colour is the pixel's" 0 "^\[173, 173, 173\] \[173, 173, 173\]$" -- sh -c "for e in cpu gpu; do $BT trace \
+    --scene assets/scenes/schwarzschild.scene --pixel 100 200 --engine \$e | sed -n 's/.*\"color\": \(.*\),/\1/p'; done | tr '\n' ' ' | sed 's/ \$//'"
 check "cpu with gpu option" 2 "--precision applies to the GPU engine" -- $BT render --scene $S --engine cpu --precision fp16 --out "$TMP/h.png"
 check "rtol without cpu" 2 "--rtol applies to the CPU engine" -- $BT render --scene $S --rtol 1e-8 --out "$TMP/h.png"
 check "bad rtol" 2 "--rtol: expected" -- $BT render --scene $S --engine cpu --rtol 0 --out "$TMP/h.png"
