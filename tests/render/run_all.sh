@@ -309,6 +309,14 @@ check "bench bad runs" 2 "--runs: expected an integer from 1 to 63" -- $BT bench
 # a section that fails ends the bench with its error's status: a data file the system refuses is 2
 mkdir -p "$TMP/bench_refused/bench/table1.csv"
 check "bench section's status" 2 "^bentray bench: table1: cannot write .*bench_refused/bench/table1.csv" -- $BT bench --out "$TMP/bench_refused" --quick --only table1
+# docs/SCENES.md's example scene, as a teacher copies it next to the shipped assets, renders with every
+# ray finished on both back-ends
+mkdir -p "$TMP/example/scenes" && ln -s "$(pwd)/assets/sky" "$TMP/example/sky" && ln -s "$(pwd)/assets/textures" "$TMP/example/textures"
+awk '/^## Example/{f=1} f&&/^```ini/{g=1;next} g&&/^```/{exit} g' docs/SCENES.md > "$TMP/example/scenes/ring.scene"
+for b in egl osmesa; do
+    check "SCENES.md's example ($b)" 0 "^rays: [1-9][0-9]* hit an object, [0-9]+ sky, [0-9]+ captured, 0 unfinished, 0 failed$" -- \
+        $BT render --scene "$TMP/example/scenes/ring.scene" --size 64x48 --backend $b --out "$TMP/example/ring_$b.png"
+done
 . tests/render/kiosk.sh
 . tests/render/reliability.sh
 check "kiosk install" 0 "^install checks: 0 failed$" -- sh -c "sh tests/render/install_check.sh | grep -v '^ok '"
