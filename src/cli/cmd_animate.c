@@ -3,6 +3,7 @@
  * is installed). Every frame is `bentray render` of the scene with the --set values printed for
  * it, byte for byte: each frame's values are set as the same text. */
 #include <errno.h>
+#include <signal.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -278,7 +279,8 @@ static int video_kind(const char *path)
     return strcmp(dot, ".webm") == 0 ? 0 : strcmp(dot, ".mp4") == 0 ? 1 : strcmp(dot, ".gif") == 0 ? 2 : -1;
 }
 
-/* ffmpeg's arguments for the video, into argv (NULL-terminated). */
+/* ffmpeg's arguments for the video, into argv (NULL-terminated); fps_text (32 bytes) holds the frame
+ * rate and, from its 17th byte, the frame count. */
 static void ffmpeg_args(const char *dir, int frames, double fps, const char *video, char *fps_text, char *pattern,
                         const char **argv)
 {
@@ -289,8 +291,17 @@ static void ffmpeg_args(const char *dir, int frames, double fps, const char *vid
     };
     int kind = video_kind(video), n = 0;
     snprintf(fps_text, 32, "%g", fps);
-    snprintf(pattern, 4200, "%s/frame_%%0%dd.png", dir, frames >= 10000 ? 5 : 4);
+    /* the directory's own '%' written as ffmpeg's pattern reads it, "%%" */
+    size_t used = 0;
+    for (const char *c = dir; *c && used + 3 < 4200 - 32; c++) {
+        if (*c == '%')
+            pattern[used++] = '%';
+        pattern[used++] = *c;
+    }
+    snprintf(pattern + used, 4200 - used, "/frame_%%0%dd.png", frames >= 10000 ? 5 : 4);
+    snprintf(fps_text + 16, 16, "%d", frames);
     argv[n++] = "ffmpeg";
+    argv[n++] = "-nostdin";           /* the caller's standard input is not ffmpeg's to read */
     argv[n++] = "-loglevel";
     argv[n++] = "error";
     argv[n++] = "-y";
@@ -298,6 +309,8 @@ static void ffmpeg_args(const char *dir, int frames, double fps, const char *vid
     argv[n++] = fps_text;
     argv[n++] = "-i";
     argv[n++] = pattern;
+    argv[n++] = "-frames:v";          /* this run's frames only, not those an earlier run left after them */
+    argv[n++] = fps_text + 16;
     for (int i = 0; i < 6 && codec[kind][i]; i++)
         argv[n++] = codec[kind][i];
     argv[n++] = video;
@@ -313,6 +326,19 @@ static void print_ffmpeg(FILE *f, const char *const *argv)
     }
 }
 
+/* While ffmpeg runs: a signal that ends bentray stops it and removes its temporary first. */
+static volatile pid_t video_child;
+static char video_tmp[4200];
+
+static void stop_video(int sig)
+{
+    if (video_child > 0)
+        kill(video_child, SIGTERM);
+    unlink(video_tmp);
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
 /* ffmpeg writes the video to a temporary beside it, moved into place when complete. */
 static int make_video(const char *dir, int frames, double fps, const char *video, int force)
 {
@@ -321,9 +347,21 @@ static int make_video(const char *dir, int frames, double fps, const char *video
     const char *dot = strrchr(video, '.');
     snprintf(tmp, sizeof tmp, "%.*s.tmp-%ld%s", (int)(dot - video), video, (long)getpid(), dot);
     ffmpeg_args(dir, frames, fps, tmp, fps_text, pattern, argv);
+    snprintf(video_tmp, sizeof video_tmp, "%s", tmp);
+    static const int stops[] = {SIGINT, SIGTERM, SIGHUP};
+    struct sigaction sa, previous[3];
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = stop_video;
+    sigemptyset(&sa.sa_mask);
+    for (int i = 0; i < 3; i++)
+        sigaction(stops[i], &sa, &previous[i]);
     pid_t pid = fork();
+    if (pid > 0)
+        video_child = pid;
     if (pid < 0) {
         fprintf(stderr, "bentray animate: --video: cannot start ffmpeg: %s\n", strerror(errno));
+        for (int i = 0; i < 3; i++)
+            sigaction(stops[i], &previous[i], NULL);
         return EXIT_RUNTIME;
     }
     if (pid == 0) {
@@ -333,6 +371,9 @@ static int make_video(const char *dir, int frames, double fps, const char *video
     int status = 0;
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
         ;
+    video_child = 0;
+    for (int i = 0; i < 3; i++)
+        sigaction(stops[i], &previous[i], NULL);
     struct error fe;
     error_clear(&fe);
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
@@ -450,7 +491,18 @@ static int animate(const struct common_options *o, const struct animation *a, co
         }
         fflush(stdout);
     }
-    if (out->video) {
+    if (out->video && rc == EXIT_OK && !have_ffmpeg()) {
+        /* the frames are made: the video is one command away, once ffmpeg is there */
+        fprintf(stderr, "bentray animate: --video: ffmpeg is not installed (Debian: apt-get install ffmpeg); the "
+                        "frames are in %s, and this makes the video from them:\n  ", out->dir);
+        char fps_text[32], pattern[4200];
+        const char *args[24];
+        ffmpeg_args(out->dir, a->frames, out->fps, out->video, fps_text, pattern, args);
+        print_ffmpeg(stderr, args);
+        fprintf(stderr, "\n");
+        return EXIT_RUNTIME;
+    }
+    if (out->video && rc == EXIT_OK) {
         rc = make_video(out->dir, a->frames, out->fps, out->video, out->force);
         if (rc == EXIT_OK && !out->quiet)
             printf("video: %s (%d frames at %g per second)\n", out->video, a->frames, out->fps);
@@ -578,16 +630,6 @@ int cmd_animate(int argc, char **argv)
     if (video && video_kind(video) < 0) {
         fprintf(stderr, "bentray animate: --video %s: give the file the extension .webm, .mp4 or .gif\n", video);
         return EXIT_USAGE;
-    }
-    if (video && !have_ffmpeg()) {
-        fprintf(stderr, "bentray animate: --video: ffmpeg is not installed (Debian: apt-get install ffmpeg); "
-                        "without --video the frames are written, and ffmpeg can make the video later:\n  ");
-        char fps_text[32], pattern[4200];
-        const char *args[24];
-        ffmpeg_args(dir, a.frames, fps, video, fps_text, pattern, args);
-        print_ffmpeg(stderr, args);
-        fprintf(stderr, "\n");
-        return EXIT_RUNTIME;
     }
     struct animate_out out = {dir, video, force, quiet, fps, echo, n_echo};
     struct scene *base = options_scene_new("animate"), *s = base ? options_scene_new("animate") : NULL;

@@ -89,9 +89,16 @@ check "animate orbit and camera range" 2 "--orbit and --set-range camera.positio
 check "animate orbit" 2 "--orbit: expected degrees" -- $BT animate --scene $S --frames 2 --orbit left --out "$TMP/a0"
 check "animate out is a file" 2 "--out $TMP/p1.png: not a directory" -- $BT animate --scene $S --frames 2 --out "$TMP/p1.png"
 check "animate video extension" 2 "--video $TMP/v.avi: give the file the extension .webm, .mp4 or .gif" -- $BT animate --scene $S --frames 2 --out "$TMP/a0" --video "$TMP/v.avi"
-check "animate video without ffmpeg" 1 "ffmpeg is not installed \(Debian: apt-get install ffmpeg\)" -- env PATH=/nonexistent $BT animate --scene $S --frames 2 --out "$TMP/a0" --video "$TMP/v.gif"
+# without ffmpeg the frames are made, and the command that makes the video from them is printed
+check "animate video without ffmpeg" 1 "ffmpeg is not installed \(Debian: apt-get install ffmpeg\); the frames are in .*/a0n, and this makes the video from them:" -- env PATH=/nonexistent $BT animate --scene $S --frames 2 --size 16x12 --out "$TMP/a0n" --video "$TMP/v.gif"
+check "animate video without ffmpeg: the frames" 0 "^2 frames$" -- sh -c "echo \$(ls '$TMP/a0n' | grep -c '^frame_.*png\$') frames"
 if command -v ffmpeg > /dev/null; then
     check "animate video" 0 "^video: $TMP/v.gif \(4 frames at 12 per second\)" -- $BT animate --scene $S --frames 4 --size 32x24 --orbit 360 --fps 12 --out "$TMP/a4" --video "$TMP/v.gif"
+    # only this run's frames, though an earlier run left more; the caller's input is left alone; a '%'
+    # in the directory's name
+    mkdir -p "$TMP/a%d"
+    $BT animate --scene $S --frames 7 --size 16x12 --out "$TMP/a%d" --quiet > /dev/null
+    check "animate video: this run's frames only" 0 "^frames 2, lines 3$" -- sh -c "printf 'a\nb\nc\n' | { $BT animate --scene $S --frames 2 --size 16x12 --out '$TMP/a%d' --force --quiet --video '$TMP/two.webm' > /dev/null; echo frames \$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 '$TMP/two.webm'), lines \$(wc -l); }"
 else
     echo "skip animate video: ffmpeg is not installed"
 fi
