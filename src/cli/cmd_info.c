@@ -31,6 +31,8 @@ static void print_caps(const struct gl_caps *c)
     printf("GLSL version:    %s\n", c->glsl_version);
     printf("renderer:        %s (%s)\n", c->renderer, c->vendor);
     printf("fragment highp:  %s (%d mantissa bits)\n", c->fragment_highp ? "yes" : "no", c->fragment_highp_bits);
+    printf("arithmetic:      %s%s\n", c->fragment_fp32 ? "32-bit floats (probed)" : "no 32-bit floats: ",
+           c->fragment_fp32 ? "" : c->fragment_fp32_why);
     printf("max texture:     %d\n", c->max_texture_size);
     printf("float render targets (written, sampled and read back):\n");
     for (int i = 0; i < c->n_formats; i++)

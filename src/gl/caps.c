@@ -236,6 +236,50 @@ static void probe_mrt(struct gl_caps *c, const struct float_format *f)
     }
 }
 
+/* A product that 32-bit floats get right and 16-bit ones do not, drawn with the precision the
+ * renderer's shaders declare into an RGBA8 target and read back (probe_fragment.glsl). */
+static void probe_arithmetic(struct gl_caps *c)
+{
+    static const char *const vs[] = {"quad_vertex.glsl", NULL};
+    static const char *const fs[] = {"probe_fragment.glsl", NULL};
+    struct error err;
+    GLuint prog = shader_program_build(&c->shader, "#define PROBE_ARITHMETIC 1\n", vs, fs, &err);
+    if (!prog) {
+        snprintf(c->fragment_fp32_why, sizeof c->fragment_fp32_why, "the arithmetic probe does not compile");
+        return;
+    }
+    GLuint tex, fbo;
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, PROBE_SIZE, PROBE_SIZE, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+    unsigned char got[4] = {0, 0, 0, 0};
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) {
+        const float one_plus = 1.0f + 1.0f / 4096.0f, v[4] = {one_plus, one_plus, 1024.0f, 0.0f};
+        glViewport(0, 0, PROBE_SIZE, PROBE_SIZE);
+        set_probe(prog, v, 0);
+        quad_draw(prog, 0.0f);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, got);
+    }
+    /* 0.5005 is 128 of 255; fp16 gives 0 */
+    c->fragment_fp32 = got[0] >= 120 && got[0] <= 136 && !gl_fault("fp16_alu");
+    if (!c->fragment_fp32)
+        snprintf(c->fragment_fp32_why, sizeof c->fragment_fp32_why, "(1 + 2^-12)^2 - 1 came out as %.4f x 2^-10, "
+                 "not 0.5005 x 2^-10: the fragment shaders compute in 16-bit floats or less%s",
+                 got[0] / 255.0, gl_fault("fp16_alu") ? " (BT_FAULT=fp16_alu)" : "");
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteTextures(1, &tex);
+    glDeleteProgram(prog);
+    while (glGetError() != GL_NO_ERROR) {
+    }
+}
+
 /* Samples that pass the depth test of one draw of the quad at depth 0.5 (NDC z 0) over a depth
  * buffer cleared to `depth`, counted by an occlusion query of the context's kind. */
 static GLuint query_draw(const struct gl_caps *c, GLuint prog, GLuint query, float depth)
@@ -400,6 +444,8 @@ int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, struct error 
         c->max_texture_units = 8;                                               /* the GLES2 minimum */
     GLint range[2] = {0, 0}, precision = 0;
     glGetShaderPrecisionFormat(GL_FRAGMENT_SHADER, GL_HIGH_FLOAT, range, &precision);
+    if (gl_fault("no_highp"))
+        precision = 0;                 /* a GPU that reports no highp: the shaders declare mediump */
     c->fragment_highp_bits = precision;
     c->fragment_highp = precision > 0;
     while (glGetError() != GL_NO_ERROR) {
@@ -418,6 +464,7 @@ int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, struct error 
         probe_format(&c->formats[i], prog);
     probe_query(c, prog);
     probe_blit(c);
+    probe_arithmetic(c);
     glDeleteProgram(prog);
     const struct float_format *best = caps_format(c, 1);
     probe_mrt(c, best ? best : caps_format(c, 0));

@@ -23,6 +23,10 @@ struct gl_caps {
     char platform_version[64];
     int is_es, major, minor;
     int fragment_highp, fragment_highp_bits;
+    /* the probe's arithmetic came out as 32-bit floats compute it (lima reports highp and computes
+     * in fp16; a GPU without highp computes bentray's mediump shaders in fp16 or less) */
+    int fragment_fp32;
+    char fragment_fp32_why[160];
     int max_texture_size, max_draw_buffers;
     int max_fragment_uniform_vectors, max_texture_units;
     int mrt_works;
@@ -57,7 +61,10 @@ int gl_has_extension(const char *name);
  *   half_fbo_incomplete  the same for 16-bit float attachments
  *   mrt_fbo_incomplete   ray-state framebuffers with two colour targets (MRT) are incomplete
  *   framebuffer_blit     the probe finds glBlitFramebuffer missing (the kiosk draws its canvas)
- *   hud_whole            the kiosk blends its whole HUD, not only the rows with something on them */
+ *   hud_whole            the kiosk blends its whole HUD, not only the rows with something on them
+ *   no_highp             the GPU reports no highp float in fragment shaders: they declare mediump,
+ *                        which llvmpipe then really computes in 16-bit floats
+ *   fp16_alu             the arithmetic probe finds 16-bit floats although highp is reported (lima) */
 int gl_fault(const char *name);
 /* "GL_FRAMEBUFFER_UNSUPPORTED" and the like, for messages. */
 const char *gl_framebuffer_status_name(GLenum status);

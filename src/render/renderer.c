@@ -79,6 +79,15 @@ static int renderer_open(struct renderer *r, const struct gl_context *ctx, const
         quad_release();              /* the probe takes its share of the pass quad even when it fails */
         return -1;
     }
+    if (!r->caps.fragment_fp32) {
+        /* a picture computed in 16-bit floats is a wrong one: potential's rays never finish, a black
+         * hole's shadow comes out at the wrong size (docs/LIMITS.md) */
+        error_set(e, ERROR_RUNTIME, NULL, "this GPU (%s) does not compute its fragment shaders in 32-bit floats: %s; "
+                  "bentray's rays need them, so it draws nothing rather than a wrong picture", r->caps.renderer,
+                  r->caps.fragment_fp32_why);
+        quad_release();
+        return -1;
+    }
     if (render_path_choose(&r->caps, scene->render.precision, scene->render.mrt, &r->path, e) != 0) {
         /* a forced path that this GPU lacks is the user's request; no path at all is the machine's */
         e->status = scene->render.precision != PRECISION_AUTO || scene->render.mrt == MRT_ON ? ERROR_INPUT

@@ -111,5 +111,13 @@ check "float format does not render" 0 "fp16\+mrt: RGBA16F ray state" -- \
 check "float fault in info" 0 "RGBA32F +no: not a render target \(BT_FAULT=float_render\)" -- env BT_FAULT=float_render $BT info --backend egl
 check "no float format renders" 1 "no renderable float format for the ray state" -- \
     env BT_FAULT=float_render,half_float_render $BT render --scene $S --size 32x24 --out "$TMP/k.png"
+# a GPU whose fragment shaders compute in 16-bit floats draws no picture rather than a wrong one:
+# the probe finds it out by arithmetic, whatever precision the GPU reports
+for fault in no_highp fp16_alu; do
+    check "fragment arithmetic in fp16 refused ($fault)" 1 "does not compute its fragment shaders in 32-bit floats: \(1 \+ 2\^-12\)\^2 - 1 came out as .*; bentray's rays need them, so it draws nothing rather than a wrong picture" -- \
+        env BT_FAULT=$fault $BT render --scene assets/scenes/potential.scene --size 32x24 --out "$TMP/fp16_$fault.png"
+done
+check "fp16 arithmetic in info" 0 "^arithmetic: +no 32-bit floats: \(1 \+ 2\^-12\)\^2 - 1 came out as 0.0000 x 2\^-10" -- env BT_FAULT=no_highp $BT info --backend egl
+check "fp32 arithmetic in info" 0 "^arithmetic: +32-bit floats \(probed\)" -- $BT info --backend osmesa
 echo "limit and fault tests: $fails failed"
 [ "$fails" = 0 ]
