@@ -3,6 +3,7 @@
 #include "cli/options.h"
 #include "input/keymap.h"
 #include "kiosk/kiosk_loop.h"
+#include "kiosk_config/kiosk_config_keys.h"
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,6 +29,49 @@ static void usage(FILE *out)
             "%s"
             "exit codes: 0 stopped, 1 failure while running, 2 bad configuration or option\n",
             KIOSK_DEFAULT_CONFIG, keymap_help);
+}
+
+/* One configuration travels from the laptop to the exhibit: --display takes another screen than the
+ * file's, whose keys for its own screen (a KMS connector, vsync, headless_out) are set aside with a
+ * note instead of refused. */
+static void note_aside(char *list, size_t len, const char *name)
+{
+    size_t used = strlen(list);
+    snprintf(list + used, len - used, "%s%s", used ? ", " : "", name);
+}
+
+static void set_aside_screen_keys(struct kiosk_config *c, const char *display)
+{
+    struct kiosk_display *d = &c->display;
+    char aside[160] = "";
+    int kms = d->backend == KIOSK_BACKEND_KMS || d->backend == KIOSK_BACKEND_AUTO;
+    int headless = d->backend == KIOSK_BACKEND_HEADLESS || d->backend == KIOSK_BACKEND_AUTO;
+    if (!kms && d->drm_device[0]) {
+        note_aside(aside, sizeof aside, "drm_device");
+        d->drm_device[0] = '\0';
+    }
+    if (!kms && d->connector[0]) {
+        note_aside(aside, sizeof aside, "connector");
+        d->connector[0] = '\0';
+    }
+    if (!kms && d->mode_width) {
+        note_aside(aside, sizeof aside, "mode");
+        d->mode_width = d->mode_height = 0;
+    }
+    if (d->backend == KIOSK_BACKEND_HEADLESS && kiosk_key_line(c, KSEC_DISPLAY, 0, "vsync"))
+        note_aside(aside, sizeof aside, "vsync");
+    if (!headless && d->headless_out[0]) {
+        note_aside(aside, sizeof aside, "headless_out");
+        d->headless_out[0] = '\0';
+    }
+    if (!headless && d->headless_frames) {
+        note_aside(aside, sizeof aside, "headless_frames");
+        d->headless_frames = 0;
+    }
+    d->backend_overridden = 1;
+    if (aside[0])
+        fprintf(stderr, "bentray kiosk: --display %s: [display] %s set aside (for the file's own screen)\n", display,
+                aside);
 }
 
 static int parse_display(const char *name, enum kiosk_backend *out)
@@ -96,11 +140,14 @@ int cmd_kiosk(int argc, char **argv)
         fprintf(stderr, "bentray kiosk: %s: %s\n", e.where, e.message);
         return EXIT_USAGE;
     }
+    enum kiosk_backend from_file = c.display.backend;
     if (display && parse_display(display, &c.display.backend) != 0) {
         fprintf(stderr, "bentray kiosk: --display: unknown display '%s' (expected auto, kms, x11 or headless)\n",
                 display);
         return EXIT_USAGE;
     }
+    if (display && c.display.backend != from_file)
+        set_aside_screen_keys(&c, display);
     if (out_dir) {
         if (strlen(out_dir) >= sizeof c.display.headless_out) {
             fprintf(stderr, "bentray kiosk: --out: the path is longer than %zu characters\n",

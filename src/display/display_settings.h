@@ -16,6 +16,8 @@ struct kiosk_display {
     int vsync;
     char headless_out[KIOSK_PATH_LEN];   /* directory for PNG frames */
     int headless_frames;             /* frames to write before exiting; 0: until stopped */
+    int backend_overridden;          /* backend set on the command line: the file's keys for its own
+                                        screen are set aside, not refused (kiosk --display) */
 };
 
 #endif

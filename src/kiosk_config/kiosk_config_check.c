@@ -117,17 +117,20 @@ static int check_display(const struct kiosk_config *c, struct error *err)
     const char *backend = d->backend == KIOSK_BACKEND_X11 ? "x11"
                         : d->backend == KIOSK_BACKEND_KMS ? "kms" : "headless";
 
-    if (d->backend == KIOSK_BACKEND_X11 || d->backend == KIOSK_BACKEND_HEADLESS)
+    /* a screen chosen on the command line: the file's keys for its own screen were set aside */
+    if (d->backend_overridden)
+        ;
+    else if (d->backend == KIOSK_BACKEND_X11 || d->backend == KIOSK_BACKEND_HEADLESS)
         for (int i = 0; i < 3; i++)
             if (kms_given[i])
                 return bad_key(c, err, KSEC_DISPLAY, 0, kms_keys[i], " applies to backend kms (or "
                                "auto), not to '%s': remove it", backend);
-    if (d->backend == KIOSK_BACKEND_X11 || d->backend == KIOSK_BACKEND_KMS)
+    if (!d->backend_overridden && (d->backend == KIOSK_BACKEND_X11 || d->backend == KIOSK_BACKEND_KMS))
         for (int i = 0; i < 2; i++)
             if (headless_given[i])
                 return bad_key(c, err, KSEC_DISPLAY, 0, headless_keys[i], " applies to backend "
                                "headless (or auto), not to '%s': remove it", backend);
-    if (d->backend == KIOSK_BACKEND_HEADLESS && kiosk_key_line(c, KSEC_DISPLAY, 0, "vsync"))
+    if (!d->backend_overridden && d->backend == KIOSK_BACKEND_HEADLESS && kiosk_key_line(c, KSEC_DISPLAY, 0, "vsync"))
         return bad_key(c, err, KSEC_DISPLAY, 0, "vsync", " applies to backends that show frames on a "
                        "screen, not to 'headless': remove it");
     if (d->backend == KIOSK_BACKEND_HEADLESS && d->headless_out[0] == '\0')

@@ -42,3 +42,10 @@ check "--shader-dir with a FIFO" 2 "cannot read shader .*common.glsl: not a regu
 # a file name of 250 bytes is legal; its temporary's name is not what decides
 long=$(printf 'n%.0s' $(seq 1 246))
 check "a 250-byte file name" 0 "^written$" -- sh -c "$BT render --scene $S --size 16x12 --out '$R/$long.png' --quiet >/dev/null && test -s '$R/$long.png' && echo written"
+# one kiosk configuration travels: --display takes another screen than the file's, whose keys for
+# its own screen are set aside with a note, not refused
+mkdir -p "$R/kh"
+check "kiosk --display headless over a screen's configuration" 0 "--display headless: \[display\] vsync set aside" -- \
+    timeout 120 $BT kiosk --config kiosk/kiosk.conf --display headless --out "$R/kh" --frames 1
+sed 's|^headless_frames = 0|headless_out = '"$R"'/kh|; s|\.\./\.\./assets|'"$(pwd)"'/assets|g; s|^path = |path = '"$(pwd)"'/tests/kiosk/|' tests/kiosk/headless.conf > "$R/headless.conf"
+check "kiosk --display x11 over a headless configuration" 0 "^headless_out set aside$" -- sh -c "$BT kiosk --config '$R/headless.conf' --display x11 --check-inputs 2>&1 | sed -n 's/.*\[display\] \(.*\) (for the file.*/\1/p' | head -1"
