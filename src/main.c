@@ -2,6 +2,7 @@
 #include "cli/commands.h"
 #include "io/stderr_filter.h"
 #include "io/std_streams.h"
+#include "io/clock.h"
 #include <stdio.h>
 #include <string.h>
 
@@ -34,6 +35,7 @@ static void usage(FILE *out)
 
 int main(int argc, char **argv)
 {
+    clock_mark_start();
     std_streams_guard();
     stderr_escape_controls();
     if (argc >= 2 && strcmp(argv[1], "--version") == 0) {

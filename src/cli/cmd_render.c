@@ -1,6 +1,7 @@
 /* bentray render: one scene, headless, to a PNG and optionally a per-pixel dump. */
 #include "cli/commands.h"
 #include "cli/options.h"
+#include "io/clock.h"
 #include "io/std_streams.h"
 #include "io/image_out.h"
 #include "io/output_file.h"
@@ -64,6 +65,9 @@ static void summarise(const struct measured *m, const struct scene *s)
     fprintf(stderr, "%s: %dx%d, %s model, %s\n", s->name, d->width, d->height, model_name(s->model.type), m->how);
     fprintf(stderr, "rays: %ld hit an object, %ld sky, %ld captured, %ld unfinished, %ld failed\n", objects, sky,
             captured, unfinished, failed);
+    /* what the user waits for: the GPU's or the CPU's work above, and around it the context, the
+     * shaders' compilation, the orbit table, the read-back and the files written */
+    fprintf(stderr, "time: %.3f s rendering, %.3f s since bentray started\n", m->seconds, clock_since_start());
     if (unfinished)
         fprintf(stderr, "note: %ld rays were still travelling at the end of their budget (a path of %g in %d "
                         "segments); they show render.unfinished_color (raise %s)\n", unfinished,

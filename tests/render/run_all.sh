@@ -243,6 +243,8 @@ check "compare damaged header" 2 "unsupported dump \(version 2, 8192x8192.*at mo
 check "compare not a dump" 2 "not a bentray dump" -- $BT compare "$TMP/cpu.png" "$TMP/cpu.dump"
 check "error table" 0 "time: gpu .*cpu dopri5" -- $BT error --scene assets/scenes/schwarzschild.scene --size 24x18
 check "trace cpu" 0 "\"engine\": \"cpu dopri5" -- $BT trace --scene $S --size 32x24 --pixel 16 12 --engine cpu
+# the time a user waits, beside the rendering's own
+check "render time line" 0 "^time: [0-9.]+ s rendering, [0-9.]+ s since bentray started$" -- $BT render --scene $S --size 32x24 --out "$TMP/time.png"
 # the CPU trace's colour is the pixel's as the CPU image writes it (it was always black)
 check "trace cpu colour is the pixel's" 0 "^\[173, 173, 173\] \[173, 173, 173\]$" -- sh -c "for e in cpu gpu; do $BT trace \
     --scene assets/scenes/schwarzschild.scene --pixel 100 200 --engine \$e | sed -n 's/.*\"color\": \(.*\),/\1/p'; done | tr '\n' ' ' | sed 's/ \$//'"
