@@ -95,6 +95,25 @@ void program_cache_release(struct program_cache *pc)
     pc->n = 0;
 }
 
+static uint64_t key_part(uint64_t h, const char *text)
+{
+    for (const unsigned char *c = (const unsigned char *)text; *c; c++)
+        h = (h ^ *c) * 1099511628211u;
+    return (h ^ 0xffu) * 1099511628211u;
+}
+
+/* The variant's key as text: PROGRAMS_KEY_LEN - 1 characters at most. */
+static int write_key(char *key, int two_targets, const char *defines, const char *const *vertex,
+                     const char *const *fragment_files, struct error *e)
+{
+    size_t used = snprintf(key, PROGRAMS_KEY_LEN, "%d|%s|%s|", two_targets, defines, vertex[0]);
+    for (int i = 0; fragment_files[i] && used < PROGRAMS_KEY_LEN; i++)
+        used += snprintf(key + used, PROGRAMS_KEY_LEN - used, "%s,", fragment_files[i]);
+    if (used >= PROGRAMS_KEY_LEN)
+        return error_set(e, ERROR_RUNTIME, NULL, "internal: program variant key too long");
+    return 0;
+}
+
 const struct stage_program *program_cache_get(struct program_cache *pc, const char *const *fragment_files,
                                               const char *defines, int two_targets, struct error *e)
 {
@@ -107,17 +126,25 @@ const struct stage_program *program_cache_get_vertex(struct program_cache *pc, c
 {
     static const char *const quad_vertex[] = {"quad_vertex.glsl", NULL};
     const char *const *vertex = vertex_files ? vertex_files : quad_vertex;
+    /* the key's parts hashed as they are (FNV-1a, each part ended by a byte no text holds); the key
+     * itself is written only to confirm a hash that matches, or for a new variant */
+    uint64_t hash = key_part(14695981039346656037u, two_targets ? "2" : "1");
+    hash = key_part(key_part(hash, defines), vertex[0]);
+    for (int i = 0; fragment_files[i]; i++)
+        hash = key_part(hash, fragment_files[i]);
     char key[PROGRAMS_KEY_LEN];
-    size_t used = snprintf(key, sizeof key, "%d|%s|%s|", two_targets, defines, vertex[0]);
-    for (int i = 0; fragment_files[i] && used < sizeof key; i++)
-        used += snprintf(key + used, sizeof key - used, "%s,", fragment_files[i]);
-    if (used >= sizeof key) {
-        error_set(e, ERROR_RUNTIME, NULL, "internal: program variant key too long");
-        return NULL;
-    }
-    for (int i = 0; i < pc->n; i++)
+    int have_key = 0;
+    for (int i = 0; i < pc->n; i++) {
+        if (pc->entries[i].hash != hash)
+            continue;
+        if (!have_key && write_key(key, two_targets, defines, vertex, fragment_files, e) != 0)
+            return NULL;
+        have_key = 1;
         if (strcmp(pc->entries[i].key, key) == 0)
             return &pc->entries[i].sp;
+    }
+    if (!have_key && write_key(key, two_targets, defines, vertex, fragment_files, e) != 0)
+        return NULL;
     if (pc->n == PROGRAMS_MAX) {
         error_set(e, ERROR_RUNTIME, NULL, "internal: more than %d shader variants", PROGRAMS_MAX);
         return NULL;
@@ -162,6 +189,7 @@ const struct stage_program *program_cache_get_vertex(struct program_cache *pc, c
         return NULL;
     }
     snprintf(pc->entries[pc->n].key, sizeof pc->entries[pc->n].key, "%s", key);
+    pc->entries[pc->n].hash = hash;
     pc->entries[pc->n].sp = sp;
     return &pc->entries[pc->n++].sp;
 }

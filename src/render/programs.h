@@ -3,6 +3,7 @@
 #ifndef BT_PROGRAMS_H
 #define BT_PROGRAMS_H
 #include "gl/shader.h"
+#include <stdint.h>
 
 #define PROGRAMS_MAX 64
 #define PROGRAMS_KEY_LEN 6144   /* defines of a single pass over 64 objects included */
@@ -31,7 +32,9 @@ struct stage_program {
 struct program_cache {
     struct shader_target target;
     int mrt;
-    struct { char key[PROGRAMS_KEY_LEN]; struct stage_program sp; } entries[PROGRAMS_MAX];
+    /* each variant by its key (targets, defines, files) and the key's hash, which a pass compares
+     * first: a frame of the multipass scheme asks for its programs thousands of times */
+    struct { uint64_t hash; char key[PROGRAMS_KEY_LEN]; struct stage_program sp; } entries[PROGRAMS_MAX];
     int n;
 };
 
