@@ -127,7 +127,8 @@ static void warn_meaningless(const struct measured *m, const struct scene *s)
                 unfinished, n, 100.0 * (double)unfinished / (double)n, budget_key(&s->render));
     if (n > 0 && failed * 2 >= n)
         fprintf(stderr, "warning: %zu of %zu rays failed (their state stopped being finite): the model's settings "
-                        "(%s, strength or step) give no meaningful image\n", failed, n, model_name(s->model.type));
+                        "(model %s's keys in [model], or render.step) give no meaningful image\n", failed, n,
+                model_name(s->model.type));
     const struct render_settings *r = &s->render;
     double segment = r->step_size * r->steps_per_segment;
     if (!model_is_straight(&s->model) && r->method != METHOD_ORBIT_TABLE && segment > 2.0 * r->bound_radius)

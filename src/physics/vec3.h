@@ -18,10 +18,20 @@ static inline vec3d v3_cross(vec3d a, vec3d b)
     return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
 static inline double v3_len(vec3d a) { return sqrt(v3_dot(a, a)); }
+/* Between these the squared length of a vector neither underflows nor overflows. */
+#define V3_LEN_SAFE_MIN 1e-150
+#define V3_LEN_SAFE_MAX 1e150
 static inline vec3d v3_normalize(vec3d a)
 {
     double l = v3_len(a);
-    return l > 0.0 ? v3_scale(a, 1.0 / l) : a;
+    if (l > V3_LEN_SAFE_MIN && l < V3_LEN_SAFE_MAX)
+        return v3_scale(a, 1.0 / l);
+    /* a direction of 1e-200 or 1e200: scaled by its largest component first */
+    double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+    if (!(m > 0.0) || !isfinite(m))
+        return a;
+    a = v3_scale(a, 1.0 / m);
+    return v3_scale(a, 1.0 / v3_len(a));
 }
 /* A unit vector perpendicular to n: the reference direction of angular texture coordinates
  * (the GPU's uniforms and the CPU shading take it from here, so both agree). */

@@ -170,6 +170,11 @@ int scene_set(struct scene *s, const char *assignment, struct error *err)
         if (instance < 0)
             return set_fail(err, "the scene has no %s named '%s'", section, name);
     }
+    /* an object's geometry is its type's keys: another type would keep none of them and draw the
+     * new type's defaults, silently somewhere else */
+    if (kind == SECTION_OBJECT && strcmp(conf_trim(key), "type") == 0)
+        return set_fail(err, "an object's type is not changed with --set: its geometry is written with the keys "
+                        "of its type; give the object of the other type in the scene file");
     value = strdup(eq + 1);
     if (!value)
         return set_fail(err, "out of memory");

@@ -23,17 +23,28 @@ static int invalid(const struct scene *s, struct error *err, const char *fmt, ..
     return -1;
 }
 
+/* v scaled by its largest component, so that lengths and products of tiny or huge vectors neither
+ * underflow nor overflow (an up vector of 1e-200 is a direction, not a zero) */
+static vec3d by_largest(vec3d v)
+{
+    double m = fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
+    return m > 0.0 ? v3_scale(v, 1.0 / m) : v;
+}
+
 static int validate_camera(const struct scene *s, struct error *err)
 {
     const struct camera *c = &s->camera;
-    vec3d view = v3_sub(c->look_at, c->position);
-    double view_len = v3_len(view), up_len = v3_len(c->up);
+    vec3d view = by_largest(v3_sub(c->look_at, c->position)), up = by_largest(c->up);
+    double view_len = v3_len(view), up_len = v3_len(up);
     double from_bound = v3_len(v3_sub(c->position, s->render.bound_center));
 
     if (view_len == 0.0)
         return invalid(s, err, "camera position and look_at are the same point (%g %g %g): "
                        "the view direction is undefined", c->position.x, c->position.y, c->position.z);
-    if (up_len == 0.0 || v3_len(v3_cross(view, c->up)) <= CAMERA_UP_MIN_SINE * view_len * up_len)
+    if (up_len == 0.0)
+        return invalid(s, err, "camera up is (0 0 0): it gives no direction; choose an up vector across the "
+                       "view direction");
+    if (v3_len(v3_cross(view, up)) <= CAMERA_UP_MIN_SINE * view_len * up_len)
         return invalid(s, err, "camera up (%g %g %g) is parallel to the view direction: "
                        "choose an up vector across it", c->up.x, c->up.y, c->up.z);
     /* rays are followed only inside the bounding sphere: a camera outside it sees only sky */

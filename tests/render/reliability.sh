@@ -49,3 +49,7 @@ check "kiosk --display headless over a screen's configuration" 0 "--display head
     timeout 120 $BT kiosk --config kiosk/kiosk.conf --display headless --out "$R/kh" --frames 1
 sed 's|^headless_frames = 0|headless_out = '"$R"'/kh|; s|\.\./\.\./assets|'"$(pwd)"'/assets|g; s|^path = |path = '"$(pwd)"'/tests/kiosk/|' tests/kiosk/headless.conf > "$R/headless.conf"
 check "kiosk --display x11 over a headless configuration" 0 "^headless_out set aside$" -- sh -c "$BT kiosk --config '$R/headless.conf' --display x11 --check-inputs 2>&1 | sed -n 's/.*\[display\] \(.*\) (for the file.*/\1/p' | head -1"
+# --set cannot turn an object into another type (it would keep none of its geometry); a direction of
+# 1e-200 is a direction
+check "--set an object's type" 2 "an object's type is not changed with --set" -- $BT render --scene $S --set object.red.type=triangle --out "$R/t.png"
+check "a tiny camera up is a direction" 0 "^same$" -- sh -c "$BT render --scene $S --size 16x12 --set 'camera.up=0 1e-200 0' --out '$R/up_tiny.png' --quiet > /dev/null && $BT render --scene $S --size 16x12 --out '$R/up_one.png' --quiet > /dev/null && cmp -s '$R/up_tiny.png' '$R/up_one.png' && echo same"
