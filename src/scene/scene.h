@@ -34,6 +34,11 @@
 /* Largest magnitude of any number in a scene, scene units: the GPU holds them in 32-bit floats
  * (largest 3.4e38) and squares lengths, and 1e18 squared still fits. */
 #define SCENE_MAX_ABS_VALUE 1e18
+/* Longest edge of a flat primitive (a rect's axis, a triangle's edge), scene units: the GPU's
+ * intersection of one takes the normal as the cross product of two edges and squares it, a fourth
+ * power of their length, which 32-bit floats hold up to about 1.36e9; a rect of axes 1e10 was
+ * missed on the GPU and hit on the CPU. */
+#define SCENE_MAX_FLAT_EDGE 1e9
 
 enum primitive_type { PRIM_SPHERE, PRIM_TRIANGLE, PRIM_DISK, PRIM_RECT, PRIM_COUNT };
 enum precision_choice { PRECISION_AUTO, PRECISION_FP32, PRECISION_FP16 };

@@ -115,7 +115,19 @@ static int validate_objects(const struct scene *s, struct error *err)
             if (!(fabs(cosine) <= SCENE_RECT_ORTHO_TOL))
                 return invalid(s, err, "[object %s]: axis_u and axis_v of a rect must be "
                                "orthogonal (the cosine of their angle is %g)", o->name, cosine);
-        } else if (o->type == PRIM_DISK && !(o->inner_radius < o->radius)) {
+        }
+        double edge = 0.0;
+        if (o->type == PRIM_RECT)
+            edge = fmax(v3_len(o->axis_u), v3_len(o->axis_v));
+        else if (o->type == PRIM_TRIANGLE)
+            for (int k = 0; k < 3; k++)
+                edge = fmax(edge, v3_len(v3_sub(o->vertex[(k + 1) % 3], o->vertex[k])));
+        if (!(edge <= SCENE_MAX_FLAT_EDGE))
+            return invalid(s, err, "[object %s]: a %s's %s is %g long; at most %g, as the GPU's 32-bit intersection of "
+                           "flat primitives holds (docs/LIMITS.md): split it, or scale the scene down", o->name,
+                           o->type == PRIM_RECT ? "rect" : "triangle", o->type == PRIM_RECT ? "axis" : "edge", edge,
+                           SCENE_MAX_FLAT_EDGE);
+        if (o->type == PRIM_DISK && !(o->inner_radius < o->radius)) {
             return invalid(s, err, "[object %s]: inner_radius (%g) must be smaller than radius (%g)",
                            o->name, o->inner_radius, o->radius);
         }

@@ -53,3 +53,9 @@ check "kiosk --display x11 over a headless configuration" 0 "^headless_out set a
 # 1e-200 is a direction
 check "--set an object's type" 2 "an object's type is not changed with --set" -- $BT render --scene $S --set object.red.type=triangle --out "$R/t.png"
 check "a tiny camera up is a direction" 0 "^same$" -- sh -c "$BT render --scene $S --size 16x12 --set 'camera.up=0 1e-200 0' --out '$R/up_tiny.png' --quiet > /dev/null && $BT render --scene $S --size 16x12 --out '$R/up_one.png' --quiet > /dev/null && cmp -s '$R/up_tiny.png' '$R/up_one.png' && echo same"
+# a flat primitive the GPU's 32-bit floats cannot intersect is refused; the largest allowed is hit
+# on the GPU as on the CPU
+check "a rect too large for the GPU" 2 "\[object floor\]: a rect's axis is 1e\+10 long; at most 1e\+09" -- \
+    $BT render --scene $S --size 32x24 --set "object.floor.axis_u=1e10 0 0" --set "object.floor.axis_v=0 0 -1e10" --out "$R/big.png"
+check "the largest rect on both engines" 0 "^same$" -- sh -c "for e in gpu cpu; do $BT render --scene $S --size 32x24 --engine \$e \
+    --set 'object.floor.axis_u=1e9 0 0' --set 'object.floor.axis_v=0 0 -1e9' --out '$R/big_\$e.png' 2>&1 | grep '^rays:'; done | uniq | wc -l | sed 's/^1$/same/'"
