@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "bench/bench.h"
+#include "io/tree_file.h"
 #include "scene/scene_keys.h"
 
 const char *const bench_accel_names[ACCEL_COUNT] = {"none", "paper", "all", "single", "fused"};
@@ -52,8 +53,11 @@ int bench_with_scene(struct bench *b, bench_scene_section section, struct error 
 
 int bench_load_scene(struct scene *s, const char *name, int w, int h, struct error *e)
 {
-    char path[256];
-    snprintf(path, sizeof path, "assets/scenes/%s.scene", name);
+    char rel[256], path[4096];
+    snprintf(rel, sizeof rel, "assets/scenes/%s.scene", name);
+    /* the project's scenes wherever the bench runs from; where none is found, the error names rel */
+    if (tree_file_find(rel, path, sizeof path) != 0)
+        snprintf(path, sizeof path, "%s", rel);
     if (scene_load(s, path, e) != 0)
         return -1;
     if (w > 0 && h > 0) {

@@ -59,3 +59,6 @@ check "a rect too large for the GPU" 2 "\[object floor\]: a rect's axis is 1e\+1
     $BT render --scene $S --size 32x24 --set "object.floor.axis_u=1e10 0 0" --set "object.floor.axis_v=0 0 -1e10" --out "$R/big.png"
 check "the largest rect on both engines" 0 "^same$" -- sh -c "for e in gpu cpu; do $BT render --scene $S --size 32x24 --engine \$e \
     --set 'object.floor.axis_u=1e9 0 0' --set 'object.floor.axis_v=0 0 -1e9' --out '$R/big_\$e.png' 2>&1 | grep '^rays:'; done | uniq | wc -l | sed 's/^1$/same/'"
+# bench from any directory: the project's scenes are found from the program's place
+mkdir -p "$R/elsewhere"
+check "bench from another directory" 0 "wrote out/BENCH.md" -- sh -c "cd '$R/elsewhere' && mkdir -p out && $(cd "$(dirname "$BT")" && pwd)/$(basename "$BT") bench --out out --quick --only table1"
