@@ -62,3 +62,9 @@ check "the largest rect on both engines" 0 "^same$" -- sh -c "for e in gpu cpu; 
 # bench from any directory: the project's scenes are found from the program's place
 mkdir -p "$R/elsewhere"
 check "bench from another directory" 0 "wrote out/BENCH.md" -- sh -c "cd '$R/elsewhere' && mkdir -p out && $(cd "$(dirname "$BT")" && pwd)/$(basename "$BT") bench --out out --quick --only table1"
+# docs/KIOSK.md's example tour is a script the kiosk reads (the whole file is checked before the first
+# event is replayed)
+awk '/^### A tour.s script/{f=1} f&&/^```$/{if(g){exit}; g=1; next} g' docs/KIOSK.md > "$R/tour.events"
+sed 's|^path = visitor.events|path = '"$R"'/tour.events|; s|\.\./\.\./assets|'"$(pwd)"'/assets|g' tests/kiosk/headless.conf > "$R/tour.conf"
+mkdir -p "$R/tour_out"
+check "KIOSK.md's example tour" 0 "input replay: turn mass \+3" -- sh -c "timeout 3 $BT kiosk --config '$R/tour.conf' --check-inputs --out '$R/tour_out' 2>&1; true"
