@@ -25,7 +25,7 @@ _bentray()
     local opts
     case $cmd in
         render) opts="$common --out --depth --dump --force --progress --quiet" ;;
-        animate) opts="$common --frames --set-range --orbit --out --force --video --fps --quiet" ;;
+        animate) opts="$common --frames --set-range --orbit --orbit-axis --out --force --video --fps --quiet" ;;
         trace) opts="--scene --pixel --size --set --engine --backend --precision --no-mrt --shader-dir --rtol --help" ;;
         error) opts="$common --json --check" ;;
         bench) opts="--out --force --runs --size --only --kiosk --config --quick --backend --help" ;;

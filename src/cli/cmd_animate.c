@@ -19,6 +19,7 @@
 #include "io/png_io.h"
 #include "io/progress.h"
 #include "scene/scene_keys.h"
+#include "conf/conf_value.h"
 
 #define ANIMATE_MAX_FRAMES 10000
 #define ANIMATE_MAX_RANGES 16
@@ -39,6 +40,8 @@ static void usage(FILE *out)
             "                       camera.position=0 1 9:0 1 5; integer keys are rounded\n"
             "  --orbit DEGREES      the camera turns about its look_at point, around camera.up, by\n"
             "                       DEGREES in all: frame k of N at DEGREES x k / N (so 360 loops)\n"
+            "  --orbit-axis \"X Y Z\"  the orbit's axis instead of camera.up (a fly-over: \"1 0 0\");\n"
+            "                       camera.up turns with the camera\n"
             "  --out DIR            where the frames go (made if missing; its parent must exist)\n"
             "  --force              replace frames of an earlier run\n"
             "  --video FILE         also FILE.webm, .mp4 or .gif from the frames through ffmpeg\n"
@@ -62,6 +65,8 @@ struct animation {
     struct range ranges[ANIMATE_MAX_RANGES];
     double orbit_deg;
     int orbit;
+    vec3d orbit_axis;                /* --orbit-axis; camera.up where not given */
+    int orbit_axis_given;
 };
 
 /* The kind of the key at PATH ("section.key" or "section.NAME.key"), -1 when there is none. */
@@ -174,21 +179,37 @@ static void range_text(const struct range *r, double t, char *out, size_t len)
     }
 }
 
-/* camera.position=... of frame k: turned about look_at around camera.up (Rodrigues). */
-static void orbit_text(const struct scene *s, double degrees, char *out, size_t len)
+/* v turned by angle a around the unit axis (Rodrigues). */
+static vec3d turn_about(vec3d v, vec3d axis, double a)
 {
-    double a = degrees * PI_D / 180.0;
-    vec3d axis = v3_normalize(s->camera.up), p = v3_sub(s->camera.position, s->camera.look_at);
-    vec3d turned = v3_add(v3_add(v3_scale(p, cos(a)), v3_scale(v3_cross(axis, p), sin(a))),
-                          v3_scale(axis, v3_dot(axis, p) * (1.0 - cos(a))));
-    vec3d q = v3_add(s->camera.look_at, turned);
-    size_t used = (size_t)snprintf(out, len, "camera.position=");
+    return v3_add(v3_add(v3_scale(v, cos(a)), v3_scale(v3_cross(axis, v), sin(a))),
+                  v3_scale(axis, v3_dot(axis, v) * (1.0 - cos(a))));
+}
+
+static void vector_text(const char *key, vec3d q, char *out, size_t len)
+{
+    size_t used = (size_t)snprintf(out, len, "%s=", key);
     double c[3] = {q.x, q.y, q.z};
     for (int i = 0; i < 3 && used + 1 < len; i++) {
         if (i)
             out[used++] = ' ';
         used += (size_t)exact_number(out + used, len - used, c[i]);
     }
+}
+
+/* camera.position=... of frame k: turned about look_at around the orbit's axis (camera.up unless
+ * --orbit-axis); with an axis of its own, camera.up turns with it, so that a fly-over keeps its
+ * horizon across the poles. */
+static int orbit_text(const struct animation *an, const struct scene *s, double degrees, char out[][384])
+{
+    double a = degrees * PI_D / 180.0;
+    vec3d axis = v3_normalize(an->orbit_axis_given ? an->orbit_axis : s->camera.up);
+    vec3d p = v3_sub(s->camera.position, s->camera.look_at);
+    vector_text("camera.position", v3_add(s->camera.look_at, turn_about(p, axis, a)), out[0], 384);
+    if (!an->orbit_axis_given)
+        return 1;
+    vector_text("camera.up", turn_about(s->camera.up, axis, a), out[1], 384);
+    return 2;
 }
 
 /* The --set texts of frame k (after the command line's own --set), into sets[]; their count. */
@@ -199,7 +220,7 @@ static int frame_sets(const struct animation *a, const struct scene *base, int k
     for (int i = 0; i < a->n_ranges; i++)
         range_text(&a->ranges[i], t, sets[n++], 384);
     if (a->orbit)
-        orbit_text(base, a->orbit_deg * k / a->frames, sets[n++], 384);
+        n += orbit_text(a, base, a->orbit_deg * k / a->frames, sets + n);
     return n;
 }
 
@@ -407,7 +428,7 @@ static int animate(const struct common_options *o, const struct animation *a, co
     if (rc)
         return rc;
     /* everything checked before any work: every frame's scene, the directory, each frame's file */
-    static char sets[ANIMATE_MAX_RANGES + 1][384];
+    static char sets[ANIMATE_MAX_RANGES + 2][384];
     int n_sets;
     for (int k = 0; k < a->frames; k++)
         if ((rc = frame_scene(a, base, k, s, sets, &n_sets)) != 0)
@@ -521,11 +542,12 @@ int cmd_animate(int argc, char **argv)
     /* the command line's own options for render, echoed in each frame's command */
     const char *echo[2 * OPTIONS_MAX_SETS + 64];
     int n_echo = 0;
-    enum { FRAMES, SET_RANGE, ORBIT, FPS, OUT, VIDEO, FORCE, QUIET };
+    enum { FRAMES, SET_RANGE, ORBIT, FPS, OUT, VIDEO, FORCE, QUIET, ORBIT_AXIS };
     static const struct option_spec specs[] = {
         {"--frames", "N", FRAMES}, {"--set-range", "SECTION.KEY=A:B", SET_RANGE}, {"--orbit", "DEGREES", ORBIT},
         {"--fps", "F", FPS},       {"--out", "DIR", OUT},                         {"--video", "FILE", VIDEO},
-        {"--force", NULL, FORCE},  {"--quiet", NULL, QUIET},                      {NULL, NULL, 0},
+        {"--force", NULL, FORCE},  {"--quiet", NULL, QUIET},                      {"--orbit-axis", "X Y Z", ORBIT_AXIS},
+        {NULL, NULL, 0},
     };
     struct option_reader rd = {.cmd = "animate", .own = specs, .common = common_option_specs,
                                .usage = usage, .argc = argc, .argv = argv};
@@ -560,6 +582,18 @@ int cmd_animate(int argc, char **argv)
             }
             a.orbit = 1;
             break;
+        case ORBIT_AXIS: {
+            double x[3];
+            const char *why = "";
+            if (conf_parse_numbers(v, x, 3, &why) != 0 || !(fabs(x[0]) + fabs(x[1]) + fabs(x[2]) > 0.0)) {
+                fprintf(stderr, "bentray animate: --orbit-axis: expected a direction \"X Y Z\", not all zero, got "
+                                "'%s'\n", v);
+                return EXIT_USAGE;
+            }
+            a.orbit_axis = v3(x[0], x[1], x[2]);
+            a.orbit_axis_given = 1;
+            break;
+        }
         case FPS:
             errno = 0;
             fps = strtod(v, &end);
@@ -619,6 +653,10 @@ int cmd_animate(int argc, char **argv)
                                 "frame; give one or the other\n", o.sets[j], a.ranges[i].key);
                 return EXIT_USAGE;
             }
+    }
+    if (a.orbit_axis_given && !a.orbit) {
+        fprintf(stderr, "bentray animate: --orbit-axis gives the axis of --orbit DEGREES, which is missing\n");
+        return EXIT_USAGE;
     }
     /* the orbit turns the scene's own camera: a range that moves it too would fight it */
     for (int i = 0; i < a.n_ranges && a.orbit; i++)

@@ -87,6 +87,9 @@ check "animate range components" 2 "FROM and TO must be the same number" -- $BT 
 check "animate frame out of range" 2 "^bentray animate: frame 3: --set camera.fov=180: error: key 'fov'" -- $BT animate --scene $S --frames 3 --set-range camera.fov=60:180 --out "$TMP/a0"
 check "animate orbit and camera range" 2 "--orbit and --set-range camera.position: the orbit moves the camera" -- $BT animate --scene $S --frames 2 --orbit 90 --set-range "camera.position=0 0 5:0 0 6" --out "$TMP/a0"
 check "animate orbit" 2 "--orbit: expected degrees" -- $BT animate --scene $S --frames 2 --orbit left --out "$TMP/a0"
+# a fly-over: the orbit about an axis of its own turns camera.up with the camera (upside down halfway)
+check "animate orbit axis" 0 "frame 3/4 .* --set 'camera.up=0 -1 [0-9.e-]+' --out" -- $BT animate --scene assets/scenes/demo.scene --frames 4 --size 32x18 --orbit 360 --orbit-axis "1 0 0" --out "$TMP/fly"
+check "animate orbit axis without orbit" 2 "--orbit-axis gives the axis of --orbit DEGREES" -- $BT animate --scene $S --frames 2 --orbit-axis "1 0 0" --out "$TMP/a0"
 check "animate out is a file" 2 "--out $TMP/p1.png: not a directory" -- $BT animate --scene $S --frames 2 --out "$TMP/p1.png"
 check "animate video extension" 2 "--video $TMP/v.avi: give the file the extension .webm, .mp4 or .gif" -- $BT animate --scene $S --frames 2 --out "$TMP/a0" --video "$TMP/v.avi"
 # without ffmpeg the frames are made, and the command that makes the video from them is printed
