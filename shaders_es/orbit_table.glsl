@@ -175,8 +175,6 @@ vec3 orbit_velocity(orbit_ray ray, vec2 q, float s)
 // itself crosses it (safeguarded Newton on |p(s) - centre|^2 - R^2) and is put just outside it,
 // so that the termination test sees it; the tangent there is the exit direction, as the CPU
 // reference takes it.
-uniform vec3 u_bound_center;
-uniform float u_bound_radius2;
 uniform float u_bound_outside;        // bounding radius (1 + a margin): where an exit point is put
 
 const int ORBIT_CROSSING_ITERATIONS = 2;
@@ -224,7 +222,7 @@ void orbit_chord_from(orbit_ray ray, float s0, float k, out vec2 q, out float s,
     vec3 p = orbit_point(ray, q, s1);
     s = s1;
     vec3 from_bound = p - u_bound_center;
-    leaves = dot(from_bound, from_bound) >= u_bound_radius2;
+    leaves = outside_bounds(p);
     if (leaves)
         orbit_crossing(ray, s0, s1, from_bound, q, s);
 }

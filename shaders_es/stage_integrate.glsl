@@ -6,20 +6,12 @@ uniform sampler2D u_ray_position;
 uniform sampler2D u_ray_velocity;
 uniform sampler2D u_hit;
 #endif
-uniform vec3 u_bound_center;
-uniform float u_bound_radius2;        // squared radius of the bounding sphere
-uniform vec3 u_capture_center;
-uniform float u_capture_radius2;      // squared horizon radius; 0 when nothing captures
 
 const float FINITE_LIMIT2 = 1.0e30;   // |x|^2 and |v|^2 beyond this count as overflow
 
 bool travelling(vec3 x)
 {
-    vec3 from_bound = x - u_bound_center;
-    vec3 from_mass = x - u_capture_center;
-    // a model without a horizon (capture radius 0) captures nothing, not even a ray at its centre
-    bool captured = u_capture_radius2 > 0.0 && dot(from_mass, from_mass) <= u_capture_radius2;
-    return dot(from_bound, from_bound) < u_bound_radius2 && !captured;
+    return inside_bounds(x) && !captured(x);
 }
 
 // Finite and not overflowing; NaN fails every comparison, so it fails this one too.
@@ -204,11 +196,9 @@ void step_unchecked(inout vec3 x, inout vec3 v, inout float steps, inout float h
     v = accept ? v1 : v;
     steps = accept ? next_steps : steps;
     h = h_next;
-    vec3 from_bound = x - u_bound_center;
-    bool inside = dot(from_bound, from_bound) < u_bound_radius2;
+    bool inside = inside_bounds(x);
 #ifdef MODEL_HORIZON
-    vec3 from_mass = x - u_capture_center;
-    inside = inside && dot(from_mass, from_mass) > u_capture_radius2;
+    inside = inside && !captured(x);
 #endif
     clean = clean && inside && finite_state(x, v);
 }

@@ -6,8 +6,6 @@
 // (FRAME_STATE undefined), or hit and position (FRAME_STATE 1), only when they are
 // read, or where only the image is read the final colour itself (FRAME_COLOUR: the sky stage's
 // sky_colour.glsl, in this pass). MAX_SEGMENTS is the scene's render.max_chords.
-uniform vec3 u_capture_center;
-uniform float u_capture_radius2;
 
 #if defined(ORBIT_NOTHING_TO_MEET) && !defined(FRAME_STATE)
 // A scene without objects, for the image: each ray's outcome is its side of the critical angle, and
@@ -151,12 +149,10 @@ void main()
             hit_s_a = tested ? s_a : hit_s_a;
             hit_s_b = tested ? s1 : hit_s_b;
             hit_segment = tested ? k : hit_segment;
-            vec3 from_mass = p1 - u_capture_center;
-            bool captured = tested && u_capture_radius2 > 0.0 &&
-                            dot(from_mass, from_mass) <= u_capture_radius2;
-            falls = captured;
+            bool falls_in = tested && captured(p1);
+            falls = falls_in;
             bool found = best.slot >= 0.0;
-            bool ends = !found && captured;
+            bool ends = !found && falls_in;
             code = ends ? CODE_CAPTURED : code;
             end_key = ends ? steps : end_key;
             done = found || ends;

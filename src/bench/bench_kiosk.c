@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #define KIOSK_TARGET_PREVIEW_FPS 30.0
 #define KIOSK_TARGET_REFINED_SECONDS 0.5
@@ -134,6 +135,12 @@ int bench_kiosk(struct bench *b, struct error *e)
         return -1;
     if (kiosk_config_load(&c, path, e) != 0 || kiosk_config_check(&c, e) != 0)
         return -1;
+    /* the report names the configuration from the working directory where it lies below it */
+    char cwd[BENCH_PATH_LEN];
+    const char *shown = path;
+    size_t cwd_len = getcwd(cwd, sizeof cwd) ? strlen(cwd) : 0;
+    if (cwd_len > 0 && strncmp(path, cwd, cwd_len) == 0 && path[cwd_len] == '/')
+        shown = path + cwd_len + 1;
     if (b->quick) {
         c.kiosk.preview_width = 32;
         c.kiosk.preview_height = 18;
@@ -179,7 +186,7 @@ int bench_kiosk(struct bench *b, struct error *e)
                    "| scene | first frame s | speed previews/s | mass previews/s | mass/speed | table ms per mass "
                    "detent | refined s | bands | previews here | refined here | previews Pi 4 | refined Pi 4 |\n"
                    "|---|---|---|---|---|---|---|---|---|---|---|---|\n",
-            path, KIOSK_BENCH_PREVIEWS, KIOSK_DETENT_SECONDS, c.kiosk.preview_width, c.kiosk.preview_height,
+            shown, KIOSK_BENCH_PREVIEWS, KIOSK_DETENT_SECONDS, c.kiosk.preview_width, c.kiosk.preview_height,
             c.kiosk.width, c.kiosk.height, c.kiosk.width, c.kiosk.height, v.band_rows, KIOSK_TARGET_PREVIEW_FPS,
             KIOSK_TARGET_REFINED_SECONDS, KIOSK_PI4_SPEED_FRACTION, pi4_fps, pi4_refined);
     int rc = 0;

@@ -67,8 +67,8 @@ int stage_frame(struct renderer *r, enum frame_output output, struct error *e)
     char batch[4096];
     if (frame_batch_defines(r, &a.batch, batch, sizeof batch, e) != 0)
         return -1;
-    const char *files[PRIM_COUNT + 11] = {"common.glsl", r->model_file};
-    int n = object_batch_files(&a.batch, files, 2);
+    const char *files[PRIM_COUNT + 12] = {"common.glsl", "bounds.glsl", r->model_file};
+    int n = object_batch_files(&a.batch, files, 3);
     files[n++] = "observer.glsl";
     if (output == FRAME_WRITES_COLOUR)
         files[n++] = "sky_colour.glsl";

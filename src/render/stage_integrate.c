@@ -21,7 +21,7 @@ void integrate_set_uniforms(const struct program_uniforms *p, const void *scene)
 int stage_integrate(struct renderer *r, int segment_start, struct error *e)
 {
     const struct scene *s = r->scene;
-    const char *const files[] = {"common.glsl", r->model_file, "stage_integrate.glsl", NULL};
+    const char *const files[] = {"common.glsl", "bounds.glsl", r->model_file, "stage_integrate.glsl", NULL};
     const struct stage_program *sp = program_cache_get(&r->programs, files, r->model_defines, 1, e);
     if (!sp)
         return -1;

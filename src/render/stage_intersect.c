@@ -260,10 +260,11 @@ static int intersect_batch(struct renderer *r, const struct object_batch *b, int
     char defines[4096];
     if (object_batch_defines(b, defines, sizeof defines) != 0)
         return error_set(e, ERROR_RUNTIME, NULL, "internal: the defines of an object batch do not fit");
-    const char *files[PRIM_COUNT + 8] = {"common.glsl"};
+    const char *files[PRIM_COUNT + 9] = {"common.glsl"};
     int n = object_batch_files(b, files, 1);
     files[n++] = "observer.glsl";
     if (r->exact_orbits) {
+        files[n++] = "bounds.glsl";
         files[n++] = "model_schwarzschild.glsl";
         files[n++] = "orbit_table.glsl";
     }

@@ -227,8 +227,8 @@ void orbit_set_uniforms(const struct program_uniforms *p, const struct renderer 
 
 int stage_orbit(struct renderer *r, int segment, int segment_start, struct error *e)
 {
-    const char *const files[] = {"common.glsl", "model_schwarzschild.glsl", "observer.glsl", "orbit_table.glsl",
-                                 "stage_orbit.glsl", NULL};
+    const char *const files[] = {"common.glsl", "bounds.glsl", "model_schwarzschild.glsl", "observer.glsl",
+                                 "orbit_table.glsl", "stage_orbit.glsl", NULL};
     char defines[sizeof r->model_defines + sizeof r->observer_defines];
     snprintf(defines, sizeof defines, "%s%s", r->model_defines, r->observer_defines);
     const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, e);

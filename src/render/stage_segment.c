@@ -29,8 +29,8 @@ int stage_segment(struct renderer *r, int segment, struct error *e)
     if (frame_batch(r, &a.batch, e) != 0 || frame_batch_defines(r, &a.batch, batch, sizeof batch, e) != 0)
         return -1;
     a.batch.segment = segment;
-    const char *files[PRIM_COUNT + 10] = {"common.glsl", r->model_file};
-    int n = object_batch_files(&a.batch, files, 2);
+    const char *files[PRIM_COUNT + 11] = {"common.glsl", "bounds.glsl", r->model_file};
+    int n = object_batch_files(&a.batch, files, 3);
     files[n++] = "observer.glsl";
     files[n++] = "shade.glsl";
     files[n++] = "stage_intersect.glsl";

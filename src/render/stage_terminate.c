@@ -16,7 +16,7 @@ static void set_terminate(const struct program_uniforms *p, const void *arg)
 
 int stage_terminate(struct renderer *r, int segment, struct error *e)
 {
-    static const char *const files[] = {"common.glsl", "stage_terminate.glsl", NULL};
+    static const char *const files[] = {"common.glsl", "bounds.glsl", "stage_terminate.glsl", NULL};
     struct raystate *rs = &r->rs;
     const struct stage_program *sp = program_cache_get(&r->programs, files, "", 1, e);
     if (!sp)
