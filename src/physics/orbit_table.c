@@ -646,15 +646,22 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
     return 0;
 }
 
-void orbit_table_free(struct orbit_table *t)
+void orbit_table_free_cpu_arrays(struct orbit_table *t)
 {
-    free(t->texels);
     free(t->u);
     free(t->du_ds);
     free(t->phi_over_sin);
     free(t->phi_infinity_over_sin);
     free(t->psi);
     free(t->segments);
+    t->u = t->du_ds = t->phi_over_sin = t->phi_infinity_over_sin = t->psi = NULL;
+    t->segments = NULL;
+}
+
+void orbit_table_free(struct orbit_table *t)
+{
+    orbit_table_free_cpu_arrays(t);
+    free(t->texels);
     memset(t, 0, sizeof *t);
 }
 

@@ -96,6 +96,8 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
  * renderer takes its rays as straight (render/renderer.c). */
 int orbit_table_resolves(double mass, double r_observer);
 void orbit_table_free(struct orbit_table *t);
+/* The double arrays freed, the texels and the scalars kept: what the GPU reads of a table. */
+void orbit_table_free_cpu_arrays(struct orbit_table *t);
 
 /* orbit_critical_angle and orbit_critical_from_axis: physics/model.h */
 /* Side and fractional row (0 .. rows_per_side - 1) of launch angle psi. */

@@ -43,19 +43,6 @@ size_t orbit_store_table_bytes(const struct orbit_table_params *p)
     return (size_t)(p->columns + 1 + ORBIT_WARP_SAMPLES) * 2 * (size_t)p->rows_per_side * 4 * sizeof(float);
 }
 
-/* The GPU reads the texels alone; the double arrays are for the CPU's own interpolation. */
-static void keep_texels_only(struct orbit_table *t)
-{
-    free(t->u);
-    free(t->du_ds);
-    free(t->phi_over_sin);
-    free(t->phi_infinity_over_sin);
-    free(t->psi);
-    free(t->segments);
-    t->u = t->du_ds = t->phi_over_sin = t->phi_infinity_over_sin = t->psi = NULL;
-    t->segments = NULL;
-}
-
 static int find(const struct orbit_store *s, const struct orbit_table_params *p)
 {
     for (int i = 0; i < s->n; i++)
@@ -152,7 +139,7 @@ static void *worker_main(void *arg)
         struct error e;
         int rc = orbit_table_build(&t, &p, &e);
         if (rc == 0)
-            keep_texels_only(&t);
+            orbit_table_free_cpu_arrays(&t);
         pthread_mutex_lock(&s->lock);
         /* only this thread moves an entry out of ENTRY_BUILDING, and the owner drops no such entry */
         struct entry *en = NULL;
@@ -228,7 +215,7 @@ const struct orbit_table *orbit_store_get(struct orbit_store *s, const struct or
         pthread_mutex_lock(&s->lock);
         s->caller_builds++;
         if (rc == 0) {
-            keep_texels_only(&t);
+            orbit_table_free_cpu_arrays(&t);
             en = add(s, p, ENTRY_READY);
             if (!en) {
                 orbit_table_free(&t);
