@@ -44,27 +44,12 @@ static void position(const struct kiosk_config *c, struct kiosk_state *st, const
     out->knob = knob == INPUT_KNOB_SPEED ? HUD_KNOB_SPEED : HUD_KNOB_MASS;
 }
 
-/* Field by field: padding is not part of a state, and a NAN parameter (the scene's own value)
- * equals itself here. */
-static int same_value(double a, double b)
-{
-    return a == b || (isnan(a) && isnan(b));
-}
-
-static int kiosk_state_equal(const struct kiosk_state *a, const struct kiosk_state *b)
-{
-    return a->scene == b->scene && a->speed == b->speed && a->mass == b->mass &&
-           same_value(a->speed_param, b->speed_param) && same_value(a->mass_param, b->mass_param) &&
-           a->effects == b->effects && a->effects_from_scene == b->effects_from_scene &&
-           a->pipeline_view == b->pipeline_view;
-}
-
 static void action(const struct kiosk_config *c, struct kiosk_state *st, const struct scene *scene,
                    enum kiosk_action a, struct event_outcome *out)
 {
     struct kiosk_state was = *st;
     kiosk_state_action(st, c, scene, a);
-    out->changed = !kiosk_state_equal(&was, st);
+    out->changed = !kiosk_state_same(&was, st);
 }
 
 /* The knob a device turns, by the names in [speed] and [mass]; -1 for none. */

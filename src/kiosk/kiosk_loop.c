@@ -9,6 +9,7 @@
 #include "kiosk/kiosk_events.h"
 #include "kiosk/kiosk_images.h"
 #include "kiosk/kiosk_view.h"
+#include "kiosk/kiosk_warm.h"
 #include "display/screen.h"
 #include "input/script_player.h"
 #include "kiosk/service.h"
@@ -90,6 +91,7 @@ struct kiosk {
     /* headless frames */
     int frames_written;
     long long drawn;                 /* previews and bands drawn */
+    long compiled_ahead;             /* programs compiled before the first frame */
 };
 
 static double kiosk_now(const struct kiosk *k)
@@ -619,6 +621,32 @@ static void kiosk_close(struct kiosk *k)
         screen_close(k->screen);
 }
 
+/* Between two states of the warm-up: the service manager's start timeout extended for the next
+ * (a first compile on a slow GPU may take minutes), and a signal stops it. */
+static int between_warm_states(void *arg)
+{
+    (void)arg;
+    service_extend_timeout(KIOSK_WARM_STATE_SECONDS);
+    return stop_requested != 0;
+}
+
+/* Every program of every scene compiled before the first frame (kiosk_warm.h), as compile_ahead
+ * says. 0, or -1 with e. */
+static int compile_ahead(struct kiosk *k, struct error *e)
+{
+    int ahead = k->cfg->kiosk.compile_ahead;
+    if (ahead == KIOSK_AHEAD_OFF || (ahead == KIOSK_AHEAD_AUTO && k->virtual_clock))
+        return 0;
+    service_status("compiling the shader programs of %d scenes", k->cfg->kiosk.n_scenes);
+    struct kiosk_warm_report w;
+    if (kiosk_warm(&k->view, k->cfg, k->scenes, between_warm_states, NULL, &w, e) != 0)
+        return -1;
+    k->compiled_ahead = w.programs;
+    fprintf(k->log, "bentray kiosk: %ld shader programs compiled ahead for %d scenes in %.1f s (%d states drawn%s)\n",
+            w.programs, w.scenes, w.seconds, w.states, w.refused ? ", some refused by their scene" : "");
+    return 0;
+}
+
 static int open_hud(struct kiosk *k)
 {
     if (!k->cfg->kiosk.hud)
@@ -687,6 +715,15 @@ enum kiosk_status kiosk_run(const struct kiosk_config *c, const struct kiosk_run
         kiosk_close(&k);
         return KIOSK_FAILED;
     }
+    if (compile_ahead(&k, &e) != 0) {
+        fprintf(k.log, "bentray kiosk: %s%s%s\n", ERROR_TEXT(&e));
+        kiosk_close(&k);
+        return KIOSK_FAILED;
+    }
+    if (stop_requested) {
+        kiosk_close(&k);
+        return KIOSK_STOPPED;
+    }
     k.now = kiosk_now(&k);
     k.last_input = k.now;
     k.second_start = k.now;
@@ -708,7 +745,8 @@ enum kiosk_status kiosk_run(const struct kiosk_config *c, const struct kiosk_run
             break;
     }
     service_stopping();
-    fprintf(k.log, "bentray kiosk: stopped after %lld turns of the loop, %lld frames drawn%s\n", k.turn, k.drawn,
+    fprintf(k.log, "bentray kiosk: stopped after %lld turns of the loop, %lld frames drawn, %ld shader programs "
+            "compiled%s\n", k.turn, k.drawn, k.view.programs_ready ? k.view.programs.built - k.compiled_ahead : 0L,
             stop_requested ? " (signal)" : "");
     kiosk_close(&k);
     return rc;

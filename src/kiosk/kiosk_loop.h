@@ -19,6 +19,10 @@
  * band of refinement): input and the watchdog waited that long. */
 #define KIOSK_SLOW_TURN_SECONDS 1.0
 
+/* The start timeout asked for, before READY, for each state the warm-up draws (kiosk_warm.h):
+ * a first compile of a large program by a Raspberry Pi's driver can take minutes, s. */
+#define KIOSK_WARM_STATE_SECONDS 600.0
+
 /* How often a KMS display without a connected monitor is looked at again, s. */
 #define KIOSK_DISPLAY_RETRY_SECONDS 2.0
 

@@ -48,7 +48,7 @@ static int turned(const struct kiosk_view *v, const struct kiosk_state *st, enum
 
 int kiosk_view_prefetch(struct kiosk_view *v, const struct kiosk_state *st, struct error *e)
 {
-    if (!on_exact_orbits(&v->full))
+    if (v->prefetch_off || !on_exact_orbits(&v->full))
         return 0;
     struct orbit_table_params now;
     orbit_table_params_for(&v->full, &now);

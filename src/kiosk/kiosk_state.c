@@ -66,6 +66,21 @@ double knob_turn_mapped(const struct knob_mapping *m, const struct scene *scene,
     return knob_settle(value + (m->max - m->min) * (double)counts / m->steps, m->min, m->max);
 }
 
+/* Field by field: padding is not part of a state, and a NAN parameter (the scene's own value)
+ * equals itself here. */
+static int same_value(double a, double b)
+{
+    return a == b || (isnan(a) && isnan(b));
+}
+
+int kiosk_state_same(const struct kiosk_state *a, const struct kiosk_state *b)
+{
+    return a->scene == b->scene && a->speed == b->speed && a->mass == b->mass &&
+           same_value(a->speed_param, b->speed_param) && same_value(a->mass_param, b->mass_param) &&
+           a->effects == b->effects && a->effects_from_scene == b->effects_from_scene &&
+           a->pipeline_view == b->pipeline_view;
+}
+
 void kiosk_state_reset(struct kiosk_state *st, const struct kiosk_config *c)
 {
     memset(st, 0, sizeof *st);

@@ -36,6 +36,9 @@ double knob_position(const struct kiosk_knob *k, double p);
  * scene's own value), clamped to the mapping's range. */
 double knob_turn_mapped(const struct knob_mapping *m, const struct scene *scene, double param, long counts);
 
+/* Whether two states are the same, field by field (a NAN parameter equals itself). */
+int kiosk_state_same(const struct kiosk_state *a, const struct kiosk_state *b);
+
 /* The start: the configured start scene and knob starts, geometry only, no pipeline view. */
 void kiosk_state_reset(struct kiosk_state *st, const struct kiosk_config *c);
 

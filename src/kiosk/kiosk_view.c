@@ -24,7 +24,18 @@ void kiosk_view_release(struct kiosk_view *v)
 {
     renderer_destroy(v->renderer);
     v->renderer = NULL;
+    if (v->programs_ready)
+        program_cache_release(&v->programs);
+    v->programs_ready = 0;
     compositor_release(&v->comp);
+}
+
+void kiosk_view_unload(struct kiosk_view *v)
+{
+    renderer_destroy(v->renderer);
+    v->renderer = NULL;
+    v->scene_index = -1;
+    v->prefetched = 0;
 }
 
 int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *base, struct error *e)
@@ -45,6 +56,13 @@ int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *b
     v->renderer = renderer_create(v->gl, &v->live, e);
     if (!v->renderer)
         return -1;
+    /* the first renderer's shader target and MRT choice make the cache; a scene that needs other
+     * programs (another MRT choice) keeps its own and compiles them on each switch */
+    const struct program_cache *own = renderer_programs(v->renderer);
+    if (!v->programs_ready)
+        program_cache_init(&v->programs, &own->target, own->mrt);
+    v->programs_ready = 1;
+    renderer_share_programs(v->renderer, &v->programs);
     v->scene_index = scene_index;
     return 0;
 }

@@ -22,6 +22,7 @@
 #define BT_KIOSK_VIEW_H
 #include "kiosk/compositor.h"
 #include "kiosk/kiosk_state.h"
+#include "render/programs.h"
 #include "render/renderer.h"
 #include "physics/orbit_table.h"
 
@@ -61,6 +62,11 @@ struct kiosk_view {
     int refined_rows;                /* rows of the canvas at full quality, from the bottom */
     struct kiosk_tiles preview;      /* the preview being drawn; next == count: shown */
     struct kiosk_tiles refine;       /* the refinement's tiles */
+    /* the programs of every scene, compiled once (kiosk_warm.c compiles them all before the first
+     * frame): a renderer made for a scene takes them from here */
+    struct program_cache programs;
+    int programs_ready;
+    int prefetch_off;                /* no orbit tables built ahead (while warming) */
     int prefetched;                  /* the orbit tables around prefetched_for were asked for */
     struct orbit_table_params prefetched_for;   /* the refined table of the state they were asked for */
 };
@@ -71,6 +77,8 @@ void kiosk_view_release(struct kiosk_view *v);
 /* Scene index i: base, the scene as read at start, or NULL to read its file now (once per switch).
  * 0, or -1 with e: the scene file's error (where: the file) or the renderer's. */
 int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *base, struct error *e);
+/* No scene loaded (its renderer destroyed); the programs stay. */
+void kiosk_view_unload(struct kiosk_view *v);
 /* Draw the preview of a state into the canvas (the scene must be loaded); refinement starts
  * over. 0, or -1 with e: a state the scene cannot take (where: the scene or the key), or the
  * renderer's or the compositor's failure. */

@@ -38,6 +38,8 @@
  * knob slowing to a crawl near c. log (mass): step is in ln(mass), each count multiplies. */
 enum kiosk_curve { KIOSK_CURVE_LINEAR, KIOSK_CURVE_RAPIDITY, KIOSK_CURVE_LOG };
 
+enum kiosk_ahead { KIOSK_AHEAD_AUTO, KIOSK_AHEAD_ON, KIOSK_AHEAD_OFF };
+
 /* [kiosk] */
 struct kiosk_main {
     char scenes[KIOSK_MAX_SCENES][KIOSK_PATH_LEN];   /* joined with the config's directory */
@@ -50,6 +52,9 @@ struct kiosk_main {
     int refine_frames;               /* frames from preview to full quality */
     int image_memory;                /* MB the scenes' decoded images may take in all */
     int hud;                         /* 1: draw the values on screen */
+    /* compile every scene's shader programs before the first frame (kiosk_warm.h): KIOSK_AHEAD_AUTO
+     * (on a display, not on the headless screen), _ON or _OFF */
+    int compile_ahead;
     char font[KIOSK_PATH_LEN];
     char log[KIOSK_PATH_LEN];        /* a file, or "stderr" */
     char assets_root[KIOSK_PATH_LEN];    /* "": scenes may be anywhere */

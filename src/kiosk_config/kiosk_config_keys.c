@@ -11,6 +11,9 @@
 /* ---- choices, and the names of enumerations ------------------------------------------------ */
 
 static const struct conf_choice switch_choices[] = {{"off", 0}, {"on", 1}, {NULL, 0}};
+static const struct conf_choice ahead_choices[] = {
+    {"auto", KIOSK_AHEAD_AUTO}, {"on", KIOSK_AHEAD_ON}, {"off", KIOSK_AHEAD_OFF}, {NULL, 0}
+};
 static const struct conf_choice backend_choices[] = {
     {"auto", KIOSK_BACKEND_AUTO}, {"kms", KIOSK_BACKEND_KMS}, {"x11", KIOSK_BACKEND_X11},
     {"headless", KIOSK_BACKEND_HEADLESS}, {NULL, 0}
@@ -165,6 +168,7 @@ const struct conf_key kiosk_keys[] = {
     {KSEC_KIOSK, "refine_frames", CONF_INTEGER, .lo = 1, .hi = 60, .offset = AT_CONFIG(kiosk.refine_frames)},
     {KSEC_KIOSK, "image_memory", CONF_INTEGER, .lo = 1, .hi = 65536, .offset = AT_CONFIG(kiosk.image_memory)},
     {KSEC_KIOSK, "hud", SWITCH, .offset = AT_CONFIG(kiosk.hud)},
+    {KSEC_KIOSK, "compile_ahead", CHOOSE(ahead_choices), .offset = AT_CONFIG(kiosk.compile_ahead)},
     {KSEC_KIOSK, "font", CONF_FILE, .offset = AT_CONFIG(kiosk.font)},
     {KSEC_KIOSK, "log", CONF_SPECIAL, .set = kiosk_set_log},
     {KSEC_KIOSK, "assets_root", CONF_DIR, .offset = AT_CONFIG(kiosk.assets_root)},

@@ -87,12 +87,24 @@ void program_cache_init(struct program_cache *pc, const struct shader_target *ta
     pc->mrt = mrt;
 }
 
+int program_cache_fits(const struct program_cache *pc, const struct shader_target *target, int mrt)
+{
+    return pc->mrt == mrt && pc->target.dialect == target->dialect &&
+           pc->target.fragment_highp == target->fragment_highp &&
+           pc->target.draw_buffers_ext == target->draw_buffers_ext && !target->capture && !pc->target.capture;
+}
+
 void program_cache_release(struct program_cache *pc)
 {
-    for (int i = 0; i < pc->n; i++)
-        for (int k = 0; k < pc->entries[i].sp.n_programs; k++)
-            uniforms_release(&pc->entries[i].sp.program[k]);
-    pc->n = 0;
+    for (int i = 0; i < pc->n; i++) {
+        for (int k = 0; k < pc->entries[i]->sp.n_programs; k++)
+            uniforms_release(&pc->entries[i]->sp.program[k]);
+        free(pc->entries[i]->key);
+        free(pc->entries[i]);
+    }
+    free(pc->entries);
+    pc->entries = NULL;
+    pc->n = pc->capacity = 0;
 }
 
 static uint64_t key_part(uint64_t h, const char *text)
@@ -135,18 +147,30 @@ const struct stage_program *program_cache_get_vertex(struct program_cache *pc, c
     char key[PROGRAMS_KEY_LEN];
     int have_key = 0;
     for (int i = 0; i < pc->n; i++) {
-        if (pc->entries[i].hash != hash)
+        if (pc->entries[i]->hash != hash)
             continue;
         if (!have_key && write_key(key, two_targets, defines, vertex, fragment_files, e) != 0)
             return NULL;
         have_key = 1;
-        if (strcmp(pc->entries[i].key, key) == 0)
-            return &pc->entries[i].sp;
+        if (strcmp(pc->entries[i]->key, key) == 0)
+            return &pc->entries[i]->sp;
     }
     if (!have_key && write_key(key, two_targets, defines, vertex, fragment_files, e) != 0)
         return NULL;
-    if (pc->n == PROGRAMS_MAX) {
-        error_set(e, ERROR_RUNTIME, NULL, "internal: more than %d shader variants", PROGRAMS_MAX);
+    struct program_entry *entry = calloc(1, sizeof *entry);
+    char *kept = entry ? strdup(key) : NULL;
+    if (pc->n == pc->capacity && kept) {
+        int capacity = pc->capacity ? 2 * pc->capacity : 16;
+        struct program_entry **grown = realloc(pc->entries, (size_t)capacity * sizeof *grown);
+        if (grown) {
+            pc->entries = grown;
+            pc->capacity = capacity;
+        }
+    }
+    if (!kept || pc->n == pc->capacity) {
+        free(kept);
+        free(entry);
+        error_set(e, ERROR_RUNTIME, NULL, "out of memory for a shader variant");
         return NULL;
     }
     GLuint ids[2] = {0, 0};
@@ -180,6 +204,8 @@ const struct stage_program *program_cache_get_vertex(struct program_cache *pc, c
     for (int k = 0; k < n_programs; k++)
         failed |= !ids[k] || uniforms_read(&sp.program[k], ids[k], e) != 0;
     if (failed) {
+        free(kept);
+        free(entry);
         for (int k = 0; k < n_programs; k++) {
             if (sp.program[k].id)
                 uniforms_release(&sp.program[k]);
@@ -188,8 +214,10 @@ const struct stage_program *program_cache_get_vertex(struct program_cache *pc, c
         }
         return NULL;
     }
-    snprintf(pc->entries[pc->n].key, sizeof pc->entries[pc->n].key, "%s", key);
-    pc->entries[pc->n].hash = hash;
-    pc->entries[pc->n].sp = sp;
-    return &pc->entries[pc->n++].sp;
+    entry->key = kept;
+    entry->hash = hash;
+    entry->sp = sp;
+    pc->entries[pc->n++] = entry;
+    pc->built++;
+    return &entry->sp;
 }

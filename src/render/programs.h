@@ -1,11 +1,12 @@
 /* Shader programs per stage and variant, built once and cached: switching scenes or moving
- * a knob changes uniforms, never the program, unless the variant itself changes. */
+ * a knob changes uniforms, never the program, unless the variant itself changes. A cache may
+ * outlive the renderers that use it (renderer_share_programs): the kiosk keeps one for all its
+ * scenes, so that a scene change compiles nothing. */
 #ifndef BT_PROGRAMS_H
 #define BT_PROGRAMS_H
 #include "gl/shader.h"
 #include <stdint.h>
 
-#define PROGRAMS_MAX 64
 #define PROGRAMS_KEY_LEN 6144   /* defines of a single pass over 64 objects included */
 
 /* A linked program and where its active uniforms are, read from GL once when it is built
@@ -33,12 +34,16 @@ struct program_cache {
     struct shader_target target;
     int mrt;
     /* each variant by its key (targets, defines, files) and the key's hash, which a pass compares
-     * first: a frame of the multipass scheme asks for its programs thousands of times */
-    struct { uint64_t hash; char key[PROGRAMS_KEY_LEN]; struct stage_program sp; } entries[PROGRAMS_MAX];
-    int n;
+     * first: a frame of the multipass scheme asks for its programs thousands of times; each entry
+     * allocated on its own, so that a program handed out stays where it is as the cache grows */
+    struct program_entry { uint64_t hash; char *key; struct stage_program sp; } **entries;
+    int n, capacity;
+    long built;                  /* programs compiled and linked into it so far */
 };
 
 void program_cache_init(struct program_cache *pc, const struct shader_target *target, int mrt);
+/* Whether a renderer with this shader target and MRT choice compiles its programs as pc does. */
+int program_cache_fits(const struct program_cache *pc, const struct shader_target *target, int mrt);
 void program_cache_release(struct program_cache *pc);
 /* The program(s) of a stage: fragment files (NULL-terminated) and variant defines.
  * two_targets: 0 for stages that write one colour (sky). NULL with e on failure. */

@@ -122,7 +122,8 @@ static int renderer_open(struct renderer *r, const struct gl_context *ctx, const
         quad_release();
         return -1;
     }
-    program_cache_init(&r->programs, &r->caps.shader, r->path.mrt);
+    program_cache_init(&r->own_programs, &r->caps.shader, r->path.mrt);
+    r->programs = &r->own_programs;
     r->programs_ready = 1;
     if (renderer_follow_scene(r, e) != 0)
         return -1;
@@ -164,9 +165,20 @@ void renderer_set_hdr(struct renderer *r, int on) { r->hdr = on; }
 void renderer_capture_shaders(struct renderer *r, const char *file, void (*sink)(const char *source, void *arg),
                               void *arg)
 {
-    r->programs.target.capture_file = file;
-    r->programs.target.capture = sink;
-    r->programs.target.capture_arg = arg;
+    r->programs = &r->own_programs;
+    r->programs->target.capture_file = file;
+    r->programs->target.capture = sink;
+    r->programs->target.capture_arg = arg;
+}
+
+const struct program_cache *renderer_programs(const struct renderer *r) { return r->programs; }
+
+int renderer_share_programs(struct renderer *r, struct program_cache *pc)
+{
+    if (!program_cache_fits(pc, &r->own_programs.target, r->own_programs.mrt))
+        return 0;
+    r->programs = pc;
+    return 1;
 }
 int renderer_hdr(const struct renderer *r) { return r->hdr; }
 
@@ -455,7 +467,7 @@ void renderer_destroy(struct renderer *r)
     polygons_release(r);
     if (r->queries[0])
         glDeleteQueries(2, r->queries);
-    program_cache_release(&r->programs);
+    program_cache_release(&r->own_programs);
     quad_release();
     free(r);
 }

@@ -102,6 +102,12 @@ void renderer_destroy(struct renderer *r);
  * compiled again: call it before the first run. */
 void renderer_capture_shaders(struct renderer *r, const char *file, void (*sink)(const char *source, void *arg),
                               void *arg);
+/* The programs this renderer compiles into and takes from: its own, or those it shares. */
+const struct program_cache *renderer_programs(const struct renderer *r);
+/* From now on r takes its programs from pc and adds those it builds there, where pc compiles for the
+ * same shader target and MRT choice (program_cache_fits): 1, else 0 and r keeps its own. pc must
+ * outlive r; call it before the first run. The kiosk shares one cache among all its scenes. */
+int renderer_share_programs(struct renderer *r, struct program_cache *pc);
 /* render.method = orbit_table: the orbit table this scene needs now (its mass, the camera's radius,
  * the bounding sphere, the chord tolerance and the objects' distances from the mass). */
 struct orbit_table_params;

@@ -95,7 +95,7 @@ int stage_frame(struct renderer *r, enum frame_output output, struct error *e)
                  r->model_defines, batch, r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass,
                  written);
     const struct stage_program *sp =
-        program_cache_get(&r->programs, files, defines, output != FRAME_WRITES_COLOUR, e);
+        program_cache_get(r->programs, files, defines, output != FRAME_WRITES_COLOUR, e);
     if (!sp)
         return -1;
     GLuint out0 = output == FRAME_WRITES_STATE ? rs->result_hit : output == FRAME_WRITES_COLOUR ? rs->final_color

@@ -22,7 +22,7 @@ int stage_integrate(struct renderer *r, int segment_start, struct error *e)
 {
     const struct scene *s = r->scene;
     const char *const files[] = {"common.glsl", "bounds.glsl", r->model_file, "stage_integrate.glsl", NULL};
-    const struct stage_program *sp = program_cache_get(&r->programs, files, r->model_defines, 1, e);
+    const struct stage_program *sp = program_cache_get(r->programs, files, r->model_defines, 1, e);
     if (!sp)
         return -1;
     int passes = r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass;

@@ -271,7 +271,7 @@ static int intersect_batch(struct renderer *r, const struct object_batch *b, int
     files[n++] = "shade.glsl";
     files[n++] = "stage_intersect.glsl";
     files[n] = NULL;
-    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, e);
+    const struct stage_program *sp = program_cache_get(r->programs, files, defines, 1, e);
     if (!sp)
         return -1;
     int out = 1 - rs->cur_hit;

@@ -231,7 +231,7 @@ int stage_orbit(struct renderer *r, int segment, int segment_start, struct error
                                  "orbit_table.glsl", "stage_orbit.glsl", NULL};
     char defines[sizeof r->model_defines + sizeof r->observer_defines];
     snprintf(defines, sizeof defines, "%s%s", r->model_defines, r->observer_defines);
-    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, e);
+    const struct stage_program *sp = program_cache_get(r->programs, files, defines, 1, e);
     if (!sp)
         return -1;
     struct orbit_args a = {r, segment};

@@ -112,7 +112,7 @@ static const struct stage_program *object_program(struct renderer *r, const stru
              o->material.texture >= 0 ? "#define TEXTURED 1\n" : "",
              o->material.clock_period > 0.0 ? "#define CLOCKS 1\n" : "", r->observer_defines);
     const char *const files[] = {"common.glsl", "observer.glsl", "shade.glsl", "polygon_fragment.glsl", NULL};
-    return program_cache_get_vertex(&r->programs, vertex, files, defines, 1, e);
+    return program_cache_get_vertex(r->programs, vertex, files, defines, 1, e);
 }
 
 int stage_polygons(struct renderer *r, struct error *e)

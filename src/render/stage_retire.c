@@ -27,8 +27,8 @@ int stage_retire(struct renderer *r, int all, struct error *e)
                                                     NULL};
     struct raystate *rs = &r->rs;
     const struct stage_program *sp =
-        r->sky_at_infinity ? program_cache_get(&r->programs, files_at_infinity, "#define SKY_AT_INFINITY 1\n", 1, e)
-                           : program_cache_get(&r->programs, files, "", 1, e);
+        r->sky_at_infinity ? program_cache_get(r->programs, files_at_infinity, "#define SKY_AT_INFINITY 1\n", 1, e)
+                           : program_cache_get(r->programs, files, "", 1, e);
     if (!sp)
         return -1;
     struct retire_args a0 = {r, all, 1}, a1 = {r, all, 0};

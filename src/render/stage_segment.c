@@ -41,7 +41,7 @@ int stage_segment(struct renderer *r, int segment, struct error *e)
     char defines[sizeof batch + sizeof r->model_defines + 96];
     snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define PASSES_PER_SEGMENT %d\n", r->model_defines,
              batch, r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass);
-    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, e);
+    const struct stage_program *sp = program_cache_get(r->programs, files, defines, 1, e);
     if (!sp)
         return -1;
     /* the other copies of each: the segment's start stays where it is */

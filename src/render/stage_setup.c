@@ -25,7 +25,7 @@ static void set_camera(const struct program_uniforms *p, const void *arg)
 int stage_setup(struct renderer *r, struct error *e)
 {
     struct raystate *rs = &r->rs;
-    const struct stage_program *fill = program_cache_get(&r->programs, fill_files, "", 1, e);
+    const struct stage_program *fill = program_cache_get(r->programs, fill_files, "", 1, e);
     if (!fill || pass_run(r, fill, rs->hit[0], rs->image[0], NULL, 0, set_fill, NULL, e) != 0)
         return -1;
     rs->cur_hit = 0;
@@ -33,7 +33,7 @@ int stage_setup(struct renderer *r, struct error *e)
     const char *const files[] = {"common.glsl", r->model_file, "observer.glsl", "stage_setup.glsl", NULL};
     char defines[sizeof r->model_defines + sizeof r->observer_defines];
     snprintf(defines, sizeof defines, "%s%s", r->model_defines, r->observer_defines);
-    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 1, e);
+    const struct stage_program *sp = program_cache_get(r->programs, files, defines, 1, e);
     if (!sp)
         return -1;
     if (pass_run(r, sp, rs->position[0], rs->velocity[0], NULL, 0, set_camera, r, e) != 0)

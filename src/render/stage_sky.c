@@ -37,7 +37,7 @@ int stage_sky(struct renderer *r, struct error *e)
     struct raystate *rs = &r->rs;
     char defines[sizeof r->observer_defines + 32];
     snprintf(defines, sizeof defines, "%s%s", sky_colour_defines(r), r->observer_defines);
-    const struct stage_program *sp = program_cache_get(&r->programs, files, defines, 0, e);
+    const struct stage_program *sp = program_cache_get(r->programs, files, defines, 0, e);
     if (!sp)
         return -1;
     struct pass_input in[] = {
@@ -50,7 +50,7 @@ int stage_sky(struct renderer *r, struct error *e)
         /* the float colour into a ping-pong texture of the ray state, free once the rays are done */
         char hdr_defines[sizeof defines + 32];
         snprintf(hdr_defines, sizeof hdr_defines, "#define HDR_OUTPUT 1\n%s", defines);
-        const struct stage_program *hp = program_cache_get(&r->programs, files, hdr_defines, 0, e);
+        const struct stage_program *hp = program_cache_get(r->programs, files, hdr_defines, 0, e);
         if (!hp || pass_run(r, hp, raystate_hdr_color(rs), 0, in, 2, set_sky, r, e) != 0)
             return -1;
     }

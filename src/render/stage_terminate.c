@@ -18,7 +18,7 @@ int stage_terminate(struct renderer *r, int segment, struct error *e)
 {
     static const char *const files[] = {"common.glsl", "bounds.glsl", "stage_terminate.glsl", NULL};
     struct raystate *rs = &r->rs;
-    const struct stage_program *sp = program_cache_get(&r->programs, files, "", 1, e);
+    const struct stage_program *sp = program_cache_get(r->programs, files, "", 1, e);
     if (!sp)
         return -1;
     struct terminate_args a = {r->scene, segment};

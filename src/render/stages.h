@@ -23,7 +23,8 @@ struct renderer {
     uint64_t assets_key;          /* what renderer_create loaded of it: objects, textures, sky */
     struct gl_caps caps;
     struct render_path path;
-    struct program_cache programs;
+    struct program_cache own_programs;
+    struct program_cache *programs;    /* own_programs, or a cache lent by renderer_share_programs */
     int programs_ready;           /* program_cache_init ran: renderer_destroy tears the renderer down */
     struct raystate rs;
     int have_state;

@@ -26,6 +26,8 @@ static struct kiosk_config config;
 static char out_dir[64];
 static unsigned char *frames[FRAMES];
 static int width, height;
+static int compile_ahead = KIOSK_AHEAD_AUTO;   /* [kiosk] compile_ahead of the next run */
+static char run_log[8192];                     /* the last run's log */
 
 /* Runs the kiosk of config_path until it has written n frames; reads them into out. */
 static void run_config(const char *config_path, int n, unsigned char **out)
@@ -37,6 +39,7 @@ static void run_config(const char *config_path, int n, unsigned char **out)
     assert_non_null(mkdtemp(out_dir));
     snprintf(config.display.headless_out, sizeof config.display.headless_out, "%s", out_dir);
     config.display.headless_frames = n;
+    config.kiosk.compile_ahead = compile_ahead;
     if (kiosk_config_check(&config, &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     FILE *log = tmpfile();
@@ -44,8 +47,11 @@ static void run_config(const char *config_path, int n, unsigned char **out)
     int rc = kiosk_run(&config, &o);
     rewind(log);
     char line[512];
-    while (fgets(line, sizeof line, log))
+    run_log[0] = 0;
+    while (fgets(line, sizeof line, log)) {
         print_message("log: %s", line);
+        strncat(run_log, line, sizeof run_log - strlen(run_log) - 1);
+    }
     fclose(log);
     assert_int_equal(rc, 0);
     for (int i = 0; i < n; i++) {
@@ -315,6 +321,39 @@ static void test_screen_copied_or_drawn(void **state)
     assert_true(hud_pixels > 0);
 }
 
+/* compile_ahead = on: every program of both scenes is compiled before the first frame, the
+ * visitor's script (two scenes, both knobs, the effects, reset, the pipeline view) then compiles
+ * none, and the frames are those of the run that compiled as it went: programs shared between the
+ * scenes carry nothing of one scene into the other. */
+static void test_programs_compiled_ahead(void **state)
+{
+    (void)state;
+    unsigned char *ahead[FRAMES];
+    compile_ahead = KIOSK_AHEAD_ON;
+    run_config("tests/kiosk/headless.conf", FRAMES, ahead);
+    compile_ahead = KIOSK_AHEAD_AUTO;
+    long before = -1, after = -1;
+    const char *at = strstr(run_log, "shader programs compiled ahead");
+    assert_non_null(at);
+    while (at > run_log && at[-1] != ' ')
+        at--;
+    while (at > run_log && at[-1] == ' ')
+        at--;
+    while (at > run_log && at[-1] != ' ')
+        at--;
+    before = strtol(at, NULL, 10);
+    const char *end = strstr(run_log, "frames drawn, ");
+    assert_non_null(end);
+    after = strtol(end + strlen("frames drawn, "), NULL, 10);
+    print_message("%ld programs compiled ahead, %ld after\n", before, after);
+    assert_true(before >= 4);
+    assert_int_equal(after, 0);
+    for (int f = 0; f < FRAMES; f++) {
+        assert_memory_equal(ahead[f], frames[f], (size_t)width * height * 4);
+        free(ahead[f]);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -324,6 +363,7 @@ int main(void)
         cmocka_unit_test(test_pipeline_view),
         cmocka_unit_test(test_attract_mode),
         cmocka_unit_test(test_screen_copied_or_drawn),
+        cmocka_unit_test(test_programs_compiled_ahead),
     };
     return cmocka_run_group_tests(tests, run_kiosk, free_frames);
 }
