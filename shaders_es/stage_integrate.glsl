@@ -20,6 +20,16 @@ bool finite_state(vec3 x, vec3 v)
     return dot(x, x) < FINITE_LIMIT2 && dot(v, v) < FINITE_LIMIT2;
 }
 
+// The same after a step from x0, which must also stay shorter than the bounding sphere's
+// diameter: a longer one crosses the whole scene in one step, where the field is far too strong
+// for the step (a Yukawa zeta of -1e18), and its chord would meet whatever lies across the scene.
+// The CPU reference, whose steps adapt, fails such rays too.
+bool finite_step(vec3 x0, vec3 x, vec3 v)
+{
+    vec3 d = x - x0;
+    return finite_state(x, v) && dot(d, d) < 4.0 * u_bound_radius2;
+}
+
 #ifndef MODEL_FLAT
 #ifdef METHOD_DOPRI5
 // Dormand and Prince's RK5(4)7M pair (src/physics/model.c has the same tableau as fractions; the
@@ -170,7 +180,7 @@ void step_checked(inout vec3 x, inout vec3 v, inout float steps, inout float h, 
     float h_next;
     float h_try = step_within_budget(h, steps);
     controlled_step(x, v, h_try, x1, v1, accept, h_next);
-    bool ok = finite_state(x1, v1) || !accept;
+    bool ok = finite_step(x, x1, v1) || !accept;
     bool take = running && ok && accept;
     float next_steps = travelled_after(steps, h_try);
     float failed_steps = -1.0 - steps;
@@ -192,6 +202,7 @@ void step_unchecked(inout vec3 x, inout vec3 v, inout float steps, inout float h
     float h_try = step_within_budget(h, steps);
     controlled_step(x, v, h_try, x1, v1, accept, h_next);
     float next_steps = travelled_after(steps, h_try);
+    vec3 x0 = x;
     x = accept ? x1 : x;
     v = accept ? v1 : v;
     steps = accept ? next_steps : steps;
@@ -200,7 +211,7 @@ void step_unchecked(inout vec3 x, inout vec3 v, inout float steps, inout float h
 #ifdef MODEL_HORIZON
     inside = inside && !captured(x);
 #endif
-    clean = clean && inside && finite_state(x, v);
+    clean = clean && inside && finite_step(x0, x, v);
 }
 
 // N unchecked steps from (x, v) (N a constant expression), MODEL_STEPS_A_TURN of them to a loop

@@ -126,8 +126,9 @@ static void warn_meaningless(const struct measured *m, const struct scene *s)
                         "render.unfinished_color, not the scene (raise %s)\n",
                 unfinished, n, 100.0 * (double)unfinished / (double)n, budget_key(&s->render));
     if (n > 0 && failed * 2 >= n)
-        fprintf(stderr, "warning: %zu of %zu rays failed (their state stopped being finite): the model's settings "
-                        "(model %s's keys in [model], or render.step) give no meaningful image\n", failed, n,
+        fprintf(stderr, "warning: %zu of %zu rays failed (their state stopped being finite, or one step crossed the "
+                        "whole scene): the model's settings (model %s's keys in [model], or render.step) give no "
+                        "meaningful image\n", failed, n,
                 model_name(s->model.type));
     const struct render_settings *r = &s->render;
     double segment = r->step_size * r->steps_per_segment;

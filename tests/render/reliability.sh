@@ -68,3 +68,13 @@ awk '/^### A tour.s script/{f=1} f&&/^```$/{if(g){exit}; g=1; next} g' docs/KIOS
 sed 's|^path = visitor.events|path = '"$R"'/tour.events|; s|\.\./\.\./assets|'"$(pwd)"'/assets|g' tests/kiosk/headless.conf > "$R/tour.conf"
 mkdir -p "$R/tour_out"
 check "KIOSK.md's example tour" 0 "input replay: turn mass \+3" -- sh -c "timeout 3 $BT kiosk --config '$R/tour.conf' --check-inputs --out '$R/tour_out' 2>&1; true"
+# a field so strong that one fixed step crosses the whole scene fails its rays with the warning, on
+# the GPU as on the CPU (the GPU used to report every ray as a hit: its chords crossed the floor)
+for e in gpu cpu; do
+    check "a Yukawa zeta of -1e18 fails every ray ($e)" 0 "768 of 768 rays failed" -- \
+        $BT render --scene assets/scenes/potential.scene --size 32x24 --engine $e --set model.zeta=-1e18 --out "$R/zeta_$e.png"
+done
+for p in multipass fused; do
+    check "a Yukawa zeta of -1e18 fails every ray ($p)" 0 "768 of 768 rays failed" -- \
+        $BT render --scene assets/scenes/potential.scene --size 32x24 --set render.pipeline=$p --set model.zeta=-1e18 --out "$R/zeta_$p.png"
+done
