@@ -10,6 +10,7 @@
 #include "kiosk/kiosk_images.h"
 #include "kiosk/kiosk_view.h"
 #include "kiosk/kiosk_warm.h"
+#include "kiosk_config/kiosk_config_keys.h"
 #include "display/screen.h"
 #include "input/script_player.h"
 #include "kiosk/service.h"
@@ -463,6 +464,24 @@ static int keep_scene_images(const struct scene *s, struct error *e)
 
 /* Everything a run needs that a person could have got wrong, checked before anything is shown:
  * the scene files, the scripts, the font, where headless frames go. 0, or -1 with e. */
+/* A font the file names must be one, refused at start at its line as a missing file is (the default
+ * font, named by no line, only leaves the HUD out where it is missing: open_hud). The font opened
+ * here is the HUD's. 0, or -1 with e. */
+static int check_font(struct kiosk *k, struct error *e)
+{
+    const struct kiosk_config *c = k->cfg;
+    int line = kiosk_key_line(c, KSEC_KIOSK, 0, "font");
+    if (!c->kiosk.hud || line == 0)
+        return 0;
+    struct error why;
+    k->font = hud_font_open(c->kiosk.font, &why);
+    if (k->font || why.status != ERROR_INPUT)
+        return 0;
+    char where[KIOSK_PATH_LEN + 16];
+    snprintf(where, sizeof where, "%s:%d", c->path, line);
+    return error_set(e, ERROR_INPUT, where, "[kiosk] font = %s: %s", c->kiosk.font, why.message);
+}
+
 static int preflight(struct kiosk *k, struct error *e)
 {
     const struct kiosk_config *c = k->cfg;
@@ -525,7 +544,7 @@ static int preflight(struct kiosk *k, struct error *e)
             return -1;
     if (c->attract.enabled && script_load(&k->tour, c->attract.script, e) != 0)
         return -1;
-    return 0;
+    return check_font(k, e);
 }
 
 /* The directory headless frames go to: named, there, a directory, and without a frame of an
@@ -603,6 +622,8 @@ static struct screen *open_screen(struct kiosk *k, struct error *e)
 
 static void free_scenes(struct kiosk *k)
 {
+    hud_font_close(k->font);
+    k->font = NULL;
     free(k->scenes);
     scene_free(k->trial);
 }
@@ -613,7 +634,6 @@ static void kiosk_close(struct kiosk *k)
         input_close(k->inputs[i]);
     if (k->have_view)
         kiosk_view_release(&k->view);
-    hud_font_close(k->font);
     free(k->hud_rgba);
     free_scenes(k);
     image_cache_release();
@@ -652,7 +672,8 @@ static int open_hud(struct kiosk *k)
     if (!k->cfg->kiosk.hud)
         return 0;
     struct error e;
-    k->font = hud_font_open(k->cfg->kiosk.font, &e);
+    if (!k->font)
+        k->font = hud_font_open(k->cfg->kiosk.font, &e);
     if (!k->font) {
         fprintf(k->log, "HUD: %s%s%s; the kiosk runs without it\n", ERROR_TEXT(&e));
         return 0;

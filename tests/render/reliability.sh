@@ -78,3 +78,7 @@ for p in multipass fused; do
     check "a Yukawa zeta of -1e18 fails every ray ($p)" 0 "768 of 768 rays failed" -- \
         $BT render --scene assets/scenes/potential.scene --size 32x24 --set render.pipeline=$p --set model.zeta=-1e18 --out "$R/zeta_$p.png"
 done
+# a kiosk font that is not a font is refused at start at its line, as a missing one is
+sed 's|\.\./\.\./assets|'"$(pwd)"'/assets|g; s|path = visitor.events|path = '"$(pwd)"'/tests/kiosk/visitor.events|; s|^hud = on|hud = on\nfont = '"$(pwd)"'/README.md|' tests/kiosk/headless_hud.conf > "$R/font.conf"
+mkdir -p "$R/font_out"
+check "a kiosk font that is not a font" 2 "font.conf:11: \[kiosk\] font = .*README.md: not a font" -- $BT kiosk --config "$R/font.conf" --out "$R/font_out" --frames 1
