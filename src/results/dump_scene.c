@@ -1,5 +1,7 @@
 #include "results/dump_scene.h"
+#include <stdint.h>
 #include <stdio.h>
+#include <string.h>
 
 _Static_assert(SCENE_MAX_OBJECTS <= DUMP_MAX_OBJECTS, "a dump must hold every object of a scene");
 _Static_assert(SCENE_MAX_SIZE <= DUMP_MAX_SIDE && SCENE_MAX_PIXELS <= DUMP_MAX_PIXELS,
@@ -27,8 +29,18 @@ double object_size(const struct object *o)
 
 void dump_describe_scene(struct dump *d, const struct scene *s)
 {
-    /* a name longer than the field is cut: it only guards against comparing unrelated dumps */
-    snprintf(d->scene, sizeof d->scene, "%.*s", (int)sizeof d->scene - 1, s->name);
+    /* the field guards against comparing unrelated dumps: a name longer than it keeps its start and
+     * ends in '~' and a hash of the whole name, so that two names sharing their first characters
+     * still differ */
+    size_t room = sizeof d->scene - 1;
+    if (strlen(s->name) <= room) {
+        snprintf(d->scene, sizeof d->scene, "%s", s->name);
+    } else {
+        uint32_t h = 2166136261u;
+        for (const unsigned char *c = (const unsigned char *)s->name; *c; c++)
+            h = (h ^ *c) * 16777619u;
+        snprintf(d->scene, sizeof d->scene, "%.*s~%08x", (int)(room - 9), s->name, (unsigned)h);
+    }
     d->n_objects = s->n_objects;
     for (int i = 0; i < s->n_objects; i++)
         d->object_size[i] = (float)object_size(&s->objects[i]);

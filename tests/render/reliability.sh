@@ -82,3 +82,8 @@ done
 sed 's|\.\./\.\./assets|'"$(pwd)"'/assets|g; s|path = visitor.events|path = '"$(pwd)"'/tests/kiosk/visitor.events|; s|^hud = on|hud = on\nfont = '"$(pwd)"'/README.md|' tests/kiosk/headless_hud.conf > "$R/font.conf"
 mkdir -p "$R/font_out"
 check "a kiosk font that is not a font" 2 "font.conf:11: \[kiosk\] font = .*README.md: not a font" -- $BT kiosk --config "$R/font.conf" --out "$R/font_out" --frames 1
+# dumps of two scenes whose names share their first 31 characters are two scenes to compare
+for n in x y; do
+    $BT render --scene assets/scenes/test.scene --size 16x12 --set "scene.name=aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa$n" --dump "$R/long_$n.dump" --out "$R/long_$n.png" --quiet > /dev/null 2>&1
+done
+check "compare long scene names" 2 "scene 'a{22}~[0-9a-f]{8}' differs from the reference's 'a{22}~[0-9a-f]{8}'" -- $BT compare "$R/long_x.dump" "$R/long_y.dump"
