@@ -741,10 +741,6 @@ enum kiosk_status kiosk_run(const struct kiosk_config *c, const struct kiosk_run
         kiosk_close(&k);
         return KIOSK_FAILED;
     }
-    if (stop_requested) {
-        kiosk_close(&k);
-        return KIOSK_STOPPED;
-    }
     k.now = kiosk_now(&k);
     k.last_input = k.now;
     k.second_start = k.now;
