@@ -6,6 +6,25 @@ uniform float u_use_source;
 
 void main()
 {
+#ifdef PROBE_LOOPS
+    // How many turns a loop really runs when u_value.x of them are asked for: llvmpipe ends every
+    // loop after 65535 turns, whatever its condition. Counted in a float (exact to 2^24) and
+    // written as three bytes, each turn's work depending on the last so that no compiler folds it.
+    float asked = u_value.x;
+    float turns = 0.0;
+    float x = u_value.y;
+    for (highp int i = 0; i < PROBE_LOOP_TURNS; i++) {
+        if (turns >= asked)
+            break;
+        turns += 1.0;
+        x = fract(x * 1.5 + 0.25);
+    }
+    float high = floor(turns / 65536.0);
+    float middle = floor((turns - high * 65536.0) / 256.0);
+    float low = turns - high * 65536.0 - middle * 256.0;
+    gl_FragColor = vec4(low, middle, high, 255.0 * step(-1.0, x)) / 255.0;
+    return;
+#endif
 #ifdef PROBE_ARITHMETIC
     // What the fragment shader really computes in: u_value.x = u_value.y = 1 + 2^-12, which 32-bit
     // floats hold and 16-bit ones round to 1; their product less 1, times u_value.z = 1024, is

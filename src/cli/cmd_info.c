@@ -33,6 +33,12 @@ static void print_caps(const struct gl_caps *c)
     printf("fragment highp:  %s (%d mantissa bits)\n", c->fragment_highp ? "yes" : "no", c->fragment_highp_bits);
     printf("arithmetic:      %s%s\n", c->fragment_fp32 ? "32-bit floats (probed)" : "no 32-bit floats: ",
            c->fragment_fp32 ? "" : c->fragment_fp32_why);
+    if (!c->long_loops)
+        printf("loop turns:      no long loops (GLSL ES 1.00)\n");
+    else if (c->loop_turns >= CAPS_LOOP_TURNS_PROBED)
+        printf("loop turns:      at least %ld (probed)\n", c->loop_turns);
+    else
+        printf("loop turns:      %ld: a fragment-shader loop ends there (probed)\n", c->loop_turns);
     printf("max texture:     %d\n", c->max_texture_size);
     printf("float render targets (written, sampled and read back):\n");
     for (int i = 0; i < c->n_formats; i++)

@@ -236,18 +236,17 @@ static void probe_mrt(struct gl_caps *c, const struct float_format *f)
     }
 }
 
-/* A product that 32-bit floats get right and 16-bit ones do not, drawn with the precision the
- * renderer's shaders declare into an RGBA8 target and read back (probe_fragment.glsl). */
-static void probe_arithmetic(struct gl_caps *c)
+/* probe_fragment.glsl with `defines`, drawn with u_value v into an RGBA8 target of PROBE_SIZE
+ * pixels, its first pixel read back into got: 0, or -1 where it does not compile or the target is
+ * incomplete (got left alone). */
+static int probe_draw_rgba8(const struct gl_caps *c, const char *defines, const float v[4], unsigned char got[4])
 {
     static const char *const vs[] = {"quad_vertex.glsl", NULL};
     static const char *const fs[] = {"probe_fragment.glsl", NULL};
     struct error err;
-    GLuint prog = shader_program_build(&c->shader, "#define PROBE_ARITHMETIC 1\n", vs, fs, &err);
-    if (!prog) {
-        snprintf(c->fragment_fp32_why, sizeof c->fragment_fp32_why, "the arithmetic probe does not compile");
-        return;
-    }
+    GLuint prog = shader_program_build(&c->shader, defines, vs, fs, &err);
+    if (!prog)
+        return -1;
     GLuint tex, fbo;
     glGenTextures(1, &tex);
     glBindTexture(GL_TEXTURE_2D, tex);
@@ -257,14 +256,32 @@ static void probe_arithmetic(struct gl_caps *c)
     glGenFramebuffers(1, &fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
-    unsigned char got[4] = {0, 0, 0, 0};
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) {
-        const float one_plus = 1.0f + 1.0f / 4096.0f, v[4] = {one_plus, one_plus, 1024.0f, 0.0f};
+    int complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    if (complete) {
         glViewport(0, 0, PROBE_SIZE, PROBE_SIZE);
         set_probe(prog, v, 0);
         quad_draw(prog, 0.0f);
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, got);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteTextures(1, &tex);
+    glDeleteProgram(prog);
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    return complete ? 0 : -1;
+}
+
+/* A product that 32-bit floats get right and 16-bit ones do not, drawn with the precision the
+ * renderer's shaders declare into an RGBA8 target and read back (probe_fragment.glsl). */
+static void probe_arithmetic(struct gl_caps *c)
+{
+    const float one_plus = 1.0f + 1.0f / 4096.0f, v[4] = {one_plus, one_plus, 1024.0f, 0.0f};
+    unsigned char got[4] = {0, 0, 0, 0};
+    if (probe_draw_rgba8(c, "#define PROBE_ARITHMETIC 1\n", v, got) != 0) {
+        snprintf(c->fragment_fp32_why, sizeof c->fragment_fp32_why, "the arithmetic probe does not compile");
+        return;
     }
     /* 0.5005 is 128 of 255; fp16 gives 0 */
     c->fragment_fp32 = got[0] >= 120 && got[0] <= 136 && !gl_fault("fp16_alu");
@@ -272,12 +289,28 @@ static void probe_arithmetic(struct gl_caps *c)
         snprintf(c->fragment_fp32_why, sizeof c->fragment_fp32_why, "(1 + 2^-12)^2 - 1 came out as %.4f x 2^-10, "
                  "not 0.5005 x 2^-10: the fragment shaders compute in 16-bit floats or less%s",
                  got[0] / 255.0, gl_fault("fp16_alu") ? " (BT_FAULT=fp16_alu)" : "");
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteFramebuffers(1, &fbo);
-    glDeleteTextures(1, &tex);
-    glDeleteProgram(prog);
-    while (glGetError() != GL_NO_ERROR) {
+}
+
+/* The most turns a fragment-shader loop runs: CAPS_LOOP_TURNS_PROBED asked for, and what one
+ * really ran read back (llvmpipe stops every loop after 65535). Only where long loops run at all. */
+static void probe_loops(struct gl_caps *c)
+{
+    c->loop_turns = c->long_loops ? CAPS_LOOP_TURNS_PROBED : 0;
+    if (!c->long_loops)
+        return;
+    char defines[64];
+    snprintf(defines, sizeof defines, "#define PROBE_LOOPS 1\n#define PROBE_LOOP_TURNS %ld\n",
+             CAPS_LOOP_TURNS_PROBED + 1);
+    const float v[4] = {(float)CAPS_LOOP_TURNS_PROBED, 0.3f, 0.0f, 0.0f};
+    unsigned char got[4] = {0, 0, 0, 0};
+    if (probe_draw_rgba8(c, defines, v, got) != 0) {
+        c->loop_turns = 0;
+        return;
     }
+    long turns = got[0] + 256L * got[1] + 65536L * got[2];
+    c->loop_turns = turns < CAPS_LOOP_TURNS_PROBED ? turns : CAPS_LOOP_TURNS_PROBED;
+    if (gl_fault("loop_limit"))
+        c->loop_turns = 4096;          /* a GPU that ends loops early, as llvmpipe does at 65535 */
 }
 
 /* Samples that pass the depth test of one draw of the quad at depth 0.5 (NDC z 0) over a depth
@@ -423,7 +456,7 @@ int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, struct error 
      * unless forced (render.pipeline = single) */
     c->long_loops = !c->is_es || c->major >= 3;
     snprintf(c->long_loops_why, sizeof c->long_loops_why,
-             c->long_loops ? "%s %d.%d runs fragment-shader loops of any length"
+             c->long_loops ? "%s %d.%d runs long fragment-shader loops"
                            : "%s %d.%d need not run long fragment-shader loops (GLSL ES 1.00, appendix A)",
              c->is_es ? "OpenGL ES" : "OpenGL", c->major, c->minor);
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &c->max_texture_size);
@@ -465,6 +498,7 @@ int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, struct error 
     probe_query(c, prog);
     probe_blit(c);
     probe_arithmetic(c);
+    probe_loops(c);
     glDeleteProgram(prog);
     const struct float_format *best = caps_format(c, 1);
     probe_mrt(c, best ? best : caps_format(c, 0));

@@ -7,6 +7,9 @@
 #include "gl/shader.h"
 
 #define CAPS_MAX_FORMATS 4
+/* Turns of a fragment-shader loop the probe asks for: more than a single-pass frame ever needs
+ * (SCENE_MAX_SEGMENTS segments). */
+#define CAPS_LOOP_TURNS_PROBED 200000L
 
 struct float_format {
     const char *name;          /* "RGBA32F", "RGBA16F", ... */
@@ -31,7 +34,10 @@ struct gl_caps {
     int max_fragment_uniform_vectors, max_texture_units;
     int mrt_works;
     char mrt_why[160];
-    int long_loops;                  /* fragment loops of any length: the single-pass frame */
+    int long_loops;                  /* long fragment loops: the single-pass frame */
+    /* the most turns one fragment-shader loop really runs, probed up to CAPS_LOOP_TURNS_PROBED
+     * (llvmpipe ends every loop after 65535); 0 where long loops do not run */
+    long loop_turns;
     char long_loops_why[160];
     /* occlusion queries that count what passes the depth test: the multipass scheme stops once
      * every ray is retired. query_target: GL_ANY_SAMPLES_PASSED_CONSERVATIVE (ES) or
@@ -64,7 +70,8 @@ int gl_has_extension(const char *name);
  *   hud_whole            the kiosk blends its whole HUD, not only the rows with something on them
  *   no_highp             the GPU reports no highp float in fragment shaders: they declare mediump,
  *                        which llvmpipe then really computes in 16-bit floats
- *   fp16_alu             the arithmetic probe finds 16-bit floats although highp is reported (lima) */
+ *   fp16_alu             the arithmetic probe finds 16-bit floats although highp is reported (lima)
+ *   loop_limit           the loop probe finds loops ended after 4096 turns (llvmpipe: 65535) */
 int gl_fault(const char *name);
 /* "GL_FRAMEBUFFER_UNSUPPORTED" and the like, for messages. */
 const char *gl_framebuffer_status_name(GLenum status);

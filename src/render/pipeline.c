@@ -22,6 +22,14 @@ static void objects_why(const struct renderer *r, char *why, size_t whylen)
              r->scene->render.moving_objects == MOVING_POLYGONS ? ", or are drawn as polygons" : "");
 }
 
+/* The most turns one loop of the single-pass frame takes: a turn a segment (stage_frame.glsl), or
+ * two a chord and two more (stage_orbit_frame.glsl). */
+static long frame_loop_turns(const struct renderer *r)
+{
+    const struct scene *s = r->scene;
+    return r->exact_orbits ? 2L * s->render.max_chords + 2 : (long)render_segments(&s->render);
+}
+
 /* Whether the whole ray runs in one pass, with why in words. */
 static int single_pass_fits(const struct renderer *r, int per_segment_hook, char *why, size_t whylen,
                             struct error *e)
@@ -44,6 +52,14 @@ static int single_pass_fits(const struct renderer *r, int per_segment_hook, char
     }
     if (!r->caps.long_loops) {
         snprintf(why, whylen, "%s", r->caps.long_loops_why);
+        return 0;
+    }
+    /* a loop that the GPU ends early would leave rays short of their budget, unnoticed */
+    long turns = frame_loop_turns(r);
+    if (turns > r->caps.loop_turns) {
+        snprintf(why, whylen, "this GPU ends a fragment-shader loop after %ld turns (probed), and one ray may take "
+                 "%ld %s", r->caps.loop_turns, r->exact_orbits ? (long)s->render.max_chords : turns,
+                 r->exact_orbits ? "chords" : "segments");
         return 0;
     }
     if (object_batch_all(r, &b) != 0) {

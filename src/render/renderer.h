@@ -94,7 +94,7 @@ int renderer_complete_state(struct renderer *r, struct error *e);
 /* "multipass", "fused segment" or "single pass": how the last run was scheduled. */
 const char *renderer_pipeline(const struct renderer *r);
 /* Why the last run took that pipeline, in words ("render.pipeline = multipass", "OpenGL ES 3.2
- * runs fragment-shader loops of any length", ...). */
+ * runs long fragment-shader loops", ...). */
 const char *renderer_pipeline_why(const struct renderer *r);
 void renderer_destroy(struct renderer *r);
 /* From now on every fragment shader this renderer compiles from shader file `file` ("stage_frame.glsl")

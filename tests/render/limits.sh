@@ -119,5 +119,17 @@ for fault in no_highp fp16_alu; do
 done
 check "fp16 arithmetic in info" 0 "^arithmetic: +no 32-bit floats: \(1 \+ 2\^-12\)\^2 - 1 came out as 0.0000 x 2\^-10" -- env BT_FAULT=no_highp $BT info --backend egl
 check "fp32 arithmetic in info" 0 "^arithmetic: +32-bit floats \(probed\)" -- $BT info --backend osmesa
+# a loop the GPU ends early (llvmpipe: after 65535 turns) would leave rays short of their budget: the
+# probe counts the turns one really runs, and a single pass that would need more is not taken
+for b in egl osmesa; do
+    check "loop turns probed ($b)" 0 "^loop turns: +([0-9]+: a fragment-shader loop ends there|at least 200000) \(probed\)" -- $BT info --backend $b
+done
+check "loop limit in info" 0 "^loop turns: +4096: a fragment-shader loop ends there" -- env BT_FAULT=loop_limit $BT info --backend egl
+check "a ray longer than the GPU's loops is not drawn in one pass" 0 "\(fused segment: this GPU ends a fragment-shader loop after 4096 turns \(probed\), and one ray may take 5000 segments" -- \
+    env BT_FAULT=loop_limit $BT render --scene assets/scenes/potential.scene --size 16x12 --set render.segments=5000 --set render.max_path=0 --out "$TMP/loops.png"
+check "a ray within the GPU's loops is" 0 "\(single pass: " -- \
+    env BT_FAULT=loop_limit $BT render --scene assets/scenes/potential.scene --size 16x12 --set render.segments=4096 --set render.max_path=0 --out "$TMP/loops4096.png"
+check "exact orbits longer than the GPU's loops" 0 "this GPU ends a fragment-shader loop after 4096 turns \(probed\), and one ray may take 3000 chords" -- \
+    env BT_FAULT=loop_limit $BT render --scene assets/scenes/schwarzschild.scene --size 16x12 --set render.max_chords=3000 --out "$TMP/loops_orbit.png"
 echo "limit and fault tests: $fails failed"
 [ "$fails" = 0 ]
