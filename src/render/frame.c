@@ -46,6 +46,16 @@ static int run_image(struct renderer *r, const struct scene *s, const struct sta
     return 0;
 }
 
+/* The most steps (or chords) a ray of s may take: its budget. */
+static double ray_steps_bound(const struct scene *s)
+{
+    if (model_is_straight(&s->model))
+        return 1.0;
+    if (s->render.method == METHOD_ORBIT_TABLE)
+        return s->render.max_chords;
+    return (double)render_segments(&s->render) * s->render.steps_per_segment;
+}
+
 static int run_samples(struct renderer *r, const struct scene *s, const struct star_sky *stars,
                        struct render_result *out, int with_state, enum progress_mode progress, struct error *e)
 {
@@ -57,7 +67,10 @@ static int run_samples(struct renderer *r, const struct scene *s, const struct s
     struct frame_progress p = {.runs = pattern.n + extra_centre, .samples = pattern.n};
     progress_begin(&p.line, progress);
     long pixel_samples = (long)s->render.width * s->render.height * p.runs;
-    p.banded = progress == PROGRESS_ALWAYS || (progress == PROGRESS_AUTO && pixel_samples >= FRAME_BAND_MIN_PIXELS);
+    /* a small frame whose rays may take long (a budget of many steps) shows progress too */
+    double ray_steps = (double)pixel_samples * ray_steps_bound(s);
+    p.banded = progress == PROGRESS_ALWAYS || (progress == PROGRESS_AUTO && (pixel_samples >= FRAME_BAND_MIN_PIXELS ||
+                                                                            ray_steps >= FRAME_BAND_MIN_RAY_STEPS));
     if (pattern.n == 1) {
         int rc = run_image(r, s, stars, 0.0, 0.0, out, with_state, &p, e);
         progress_end(&p.line);

@@ -11,6 +11,9 @@
 /* Without --progress, only a render of at least this many pixels times samples is drawn in bands
  * (and can show progress): smaller ones are one run per sample, their passes as the scheme has them. */
 #define FRAME_BAND_MIN_PIXELS 250000L
+/* ... or whose rays may take at least this many integration steps (or chords) in all: about a
+ * second of llvmpipe on two cores (docs/BENCH.md, the machine's limit). */
+#define FRAME_BAND_MIN_RAY_STEPS 3e8
 
 struct frame_progress {
     struct progress line;
