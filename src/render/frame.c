@@ -56,6 +56,13 @@ static double ray_steps_bound(const struct scene *s)
     return (double)render_segments(&s->render) * s->render.steps_per_segment;
 }
 
+int frame_bands_wanted(const struct scene *s, long pixel_samples)
+{
+    /* a small frame whose rays may take long (a budget of many steps) shows progress too */
+    return pixel_samples >= FRAME_BAND_MIN_PIXELS ||
+           (double)pixel_samples * ray_steps_bound(s) >= FRAME_BAND_MIN_RAY_STEPS;
+}
+
 static int run_samples(struct renderer *r, const struct scene *s, const struct star_sky *stars,
                        struct render_result *out, int with_state, enum progress_mode progress, struct error *e)
 {
@@ -67,10 +74,7 @@ static int run_samples(struct renderer *r, const struct scene *s, const struct s
     struct frame_progress p = {.runs = pattern.n + extra_centre, .samples = pattern.n};
     progress_begin(&p.line, progress);
     long pixel_samples = (long)s->render.width * s->render.height * p.runs;
-    /* a small frame whose rays may take long (a budget of many steps) shows progress too */
-    double ray_steps = (double)pixel_samples * ray_steps_bound(s);
-    p.banded = progress == PROGRESS_ALWAYS || (progress == PROGRESS_AUTO && (pixel_samples >= FRAME_BAND_MIN_PIXELS ||
-                                                                            ray_steps >= FRAME_BAND_MIN_RAY_STEPS));
+    p.banded = progress == PROGRESS_ALWAYS || (progress == PROGRESS_AUTO && frame_bands_wanted(s, pixel_samples));
     if (pattern.n == 1) {
         int rc = run_image(r, s, stars, 0.0, 0.0, out, with_state, &p, e);
         progress_end(&p.line);

@@ -15,6 +15,10 @@
  * second of llvmpipe on two cores (docs/BENCH.md, the machine's limit). */
 #define FRAME_BAND_MIN_RAY_STEPS 3e8
 
+/* Whether a render of s drawing pixel_samples rays in all is drawn in bands without --progress
+ * (FRAME_BAND_MIN_PIXELS or FRAME_BAND_MIN_RAY_STEPS reached). */
+int frame_bands_wanted(const struct scene *s, long pixel_samples);
+
 struct frame_progress {
     struct progress line;
     int banded;              /* draw in bands (else one run, and no progress) */

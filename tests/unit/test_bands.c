@@ -131,12 +131,30 @@ static void test_outcomes_alone(void **state)
     }
 }
 
+/* Without --progress a render is drawn in bands (and can show progress) when it is large, or when
+ * its rays may take very many steps in all: a small frame with a long budget shows it too. */
+static void test_long_budgets_in_bands(void **state)
+{
+    (void)state;
+    static struct scene s;
+    struct error e;
+    if (scene_load(&s, "assets/scenes/potential.scene", &e) != 0)
+        fail_msg("%s", e.message);
+    assert_false(frame_bands_wanted(&s, 320L * 240));             /* the scene as shipped: one run */
+    assert_true(frame_bands_wanted(&s, FRAME_BAND_MIN_PIXELS));   /* a large frame */
+    if (scene_set(&s, "render.segments=100000", &e) != 0 || scene_set(&s, "render.max_path=0", &e) != 0)
+        fail_msg("%s", e.message);
+    assert_true(frame_bands_wanted(&s, 64L * 48));                 /* small, but 3e9 steps at most */
+    assert_false(frame_bands_wanted(&s, 16L * 12));                /* 1.9e8 */
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_bands_are_the_frame),
         cmocka_unit_test(test_polygon_bands),
         cmocka_unit_test(test_outcomes_alone),
+        cmocka_unit_test(test_long_budgets_in_bands),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
