@@ -11,6 +11,7 @@
 #include "kiosk/kiosk_view.h"
 #include "kiosk/kiosk_warm.h"
 #include "kiosk_config/kiosk_config_keys.h"
+#include "render/orbit_store.h"
 #include "display/screen.h"
 #include "input/script_player.h"
 #include "kiosk/service.h"
@@ -502,6 +503,21 @@ static int preflight(struct kiosk *k, struct error *e)
         if ((k->scenes[i].sky.stars > 0 || k->scenes[i].sky.milky_way > 0.0) && k->log)
             fprintf(k->log, "%s: [sky] stars and milky_way are drawn into bentray render's images; the kiosk shows "
                             "the sky without them\n", c->kiosk.scenes[i]);
+        /* a scene on exact orbits builds its table again at each mass detent, on the render thread
+         * where no table was built ahead: a table too large to build ahead would hold the loop (and
+         * the watchdog) for seconds at every detent */
+        if (k->scenes[i].render.method == METHOD_ORBIT_TABLE && k->scenes[i].model.type == MODEL_SCHWARZSCHILD) {
+            struct orbit_table_params p;
+            orbit_table_params_for(&k->scenes[i], &p);
+            size_t bytes = orbit_store_table_bytes(&p);
+            if (bytes > ORBIT_STORE_AHEAD_MAX_BYTES)
+                return error_set(e, ERROR_INPUT, c->kiosk.scenes[i], "render.orbit_rows = %d and render.orbit_columns "
+                                 "= %d make an orbit table of %.1f MB, which the kiosk would build again at every "
+                                 "mass detent, on its loop, for longer than the watchdog may allow: at most %.0f MB "
+                                 "in the kiosk (fewer rows or columns)", k->scenes[i].render.orbit_rows,
+                                 k->scenes[i].render.orbit_columns, bytes / 1048576.0,
+                                 ORBIT_STORE_AHEAD_MAX_BYTES / 1048576.0);
+        }
         /* every scene must take the knobs' start values: reset and a scene change fall back to them */
         struct scene *trial = k->trial;
         struct kiosk_state start;

@@ -87,3 +87,10 @@ for n in x y; do
     $BT render --scene assets/scenes/test.scene --size 16x12 --set "scene.name=aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa$n" --dump "$R/long_$n.dump" --out "$R/long_$n.png" --quiet > /dev/null 2>&1
 done
 check "compare long scene names" 2 "scene 'a{22}~[0-9a-f]{8}' differs from the reference's 'a{22}~[0-9a-f]{8}'" -- $BT compare "$R/long_x.dump" "$R/long_y.dump"
+# a scene on exact orbits whose table is too large to build ahead is refused at the kiosk's start
+# (it would be built on the loop at every mass detent, for seconds)
+sed 's|^\[render\]|[render]\norbit_rows = 2048|; s|\.\./sky/|'"$(pwd)"'/assets/sky/|g; s|\.\./textures/|'"$(pwd)"'/assets/textures/|g' assets/scenes/schwarzschild.scene > "$R/big_table.scene"
+sed 's|^scenes = .*|scenes = '"$R"'/big_table.scene|; s|^start_scene = .*|start_scene = 0|; /^assets_root/d; s|path = visitor.events|path = '"$(pwd)"'/tests/kiosk/visitor.events|' tests/kiosk/headless.conf > "$R/big_table.conf"
+mkdir -p "$R/big_table_out"
+check "a kiosk scene with a table too large to build ahead" 2 "big_table.scene: render.orbit_rows = 2048 and render.orbit_columns = 128 make an orbit table of 10.1 MB.*at most 8 MB in the kiosk" -- \
+    $BT kiosk --config "$R/big_table.conf" --out "$R/big_table_out" --frames 1
