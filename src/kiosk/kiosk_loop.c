@@ -506,7 +506,7 @@ static int preflight(struct kiosk *k, struct error *e)
         /* a scene on exact orbits builds its table again at each mass detent, on the render thread
          * where no table was built ahead: a table too large to build ahead would hold the loop (and
          * the watchdog) for seconds at every detent */
-        if (k->scenes[i].render.method == METHOD_ORBIT_TABLE && k->scenes[i].model.type == MODEL_SCHWARZSCHILD) {
+        if (k->scenes[i].render.method == METHOD_ORBIT_TABLE) {
             struct orbit_table_params p;
             orbit_table_params_for(&k->scenes[i], &p);
             size_t bytes = orbit_store_table_bytes(&p);

@@ -6,14 +6,6 @@
 #include "render/orbit_store.h"
 #include <math.h>
 
-/* Whether the scene's rays follow tabulated orbits (and so need a table). */
-static int on_exact_orbits(const struct scene *s)
-{
-    return s->render.method == METHOD_ORBIT_TABLE && !model_is_straight(&s->model) &&
-           s->model.type == MODEL_SCHWARZSCHILD &&
-           orbit_table_resolves(s->model.mass, v3_len(v3_sub(s->camera.position, s->model.center)));
-}
-
 /* Appends p unless the list has it; 1 when added. */
 static int add_unique(struct orbit_table_params *list, int *n, const struct orbit_table_params *p)
 {
@@ -48,7 +40,7 @@ static int turned(const struct kiosk_view *v, const struct kiosk_state *st, enum
 
 int kiosk_view_prefetch(struct kiosk_view *v, const struct kiosk_state *st, struct error *e)
 {
-    if (v->prefetch_off || !on_exact_orbits(&v->full))
+    if (v->prefetch_off || !scene_on_exact_orbits(&v->full))
         return 0;
     struct orbit_table_params now;
     orbit_table_params_for(&v->full, &now);
@@ -73,7 +65,7 @@ int kiosk_view_prefetch(struct kiosk_view *v, const struct kiosk_state *st, stru
                 struct kiosk_state next;
                 struct error ignored;
                 if (!turned(v, st, (enum input_knob)knob, sign * d, &next) ||
-                    kiosk_state_apply(&next, &v->base, full, &ignored) != 0 || !on_exact_orbits(full))
+                    kiosk_state_apply(&next, &v->base, full, &ignored) != 0 || !scene_on_exact_orbits(full))
                     continue;
                 struct orbit_table_params p;
                 kiosk_preview_scene(full, &v->cfg->kiosk, preview);

@@ -28,6 +28,20 @@ static uint64_t assets_key(const struct scene *s)
     return h;
 }
 
+/* A mass too small for an orbit table in double precision bends no camera ray by a float rounding
+ * but those within a few microradians of it (orbit_table.h): flat space, on exact orbits. */
+static int mass_unresolved(const struct scene *s)
+{
+    return s->model.type == MODEL_SCHWARZSCHILD &&
+           !orbit_table_resolves(s->model.mass, v3_len(v3_sub(s->camera.position, s->model.center)));
+}
+
+int scene_on_exact_orbits(const struct scene *s)
+{
+    return s->render.method == METHOD_ORBIT_TABLE && s->model.type == MODEL_SCHWARZSCHILD &&
+           !model_is_straight(&s->model) && !mass_unresolved(s);
+}
+
 /* The variant of the scene as it is now: a knob may have switched the field off (flat space, not
  * integrated) or on, set the observer moving, or changed the effects between two frames. The
  * programs of every variant stay cached; only the black-body table is rebuilt when the tone
@@ -38,12 +52,8 @@ static int renderer_follow_scene(struct renderer *r, struct error *e)
     /* exact orbits need fp32 textures; without them the rays are integrated (the path says so) */
     r->method = scene->render.method == METHOD_ORBIT_TABLE && !r->path.fp32 ? METHOD_RK4 : scene->render.method;
     /* a model with its fields off is flat space: nothing is integrated (model_is_straight); so is
-     * a mass too small for an orbit table in double precision, on exact orbits: it bends no
-     * camera ray by a float rounding but those within a few microradians of it (orbit_table.h) */
-    r->straight = model_is_straight(&scene->model) ||
-                  (r->method == METHOD_ORBIT_TABLE && scene->model.type == MODEL_SCHWARZSCHILD &&
-                   !orbit_table_resolves(scene->model.mass,
-                                         v3_len(v3_sub(scene->camera.position, scene->model.center))));
+     * a mass too small for an orbit table, on exact orbits */
+    r->straight = model_is_straight(&scene->model) || (r->method == METHOD_ORBIT_TABLE && mass_unresolved(scene));
     r->exact_orbits = !r->straight && r->method == METHOD_ORBIT_TABLE;
     /* integrated rays around a mass look the sky up along their direction at infinity (exact
      * orbits take it from the orbit table) */

@@ -108,6 +108,9 @@ const struct program_cache *renderer_programs(const struct renderer *r);
  * same shader target and MRT choice (program_cache_fits): 1, else 0 and r keeps its own. pc must
  * outlive r; call it before the first run. The kiosk shares one cache among all its scenes. */
 int renderer_share_programs(struct renderer *r, struct program_cache *pc);
+/* Whether the rays of s follow exact orbits from an orbit table: render.method = orbit_table around
+ * a mass that bends them (on a GPU with 32-bit float textures; without, the renderer integrates). */
+int scene_on_exact_orbits(const struct scene *s);
 /* render.method = orbit_table: the orbit table this scene needs now (its mass, the camera's radius,
  * the bounding sphere, the chord tolerance and the objects' distances from the mass). */
 struct orbit_table_params;
