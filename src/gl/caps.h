@@ -71,7 +71,9 @@ int gl_has_extension(const char *name);
  *   no_highp             the GPU reports no highp float in fragment shaders: they declare mediump,
  *                        which llvmpipe then really computes in 16-bit floats
  *   fp16_alu             the arithmetic probe finds 16-bit floats although highp is reported (lima)
- *   loop_limit           the loop probe finds loops ended after 4096 turns (llvmpipe: 65535) */
+ *   loop_limit           the loop probe finds loops ended after 4096 turns (llvmpipe: 65535)
+ *   slow_previews        the kiosk measures its previews 100 times slower, as on a slow GPU
+ *                        (kiosk_tune.h) */
 int gl_fault(const char *name);
 /* "GL_FRAMEBUFFER_UNSUPPORTED" and the like, for messages. */
 const char *gl_framebuffer_status_name(GLenum status);

@@ -9,6 +9,7 @@
 #include "kiosk/kiosk_events.h"
 #include "kiosk/kiosk_images.h"
 #include "kiosk/kiosk_view.h"
+#include "kiosk/kiosk_tune.h"
 #include "kiosk/kiosk_warm.h"
 #include "kiosk_config/kiosk_config_keys.h"
 #include "render/orbit_store.h"
@@ -752,7 +753,10 @@ enum kiosk_status kiosk_run(const struct kiosk_config *c, const struct kiosk_run
         kiosk_close(&k);
         return KIOSK_FAILED;
     }
-    if (compile_ahead(&k, &e) != 0) {
+    /* the programs first, then each scene's preview size for the preview rate (a display's only:
+     * the headless screen's runs are the same on any machine) */
+    if (compile_ahead(&k, &e) != 0 ||
+        (!k.virtual_clock && !stop_requested && kiosk_tune_previews(&k.view, c, k.scenes, k.log, &e) != 0)) {
         fprintf(k.log, "bentray kiosk: %s%s%s\n", ERROR_TEXT(&e));
         kiosk_close(&k);
         return KIOSK_FAILED;

@@ -68,7 +68,7 @@ int kiosk_view_prefetch(struct kiosk_view *v, const struct kiosk_state *st, stru
                     kiosk_state_apply(&next, &v->base, full, &ignored) != 0 || !scene_on_exact_orbits(full))
                     continue;
                 struct orbit_table_params p;
-                kiosk_preview_scene(full, &v->cfg->kiosk, preview);
+                kiosk_preview_scene(full, v->preview_width, v->preview_height, preview);
                 orbit_table_params_for(preview, &p);
                 add_unique(list, &n, &p);
                 if (d == 1) {

@@ -4,6 +4,19 @@
 #include <stdio.h>
 #include <string.h>
 
+/* Previews of width x height from now on, and bands that integrate as many steps as one. */
+static void use_preview_size(struct kiosk_view *v, int width, int height)
+{
+    const struct kiosk_main *k = &v->cfg->kiosk;
+    v->preview_width = width;
+    v->preview_height = height;
+    long preview_rays = (long)width * height;
+    int by_cost = (int)(preview_rays / ((long)PREVIEW_STEP_FACTOR * k->width));
+    /* rounded down: at least refine_frames bands, as the configuration promises */
+    int by_frames = k->height / k->refine_frames > 0 ? k->height / k->refine_frames : 1;
+    v->band_rows = by_cost < 1 ? 1 : by_cost < by_frames ? by_cost : by_frames;
+}
+
 int kiosk_view_init(struct kiosk_view *v, const struct kiosk_config *cfg, const struct gl_context *gl, struct error *e)
 {
     memset(v, 0, sizeof *v);
@@ -11,13 +24,21 @@ int kiosk_view_init(struct kiosk_view *v, const struct kiosk_config *cfg, const 
     v->gl = gl;
     v->scene_index = -1;
     const struct kiosk_main *k = &cfg->kiosk;
-    long preview_rays = (long)k->preview_width * k->preview_height;
-    int by_cost = (int)(preview_rays / ((long)PREVIEW_STEP_FACTOR * k->width));
-    /* rounded down: at least refine_frames bands, as the configuration promises */
-    int by_frames = k->height / k->refine_frames > 0 ? k->height / k->refine_frames : 1;
-    v->band_rows = by_cost < 1 ? 1 : by_cost < by_frames ? by_cost : by_frames;
+    for (int i = 0; i < KIOSK_MAX_SCENES; i++) {
+        v->preview_sizes[i][0] = k->preview_width;
+        v->preview_sizes[i][1] = k->preview_height;
+    }
+    use_preview_size(v, k->preview_width, k->preview_height);
     v->refined_rows = k->height;
     return compositor_init(&v->comp, gl, k->width, k->height, e);
+}
+
+void kiosk_view_set_preview_size(struct kiosk_view *v, int scene_index, int width, int height)
+{
+    v->preview_sizes[scene_index][0] = width;
+    v->preview_sizes[scene_index][1] = height;
+    if (scene_index == v->scene_index)
+        use_preview_size(v, width, height);
 }
 
 void kiosk_view_release(struct kiosk_view *v)
@@ -64,14 +85,15 @@ int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *b
     v->programs_ready = 1;
     renderer_share_programs(v->renderer, &v->programs);
     v->scene_index = scene_index;
+    use_preview_size(v, v->preview_sizes[scene_index][0], v->preview_sizes[scene_index][1]);
     return 0;
 }
 
-void kiosk_preview_scene(const struct scene *full, const struct kiosk_main *k, struct scene *out)
+void kiosk_preview_scene(const struct scene *full, int width, int height, struct scene *out)
 {
     *out = *full;
-    out->render.width = k->preview_width;
-    out->render.height = k->preview_height;
+    out->render.width = width;
+    out->render.height = height;
     const int fewer = PREVIEW_STEP_FACTOR * PREVIEW_SEGMENT_FACTOR;
     int segments = render_segments(&full->render);
     if (full->render.step_control == STEP_FIXED && segments >= fewer &&
@@ -162,13 +184,13 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, struc
 {
     if (kiosk_state_apply(st, &v->base, &v->full, e) != 0)
         return -1;
-    kiosk_preview_scene(&v->full, &v->cfg->kiosk, &v->live);
+    kiosk_preview_scene(&v->full, v->preview_width, v->preview_height, &v->live);
     v->pipeline_view = st->pipeline_view;
     const struct kiosk_main *k = &v->cfg->kiosk;
     /* refinement starts over whatever the preview is */
     v->refined_rows = 0;
     kiosk_tiles_plan(&v->refine, k->width, k->height, v->band_rows, steps_per_ray(&v->full));
-    kiosk_tiles_plan(&v->preview, k->preview_width, k->preview_height, k->preview_height,
+    kiosk_tiles_plan(&v->preview, v->preview_width, v->preview_height, v->preview_height,
                      v->pipeline_view ? 0 : steps_per_ray(&v->live));
     /* the screen shows the image alone, which a single pass then draws in one pass; the pipeline
      * view shows every ray's final state too */
@@ -177,7 +199,7 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, struc
         return preview_tile(v, e) != 0 || kiosk_view_prefetch(v, st, e) != 0 ? -1 : 0;
     v->preview.next = v->preview.count;
     /* the pipeline view shows every ray's final state, which a single-pass frame writes on demand */
-    if (renderer_run(v->renderer, &v->live, 0, 0, k->preview_width, k->preview_height, NULL, NULL, e) != 0 ||
+    if (renderer_run(v->renderer, &v->live, 0, 0, v->preview_width, v->preview_height, NULL, NULL, e) != 0 ||
         (v->pipeline_view && renderer_complete_state(v->renderer, e) != 0))
         return -1;
     struct renderer_textures t;

@@ -58,7 +58,11 @@ struct kiosk_view {
     struct renderer *renderer;
     struct compositor comp;
     int pipeline_view;
-    int band_rows;                   /* rows of one band */
+    /* each scene's preview size: the configuration's, or smaller where previews at that size cost
+     * more than the kiosk's preview_rate allows here (kiosk_tune.h) */
+    int preview_sizes[KIOSK_MAX_SCENES][2];
+    int preview_width, preview_height;   /* the loaded scene's */
+    int band_rows;                   /* rows of one band: as many steps as one preview */
     int refined_rows;                /* rows of the canvas at full quality, from the bottom */
     struct kiosk_tiles preview;      /* the preview being drawn; next == count: shown */
     struct kiosk_tiles refine;       /* the refinement's tiles */
@@ -96,7 +100,9 @@ int kiosk_view_refined(const struct kiosk_view *v);
  * renderer's worker while the exhibit shows st; nothing for a scene without a table. kiosk_view_preview
  * calls it. 0, or -1 with e (no memory). */
 int kiosk_view_prefetch(struct kiosk_view *v, const struct kiosk_state *st, struct error *e);
-/* The preview of a full scene: the preview size, and longer steps over the same path length. */
-void kiosk_preview_scene(const struct scene *full, const struct kiosk_main *k, struct scene *out);
+/* The preview of a full scene: width x height, and longer steps over the same path length. */
+void kiosk_preview_scene(const struct scene *full, int width, int height, struct scene *out);
+/* Scene scene_index previews at width x height from now on (at most the configuration's size). */
+void kiosk_view_set_preview_size(struct kiosk_view *v, int scene_index, int width, int height);
 
 #endif

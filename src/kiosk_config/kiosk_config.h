@@ -50,6 +50,7 @@ struct kiosk_main {
     int preview_width, preview_height;   /* px, drawn while a knob moves */
     int width, height;               /* px, the refined frame */
     int refine_frames;               /* frames from preview to full quality */
+    int preview_rate;                /* previews a second the preview size is tuned to hold; 0: kept */
     int image_memory;                /* MB the scenes' decoded images may take in all */
     int hud;                         /* 1: draw the values on screen */
     /* compile every scene's shader programs before the first frame (kiosk_warm.h): KIOSK_AHEAD_AUTO

@@ -166,6 +166,7 @@ const struct conf_key kiosk_keys[] = {
     {KSEC_KIOSK, "width", CONF_INTEGER, SIZE_RANGE, .offset = AT_CONFIG(kiosk.width)},
     {KSEC_KIOSK, "height", CONF_INTEGER, SIZE_RANGE, .offset = AT_CONFIG(kiosk.height)},
     {KSEC_KIOSK, "refine_frames", CONF_INTEGER, .lo = 1, .hi = 60, .offset = AT_CONFIG(kiosk.refine_frames)},
+    {KSEC_KIOSK, "preview_rate", CONF_INTEGER, .lo = 0, .hi = 240, .offset = AT_CONFIG(kiosk.preview_rate)},
     {KSEC_KIOSK, "image_memory", CONF_INTEGER, .lo = 1, .hi = 65536, .offset = AT_CONFIG(kiosk.image_memory)},
     {KSEC_KIOSK, "hud", SWITCH, .offset = AT_CONFIG(kiosk.hud)},
     {KSEC_KIOSK, "compile_ahead", CHOOSE(ahead_choices), .offset = AT_CONFIG(kiosk.compile_ahead)},
@@ -312,6 +313,7 @@ void kiosk_config_defaults(struct kiosk_config *c)
     c->kiosk.width = 1280;
     c->kiosk.height = 720;
     c->kiosk.refine_frames = 4;
+    c->kiosk.preview_rate = 30;
     c->kiosk.image_memory = KIOSK_IMAGE_MEMORY_MB;
     c->kiosk.hud = 1;
     snprintf(c->kiosk.font, sizeof c->kiosk.font, "%s", KIOSK_DEFAULT_FONT);

@@ -96,7 +96,7 @@ static unsigned char *expected_image(const struct kiosk_state *st, int preview)
     if (preview) {
         static struct scene full;
         full = s;
-        kiosk_preview_scene(&full, &config.kiosk, &s);
+        kiosk_preview_scene(&full, config.kiosk.preview_width, config.kiosk.preview_height, &s);
     }
     struct render_result res;
     struct frame_info info;
