@@ -658,8 +658,9 @@ static void kiosk_close(struct kiosk *k)
         screen_close(k->screen);
 }
 
-/* Between two states of the warm-up: the service manager's start timeout extended for the next
- * (a first compile on a slow GPU may take minutes), and a signal stops it. */
+/* Between two states of the warm-up (or two scenes of the preview tuning): the service manager's
+ * start timeout extended for the next (a first compile on a slow GPU may take minutes), and a
+ * signal stops it. */
 static int between_warm_states(void *arg)
 {
     (void)arg;
@@ -756,7 +757,7 @@ enum kiosk_status kiosk_run(const struct kiosk_config *c, const struct kiosk_run
     /* the programs first, then each scene's preview size for the preview rate (a display's only:
      * the headless screen's runs are the same on any machine) */
     if (compile_ahead(&k, &e) != 0 ||
-        (!k.virtual_clock && !stop_requested && kiosk_tune_previews(&k.view, c, k.scenes, k.log, &e) != 0)) {
+        (!k.virtual_clock && !stop_requested && kiosk_tune_previews(&k.view, c, k.scenes, between_warm_states, NULL, k.log, &e) != 0)) {
         fprintf(k.log, "bentray kiosk: %s%s%s\n", ERROR_TEXT(&e));
         kiosk_close(&k);
         return KIOSK_FAILED;

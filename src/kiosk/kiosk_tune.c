@@ -35,8 +35,8 @@ static int side(int configured, double factor)
     return s < KIOSK_TUNE_MIN_SIDE ? KIOSK_TUNE_MIN_SIDE : s > configured ? configured : s;
 }
 
-int kiosk_tune_previews(struct kiosk_view *v, const struct kiosk_config *c, const struct scene *scenes, FILE *log,
-                        struct error *e)
+int kiosk_tune_previews(struct kiosk_view *v, const struct kiosk_config *c, const struct scene *scenes,
+                        int (*between)(void *arg), void *arg, FILE *log, struct error *e)
 {
     const struct kiosk_main *k = &c->kiosk;
     if (k->preview_rate <= 0)
@@ -45,6 +45,8 @@ int kiosk_tune_previews(struct kiosk_view *v, const struct kiosk_config *c, cons
     int rc = 0;
     v->prefetch_off = 1;
     for (int i = 0; i < k->n_scenes && rc == 0; i++) {
+        if (between && between(arg))
+            break;
         struct kiosk_state st;
         kiosk_state_reset(&st, c);
         st.scene = i;

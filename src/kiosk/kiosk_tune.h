@@ -23,9 +23,10 @@
 #define KIOSK_TUNE_SLOW_FACTOR 100.0
 
 /* Tunes every scene's preview size in v (v: the screen's view; left with no scene loaded) for c's
- * preview_rate, logging each scene's choice to log. 0, or -1 with e: a scene's or the renderer's
- * failure, as the loop would meet it. */
-int kiosk_tune_previews(struct kiosk_view *v, const struct kiosk_config *c, const struct scene *scenes, FILE *log,
-                        struct error *e);
+ * preview_rate, logging each scene's choice to log. `between` (if any) is called with arg before
+ * each scene, and a nonzero answer stops the tuning there (a signal). 0, or -1 with e: a scene's
+ * or the renderer's failure, as the loop would meet it. */
+int kiosk_tune_previews(struct kiosk_view *v, const struct kiosk_config *c, const struct scene *scenes,
+                        int (*between)(void *arg), void *arg, FILE *log, struct error *e);
 
 #endif

@@ -39,7 +39,7 @@ static void tune(struct kiosk_view *v, char *log_text, size_t len)
     if (kiosk_view_init(v, &config, hc_context(), &e) != 0)
         fail_msg("%s", e.message);
     FILE *log = tmpfile();
-    if (kiosk_tune_previews(v, &config, scenes, log, &e) != 0)
+    if (kiosk_tune_previews(v, &config, scenes, NULL, NULL, log, &e) != 0)
         fail_msg("%s", e.message);
     rewind(log);
     size_t n = fread(log_text, 1, len - 1, log);
