@@ -32,9 +32,9 @@ void dump_describe_scene(struct dump *d, const struct scene *s)
     /* the field guards against comparing unrelated dumps: a name longer than it keeps its start and
      * ends in '~' and a hash of the whole name, so that two names sharing their first characters
      * still differ */
-    size_t room = sizeof d->scene - 1;
-    if (strlen(s->name) <= room) {
-        snprintf(d->scene, sizeof d->scene, "%s", s->name);
+    size_t room = sizeof d->scene - 1, length = strlen(s->name);
+    if (length <= room) {
+        memcpy(d->scene, s->name, length + 1);
     } else {
         uint32_t h = 2166136261u;
         for (const unsigned char *c = (const unsigned char *)s->name; *c; c++)
