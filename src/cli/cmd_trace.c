@@ -6,6 +6,8 @@
 #include "render/renderer.h"
 #include "ref/shade_cpu.h"
 #include "ref/straight.h"
+#include "physics/orbit_table.h"
+#include "scene/camera.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -100,6 +102,59 @@ static void print_json(const struct scene *s, long px, long py, const char *engi
     printf("\n  ]\n}\n");
 }
 
+/* Points along the orbit a ray on exact orbits follows (render.method = orbit_table), from the orbit
+ * table in double precision as the shader interpolates it in float: the camera, ORBIT_TRACE_POINTS
+ * points evenly in the angle swept up to where the ray ended (the chord rec->depth counts, where it
+ * met an object, else its last chord), and that end: the hit, or its final position. The GPU's
+ * own per-segment ends are one chord a segment and would draw the curve as one straight line.
+ * 0, or -1 (no table, a radial ray: the chord ends are kept). */
+#define ORBIT_TRACE_POINTS 64
+static int orbit_polyline(const struct scene *s, long px, long py, const struct dump_record *rec,
+                          struct polyline *pl)
+{
+    vec3d c = s->model.center, from = v3_sub(s->camera.position, c);
+    vec3d e1 = v3_normalize(from), d = v3_normalize(camera_ray(s, (int)px, (int)py));
+    double along = v3_dot(d, e1);
+    vec3d across = v3_sub(d, v3_scale(e1, along));
+    double across_length = v3_len(across);
+    if (across_length < 1e-12)
+        return -1;
+    vec3d e2 = v3_scale(across, 1.0 / across_length);
+    double psi = atan2(across_length, along);
+    struct orbit_table_params p;
+    orbit_table_params_for(s, &p);
+    struct orbit_table t;
+    struct error e;
+    if (orbit_table_build(&t, &p, &e) != 0)
+        return -1;
+    struct orbit_point q;
+    double phi_end;
+    int n;
+    orbit_table_eval(&t, psi, 0.0, &q, &phi_end, &n);
+    const float *end = rec->outcome >= 0 ? rec->hit : rec->position;
+    int k = rec->outcome >= 0 ? (int)floor(rec->depth) : (int)rec->steps - 1;
+    k = k < 0 ? 0 : k >= n ? n - 1 : k;
+    double s_a = orbit_table_chord_end(&t, psi, k, n), s_b = orbit_table_chord_end(&t, psi, k + 1, n);
+    /* where the end lies in the chord's span of angle (an orbit may wind more than a turn) */
+    vec3d to_end = v3_sub(v3((double)end[0], (double)end[1], (double)end[2]), c);
+    double phi_a = s_a * phi_end, phi_b = s_b * phi_end;
+    const double turn = 2.0 * acos(-1.0);
+    double phi = phi_a + fmod(fmod(atan2(v3_dot(to_end, e2), v3_dot(to_end, e1)) - phi_a, turn) + turn, turn);
+    phi = phi > phi_b ? phi_b : phi;
+    double s_end = phi_end > 0.0 ? phi / phi_end : s_b;
+    pl->n = 0;
+    for (int i = 1; i <= ORBIT_TRACE_POINTS && pl->n < pl->cap - 1; i++) {
+        orbit_table_eval(&t, psi, s_end * i / ORBIT_TRACE_POINTS, &q, &phi_end, &n);
+        vec3d at = v3_add(c, v3_scale(v3_add(v3_scale(e1, cos(q.phi)), v3_scale(e2, sin(q.phi))), 1.0 / q.u));
+        float point[4] = {(float)at.x, (float)at.y, (float)at.z, 0.0f};
+        memcpy(pl->points[pl->n++], point, sizeof point);
+    }
+    float last[4] = {end[0], end[1], end[2], 0.0f};
+    memcpy(pl->points[pl->n++], last, sizeof last);
+    orbit_table_free(&t);
+    return 0;
+}
+
 /* GPU path: a 1x1 ray state for the chosen pixel, the same arithmetic as the full frame. */
 static int trace_gpu(const struct common_options *o, const struct scene *s, long px, long py, struct polyline *pl)
 {
@@ -122,6 +177,8 @@ static int trace_gpu(const struct common_options *o, const struct scene *s, long
         if (result_to_dump(&res, s, "gpu", &d) == 0) {
             char engine[40];
             snprintf(engine, sizeof engine, "gpu %s", renderer_path(r)->name);
+            if (scene_on_exact_orbits(s) && renderer_path(r)->fp32)
+                orbit_polyline(s, px, py, &d.records[0], pl);
             print_json(s, px, py, engine, &d.records[0], pl);
             dump_free(&d);
             rc = EXIT_OK;

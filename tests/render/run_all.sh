@@ -107,6 +107,14 @@ else
 fi
 # a ray that hit an object in segment 14 of 60: its polyline ends there, the end not repeated
 check "trace polyline ends where the ray ends" 0 "^15 points, 0 repeated$" -- sh -c "$BT trace --scene assets/scenes/lorenz.scene --size 32x24 --pixel 16 16 > $TMP/t.json && echo \"\$(grep -c '^    \[' $TMP/t.json) points, \$(grep '^    \[' $TMP/t.json | uniq -d | wc -l) repeated\""
+# on exact orbits the GPU's polyline follows the orbit from the table to where the ray ended: every
+# point of the CPU reference's curve lies within 2e-3 of it (its 64 samples' own sag), and both end
+# at the same point (a hit, the sky's sphere, the horizon)
+for ray in "neutron_star 160 120" "neutron_star 40 40" "schwarzschild 170 100" "schwarzschild 160 120"; do
+    read -r sc px py <<< "$ray"
+    check "trace on exact orbits follows the orbit ($ray)" 0 "gap ([0-9.]+e-0[4-9]|0\.00[01][0-9]*|0), ends [0-9.]+e-(0[5-9]|[1-9][0-9])$" -- sh -c \
+        "$BT trace --scene assets/scenes/$sc.scene --pixel $px $py > $TMP/orbit_gpu.json && $BT trace --scene assets/scenes/$sc.scene --pixel $px $py --engine cpu > $TMP/orbit_cpu.json && awk -f tests/render/polyline_gap.awk $TMP/orbit_cpu.json $TMP/orbit_gpu.json"
+done
 check "trace doppler ahead" 0 "\"doppler\": 1\.99" -- $BT trace --scene assets/scenes/starflight.scene --size 32x24 --pixel 16 12
 check "trace doppler behind" 0 "\"doppler\": 0\.50" -- $BT trace --scene assets/scenes/starflight.scene --size 32x24 --pixel 16 12 --set "camera.look_at=0 0 1"
 check "trace colour" 0 "\"color\": \[[0-9]+, [0-9]+, [0-9]+\]," -- $BT trace --scene $S --size 32x24 --pixel 16 12 --engine cpu
