@@ -680,6 +680,7 @@ static int compile_ahead(struct kiosk *k, struct error *e)
     if (kiosk_warm(&k->view, k->cfg, k->scenes, between_warm_states, NULL, &w, e) != 0)
         return -1;
     k->compiled_ahead = w.programs;
+    service_status("%ld shader programs compiled ahead for %d scenes in %.1f s", w.programs, w.scenes, w.seconds);
     fprintf(k->log, "bentray kiosk: %ld shader programs compiled ahead for %d scenes in %.1f s (%d states drawn%s)\n",
             w.programs, w.scenes, w.seconds, w.states, w.refused ? ", some refused by their scene" : "");
     return 0;

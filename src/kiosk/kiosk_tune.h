@@ -7,7 +7,8 @@
  * preview shrinks (both sides by the same factor, to at least KIOSK_TUNE_MIN_SIDE pixels) and is
  * measured again, up to KIOSK_TUNE_ROUNDS times. The preview is upscaled to the screen with a
  * linear filter; the refined frame keeps its size and quality, and its bands follow the preview's
- * size (as many steps as one preview), so that input still waits about one preview. Each scene's
+ * size (as many steps as one preview, at most KIOSK_MAX_BANDS bands), so that input still waits
+ * about one preview. Each scene's
  * choice is logged. The headless screen never tunes: its runs are the same on any machine. */
 #ifndef BT_KIOSK_TUNE_H
 #define BT_KIOSK_TUNE_H

@@ -12,6 +12,10 @@ static void use_preview_size(struct kiosk_view *v, int width, int height)
     v->preview_height = height;
     long preview_rays = (long)width * height;
     int by_cost = (int)(preview_rays / ((long)PREVIEW_STEP_FACTOR * k->width));
+    /* at most KIOSK_MAX_BANDS bands: each costs a turn of the loop and a composited frame besides
+     * its rays, which a preview tuned small on a slow GPU would otherwise multiply */
+    int fewest = k->height / KIOSK_MAX_BANDS;
+    by_cost = by_cost < fewest ? fewest : by_cost;
     /* rounded down: at least refine_frames bands, as the configuration promises */
     int by_frames = k->height / k->refine_frames > 0 ? k->height / k->refine_frames : 1;
     v->band_rows = by_cost < 1 ? 1 : by_cost < by_frames ? by_cost : by_frames;

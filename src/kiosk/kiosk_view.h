@@ -31,6 +31,9 @@
 #define PREVIEW_ORBIT_ROWS 128
 #define PREVIEW_ORBIT_COLUMNS 32
 #define PREVIEW_CHORD_FACTOR 4.0
+/* The most bands a refinement takes (where the preview is small, bands of more rays than one
+ * preview; src/kiosk/kiosk_tune.h) */
+#define KIOSK_MAX_BANDS 64
 /* Integration steps of all the rays of one tile: about 50 ms of llvmpipe on two cores (a
  * lorenz preview, 57600 rays x 270 steps, fits in one). */
 #define KIOSK_TURN_RAY_STEPS (1L << 24)
