@@ -95,6 +95,29 @@ static double srgb_transfer(double linear)
     return (1.0 + SRGB_OFFSET) * pow(linear, 1.0 / SRGB_GAMMA) - SRGB_OFFSET;
 }
 
+/* The inverse of srgb_transfer over [0, 1]. */
+static double srgb_decode(double encoded)
+{
+    if (encoded <= SRGB_LINEAR_SLOPE * SRGB_LINEAR_LIMIT)
+        return encoded / SRGB_LINEAR_SLOPE;
+    return pow((encoded + SRGB_OFFSET) / (1.0 + SRGB_OFFSET), SRGB_GAMMA);
+}
+
+/* BT.709's luminance of linear RGB (the Y row of its inverse matrix). */
+static double bt709_luminance(const double rgb[3])
+{
+    return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
+}
+
+/* Scaled down by the largest primary where one is above 1: the hue is kept, where clipping each
+ * primary would turn every bright colour white or yellow. */
+static void fit_gamut_keeping_hue(double rgb[3])
+{
+    double largest = fmax(rgb[0], fmax(rgb[1], rgb[2]));
+    for (int j = 0; j < 3; j++)
+        rgb[j] = largest > 1.0 ? rgb[j] / largest : rgb[j];
+}
+
 double srgb_encode(double linear)
 {
     return srgb_transfer(fmin(fmax(linear, 0.0), 1.0));
@@ -136,13 +159,30 @@ void blackbody_srgb_exposed(double temperature_k, enum blackbody_tone tone, doub
     for (int j = 0; j < 3; j++)
         rgb[j] = fmax(rgb[j], 0.0);
     if (tone == TONE_LUMINANCE) {
-        /* Scaling down by the largest primary keeps the hue where clipping each one would turn
-         * every low temperature the same yellow (the paper's complaint about the plain mapping). */
-        double largest = fmax(rgb[0], fmax(rgb[1], rgb[2]));
-        for (int j = 0; j < 3; j++)
-            rgb[j] = largest > 1.0 ? rgb[j] / largest : rgb[j];
+        /* the paper's complaint about the plain mapping: clipping each primary would turn every
+         * low temperature the same yellow */
+        fit_gamut_keeping_hue(rgb);
         for (int j = 0; j < 3; j++)
             srgb[j] = srgb_encode(rgb[j]);
+    } else if (tone == TONE_SCENE) {
+        /* The log curve on the luminance, the chromaticity kept: a grey comes out as the paper's
+         * curve on each channel makes it, a coloured body as bright as that grey and of its own
+         * hue, fitted into the gamut by its largest primary. The curve on each channel would pull
+         * every colour towards grey (12000 K to (166, 171, 182) at a 6000 K reference), hiding
+         * the Doppler blue ahead and red behind that the searchlight is there to show. */
+        double y = bt709_luminance(rgb);
+        double grey = fmin(LOG_CURVE_GAIN * log10(srgb_transfer(y) + 1.0), 1.0);
+        double y_out = srgb_decode(grey);
+        double scale = y > 0.0 ? y_out / y : 0.0;
+        for (int j = 0; j < 3; j++)
+            rgb[j] *= scale;
+        /* a primary above 1: towards the grey of the same luminance, just enough to fit, so that
+         * a hotter body never looks dimmer than a cooler one (scaling by the largest primary
+         * would darken the bluest) */
+        double largest = fmax(rgb[0], fmax(rgb[1], rgb[2]));
+        double keep = largest > 1.0 ? (1.0 - y_out) / (largest - y_out) : 1.0;
+        for (int j = 0; j < 3; j++)
+            srgb[j] = srgb_encode(y_out + keep * (rgb[j] - y_out));
     } else {
         /* As the paper writes it: the curve acts on C_sRGB, the transfer function taken past 1
          * unclipped. Only after the curve is the value clipped, at C_sRGB = 10^(1/0.6) - 1

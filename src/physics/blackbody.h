@@ -17,7 +17,8 @@ enum blackbody_tone {
     /* XYZ / Y(1500 K), then a log curve on the sRGB values: brightness grows with T (the
      * searchlight effect is kept). The paper's exposure: a 6000 K body is already white. */
     TONE_FIXED_1500K,
-    /* XYZ / Y(T_ref) times BLACKBODY_SCENE_GAIN, then the same log curve: a body at the scene's own
+    /* XYZ / Y(T_ref) times BLACKBODY_SCENE_GAIN, then the log curve on the luminance, the hue kept
+     * (the primaries scaled together, desaturated only as far as the gamut needs): a body at the scene's own
      * reference temperature T_ref (its sky's, or its lights') shows mid-grey at rest, so that both
      * the searchlight's brightening ahead and its dimming behind stay visible before the clip. */
     TONE_SCENE,

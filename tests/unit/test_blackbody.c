@@ -8,6 +8,7 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "physics/blackbody.h"
@@ -360,10 +361,57 @@ static void test_scene_exposure(void **state)
     }
 }
 
+static double decode_srgb(double v)
+{
+    return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
+}
+
+/* TONE_SCENE maps the luminance through the paper's curve and keeps the body's hue (docs/RELATIVITY.md):
+ * from 3000 K to 30000 K at a 6000 K reference, the linear output is the body's own BT.709 colour
+ * scaled (its primaries in the same ratios) wherever no primary reaches 1, and moved towards the grey
+ * of its luminance only as far as the gamut needs; the luminance never falls as T rises; the
+ * searchlight's Doppler colours stay visible: blue ahead at twice the reference, red behind at half. */
+static void test_scene_tone_keeps_hue(void **state)
+{
+    (void)state;
+    double last_luminance = 0.0;
+    for (double t = 3000.0; t <= 30000.0 * 1.0001; t *= 1.122) {
+        double xyz[3], in[3], out[3], srgb[3];
+        blackbody_xyz(t, xyz);
+        xyz_to_linear_bt709(xyz, in);
+        blackbody_srgb_exposed(t, TONE_SCENE, 6000.0, srgb);
+        int at_top = 0;
+        for (int c = 0; c < 3; c++) {
+            out[c] = decode_srgb(srgb[c]);
+            at_top |= srgb[c] >= 1.0 - 1e-12;
+        }
+        double luminance = 0.2126 * out[0] + 0.7152 * out[1] + 0.0722 * out[2];
+        if (!at_top)
+            for (int c = 0; c < 3; c += 2)
+                assert_float_equal(out[c] / out[1], in[c] / in[1], 1e-9 * in[c] / in[1]);
+        /* the primaries keep their order, and none is lost to the clip */
+        for (int a = 0; a < 3; a++)
+            for (int b = 0; b < 3; b++)
+                if (in[a] > in[b] * (1.0 + 1e-6))
+                    assert_true(out[a] > out[b]);
+        assert_true(luminance >= last_luminance);
+        last_luminance = luminance;
+    }
+    double ahead[3], behind[3];
+    blackbody_srgb_exposed(12000.0, TONE_SCENE, 6000.0, ahead);
+    blackbody_srgb_exposed(3000.0, TONE_SCENE, 6000.0, behind);
+    printf("  exposure scene, reference 6000 K: 12000 K as (%.0f, %.0f, %.0f), 3000 K as (%.0f, %.0f, %.0f)\n",
+           255 * ahead[0], 255 * ahead[1], 255 * ahead[2], 255 * behind[0], 255 * behind[1], 255 * behind[2]);
+    /* the curve on each channel gave 12000 K as (166, 171, 182): blue minus red 0.06 */
+    assert_true(ahead[2] - ahead[0] >= 0.15);
+    assert_true(behind[0] - behind[2] >= 0.10);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_scene_exposure),
+        cmocka_unit_test(test_scene_tone_keeps_hue),
         cmocka_unit_test(test_paper_doppler_temperatures),
         cmocka_unit_test(test_shifted_spectrum_is_planck),
         cmocka_unit_test(test_wien_displacement),
