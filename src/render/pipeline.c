@@ -44,7 +44,16 @@ static int single_pass_fits(const struct renderer *r, int per_segment_hook, char
         snprintf(why, whylen, "the rays are read back after every segment");
         return 0;
     }
+    /* a loop that the GPU ends early would leave rays short of their budget, unnoticed: refused
+     * even where the scene asks for the single pass (a GLES2 device that may cut loops is not
+     * probed, loop_turns 0, and the scene's choice is taken there, as documented) */
+    long turns = frame_loop_turns(r);
     if (s->render.pipeline == PIPELINE_SINGLE) {
+        if (r->caps.long_loops && turns > r->caps.loop_turns)
+            return error_set(e, ERROR_INPUT, NULL, "render.pipeline = single: this GPU ends a fragment-shader loop "
+                             "after %ld turns (probed), and one ray may take %ld %s; use render.pipeline = auto or "
+                             "multipass", r->caps.loop_turns, r->exact_orbits ? (long)s->render.max_chords : turns,
+                             r->exact_orbits ? "chords" : "segments");
         if (frame_batch(r, &b, e) != 0)
             return -1;
         snprintf(why, whylen, "render.pipeline = single");
@@ -54,8 +63,6 @@ static int single_pass_fits(const struct renderer *r, int per_segment_hook, char
         snprintf(why, whylen, "%s", r->caps.long_loops_why);
         return 0;
     }
-    /* a loop that the GPU ends early would leave rays short of their budget, unnoticed */
-    long turns = frame_loop_turns(r);
     if (turns > r->caps.loop_turns) {
         snprintf(why, whylen, "this GPU ends a fragment-shader loop after %ld turns (probed), and one ray may take "
                  "%ld %s", r->caps.loop_turns, r->exact_orbits ? (long)s->render.max_chords : turns,

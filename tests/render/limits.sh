@@ -131,5 +131,10 @@ check "a ray within the GPU's loops is" 0 "\(single pass: " -- \
     env BT_FAULT=loop_limit $BT render --scene assets/scenes/potential.scene --size 16x12 --set render.segments=4096 --set render.max_path=0 --out "$TMP/loops4096.png"
 check "exact orbits longer than the GPU's loops" 0 "this GPU ends a fragment-shader loop after 4096 turns \(probed\), and one ray may take 3000 chords" -- \
     env BT_FAULT=loop_limit $BT render --scene assets/scenes/schwarzschild.scene --size 16x12 --set render.max_chords=3000 --out "$TMP/loops_orbit.png"
+# the scene's own choice of the single pass does not override the GPU's loop limit: refused, not cut short
+check "single pass asked for, longer than the GPU's loops" 2 "^bentray render: render.pipeline = single: this GPU ends a fragment-shader loop after 4096 turns \(probed\), and one ray may take 5000 segments; use render.pipeline = auto or multipass" -- \
+    env BT_FAULT=loop_limit $BT render --scene assets/scenes/potential.scene --size 16x12 --set render.segments=5000 --set render.max_path=0 --set render.pipeline=single --out "$TMP/loops_single.png"
+check "single pass asked for, within the GPU's loops" 0 "\(single pass: render.pipeline = single\)" -- \
+    env BT_FAULT=loop_limit $BT render --scene assets/scenes/potential.scene --size 16x12 --set render.segments=4096 --set render.max_path=0 --set render.pipeline=single --out "$TMP/loops_single4096.png"
 echo "limit and fault tests: $fails failed"
 [ "$fails" = 0 ]
