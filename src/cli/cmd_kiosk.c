@@ -27,7 +27,8 @@ static void usage(FILE *out)
             "  --check-inputs   print every event of every configured input, one line each, and one\n"
             "                   line per missing device; no display. Stops on Ctrl-C or SIGTERM.\n"
             "%s"
-            "exit codes: 0 stopped, 1 failure while running, 2 bad configuration or option\n",
+            "exit codes: 0 stopped, 1 failure while running, 2 bad configuration or option,\n"
+            "3 this GPU can draw none of the scenes (the service then does not restart)\n",
             KIOSK_DEFAULT_CONFIG, keymap_help);
 }
 
@@ -179,5 +180,7 @@ int cmd_kiosk(int argc, char **argv)
     enum kiosk_status status = kiosk_run(&c, &o);
     if (log != stderr)
         fclose(log);
-    return status == KIOSK_STOPPED ? EXIT_OK : status == KIOSK_BAD_CONFIG ? EXIT_USAGE : EXIT_RUNTIME;
+    /* the kiosk's statuses are its exit codes (kiosk_loop.h) */
+    return status == KIOSK_STOPPED ? EXIT_OK : status == KIOSK_BAD_CONFIG ? EXIT_USAGE
+                                             : status == KIOSK_NO_SCENE ? (int)KIOSK_NO_SCENE : EXIT_RUNTIME;
 }

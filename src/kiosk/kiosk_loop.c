@@ -62,7 +62,8 @@ static void catch_stop_signals(void)
 }
 
 struct kiosk {
-    const struct kiosk_config *cfg;
+    const struct kiosk_config *cfg;  /* &shown */
+    struct kiosk_config shown;       /* the configuration, less the scenes this GPU cannot draw */
     const struct kiosk_run_options *opt;
     FILE *log;
     struct screen *screen;
@@ -668,6 +669,67 @@ static int between_warm_states(void *arg)
     return stop_requested != 0;
 }
 
+/* The GPU's name, as its driver gives it. */
+static const char *gpu_name(void)
+{
+    const GLubyte *name = glGetString(GL_RENDERER);
+    return name ? (const char *)name : "(unknown)";
+}
+
+/* The scenes marked in drop left out of the kiosk (k->shown, k->scenes), each said in the log with
+ * why; the start scene follows its scene, or becomes the first one left. */
+static void drop_scenes(struct kiosk *k, const int *drop, char (*why)[KIOSK_REFUSAL_LEN])
+{
+    struct kiosk_config *c = &k->shown;
+    char start[KIOSK_PATH_LEN];
+    snprintf(start, sizeof start, "%s", c->kiosk.scenes[c->kiosk.start_scene]);
+    int kept = 0, start_kept = -1, left = 0;
+    for (int i = 0; i < c->kiosk.n_scenes; i++)
+        left += !drop[i];
+    for (int i = 0; i < c->kiosk.n_scenes; i++) {
+        if (drop[i]) {
+            fprintf(k->log, "bentray kiosk: %s: this GPU (%s) cannot draw it: %s%s\n", c->kiosk.scenes[i], gpu_name(),
+                    why[i], left ? "; the kiosk shows the other scenes" : "");
+            continue;
+        }
+        if (i == c->kiosk.start_scene)
+            start_kept = kept;
+        if (kept != i) {
+            memmove(c->kiosk.scenes[kept], c->kiosk.scenes[i], sizeof c->kiosk.scenes[kept]);
+            k->scenes[kept] = k->scenes[i];
+        }
+        kept++;
+    }
+    if (start_kept < 0 && kept > 0)
+        fprintf(k->log, "bentray kiosk: the start scene %s cannot be drawn; the kiosk starts with %s\n", start,
+                c->kiosk.scenes[0]);
+    c->kiosk.n_scenes = kept;
+    c->kiosk.start_scene = start_kept < 0 ? 0 : start_kept;
+    kiosk_view_unload(&k->view);
+}
+
+/* Each scene's renderer made once on this GPU: a scene it refuses (a path, a precision or a loop
+ * length it lacks) is left out. The number of scenes left. */
+static int refuse_scenes(struct kiosk *k)
+{
+    static int drop[KIOSK_MAX_SCENES];
+    static char why[KIOSK_MAX_SCENES][KIOSK_REFUSAL_LEN];
+    int any = 0;
+    for (int i = 0; i < k->shown.kiosk.n_scenes; i++) {
+        struct error refusal;
+        error_clear(&refusal);
+        drop[i] = kiosk_view_load(&k->view, i, &k->scenes[i], &refusal) != 0;
+        if (drop[i])
+            error_format(&refusal, why[i], sizeof why[i]);
+        any |= drop[i];
+    }
+    if (any)
+        drop_scenes(k, drop, why);
+    /* as it was before: the compile-ahead starts from an empty cache */
+    kiosk_view_forget_programs(&k->view);
+    return k->shown.kiosk.n_scenes;
+}
+
 /* Every program of every scene compiled before the first frame (kiosk_warm.h), as compile_ahead
  * says. 0, or -1 with e. */
 static int compile_ahead(struct kiosk *k, struct error *e)
@@ -676,9 +738,14 @@ static int compile_ahead(struct kiosk *k, struct error *e)
     if (ahead == KIOSK_AHEAD_OFF || (ahead == KIOSK_AHEAD_AUTO && k->virtual_clock))
         return 0;
     service_status("compiling the shader programs of %d scenes", k->cfg->kiosk.n_scenes);
-    struct kiosk_warm_report w;
+    static struct kiosk_warm_report w;
     if (kiosk_warm(&k->view, k->cfg, k->scenes, between_warm_states, NULL, &w, e) != 0)
         return -1;
+    for (int i = 0; i < k->shown.kiosk.n_scenes; i++)
+        if (w.failed[i]) {
+            drop_scenes(k, w.failed, w.why);
+            break;
+        }
     k->compiled_ahead = w.programs;
     service_status("%ld shader programs compiled ahead for %d scenes in %.1f s", w.programs, w.scenes, w.seconds);
     fprintf(k->log, "bentray kiosk: %ld shader programs compiled ahead for %d scenes in %.1f s (%d states drawn%s)\n",
@@ -707,7 +774,8 @@ enum kiosk_status kiosk_run(const struct kiosk_config *c, const struct kiosk_run
 {
     static struct kiosk k;
     memset(&k, 0, sizeof k);
-    k.cfg = c;
+    k.shown = *c;
+    k.cfg = c = &k.shown;
     k.opt = o;
     k.log = o->log;
     /* the run's status is its own (enum kiosk_status), whatever the status of its error */
@@ -755,9 +823,20 @@ enum kiosk_status kiosk_run(const struct kiosk_config *c, const struct kiosk_run
         kiosk_close(&k);
         return KIOSK_FAILED;
     }
-    /* the programs first, then each scene's preview size for the preview rate (a display's only:
-     * the headless screen's runs are the same on any machine) */
-    if (compile_ahead(&k, &e) != 0 ||
+    /* the scenes this GPU cannot draw left out, then the programs, then each scene's preview size
+     * for the preview rate (a display's only: the headless screen's runs are the same on any
+     * machine) */
+    int given = c->kiosk.n_scenes;
+    int none = refuse_scenes(&k) == 0;
+    int failed = !none && compile_ahead(&k, &e) != 0;
+    none = none || (!failed && c->kiosk.n_scenes == 0);
+    if (none) {
+        fprintf(k.log, "bentray kiosk: this GPU (%s) can draw none of the %d scenes; stopped (exit %d: the service "
+                "does not start it again)\n", gpu_name(), given, KIOSK_NO_SCENE);
+        kiosk_close(&k);
+        return KIOSK_NO_SCENE;
+    }
+    if (failed ||
         (!k.virtual_clock && !stop_requested && kiosk_tune_previews(&k.view, c, k.scenes, between_warm_states, NULL, k.log, &e) != 0)) {
         fprintf(k.log, "bentray kiosk: %s%s%s\n", ERROR_TEXT(&e));
         kiosk_close(&k);

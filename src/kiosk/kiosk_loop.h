@@ -36,7 +36,9 @@ struct kiosk_run_options {
 enum kiosk_status {
     KIOSK_STOPPED = 0,        /* stopped by a signal, a key or the scripts' end */
     KIOSK_FAILED = 1,         /* a failure while running (GL, a device, a file) */
-    KIOSK_BAD_CONFIG = 2      /* a configuration that cannot be shown (a scene or script that does not load) */
+    KIOSK_BAD_CONFIG = 2,     /* a configuration that cannot be shown (a scene or script that does not load) */
+    KIOSK_NO_SCENE = 3        /* this GPU can draw none of the scenes (each refusal is in the log): a
+                                 restart would meet the same GPU, and the service does not restart */
 };
 
 /* Runs the kiosk until stopped (or, headless, until headless_frames frames are written). */

@@ -55,6 +55,14 @@ void kiosk_view_release(struct kiosk_view *v)
     compositor_release(&v->comp);
 }
 
+void kiosk_view_forget_programs(struct kiosk_view *v)
+{
+    kiosk_view_unload(v);
+    if (v->programs_ready)
+        program_cache_release(&v->programs);
+    v->programs_ready = 0;
+}
+
 void kiosk_view_unload(struct kiosk_view *v)
 {
     renderer_destroy(v->renderer);

@@ -86,6 +86,8 @@ void kiosk_view_release(struct kiosk_view *v);
 int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *base, struct error *e);
 /* No scene loaded (its renderer destroyed); the programs stay. */
 void kiosk_view_unload(struct kiosk_view *v);
+/* The view's program cache emptied (no scene loaded): the next scene loaded starts a new one. */
+void kiosk_view_forget_programs(struct kiosk_view *v);
 /* Draw the preview of a state into the canvas (the scene must be loaded); refinement starts
  * over. 0, or -1 with e: a state the scene cannot take (where: the scene or the key), or the
  * renderer's or the compositor's failure. */

@@ -65,16 +65,15 @@ static int warm_scenes(struct kiosk_view *v, const struct kiosk_config *c, const
     struct scene *trial = scene_new(e);
     if (!trial)
         return -1;
-    int rc = 0, stop = 0;
-    for (int i = 0; i < c->kiosk.n_scenes && rc == 0 && !stop; i++) {
+    int stop = 0;
+    for (int i = 0; i < c->kiosk.n_scenes && !stop; i++) {
         struct kiosk_state done[WARM_STATES];
         int n_done = 0;
-        if (kiosk_view_load(v, i, &scenes[i], e) != 0) {
-            rc = -1;
-            break;
-        }
-        out->scenes++;
-        for (int k = 0; k < WARM_STATES && rc == 0; k++) {
+        struct error why;
+        error_clear(&why);
+        int failed = kiosk_view_load(v, i, &scenes[i], &why) != 0;
+        out->scenes += !failed;
+        for (int k = 0; k < WARM_STATES && !failed; k++) {
             struct kiosk_state st;
             warm_state(c, &scenes[i], i, k, &st);
             int seen = 0;
@@ -92,12 +91,17 @@ static int warm_scenes(struct kiosk_view *v, const struct kiosk_config *c, const
                 out->refused++;
                 continue;
             }
-            rc = draw_state(v, &st, e);
-            out->states += rc == 0;
+            failed = draw_state(v, &st, &why) != 0;
+            out->states += !failed;
+        }
+        if (failed) {
+            out->failed[i] = 1;
+            error_format(&why, out->why[i], sizeof out->why[i]);
+            kiosk_view_unload(v);
         }
     }
     scene_free(trial);
-    return rc;
+    return 0;
 }
 
 int kiosk_warm(struct kiosk_view *v, const struct kiosk_config *c, const struct scene *scenes,

@@ -21,6 +21,8 @@
 #define KIOSK_WARM_SIZE 16
 /* Detents turned to reach a knob's end from anywhere (values are clamped to the knob's range). */
 #define KIOSK_WARM_DETENTS 1000000L
+/* The longest reason kept for a scene that cannot be drawn, bytes. */
+#define KIOSK_REFUSAL_LEN 600
 
 struct kiosk_warm_report {
     int scenes;                      /* scenes drawn */
@@ -29,13 +31,17 @@ struct kiosk_warm_report {
                                         its horizon): not drawn, as the kiosk never draws them */
     long programs;                   /* programs compiled */
     double seconds;
+    /* scenes whose drawing failed (this GPU cannot draw them: a program it does not compile, a
+     * path it lacks), each with why; the others are drawn all the same */
+    int failed[KIOSK_MAX_SCENES];
+    char why[KIOSK_MAX_SCENES][KIOSK_REFUSAL_LEN];
 };
 
 /* Draws every scene of c (scenes: each scene file as read at start) as above and leaves their
  * programs in v's cache (v: the screen's view, which has compiled none yet; it is left with no
  * scene loaded). `between` is called before each state with arg, and a nonzero answer stops the
- * warm-up there (a signal). 0, or -1 with e: a scene's or the renderer's failure, as the loop
- * would meet it. */
+ * warm-up there (a signal). A scene that fails to draw is marked in out->failed with why, and
+ * the next is drawn. 0, or -1 with e where no view could be made for it. */
 int kiosk_warm(struct kiosk_view *v, const struct kiosk_config *c, const struct scene *scenes,
                int (*between)(void *arg), void *arg, struct kiosk_warm_report *out, struct error *e);
 

@@ -31,6 +31,17 @@ mkdir -p "$TMP/absent"
 check "kiosk without devices" 0 "^1 1 1 1 2 frames$" -- sh -c "$BT kiosk --config tests/kiosk/absent_devices.conf --out $TMP/absent --frames 2 > $TMP/absent/log 2>&1;
     for n in speed_knob mass_knob next_button box; do printf '%s ' \$(grep -c \"input \$n\" $TMP/absent/log); done;
     echo \$(ls $TMP/absent/frame_*.png | wc -l) frames"
+# a scene this GPU cannot draw is left out at start with the reason, the others are shown; where it
+# can draw none, the kiosk stops once with exit 3, which the service does not restart
+mkdir -p "$TMP/gpu/scenes" "$TMP/gpu/out" "$TMP/gpu/none" && ln -s "$PWD/assets/sky" "$TMP/gpu/sky" && ln -s "$PWD/assets/textures" "$TMP/gpu/textures"
+sed 's/^max_path = 90$/max_path = 2100\npipeline = single/' assets/scenes/lorenz.scene > "$TMP/gpu/scenes/lorenz_single.scene"
+sed "s|^scenes = .*|scenes = $TMP/gpu/scenes/lorenz_single.scene, $PWD/assets/scenes/starflight.scene|; s|^start_scene = .*|start_scene = 0|;
+     /^assets_root/d; s|path = visitor.events|path = $PWD/tests/kiosk/visitor.events|; s|\.\./\.\./assets|$PWD/assets|g" $K > "$TMP/gpu/k.conf"
+check "kiosk leaves out a scene this GPU cannot draw" 0 "lorenz_single.scene: this GPU \(.*\) cannot draw it: render.pipeline = single: this GPU ends a fragment-shader loop after 4096 turns \(probed\).*; the kiosk shows the other scenes \| .*the start scene .*lorenz_single.scene cannot be drawn; the kiosk starts with .*starflight.scene \| 2 frames$" -- \
+    sh -c "BT_FAULT=loop_limit $BT kiosk --config $TMP/gpu/k.conf --out $TMP/gpu/out --frames 2 2>&1 | grep -v '^bentray kiosk: \(headless screen\|stopped\)' | tr '\n' '|' | sed 's/|/ | /g'; echo \$(ls $TMP/gpu/out/frame_*.png | wc -l) frames"
+check "kiosk on a GPU that can draw none of its scenes" 3 "starflight.scene: this GPU \(.*\) cannot draw it: this GPU has no renderable float format.*this GPU \(.*\) can draw none of the 2 scenes; stopped \(exit 3: the service does not start it again\)" -- \
+    sh -c "BT_FAULT=float_render,half_float_render $BT kiosk --config $TMP/gpu/k.conf --out $TMP/gpu/none --frames 2 2>&1 | tr '\n' ' '; exit \$(BT_FAULT=float_render,half_float_render $BT kiosk --config $TMP/gpu/k.conf --out $TMP/gpu/none --frames 2 >/dev/null 2>&1; echo \$?)"
+check "kiosk service: no restart when no scene can be drawn" 0 "^RestartPreventExitStatus=3$" -- grep '^RestartPreventExitStatus' kiosk/bentray-kiosk.service
 # --check-inputs: the script's events, one line each, then it ends with the script
 check "kiosk check inputs" 0 "input replay: turn speed \+20.*input replay: press next_scene" -- sh -c "$BT kiosk --config $K --out $TMP --check-inputs | tr '\n' ' '"
 # a stray frame of an earlier run anywhere in the sequence is refused before the kiosk starts
