@@ -6,6 +6,7 @@
 #   make golden re-render the committed golden images (on purpose only; look at them)
 #   make bench  measure speed and speed against error: docs/BENCH.md, docs/bench/ (CSV, PNG plots)
 #   make vm-test  the kiosk on a virtual exhibit (QEMU, KMS, systemd, GPIO): build/vm/vm-test.log
+#   make shader-stats  every shader compiled by the exhibit GPUs' real compilers: docs/bench/shader_stats.md
 
 CC      ?= cc
 BUILD   ?= build
@@ -40,7 +41,7 @@ SHADERS   := $(sort $(wildcard shaders_es/*.glsl))
 TEST_SRCS := $(sort $(wildcard tests/unit/test_*.c))
 TEST_BINS := $(TEST_SRCS:tests/unit/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps deps-bench deps-gallery deps-vm vm-test gallery install demo check-layers test test-unit test-render test-sanitize test-valgrind golden assets accuracy bench clean
+.PHONY: all deps deps-bench deps-gallery deps-vm vm-test shader-stats gallery install demo check-layers test test-unit test-render test-sanitize test-valgrind golden assets accuracy bench clean
 all: $(BIN)
 
 # The version: the commit this tree was built from (git describe), or "unknown" outside a checkout;
@@ -150,6 +151,20 @@ vm-test: deps deps-vm
 	@$(MAKE) --no-print-directory bentray
 	tests/vm/run.sh
 
+# Every shader program of the shipped scenes and the kiosk, compiled by the real compilers of the
+# exhibit's GPUs (VC4, V3D, Mali-400, Mali-T720, Mali-G52, Adreno 306 and 530: Mesa's drivers over
+# their noop drm-shim, built under build/mesa-shim from Debian's Mesa source the first time, about
+# twenty minutes). Writes docs/bench/shader_stats.md, which docs/BENCH.md includes. Not part of make
+# test; its result is committed. SHADER_STATS_FLAGS=--kiosk compiles only the kiosk's programs.
+shader-stats: deps
+	@$(MAKE) --no-print-directory bentray $(BUILD)/tests/gpus/compile_stats
+	tests/gpus/shader_stats.sh $(SHADER_STATS_FLAGS) docs/bench/shader_stats.md
+
+# compile_stats is built by make test too (tests/render/shader_dump.sh uses it on llvmpipe)
+$(BUILD)/tests/gpus/compile_stats: tests/gpus/compile_stats.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -o $@ $< $(shell pkg-config --libs egl glesv2)
+
 demo: deps
 	@$(MAKE) --no-print-directory bentray
 	@mkdir -p out
@@ -171,7 +186,7 @@ test-unit: $(TEST_BINS)
 	@set -e; for t in $(TEST_BINS); do echo "== $$t"; $$t; done
 
 # the report tool is built here too, so that it cannot rot between runs of `make accuracy`
-test-render: $(BIN) $(BUILD)/tools/accuracy_report
+test-render: $(BIN) $(BUILD)/tools/accuracy_report $(BUILD)/tests/gpus/compile_stats
 	@BT=./$(BIN) tests/render/run_all.sh
 
 # One headless render on each back-end (EGL, OSMesa) under Valgrind's memcheck: a definite leak or an
@@ -190,14 +205,15 @@ ASAN_BINS := $(TEST_BINS:$(BUILD)/%=build/asan/%)
 GL_TESTS  := $(basename $(notdir $(shell grep -l 'hard_cases.h\|gl_context_create\|render_frame\|kiosk_run' $(TEST_SRCS))))
 test-sanitize:
 	@$(MAKE) --no-print-directory BUILD=build/asan BIN=build/asan/bentray SANITIZE="$(SANITIZE_FLAGS)" \
-	    build/asan/bentray $(ASAN_BINS)
+	    build/asan/bentray build/asan/tests/gpus/compile_stats $(ASAN_BINS)
 	@set -e; export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1; \
 	  for t in $(ASAN_BINS); do \
 	    case " $(GL_TESTS) " in *" $$(basename $$t) "*) leaks=0;; *) leaks=1;; esac; \
 	    echo "== $$t (sanitized, leak detection $$leaks)"; \
 	    ASAN_OPTIONS=detect_leaks=$$leaks $$t > build/asan/last.log 2>&1 || { cat build/asan/last.log; exit 1; }; \
 	  done; \
-	  ASAN_OPTIONS=detect_leaks=0 BT=build/asan/bentray tests/render/run_all.sh
+	  ASAN_OPTIONS=detect_leaks=0 BT=build/asan/bentray COMPILE_STATS=build/asan/tests/gpus/compile_stats \
+	    tests/render/run_all.sh
 
 # Fuzzing (libFuzzer; clang only, so not part of `make test`): the parsers of what exhibition staff
 # edit (scene files, the kiosk configuration), the dump reader and the input decoders, each harness

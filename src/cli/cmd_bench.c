@@ -115,6 +115,27 @@ static int prepare_out(struct bench *b, const char *out, int force, char *md_pat
     return EXIT_OK;
 }
 
+/* The section "On the GPUs of an exhibit" that make shader-stats wrote into DIR/bench/shader_stats.md
+ * (the drivers' compilers are not on every machine that runs the bench): copied in as it is, or a line
+ * that says how to make it. */
+static void include_shader_stats(struct bench *b)
+{
+    char path[BENCH_PATH_LEN + 32];
+    snprintf(path, sizeof path, "%s/shader_stats.md", b->data_dir);
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        fprintf(b->md, "## On the GPUs of an exhibit\n\nNot measured in this run: `make shader-stats` writes this "
+                       "section (%s), from the real compilers of the exhibit's GPUs.\n\n", path);
+        return;
+    }
+    char buf[4096];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0)
+        fwrite(buf, 1, n, b->md);
+    fclose(f);
+    fprintf(b->md, "\n");
+}
+
 int cmd_bench(int argc, char **argv)
 {
     static struct bench b;
@@ -243,6 +264,8 @@ int cmd_bench(int argc, char **argv)
                     e.message);
             rc = exit_code_of(&e);
         }
+    if (out && rc == EXIT_OK && !kiosk_only)
+        include_shader_stats(&b);
     fprintf(b.md, "Total bench time: %.0f s.\n", clock_seconds() - b.started);
     if (out)
         fclose(b.md);

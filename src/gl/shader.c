@@ -120,31 +120,71 @@ void shader_stage_names(char *out, size_t n)
     }
 }
 
-/* The whole source of a shader whose own (last) file is the capture's, its parts joined, to the
- * target's capture. */
-static void capture_source(const struct shader_target *t, const char *const *files, const char *const *src,
-                           int n_src)
+/* The parts of a shader's source joined into one malloc'd text, as the GL compiles it; NULL where
+ * memory runs out. */
+static char *join_sources(const char *const *src, int n_src)
 {
-    /* a stage's own file comes last, after the files whose functions it calls */
-    int last = 0;
-    while (files[last + 1])
-        last++;
-    if (strcmp(files[last], t->capture_file) != 0)
-        return;
     size_t len = 1;
     for (int i = 0; i < n_src; i++)
         len += strlen(src[i]);
     char *whole = malloc(len);
     if (!whole)
-        return;
+        return NULL;
     whole[0] = '\0';
     for (int i = 0, used = 0; i < n_src; i++) {
         size_t part = strlen(src[i]);
         memcpy(whole + used, src[i], part + 1);
         used += (int)part;
     }
-    t->capture(whole, t->capture_arg);
-    free(whole);
+    return whole;
+}
+
+/* The file that names a shader: its own (last) one, after the files whose functions it calls. */
+static const char *own_file(const char *const *files)
+{
+    int last = 0;
+    while (files[last + 1])
+        last++;
+    return files[last];
+}
+
+/* The whole source of a shader whose own file is the capture's, to the target's capture. */
+static void capture_source(const struct shader_target *t, const char *const *files, const char *whole)
+{
+    if (whole && strcmp(own_file(files), t->capture_file) == 0)
+        t->capture(whole, t->capture_arg);
+}
+
+/* BT_SHADER_DUMP=DIR (docs/LIMITS.md): every program built is written whole into DIR, its vertex
+ * and fragment shaders as PID-N-STAGE.vert and .frag (STAGE: the fragment shader's own file), new
+ * files only; a file that cannot be written is said on stderr, and the program is built all the
+ * same. The real compilers of the exhibit's GPUs read them (tests/gpus/shader_stats.sh). */
+static void dump_program(const char *vertex_whole, const char *fragment_whole, const char *const *fragment)
+{
+    static unsigned dumped;
+    const char *dir = getenv("BT_SHADER_DUMP");
+    if (!dir || !*dir)
+        return;
+    char stem[64];
+    snprintf(stem, sizeof stem, "%s", own_file(fragment));
+    char *dot = strrchr(stem, '.');
+    if (dot)
+        *dot = '\0';
+    unsigned n = dumped++;
+    const char *texts[2] = {vertex_whole, fragment_whole};
+    const char *ext[2] = {"vert", "frag"};
+    for (int i = 0; i < 2; i++) {
+        char path[1200];
+        snprintf(path, sizeof path, "%s/%ld-%04u-%s.%s", dir, (long)getpid(), n, stem, ext[i]);
+        int fd = open(path, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+        size_t len = texts[i] ? strlen(texts[i]) : 0;
+        ssize_t wrote = fd >= 0 && texts[i] ? write(fd, texts[i], len) : -1;
+        int errnum = texts[i] ? errno : ENOMEM;
+        int closed = fd >= 0 ? close(fd) : -1;
+        if (wrote != (ssize_t)len || closed != 0)
+            fprintf(stderr, "bentray: BT_SHADER_DUMP: cannot write %s: %s\n", path,
+                    wrote >= 0 && closed == 0 ? "a short write" : strerror(errnum));
+    }
 }
 
 static void preamble(const struct shader_target *t, GLenum stage, char *out, size_t n)
@@ -186,8 +226,9 @@ static void translate_log(const char *log, const char *const *files, int n_files
     }
 }
 
+/* One shader compiled; its whole source into *whole (malloc'd) where whole is not NULL. */
 static GLuint compile(const struct shader_target *t, GLenum stage, const char *defines,
-                      const char *const *files, struct error *e)
+                      const char *const *files, char **whole, struct error *e)
 {
     const char *src[2 * SHADER_MAX_FILES + 2];
     char *texts[SHADER_MAX_FILES] = {0};
@@ -214,8 +255,14 @@ static GLuint compile(const struct shader_target *t, GLenum stage, const char *d
         src[n_src++] = lines[n_files];
         src[n_src++] = texts[n_files];
     }
-    if (t->capture && stage == GL_FRAGMENT_SHADER)
-        capture_source(t, files, src, n_src);
+    if (whole)
+        *whole = join_sources(src, n_src);
+    if (t->capture && stage == GL_FRAGMENT_SHADER) {
+        char *text = whole ? *whole : join_sources(src, n_src);
+        capture_source(t, files, text);
+        if (!whole)
+            free(text);
+    }
     sh = glCreateShader(stage);
     glShaderSource(sh, n_src, src, NULL);
     glCompileShader(sh);
@@ -240,12 +287,18 @@ GLuint shader_program_build(const struct shader_target *target, const char *defi
                             const char *const *vertex, const char *const *fragment,
                             struct error *e)
 {
-    GLuint vs = compile(target, GL_VERTEX_SHADER, defines, vertex, e);
-    if (!vs)
-        return 0;
-    GLuint fs = compile(target, GL_FRAGMENT_SHADER, defines, fragment, e);
+    const char *dump = getenv("BT_SHADER_DUMP");
+    char *vertex_whole = NULL, *fragment_whole = NULL;
+    int dumping = dump && *dump;
+    GLuint vs = compile(target, GL_VERTEX_SHADER, defines, vertex, dumping ? &vertex_whole : NULL, e);
+    GLuint fs = vs ? compile(target, GL_FRAGMENT_SHADER, defines, fragment, dumping ? &fragment_whole : NULL, e) : 0;
+    if (dumping && vs && fs)
+        dump_program(vertex_whole, fragment_whole, fragment);
+    free(vertex_whole);
+    free(fragment_whole);
     if (!fs) {
-        glDeleteShader(vs);
+        if (vs)
+            glDeleteShader(vs);
         return 0;
     }
     GLuint prog = glCreateProgram();

@@ -295,6 +295,23 @@ for case in "frame lorenz" "orbit_frame schwarzschild" "integrate lorenz" "inter
         > '$TMP/stage.frag' && head -1 '$TMP/stage.frag' | grep -q '^#version 100$' && grep -q 'void main' '$TMP/stage.frag' \
         && glslangValidator -S frag '$TMP/stage.frag' > '$TMP/glslang.log' && echo compiled || cat '$TMP/glslang.log'"
 done
+# BT_SHADER_DUMP=DIR: every program a render builds, whole, as the GL compiles it: the single pass's
+# fragment shader is the one info --shader prints, the dumped programs compile and draw on this
+# machine's GL through compile_stats (the tool make shader-stats runs under the exhibit GPUs'
+# compilers), and a dump that cannot be written is said, the frame rendered all the same
+mkdir -p "$TMP/shader_dump"
+check "BT_SHADER_DUMP writes every program" 0 "^stage_orbit_frame$" -- sh -c "BT_SHADER_DUMP='$TMP/shader_dump' $BT render \
+    --scene assets/scenes/schwarzschild.scene --size 16x12 --out '$TMP/dumped.png' >/dev/null && \
+    ls '$TMP/shader_dump' | sed -n 's/^[0-9]*-[0-9]*-\(stage_.*\)\.frag$/\1/p'"
+mkdir -p "$TMP/info_dump"
+check "BT_SHADER_DUMP's program is info --shader's" 0 "^same$" -- sh -c "BT_SHADER_DUMP='$TMP/info_dump' $BT info \\
+    --shader orbit_frame --scene assets/scenes/schwarzschild.scene > '$TMP/orbit_frame.frag' && \\
+    cmp '$TMP/orbit_frame.frag' '$TMP'/info_dump/*-stage_orbit_frame.frag && echo same"
+check "dumped programs compile and draw" 0 "^results: [1-9][0-9]* ok, 0 other$" -- sh -c "${COMPILE_STATS:-build/tests/gpus/compile_stats} \
+    \$(ls '$TMP'/shader_dump/*.frag | sed 's/\.frag$//') 2>&1 | awk '/^== result /{ if (\$4 == \"ok\") ok++; else other++ }
+    END { printf \"results: %d ok, %d other\\n\", ok, other }'"
+check "BT_SHADER_DUMP into a missing directory" 0 "BT_SHADER_DUMP: cannot write $TMP/no_such_dir/.*-stage_orbit_frame.frag: No such file" -- \
+    env BT_SHADER_DUMP="$TMP/no_such_dir" $BT render --scene assets/scenes/schwarzschild.scene --size 16x12 --out "$TMP/undumped.png"
 check "info --shader unknown stage" 2 "no stage 'integrator' \(stages: fill, frame, integrate, intersect, orbit, orbit_frame," -- \
     $BT info --shader integrator --scene $S
 check "info --shader a stage not run" 1 "runs no program of stage_integrate.glsl \(single pass" -- \
