@@ -708,8 +708,8 @@ static void drop_scenes(struct kiosk *k, const int *drop, char (*why)[KIOSK_REFU
     kiosk_view_unload(&k->view);
 }
 
-/* Each scene's renderer made once on this GPU: a scene it refuses (a path, a precision or a loop
- * length it lacks) is left out. The number of scenes left. */
+/* Each scene's renderer made once on this GPU: the log says its render path, and a scene the GPU
+ * refuses (a path, a precision or a loop length it lacks) is left out. The number of scenes left. */
 static int refuse_scenes(struct kiosk *k)
 {
     static int drop[KIOSK_MAX_SCENES];
@@ -721,6 +721,9 @@ static int refuse_scenes(struct kiosk *k)
         drop[i] = kiosk_view_load(&k->view, i, &k->scenes[i], &refusal) != 0;
         if (drop[i])
             error_format(&refusal, why[i], sizeof why[i]);
+        else
+            fprintf(k->log, "bentray kiosk: %s: %s\n", k->shown.kiosk.scenes[i],
+                    renderer_path(k->view.renderer)->description);
         any |= drop[i];
     }
     if (any)

@@ -39,6 +39,8 @@ sed "s|^scenes = .*|scenes = $TMP/gpu/scenes/lorenz_single.scene, $PWD/assets/sc
      /^assets_root/d; s|path = visitor.events|path = $PWD/tests/kiosk/visitor.events|; s|\.\./\.\./assets|$PWD/assets|g" $K > "$TMP/gpu/k.conf"
 check "kiosk leaves out a scene this GPU cannot draw" 0 "lorenz_single.scene: this GPU \(.*\) cannot draw it: render.pipeline = single: this GPU ends a fragment-shader loop after 4096 turns \(probed\).*; the kiosk shows the other scenes \| .*the start scene .*lorenz_single.scene cannot be drawn; the kiosk starts with .*starflight.scene \| 2 frames$" -- \
     sh -c "BT_FAULT=loop_limit $BT kiosk --config $TMP/gpu/k.conf --out $TMP/gpu/out --frames 2 2>&1 | grep -v '^bentray kiosk: \(headless screen\|stopped\)' | tr '\n' '|' | sed 's/|/ | /g'; echo \$(ls $TMP/gpu/out/frame_*.png | wc -l) frames"
+check "kiosk logs each scene's render path" 0 "starflight.scene: fp32\+mrt: RGBA32F ray state" -- \
+    env BT_FAULT=loop_limit $BT kiosk --config "$TMP/gpu/k.conf" --out "$TMP/gpu/out" --frames 2 --force
 check "kiosk on a GPU that can draw none of its scenes" 3 "starflight.scene: this GPU \(.*\) cannot draw it: this GPU has no renderable float format.*this GPU \(.*\) can draw none of the 2 scenes; stopped \(exit 3: the service does not start it again\)" -- \
     sh -c "BT_FAULT=float_render,half_float_render $BT kiosk --config $TMP/gpu/k.conf --out $TMP/gpu/none --frames 2 2>&1 | tr '\n' ' '; exit \$(BT_FAULT=float_render,half_float_render $BT kiosk --config $TMP/gpu/k.conf --out $TMP/gpu/none --frames 2 >/dev/null 2>&1; echo \$?)"
 check "kiosk service: no restart when no scene can be drawn" 0 "^RestartPreventExitStatus=3$" -- grep '^RestartPreventExitStatus' kiosk/bentray-kiosk.service
