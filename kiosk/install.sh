@@ -26,6 +26,7 @@ Installs the bentray kiosk (run it as root, from a built source tree):
   PREFIX/share/bentray/                       scenes, textures and sky maps
   PREFIX/share/doc/bentray/KIOSK.md           the staff guide
   PREFIX/share/doc/bentray/SCENES.md          the scene format
+  PREFIX/share/doc/bentray/HARDWARE.md        which boards draw which scenes
   /etc/systemd/system/bentray-kiosk.service   the service
   /etc/udev/rules.d/99-bentray.rules          access to the knobs and GPIO chips
   /etc/bentray/kiosk.conf                     the example configuration, only where there is none
@@ -225,6 +226,8 @@ makedir "$doc"
 run install -m 0644 "$top/docs/KIOSK.md" "$destdir$doc/KIOSK.md"
 # the scene format, which the guide sends staff to for scenes of their own
 run install -m 0644 "$top/docs/SCENES.md" "$destdir$doc/SCENES.md"
+# which boards draw which scenes, which the guide's troubleshooting sends staff to
+run install -m 0644 "$top/docs/HARDWARE.md" "$destdir$doc/HARDWARE.md"
 say "$did $destdir$prefix/bin/bentray and its scenes in $destdir$share"
 
 # --- the service and the device rules: ours, replaced on every install (local changes go into a

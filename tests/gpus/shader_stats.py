@@ -4,6 +4,7 @@ uses.txt (key, scene@pipeline) and logs/GPU.log (compile_stats' output with the 
 lines among it). Writes OUT.md."""
 import os
 import re
+import subprocess
 import sys
 
 # name in the logs, what the table calls it, which boards carry it
@@ -27,6 +28,17 @@ WAVES = re.compile(r"(\d+) waves")
 SPILLS = re.compile(r"(\d+):(\d+) spills:fills")
 RESULT = re.compile(r"^== result (\S+) (\S+) cpu_ms=(\d+) ?(.*)$")
 FAILURES = ("Failed to register allocate", "failed to", "Failed to compile", "error:")
+
+
+def writes_two_targets(path):
+    """whether the fragment shader writes gl_FragData[1] once preprocessed (glslang's -E: the macros
+    of common.glsl name it in every program, and only the MRT variants use it)"""
+    try:
+        out = subprocess.run(["glslangValidator", "-E", "-S", "frag", path], capture_output=True, text=True,
+                             errors="replace").stdout
+    except OSError:
+        return False
+    return "gl_FragData[1]" in out
 
 
 def read_pairs(path):
@@ -147,6 +159,13 @@ def main():
                         caps[gpu] = dict(kv.split("=", 1) for kv in line.split()[2:] if "=" in kv)
 
     kiosk = [k for k, _ in programs if "kiosk@kiosk" in uses.get(k, [])]
+    two_targets = set(k for k, _ in programs if writes_two_targets(os.path.join(work, "programs", k + ".frag")))
+    one_buffer = set(g for g, _, _ in GPUS if caps.get(g, {}).get("draw_buffers") == "1")
+
+    def applies(gpu, key):
+        """whether bentray can build this program for this GPU: a two-target program never is where
+        there is one draw buffer (bentray builds the one-target variants there)"""
+        return not (gpu in one_buffer and key in two_targets)
     if scope == "kiosk":
         programs = [p for p in programs if p[0] in kiosk]
     lines = []
@@ -199,16 +218,20 @@ def main():
     w("")
     w("### Summary")
     w("")
+    w("Programs that write two targets (MRT) are counted only where the driver has more than one draw "
+      "buffer: elsewhere bentray builds the one-target variants (`render.mrt = off`, in the table as "
+      "\"multipass-1target\"), and the two-target ones show as \"n/a\".")
+    w("")
     w("| GPU | programs that compile | fail | spill | fewest threads | most instructions | slowest compile, s |")
     w("|---|---|---|---|---|---|---|")
     for gpu, name, _ in GPUS:
         log = logs[gpu]
-        entries = [log.get(k) for k, _ in programs]
+        entries = [log.get(k) for k, _ in programs if applies(gpu, k)]
         ok = [e for e in entries if verdict(e) == "ok"]
         spill = [e for e in ok if e["spills"] or e["fills"]]
         threads = [e["threads"] for e in ok if e["threads"] is not None]
         w("| %s | %d of %d | %d | %d | %s | %s | %s |" % (
-            name, len(ok), len(programs), len(programs) - len(ok), len(spill),
+            name, len(ok), len(entries), len(entries) - len(ok), len(spill),
             min(threads) if threads else "-", max(e["inst"] for e in ok) if ok else "-",
             "%.1f" % max(e["cpu_s"] for e in ok) if ok else "-"))
     w("")
@@ -241,7 +264,8 @@ def main():
     for key, stage in sorted(programs, key=lambda p: (p[1], uses.get(p[0], [""])[0])):
         who = uses.get(key, [])
         shown = ", ".join(("kiosk" if u == "kiosk@kiosk" else u.replace("@", " ")) for u in who[:4]) + (" and %d more" % (len(who) - 4) if len(who) > 4 else "")
-        w("| %s `%s` | %s | " % (stage, key, shown) + " | ".join(cell(logs[g].get(key)) for g, _, _ in GPUS) + " |")
+        w("| %s `%s` | %s | " % (stage, key, shown) + " | ".join(
+            cell(logs[g].get(key)) if applies(g, key) else "n/a (two targets, one draw buffer)" for g, _, _ in GPUS) + " |")
     w("")
     os.makedirs(os.path.dirname(os.path.abspath(out_md)), exist_ok=True)
     tmp = out_md + ".tmp"

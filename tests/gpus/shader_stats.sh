@@ -10,7 +10,8 @@
 # seven times, the largest taking half a minute each for V3D's compiler).
 #
 # 1. The programs: bentray writes every program it builds (BT_SHADER_DUMP) while it renders each
-#    shipped scene with each pipeline (auto, multipass, fused) on this machine's llvmpipe, and while
+#    shipped scene with each pipeline (auto, multipass, fused, and multipass with one target a pass)
+#    on this machine's llvmpipe, and while
 #    the shipped kiosk configuration compiles ahead every variant of its scenes. Copies are dropped.
 # 2. Each GPU's compiler: compile_stats links and draws each program once under the driver's shim.
 # 3. tests/gpus/shader_stats.py reads the drivers' statistics and writes the tables.
@@ -35,12 +36,16 @@ mkdir -p "$work/dump" "$work/programs" "$work/logs"
 # 1. every program, by scene and pipeline, then the kiosk's compile-ahead
 for scene in "$root"/assets/scenes/*.scene; do
     name=$(basename "$scene" .scene)
-    for pipeline in auto multipass fused; do
+    # the multipass scheme also with one target a pass (render.mrt = off): the variants a GPU with
+    # one draw buffer builds (VC4, Mali-400, Mali-T720)
+    for pipeline in auto multipass fused multipass-1target; do
         d="$work/dump/$name@$pipeline"
         mkdir -p "$d"
+        set -- --set render.pipeline=$pipeline
+        [ $pipeline = multipass-1target ] && set -- --set render.pipeline=multipass --set render.mrt=off
         # a pipeline the scene cannot take is refused (exit 1): nothing is built, nothing counted
         BT_SHADER_DUMP=$d "$bentray" render --scene "$scene" --size 32x24 --out "$work/frame.png" --force \
-            --set render.pipeline=$pipeline >"$work/logs/render-$name-$pipeline.log" 2>&1 || true
+            "$@" >"$work/logs/render-$name-$pipeline.log" 2>&1 || true
     done
 done
 sed -e "s|\.\./assets|$root/assets|g" -e 's|^compile_ahead = .*|compile_ahead = on|' \

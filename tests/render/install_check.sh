@@ -123,6 +123,7 @@ is "udev rules" "$D/etc/udev/rules.d/99-bentray.rules" "-rw-r--r--"
 ok_if "udev rules as in kiosk/" "contents differ" cmp -s kiosk/99-bentray.rules "$D/etc/udev/rules.d/99-bentray.rules"
 is "guide" "$D/usr/local/share/doc/bentray/KIOSK.md" "-rw-r--r--"
 is "scene format" "$D/usr/local/share/doc/bentray/SCENES.md" "-rw-r--r--"
+is "boards guide" "$D/usr/local/share/doc/bentray/HARDWARE.md" "-rw-r--r--"
 CONF=$D/etc/bentray/kiosk.conf
 is "example configuration" "$CONF" "-rw-r--r--"
 holds "configuration names installed scenes" "$CONF" "^scenes = /usr/local/share/bentray/scenes/schwarzschild.scene,"
@@ -194,7 +195,7 @@ if [ "$unprivileged" = 1 ]; then
     T=$TMP/tree
     mkdir -p "$T/docs"
     cp -R kiosk assets "$T/"
-    cp docs/KIOSK.md docs/SCENES.md "$T/docs/"
+    cp docs/KIOSK.md docs/SCENES.md docs/HARDWARE.md "$T/docs/"
     chmod -R a+rX "$TMP"
     chmod 0755 "$STUB"
     check "system install without root" 2 "needs root: run it with sudo" \

@@ -17,7 +17,7 @@ tar -C "$root" -xf "$out/base.tar"
 src=$root/opt/bentray-src
 mkdir -p "$src/docs" "$src/tests/vm"
 cp -a bentray kiosk assets "$src/"
-cp docs/KIOSK.md docs/SCENES.md "$src/docs/"
+cp docs/KIOSK.md docs/SCENES.md docs/HARDWARE.md "$src/docs/"
 cp tests/vm/guest_agent.sh tests/vm/gpio_sim.sh "$out/gpio-sim-bentray.ko" "$src/tests/vm/"
 cp tests/vm/bentray-vmagent.service "$root/etc/systemd/system/"
 ln -sf /etc/systemd/system/bentray-vmagent.service "$root/etc/systemd/system/multi-user.target.wants/bentray-vmagent.service"
