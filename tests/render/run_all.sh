@@ -321,12 +321,18 @@ check "info scene without shader" 2 "go with --shader STAGE" -- $BT info --scene
 # bench: the tiny configuration proves the command and its report work; it times nothing that matters
 mkdir -p "$TMP/bench"
 check "bench quick" 0 "wrote .*BENCH.md" -- $BT bench --out "$TMP/bench" --quick
-check "bench sections" 0 "^12 sections, table1 21 rows, pipelines 23 rows, figure5 3 rows, limit 3 rows, pareto 4 rows, relativity 5 rows, kiosk 2 rows, antialias 3 rows, stars 3 rows$" -- sh -c "
+check "bench sections" 0 "^13 sections, table1 21 rows, pipelines 23 rows, figure5 3 rows, limit 3 rows, pareto 4 rows, relativity 5 rows, kiosk 2 rows, antialias 3 rows, stars 3 rows$" -- sh -c "
     printf '%s sections, table1 %s rows, pipelines %s rows, figure5 %s rows, limit %s rows, pareto %s rows, relativity %s rows, kiosk %s rows, antialias %s rows, stars %s rows\n' \
       \$(grep -c '^## ' $TMP/bench/BENCH.md) \$(wc -l < $TMP/bench/bench/table1.csv) \$(wc -l < $TMP/bench/bench/pipelines.csv) \
       \$(wc -l < $TMP/bench/bench/figure5.csv) \$(wc -l < $TMP/bench/bench/limit.csv) \
       \$(wc -l < $TMP/bench/bench/pareto.csv) \$(wc -l < $TMP/bench/bench/relativity.csv) \
       \$(wc -l < $TMP/bench/bench/kiosk.csv) \$(wc -l < $TMP/bench/bench/antialias.csv) \$(wc -l < $TMP/bench/bench/stars.csv)"
+# the section of make shader-stats: copied from DIR/bench/shader_stats.md where it is there, else a
+# line that says how to make it
+check "bench without shader statistics" 0 "^Not measured in this run: \`make shader-stats\` writes this section" -- \
+    grep -A2 '^## On the GPUs of an exhibit' "$TMP/bench/BENCH.md"
+printf '## On the GPUs of an exhibit\n\nthe compilers said so\n' > "$TMP/bench/bench/shader_stats.md"
+check "bench includes the shader statistics" 0 "^the compilers said so$" -- sh -c "$BT bench --out $TMP/bench --quick --force --only table1 >/dev/null 2>&1 && grep -A2 '^## On the GPUs of an exhibit' $TMP/bench/BENCH.md"
 check "bench kiosk to stdout" 0 "^\| schwarzschild.scene( \| [0-9.]+){6} \| [0-9]+ \| (met|MISSED) \| (met|MISSED) \| (met|MISSED) \| (met|MISSED) \|$" -- $BT bench --kiosk --quick
 # the shipped configuration is found from the program's own place, whatever the working directory
 check "bench kiosk elsewhere" 0 "--config $(pwd)/kiosk/kiosk.conf" -- sh -c "cd '$TMP' && $(cd "$(dirname "$BT")" && pwd)/$(basename "$BT") bench --kiosk --quick"
