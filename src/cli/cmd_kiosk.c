@@ -181,6 +181,5 @@ int cmd_kiosk(int argc, char **argv)
     if (log != stderr)
         fclose(log);
     /* the kiosk's statuses are its exit codes (kiosk_loop.h) */
-    return status == KIOSK_STOPPED ? EXIT_OK : status == KIOSK_BAD_CONFIG ? EXIT_USAGE
-                                             : status == KIOSK_NO_SCENE ? (int)KIOSK_NO_SCENE : EXIT_RUNTIME;
+    return (int)status;
 }

@@ -159,12 +159,10 @@ static void capture_source(const struct shader_target *t, const char *const *fil
  * and fragment shaders as PID-N-STAGE.vert and .frag (STAGE: the fragment shader's own file), new
  * files only; a file that cannot be written is said on stderr, and the program is built all the
  * same. The real compilers of the exhibit's GPUs read them (tests/gpus/shader_stats.sh). */
-static void dump_program(const char *vertex_whole, const char *fragment_whole, const char *const *fragment)
+static void dump_program(const char *dir, const char *vertex_whole, const char *fragment_whole,
+                         const char *const *fragment)
 {
     static unsigned dumped;
-    const char *dir = getenv("BT_SHADER_DUMP");
-    if (!dir || !*dir)
-        return;
     char stem[64];
     snprintf(stem, sizeof stem, "%s", own_file(fragment));
     char *dot = strrchr(stem, '.');
@@ -293,7 +291,7 @@ GLuint shader_program_build(const struct shader_target *target, const char *defi
     GLuint vs = compile(target, GL_VERTEX_SHADER, defines, vertex, dumping ? &vertex_whole : NULL, e);
     GLuint fs = vs ? compile(target, GL_FRAGMENT_SHADER, defines, fragment, dumping ? &fragment_whole : NULL, e) : 0;
     if (dumping && vs && fs)
-        dump_program(vertex_whole, fragment_whole, fragment);
+        dump_program(dump, vertex_whole, fragment_whole, fragment);
     free(vertex_whole);
     free(fragment_whole);
     if (!fs) {
