@@ -21,6 +21,8 @@ static GLuint make_fbo(struct raystate *rs, const GLuint target[RAYSTATE_MAX_TAR
     static const GLenum buffers[RAYSTATE_MAX_TARGETS] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
                                                          GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
     int n = target_count(target);
+    for (int i = 0; i < n; i++)
+        raystate_storage(rs, target[i]);
     GLuint fbo;
     glGenFramebuffers(1, &fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
@@ -58,17 +60,18 @@ int raystate_init(struct raystate *rs, const struct render_path *path, int width
     memset(rs, 0, sizeof *rs);
     rs->width = width;
     rs->height = height;
+    /* names only: each texture gets its memory when a pass first needs it (raystate_storage) */
     for (int i = 0; i < 3; i++)
-        rs->position[i] = texture_create_nearest(f->internal_format, f->format, f->type, width, height);
+        rs->position[i] = texture_name_nearest();
     for (int i = 0; i < 2; i++) {
-        rs->velocity[i] = texture_create_nearest(f->internal_format, f->format, f->type, width, height);
-        rs->hit[i] = texture_create_nearest(f->internal_format, f->format, f->type, width, height);
-        rs->image[i] = texture_create_nearest(f->internal_format, f->format, f->type, width, height);
+        rs->velocity[i] = texture_name_nearest();
+        rs->hit[i] = texture_name_nearest();
+        rs->image[i] = texture_name_nearest();
     }
     GLuint *results[4] = {&rs->result_position, &rs->result_velocity, &rs->result_hit, &rs->result_image};
     for (int i = 0; i < 4; i++)
-        *results[i] = texture_create_nearest(f->internal_format, f->format, f->type, width, height);
-    rs->final_color = texture_create_nearest(GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+        *results[i] = texture_name_nearest();
+    rs->final_color = texture_name_nearest();
     /* 16 bits are plenty: the buffer holds only 0 (terminated) and 1, and the quads sit at 0 and 0.5 */
     glGenRenderbuffers(1, &rs->depth);
     glBindRenderbuffer(GL_RENDERBUFFER, rs->depth);
@@ -76,25 +79,69 @@ int raystate_init(struct raystate *rs, const struct render_path *path, int width
     rs->format = f;
     rs->path_name = path->name;
     rs->mrt = path->mrt;
-    char what[128];
-    snprintf(what, sizeof what, "render path %s: allocating the ray state (13 %s textures of %dx%d)", path->name,
-             f->name, width, height);
+    /* the targets every path's rays end in (the results the sky stage reads): checked now rather
+     * than when the first pass needs them, so that a format this GPU cannot render into fails
+     * here; the setup stage's and every other float target have the same format */
+    GLenum status;
+    const GLuint setup[RAYSTATE_MAX_TARGETS] = {rs->result_image, path->mrt ? rs->result_velocity : 0, 0, 0};
+    GLuint fbo = make_fbo(rs, setup, &status);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
+    char what[160];
+    snprintf(what, sizeof what, "render path %s: allocating the ray state (%s textures of %dx%d)", path->name, f->name,
+             width, height);
     if (gl_check(what, e) != 0) {
         raystate_release(rs);
         return -1;
     }
-    /* the setup stage's targets: checked now rather than when the first pass needs them */
-    GLenum status;
-    const GLuint setup[RAYSTATE_MAX_TARGETS] = {rs->position[0], path->mrt ? rs->velocity[0] : 0, 0, 0};
-    GLuint fbo = make_fbo(rs, setup, &status);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteFramebuffers(1, &fbo);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         incomplete_message(rs, setup, status, e);
         raystate_release(rs);
         return -1;
     }
     return 0;
+}
+
+/* Whether TEXTURE is one of the ray state's own (given memory by raystate_storage). */
+static int own_texture(const struct raystate *rs, GLuint texture)
+{
+    const GLuint own[RAYSTATE_TEXTURES] = {rs->position[0],    rs->position[1],      rs->position[2],
+                                           rs->velocity[0],    rs->velocity[1],      rs->hit[0],
+                                           rs->hit[1],         rs->image[0],         rs->image[1],
+                                           rs->result_position, rs->result_velocity, rs->result_hit,
+                                           rs->result_image,   rs->final_color};
+    for (int i = 0; i < RAYSTATE_TEXTURES; i++)
+        if (texture && own[i] == texture)
+            return 1;
+    return 0;
+}
+
+void raystate_storage(struct raystate *rs, GLuint texture)
+{
+    /* another texture (a scene's, the orbit table, the HDR colour) has its memory already */
+    if (!own_texture(rs, texture))
+        return;
+    for (int i = 0; i < rs->n_stored; i++)
+        if (rs->stored[i] == texture)
+            return;
+    const struct float_format *f = rs->format;
+    if (texture == rs->final_color)
+        texture_define(texture, GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, rs->width, rs->height);
+    else
+        texture_define(texture, f->internal_format, f->format, f->type, rs->width, rs->height);
+    rs->stored[rs->n_stored++] = texture;
+}
+
+size_t raystate_bytes(const struct raystate *rs)
+{
+    size_t texel = rs->format ? (rs->format->is_fp32 ? 16 : 8) : 0;
+    size_t texels = (size_t)rs->width * rs->height;
+    size_t bytes = texels * 2;   /* the 16-bit depth buffer */
+    for (int i = 0; i < rs->n_stored; i++)
+        bytes += texels * (rs->stored[i] == rs->final_color ? 4 : texel);
+    if (rs->hdr_color)
+        bytes += texels * texel;
+    return bytes;
 }
 
 GLuint raystate_hdr_color(struct raystate *rs)
@@ -154,6 +201,7 @@ GLuint raystate_fbo_targets(struct raystate *rs, const GLuint target[RAYSTATE_MA
 int raystate_read(struct raystate *rs, GLuint texture, float *out, struct error *e)
 {
     int w = rs->width, h = rs->height;
+    raystate_storage(rs, texture);
     GLuint fbo = raystate_fbo(rs, texture, 0, e);
     if (!fbo)
         return -1;

@@ -5,7 +5,12 @@
  * Early ray termination (paper section 4.1) skips finished rays through the early-z test, so
  * their texels in the ping-pong copies stop being written and go stale. The termination test
  * therefore copies a ray's final state, once, into the result textures (never read while they
- * are written), and marks the ray in the depth buffer that every ray-state framebuffer shares. */
+ * are written), and marks the ray in the depth buffer that every ray-state framebuffer shares.
+ *
+ * A texture takes memory only once a pass writes it, reads it or is handed it
+ * (raystate_storage): the single pass writes two of the thirteen float textures, or none where
+ * only the image is read, so its frames neither clear nor hold the others (a fifth of the memory
+ * a frame holds on a board whose GPU shares 1 GB with everything else). */
 #ifndef BT_RAYSTATE_H
 #define BT_RAYSTATE_H
 #include "gl/gl_api.h"
@@ -15,6 +20,7 @@
 
 #define RAYSTATE_MAX_FBOS 32
 #define RAYSTATE_MAX_TARGETS 4     /* colour targets of one pass: the fused segment pass writes four */
+#define RAYSTATE_TEXTURES 14       /* the float textures below, and final_color */
 
 struct raystate {
     int width, height;
@@ -29,6 +35,8 @@ struct raystate {
     const struct float_format *format;  /* of every texture but final_color; for messages */
     const char *path_name;         /* the render path these textures serve */
     int mrt;
+    GLuint stored[RAYSTATE_TEXTURES];  /* the textures given memory so far (raystate_storage) */
+    int n_stored;
 };
 
 /* Allocates every texture and builds the path's first framebuffer (its colour targets and the
@@ -36,6 +44,12 @@ struct raystate {
  * On failure nothing stays allocated. */
 int raystate_init(struct raystate *rs, const struct render_path *path, int width, int height, struct error *e);
 void raystate_release(struct raystate *rs);
+/* Gives TEXTURE, one of the ray state's, its memory if it has none yet (its texels then read as
+ * zero on llvmpipe, undefined elsewhere, as the texture's first contents always were). Every
+ * pass's targets and inputs and every read-back pass through it; so must a texture handed out. */
+void raystate_storage(struct raystate *rs, GLuint texture);
+/* Bytes of GPU memory the ray state's textures hold now (the depth buffer included). */
+size_t raystate_bytes(const struct raystate *rs);
 /* Framebuffer with target0 (and target1 when nonzero) and the shared depth buffer attached;
  * made once and cached. */
 GLuint raystate_fbo(struct raystate *rs, GLuint target0, GLuint target1, struct error *e);

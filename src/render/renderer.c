@@ -432,11 +432,16 @@ void renderer_set_reads(struct renderer *r, int with_state)
     r->reads = with_state;
 }
 
-void renderer_textures(const struct renderer *r, struct renderer_textures *out)
+void renderer_textures(struct renderer *r, struct renderer_textures *out)
 {
     memset(out, 0, sizeof *out);
     if (!r->have_state)
         return;
+    /* what is handed out is sampled: each has its memory, as every texture a pass reads */
+    const GLuint handed[] = {r->rs.final_color, r->rs.result_position, r->rs.result_velocity, r->rs.result_hit,
+                             r->rs.result_image};
+    for (size_t i = 0; i < sizeof handed / sizeof handed[0]; i++)
+        raystate_storage(&r->rs, handed[i]);
     out->width = r->rs.width;
     out->height = r->rs.height;
     out->image = r->rs.final_color;
@@ -452,6 +457,11 @@ void renderer_textures(const struct renderer *r, struct renderer_textures *out)
         out->orbit_rows_per_side = r->orbit.p.rows_per_side;
         out->orbit_u_capture = r->orbit.u_capture;
     }
+}
+
+size_t renderer_state_bytes(const struct renderer *r)
+{
+    return r->have_state ? raystate_bytes(&r->rs) : 0;
 }
 
 void render_result_free(struct render_result *res)

@@ -87,7 +87,10 @@ struct renderer_textures {
     int orbit_width, orbit_height, orbit_columns, orbit_rows_per_side;
     double orbit_u_capture;         /* u where captured orbits end, just inside the horizon */
 };
-void renderer_textures(const struct renderer *r, struct renderer_textures *out);
+void renderer_textures(struct renderer *r, struct renderer_textures *out);
+/* Bytes of GPU memory the ray state holds now: only the textures its passes have used
+ * (render/raystate.h), so a single-pass frame holds a fraction of the multipass scheme's. */
+size_t renderer_state_bytes(const struct renderer *r);
 /* The single-pass frame's deferred hit and position, and its outcome textures where it drew its
  * image itself (a no-op after a multipass frame). */
 int renderer_complete_state(struct renderer *r, struct error *e);

@@ -89,8 +89,8 @@ static void test_single_pass_bit_identical(void **state)
 }
 
 /* The image of the single pass alone (only the image read: its colour drawn in the same pass), as
- * the kiosk draws it. */
-static void render_image_only(const struct scene *s, struct render_result *image)
+ * the kiosk draws it; *bytes (where not NULL) the GPU memory its ray state held. */
+static void render_image_only_held(const struct scene *s, struct render_result *image, size_t *bytes)
 {
     struct error gl_err, e;
     struct renderer *r = renderer_create(hc_context(), s, &gl_err);
@@ -100,7 +100,14 @@ static void render_image_only(const struct scene *s, struct render_result *image
     if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, &e) != 0 ||
         renderer_read(r, image, RENDER_READ_IMAGE, &e) != 0)
         fail_msg("render: %s", e.message);
+    if (bytes)
+        *bytes = renderer_state_bytes(r);
     renderer_destroy(r);
+}
+
+static void render_image_only(const struct scene *s, struct render_result *image)
+{
+    render_image_only_held(s, image, NULL);
 }
 
 /* S drawn by the single pass and by the multipass scheme: the same dump records and image, bit for
@@ -120,6 +127,34 @@ static void expect_single_is_multipass(struct scene *s, const char *what, struct
     assert_memory_equal(image.rgba, multi->res.rgba, (size_t)s->render.width * s->render.height * 4);
     render_result_free(&image);
     hc_gpu_free(&single);
+}
+
+/* The ray state takes memory only for the textures a frame uses (render/raystate.h): the kiosk's
+ * single pass, its image alone read, holds its two result targets (checked at the start), the
+ * 8-bit image and the depth buffer, not the thirteen float textures the multipass scheme cycles
+ * through; the picture is the multipass scheme's, bit for bit. */
+static void test_single_pass_memory(void **state)
+{
+    (void)state;
+    static struct scene s;
+    static const char *const sets[] = {"render.method=orbit_table", NULL};
+    hc_load(&s, "schwarzschild", 64, 48, sets);
+    size_t texels = 64 * 48, float_texel = 16;
+    struct render_result image;
+    size_t single_bytes = 0;
+    s.render.pipeline = PIPELINE_SINGLE;
+    render_image_only_held(&s, &image, &single_bytes);
+    print_message("single pass, image only: %zu bytes of ray state (%zu texels)\n", single_bytes, texels);
+    assert_true(single_bytes <= texels * (2 * float_texel + 4 + 2));
+    struct render_result multi_image;
+    size_t multi_bytes = 0;
+    s.render.pipeline = PIPELINE_MULTIPASS;
+    render_image_only_held(&s, &multi_image, &multi_bytes);
+    print_message("multipass, image only: %zu bytes of ray state\n", multi_bytes);
+    assert_true(multi_bytes >= texels * (9 * float_texel + 4 + 2));
+    assert_memory_equal(image.rgba, multi_image.rgba, texels * 4);
+    render_result_free(&image);
+    render_result_free(&multi_image);
 }
 
 /* The single pass passes over chords whose wedge about the mass an object's bounding ball cannot
@@ -815,6 +850,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_single_pass_bit_identical),
         cmocka_unit_test(test_single_pass_culling),
+        cmocka_unit_test(test_single_pass_memory),
         cmocka_unit_test(test_single_pass_group_bounds),
         cmocka_unit_test(test_hits_the_orbit_misses),
         cmocka_unit_test(test_star_keeps_its_hits),
