@@ -18,13 +18,14 @@ _bentray()
         --precision) COMPREPLY=($(compgen -W "fp32 fp16 auto" -- "$cur")); return ;;
         --display) COMPREPLY=($(compgen -W "auto kms x11 headless" -- "$cur")); return ;;
         --depth) COMPREPLY=($(compgen -W "8 16" -- "$cur")); return ;;
+        --compression) COMPREPLY=($(compgen -W "fast small" -- "$cur")); return ;;
         --size | --samples | --set | --set-range | --frames | --orbit | --fps | --rtol | --threads | --pixel | \
         --runs | --only) return ;;
     esac
     local common="--scene --size --samples --set --engine --backend --precision --no-mrt --shader-dir --rtol --threads --help"
     local opts
     case $cmd in
-        render) opts="$common --out --depth --dump --force --progress --quiet" ;;
+        render) opts="$common --out --depth --compression --dump --force --progress --quiet" ;;
         animate) opts="$common --frames --set-range --orbit --orbit-axis --out --force --video --fps --quiet" ;;
         trace) opts="--scene --pixel --size --set --engine --backend --precision --no-mrt --shader-dir --rtol --help" ;;
         error) opts="$common --json --check" ;;

@@ -99,6 +99,8 @@ int bench_kiosk(struct bench *b, struct error *e);
 int bench_antialias(struct bench *b, struct error *e);
 /* the cost of the stars of the sky, drawn on the CPU (bench_stars.c) */
 int bench_stars(struct bench *b, struct error *e);
+/* what a fresh `bentray render` process adds to its frame (bench_wait.c) */
+int bench_wait(struct bench *b, struct error *e);
 
 /* out_dir/bench/NAME (CSV, gnuplot script) to write, in memory until bench_files_write; the caller
  * closes it with fclose. NULL with e ("cannot write PATH": a path that cannot be written, checked

@@ -487,7 +487,8 @@ static int animate(const struct common_options *o, const struct animation *a, co
             fprintf(stderr, "bentray animate: frame %d: %s\n", k + 1, e.message);
             return exit_code_of(&e);
         }
-        if (png_write_rgba8(path, m.dump.width, m.dump.height, m.rgba, out->force, &e) != 0) {
+        /* render's default compression, so that each frame's printed command makes it byte for byte */
+        if (png_write_rgba8(path, m.dump.width, m.dump.height, m.rgba, out->force, PNG_COMPRESSION_FAST, &e) != 0) {
             fprintf(stderr, "bentray animate: frame %d: %s\n", k + 1, e.message);
             measured_free(&m);
             return exit_code_of(&e);

@@ -22,6 +22,8 @@ static void usage(FILE *out)
             "                       (a PNG on standard output); default NAME.png in the working directory,\n"
             "                       NAME the scene's name with characters other than letters, digits, - _ . as _\n"
             "  --depth 8|16         bits a channel of a PNG (default 8)\n"
+            "  --compression C      fast (default) or small: a PNG written fast, or a smaller file\n"
+            "                       (libpng's default deflate; sizes and times in docs/BENCH.md)\n"
             "  --dump FILE          also write per-pixel results (format in docs/DUMP.md)\n"
             "  --force              replace existing output files\n"
             "  --size WxH           image size (overrides render.width/height)\n"
@@ -180,6 +182,7 @@ struct render_job {
     const char *out_path, *dump_path;
     int force, quiet, progress, to_stdout;
     enum image_format format;
+    enum png_compression compression;
 };
 
 /* Loads S from O, renders it and writes what J asks for; the command's exit code. */
@@ -224,7 +227,7 @@ static int render_scene(const struct common_options *o, const struct render_job 
     rc = render_with(o, s, dump_path != NULL, quiet ? PROGRESS_NONE : progress ? PROGRESS_ALWAYS : PROGRESS_AUTO,
                      image_format_float(format), &r);
     if (rc == EXIT_OK &&
-        image_write(out_path, format, r.dump.width, r.dump.height, r.rgba, r.color, force, &err) != 0) {
+        image_write(out_path, format, r.dump.width, r.dump.height, r.rgba, r.color, force, j->compression, &err) != 0) {
         fprintf(stderr, "bentray render: --out: %s\n", err.message);
         rc = exit_code_of(&err);
     } else if (rc == EXIT_OK && dump_path && dump_write(dump_path, &r.dump, force, &err) != 0) {
@@ -247,10 +250,12 @@ int cmd_render(int argc, char **argv)
     struct common_options o = {.backend = "auto"};
     const char *out_path = NULL, *dump_path = NULL;
     int force = 0, quiet = 0, progress = 0, depth = 8;
-    enum { OUT, DUMP, FORCE, QUIET, DEPTH, PROGRESS };
+    enum png_compression compression = PNG_COMPRESSION_FAST;
+    enum { OUT, DUMP, FORCE, QUIET, DEPTH, PROGRESS, COMPRESSION };
     static const struct option_spec specs[] = {
         {"--out", "FILE", OUT},     {"--dump", "FILE", DUMP},   {"--force", NULL, FORCE},
         {"--quiet", NULL, QUIET},   {"--depth", "8|16", DEPTH}, {"--progress", NULL, PROGRESS},
+        {"--compression", "fast|small", COMPRESSION},
         {NULL, NULL, 0},
     };
     struct option_reader rd = {.cmd = "render", .own = specs, .common = common_option_specs,
@@ -281,6 +286,13 @@ int cmd_render(int argc, char **argv)
             break;
         case PROGRESS:
             progress = 1;
+            break;
+        case COMPRESSION:
+            if (strcmp(v, "fast") && strcmp(v, "small")) {
+                fprintf(stderr, "bentray render: --compression: expected fast or small, got '%s'\n", v);
+                return EXIT_USAGE;
+            }
+            compression = strcmp(v, "small") == 0 ? PNG_COMPRESSION_SMALL : PNG_COMPRESSION_FAST;
             break;
         default:
             if (options_common(&o, "render", sp->id, v) != 0)
@@ -315,7 +327,12 @@ int cmd_render(int argc, char **argv)
                         "(bentray render ... --out - > image.png)\n");
         return EXIT_USAGE;
     }
-    struct render_job job = {out_path, dump_path, force, quiet, progress, to_stdout, format};
+    if (compression == PNG_COMPRESSION_SMALL && format == IMAGE_PFM) {
+        fprintf(stderr, "bentray render: --compression small: --out %s is a PFM, which is not compressed; "
+                        "name a .png or leave --compression out\n", out_path);
+        return EXIT_USAGE;
+    }
+    struct render_job job = {out_path, dump_path, force, quiet, progress, to_stdout, format, compression};
     struct scene *s = options_scene_new("render");
     if (!s)
         return EXIT_RUNTIME;

@@ -66,24 +66,24 @@ static int write_pfm(FILE *fp, int width, int height, const float *color, struct
 
 /* The encoded image into fp. */
 static int write_to(FILE *fp, enum image_format format, int width, int height, const unsigned char *rgba8,
-                    const float *color, struct error *e)
+                    const float *color, enum png_compression compression, struct error *e)
 {
     if (format == IMAGE_PNG16)
-        return png_write_rgba16_stream(fp, width, height, color, e);
+        return png_write_rgba16_stream(fp, width, height, color, compression, e);
     if (format == IMAGE_PFM)
         return write_pfm(fp, width, height, color, e);
-    return png_write_rgba8_stream(fp, width, height, rgba8, e);
+    return png_write_rgba8_stream(fp, width, height, rgba8, compression, e);
 }
 
 int image_write(const char *path, enum image_format format, int width, int height, const unsigned char *rgba8,
-                const float *color, int overwrite, struct error *e)
+                const float *color, int overwrite, enum png_compression compression, struct error *e)
 {
     error_clear(e);
     if (format != IMAGE_PNG8 && !color)
         return error_set(e, ERROR_RUNTIME, NULL, "cannot write %s: no float colour was rendered", path);
     if (strcmp(path, "-") == 0) {
         errno = 0;
-        if (write_to(stdout, format, width, height, rgba8, color, e) != 0 || fflush(stdout) != 0) {
+        if (write_to(stdout, format, width, height, rgba8, color, compression, e) != 0 || fflush(stdout) != 0) {
             if (e->message[0] == '\0')
                 error_set(e, ERROR_RUNTIME, NULL, "standard output: %s", strerror(errno ? errno : EIO));
             return -1;
@@ -91,14 +91,14 @@ int image_write(const char *path, enum image_format format, int width, int heigh
         return 0;
     }
     if (format == IMAGE_PNG8)
-        return png_write_rgba8(path, width, height, rgba8, overwrite, e);
+        return png_write_rgba8(path, width, height, rgba8, overwrite, compression, e);
     struct output_file o;
     if (output_open(&o, path, overwrite, e) != 0)
         return -1;
     struct error why;
     error_clear(&why);
     errno = 0;
-    if (write_to(o.fp, format, width, height, rgba8, color, &why) != 0) {
+    if (write_to(o.fp, format, width, height, rgba8, color, compression, &why) != 0) {
         error_set(e, ERROR_RUNTIME, NULL, "cannot write %s: %s", path, why.message);
         output_abort(&o);
         return -1;

@@ -11,6 +11,7 @@
 #include <stdio.h>
 
 #include "io/error.h"
+#include "io/png_io.h"
 
 enum image_format { IMAGE_PNG8, IMAGE_PNG16, IMAGE_PFM };
 
@@ -19,9 +20,9 @@ int image_format_of(const char *path, int depth, enum image_format *format, stru
 /* Whether the format is written from the float colour. */
 int image_format_float(enum image_format format);
 /* rgba8: RGBA8 rows top-down; color: RGBA floats (sRGB-encoded colour, alpha), needed for PNG16 and
- * PFM. 0, or -1 with the message in *e: ERROR_INPUT for a refused path (output_check's rules),
+ * PFM; COMPRESSION applies to PNG. 0, or -1 with the message in *e: ERROR_INPUT for a refused path (output_check's rules),
  * ERROR_RUNTIME for a write that failed. */
 int image_write(const char *path, enum image_format format, int width, int height, const unsigned char *rgba8,
-                const float *color, int overwrite, struct error *e);
+                const float *color, int overwrite, enum png_compression compression, struct error *e);
 
 #endif

@@ -21,7 +21,7 @@
 #include <unistd.h>
 
 int png_write_rgba8(const char *path, int width, int height, const unsigned char *rgba_top_down,
-                    int overwrite, struct error *e)
+                    int overwrite, enum png_compression compression, struct error *e)
 {
     if (!path || !*path || !rgba_top_down || width <= 0 || height <= 0 ||
         width > INT32_MAX / 4)
@@ -31,7 +31,7 @@ int png_write_rgba8(const char *path, int width, int height, const unsigned char
     if (output_open(&o, path, overwrite, e) != 0)
         return -1;
     struct error why;
-    if (png_write_rgba8_stream(o.fp, width, height, rgba_top_down, &why) != 0) {
+    if (png_write_rgba8_stream(o.fp, width, height, rgba_top_down, compression, &why) != 0) {
         error_set(e, why.status, NULL, "cannot write %s: %s", path, why.message);
         output_abort(&o);
         return -1;
@@ -39,7 +39,8 @@ int png_write_rgba8(const char *path, int width, int height, const unsigned char
     return output_commit(&o, e);
 }
 
-int png_write_rgba8_stream(FILE *fp, int width, int height, const unsigned char *rgba_top_down, struct error *e)
+int png_write_rgba8_stream(FILE *fp, int width, int height, const unsigned char *rgba_top_down,
+                           enum png_compression compression, struct error *e)
 {
     png_image image;
     memset(&image, 0, sizeof image);
@@ -47,6 +48,7 @@ int png_write_rgba8_stream(FILE *fp, int width, int height, const unsigned char 
     image.width = (png_uint_32)width;
     image.height = (png_uint_32)height;
     image.format = PNG_FORMAT_RGBA;
+    image.flags = compression == PNG_COMPRESSION_FAST ? PNG_IMAGE_FLAG_FAST : 0;
     errno = 0;
     int ok = png_image_write_to_stdio(&image, fp, 0, rgba_top_down, 0, NULL) != 0;
     if (!ok)
@@ -212,11 +214,17 @@ static void put16(png_bytep at, double encoded)
 }
 
 /* Kept apart, as read_image is, so that what changes after setjmp lives in *ctx. */
-static int write_rows16(struct png_ctx *ctx, int width, int height, const float *color, png_bytep row)
+static int write_rows16(struct png_ctx *ctx, int width, int height, const float *color, png_bytep row,
+                        enum png_compression compression)
 {
     if (setjmp(png_jmpbuf(ctx->png)))
         return -1;
     png_init_io(ctx->png, ctx->fp);
+    if (compression == PNG_COMPRESSION_FAST) {
+        /* as the simplified writer's PNG_IMAGE_FLAG_FAST: one cheap filter, a fast deflate */
+        png_set_filter(ctx->png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+        png_set_compression_level(ctx->png, 3);
+    }
     png_set_IHDR(ctx->png, ctx->info, (png_uint_32)width, (png_uint_32)height, 16, PNG_COLOR_TYPE_RGB_ALPHA,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_sRGB_gAMA_and_cHRM(ctx->png, ctx->info, PNG_sRGB_INTENT_PERCEPTUAL);
@@ -232,7 +240,8 @@ static int write_rows16(struct png_ctx *ctx, int width, int height, const float 
     return 0;
 }
 
-int png_write_rgba16_stream(FILE *fp, int width, int height, const float *color, struct error *e)
+int png_write_rgba16_stream(FILE *fp, int width, int height, const float *color, enum png_compression compression,
+                            struct error *e)
 {
     struct png_ctx ctx;
     memset(&ctx, 0, sizeof ctx);
@@ -243,7 +252,7 @@ int png_write_rgba16_stream(FILE *fp, int width, int height, const float *color,
     int rc = -1;
     if (!row || !ctx.png || !ctx.info)
         error_set(e, ERROR_RUNTIME, NULL, "out of memory writing a 16-bit PNG");
-    else if ((rc = write_rows16(&ctx, width, height, color, row)) != 0)
+    else if ((rc = write_rows16(&ctx, width, height, color, row, compression)) != 0)
         error_set(e, ERROR_RUNTIME, NULL, "%s%s%s", ctx.msg, errno ? ": " : "", errno ? strerror(errno) : "");
     png_destroy_write_struct(&ctx.png, ctx.info ? &ctx.info : NULL);
     free(row);

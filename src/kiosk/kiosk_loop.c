@@ -202,7 +202,7 @@ static int write_frame(struct kiosk *k, struct error *e)
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory writing %s", path);
     int rc = compositor_read_screen(s, rgba, e);
     if (rc == 0)
-        rc = png_write_rgba8(path, s->width, s->height, rgba, k->opt->force, e);
+        rc = png_write_rgba8(path, s->width, s->height, rgba, k->opt->force, PNG_COMPRESSION_FAST, e);
     free(rgba);
     if (rc == 0)
         k->frames_written++;

@@ -153,7 +153,7 @@ static int save(const char *dir, const char *name, int w, int h, const unsigned 
         fprintf(stderr, "gen_assets: path too long: %s/%s\n", dir, name);
         return -1;
     }
-    if (png_write_rgba8(path, w, h, px, 1, &err) != 0) {
+    if (png_write_rgba8(path, w, h, px, 1, PNG_COMPRESSION_SMALL, &err) != 0) {
         fprintf(stderr, "gen_assets: %s\n", err.message);
         return -1;
     }

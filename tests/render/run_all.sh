@@ -187,6 +187,10 @@ check "dangling link refused before work" 2 "--out: refusing to replace existing
 # the image: PNG (8 or 16 bits), PFM, or a PNG on standard output (a pipe, not a terminal); other
 # extensions are refused before any work
 check "out to standard output" 0 "^same$" -- sh -c "$BT render --scene $S --size 16x12 --out - --quiet > $W/pipe.png && $BT render --scene $S --size 16x12 --out $W/file.png --quiet > /dev/null && cmp $W/pipe.png $W/file.png && echo same"
+# the PNG's compression: fast by default, small on request (the same pixels: test_png_io.c)
+check "compression small is smaller" 0 "^smaller$" -- sh -c "$BT render --scene $S --size 160x120 --out $W/fast.png --quiet > /dev/null && $BT render --scene $S --size 160x120 --compression small --out $W/small.png --quiet > /dev/null && [ \$(stat -c %s $W/small.png) -lt \$(stat -c %s $W/fast.png) ] && echo smaller"
+check "compression of another name refused" 2 "--compression: expected fast or small, got 'best'" -- $BT render --scene $S --size 8x6 --compression best --out "$W/best.png"
+check "compression of a PFM refused" 2 "--compression small: --out .*x.pfm is a PFM, which is not compressed" -- $BT render --scene $S --size 8x6 --compression small --out "$W/x.pfm"
 check "out to a terminal refused" 2 "--out -: standard output is a terminal" -- script -qec "$BT render --scene $S --size 8x6 --out -" /dev/null
 check "out with another extension refused" 2 "--out .*x.jpg: bentray writes PNG \\(.png, 8 or 16 bits a channel: --depth\\) and PFM" -- $BT render --scene $S --size 8x6 --out "$W/x.jpg"
 check "out 16-bit png" 0 "^ *16 +6$" -- sh -c "$BT render --scene $S --size 16x12 --depth 16 --out $W/d16.png --quiet > /dev/null && od -An -tu1 -j24 -N2 $W/d16.png"
@@ -321,12 +325,16 @@ check "info scene without shader" 2 "go with --shader STAGE" -- $BT info --scene
 # bench: the tiny configuration proves the command and its report work; it times nothing that matters
 mkdir -p "$TMP/bench"
 check "bench quick" 0 "wrote .*BENCH.md" -- $BT bench --out "$TMP/bench" --quick
-check "bench sections" 0 "^13 sections, table1 21 rows, pipelines 23 rows, figure5 3 rows, limit 3 rows, pareto 4 rows, relativity 5 rows, kiosk 2 rows, antialias 3 rows, stars 3 rows$" -- sh -c "
-    printf '%s sections, table1 %s rows, pipelines %s rows, figure5 %s rows, limit %s rows, pareto %s rows, relativity %s rows, kiosk %s rows, antialias %s rows, stars %s rows\n' \
+check "bench sections" 0 "^14 sections, table1 21 rows, pipelines 23 rows, figure5 3 rows, limit 3 rows, pareto 4 rows, relativity 5 rows, kiosk 2 rows, antialias 3 rows, stars 3 rows, wait 6 rows$" -- sh -c "
+    printf '%s sections, table1 %s rows, pipelines %s rows, figure5 %s rows, limit %s rows, pareto %s rows, relativity %s rows, kiosk %s rows, antialias %s rows, stars %s rows, wait %s rows\n' \
       \$(grep -c '^## ' $TMP/bench/BENCH.md) \$(wc -l < $TMP/bench/bench/table1.csv) \$(wc -l < $TMP/bench/bench/pipelines.csv) \
       \$(wc -l < $TMP/bench/bench/figure5.csv) \$(wc -l < $TMP/bench/bench/limit.csv) \
       \$(wc -l < $TMP/bench/bench/pareto.csv) \$(wc -l < $TMP/bench/bench/relativity.csv) \
-      \$(wc -l < $TMP/bench/bench/kiosk.csv) \$(wc -l < $TMP/bench/bench/antialias.csv) \$(wc -l < $TMP/bench/bench/stars.csv)"
+      \$(wc -l < $TMP/bench/bench/kiosk.csv) \$(wc -l < $TMP/bench/bench/antialias.csv) \$(wc -l < $TMP/bench/bench/stars.csv) \
+      \$(wc -l < $TMP/bench/bench/wait.csv)"
+# the time a user waits: fresh render processes timed against the warm frame, both targets said
+check "bench wait targets" 0 "^Targets for the fresh render: .* \*\*(met|MISSED)\*\*; .* \*\*(met|MISSED)\*\*" -- \
+    grep '^Targets for the fresh render' "$TMP/bench/BENCH.md"
 # the section of make shader-stats: copied from DIR/bench/shader_stats.md where it is there, else a
 # line that says how to make it
 check "bench without shader statistics" 0 "^Not measured in this run: \`make shader-stats\` writes this section" -- \

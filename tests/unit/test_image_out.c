@@ -50,7 +50,7 @@ static void test_writers(void **state)
     assert_non_null(mkdtemp(dir));
     snprintf(png, sizeof png, "%s/a.png", dir);
     snprintf(pfm, sizeof pfm, "%s/a.pfm", dir);
-    assert_int_equal(image_write(png, IMAGE_PNG16, 2, 2, rgba8, color, 0, &e), 0);
+    assert_int_equal(image_write(png, IMAGE_PNG16, 2, 2, rgba8, color, 0, PNG_COMPRESSION_FAST, &e), 0);
     int w, h;
     uint16_t *v = read_png16(png, &w, &h);
     assert_int_equal(w, 2);
@@ -60,7 +60,7 @@ static void test_writers(void **state)
         assert_int_equal(v[i], lrint(c * 65535.0));
     }
     free(v);
-    assert_int_equal(image_write(pfm, IMAGE_PFM, 2, 2, rgba8, color, 0, &e), 0);
+    assert_int_equal(image_write(pfm, IMAGE_PFM, 2, 2, rgba8, color, 0, PNG_COMPRESSION_FAST, &e), 0);
     FILE *f = fopen(pfm, "rb");
     char header[16];
     assert_int_equal(fread(header, 1, 12, f), 12);
@@ -75,7 +75,7 @@ static void test_writers(void **state)
     assert_true(px[6] == 0.0f && fabs(px[7] - srgb_to_linear(0.5)) < 1e-6 && fabs(px[8] - 1.0) < 1e-6);
     assert_true(px[10] > 4.0f && px[11] == 0.0f);
     /* an existing file without overwrite: the user's error, the file kept */
-    assert_int_equal(image_write(pfm, IMAGE_PFM, 2, 2, rgba8, color, 0, &e), -1);
+    assert_int_equal(image_write(pfm, IMAGE_PFM, 2, 2, rgba8, color, 0, PNG_COMPRESSION_FAST, &e), -1);
     assert_non_null(strstr(e.message, "refusing to replace existing file"));
     assert_non_null(strstr(e.message, pfm));
     assert_int_equal(e.status, ERROR_INPUT);
@@ -83,10 +83,10 @@ static void test_writers(void **state)
     unlink(pfm);
     rmdir(dir);
     /* into a directory that is not there: the user's error too */
-    assert_int_equal(image_write(pfm, IMAGE_PFM, 2, 2, rgba8, color, 0, &e), -1);
+    assert_int_equal(image_write(pfm, IMAGE_PFM, 2, 2, rgba8, color, 0, PNG_COMPRESSION_FAST, &e), -1);
     assert_non_null(strstr(e.message, "No such file"));
     assert_int_equal(e.status, ERROR_INPUT);
-    assert_int_equal(image_write(png, IMAGE_PFM, 2, 2, rgba8, NULL, 0, &e), -1);
+    assert_int_equal(image_write(png, IMAGE_PFM, 2, 2, rgba8, NULL, 0, PNG_COMPRESSION_FAST, &e), -1);
     assert_non_null(strstr(e.message, "no float colour"));
     enum image_format fmt;
     assert_int_equal(image_format_of("x.jpg", 8, &fmt, &e), -1);

@@ -371,8 +371,8 @@ static void keep_pictures(void)
     struct error err;
     snprintf(window_png, sizeof window_png, "%s/window.png", work_dir);
     snprintf(headless_png, sizeof headless_png, "%s/headless.png", work_dir);
-    if (png_write_rgba8(window_png, FRAME_WIDTH, FRAME_HEIGHT, rgba, 1, &err) == 0 &&
-        png_write_rgba8(headless_png, FRAME_WIDTH, FRAME_HEIGHT, headless_frame, 1, &err) == 0) {
+    if (png_write_rgba8(window_png, FRAME_WIDTH, FRAME_HEIGHT, rgba, 1, PNG_COMPRESSION_FAST, &err) == 0 &&
+        png_write_rgba8(headless_png, FRAME_WIDTH, FRAME_HEIGHT, headless_frame, 1, PNG_COMPRESSION_FAST, &err) == 0) {
         keep_work_dir = 1;
         print_message("kept for comparison: %s and %s (the kiosk's files stay in %s)\n", window_png, headless_png,
                       work_dir);

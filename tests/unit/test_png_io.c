@@ -122,10 +122,45 @@ static void test_round_trip(void **state)
     path_in_tmp(path, sizeof path, "round.png");
     const int w = 37, h = 23; /* odd sizes catch row-stride mistakes */
     unsigned char *px = make_pattern(w, h, 1);
-    assert_int_equal(png_write_rgba8(path, w, h, px, 0, &e), 0);
+    assert_int_equal(png_write_rgba8(path, w, h, px, 0, PNG_COMPRESSION_SMALL, &e), 0);
     assert_png_equals(path, w, h, px);
     free(px);
     unlink(path);
+    assert_int_equal(count_entries(), 0);
+}
+
+/* Both compressions give back the same pixels; SMALL gives the smaller file of a smooth image (a
+ * render's sky and gradients), FAST the larger. */
+static void test_compressions(void **state)
+{
+    (void)state;
+    char fast[256], small[256];
+    struct error e;
+    path_in_tmp(fast, sizeof fast, "fast.png");
+    path_in_tmp(small, sizeof small, "small.png");
+    const int w = 160, h = 90;
+    unsigned char *px = malloc((size_t)w * h * 4);
+    assert_non_null(px);
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            unsigned char *p = px + 4 * ((size_t)y * w + x);
+            p[0] = (unsigned char)(x * 255 / (w - 1));
+            p[1] = (unsigned char)(y * 255 / (h - 1));
+            p[2] = (unsigned char)((x * y) % 251);
+            p[3] = 255;
+        }
+    assert_int_equal(png_write_rgba8(fast, w, h, px, 0, PNG_COMPRESSION_FAST, &e), 0);
+    assert_int_equal(png_write_rgba8(small, w, h, px, 0, PNG_COMPRESSION_SMALL, &e), 0);
+    assert_png_equals(fast, w, h, px);
+    assert_png_equals(small, w, h, px);
+    size_t fast_len, small_len;
+    free(read_bytes(fast, &fast_len));
+    free(read_bytes(small, &small_len));
+    print_message("%dx%d gradient: fast %zu bytes, small %zu bytes\n", w, h, fast_len, small_len);
+    assert_true(small_len < fast_len);
+    free(px);
+    unlink(fast);
+    unlink(small);
     assert_int_equal(count_entries(), 0);
 }
 
@@ -136,11 +171,11 @@ static void test_refuses_overwrite(void **state)
     struct error e;
     path_in_tmp(path, sizeof path, "keep.png");
     unsigned char *a = make_pattern(16, 8, 1), *b = make_pattern(16, 8, 2);
-    assert_int_equal(png_write_rgba8(path, 16, 8, a, 0, &e), 0);
+    assert_int_equal(png_write_rgba8(path, 16, 8, a, 0, PNG_COMPRESSION_SMALL, &e), 0);
     size_t len_before, len_after;
     unsigned char *before = read_bytes(path, &len_before);
 
-    assert_int_equal(png_write_rgba8(path, 16, 8, b, 0, &e), -1);
+    assert_int_equal(png_write_rgba8(path, 16, 8, b, 0, PNG_COMPRESSION_SMALL, &e), -1);
     assert_non_null(strstr(e.message, path));
     assert_non_null(strstr(e.message, "--force"));
     assert_int_equal(e.status, ERROR_INPUT);   /* the user's: the file is there */
@@ -164,8 +199,8 @@ static void test_overwrite_with_flag(void **state)
     struct error e;
     path_in_tmp(path, sizeof path, "replace.png");
     unsigned char *a = make_pattern(16, 8, 1), *b = make_pattern(20, 10, 2);
-    assert_int_equal(png_write_rgba8(path, 16, 8, a, 0, &e), 0);
-    assert_int_equal(png_write_rgba8(path, 20, 10, b, 1, &e), 0);
+    assert_int_equal(png_write_rgba8(path, 16, 8, a, 0, PNG_COMPRESSION_SMALL, &e), 0);
+    assert_int_equal(png_write_rgba8(path, 20, 10, b, 1, PNG_COMPRESSION_SMALL, &e), 0);
     assert_png_equals(path, 20, 10, b);
     assert_int_equal(count_entries(), 1);
     free(a);
@@ -181,7 +216,7 @@ static void test_truncated_and_corrupt(void **state)
     path_in_tmp(path, sizeof path, "whole.png");
     path_in_tmp(cut, sizeof cut, "cut.png");
     unsigned char *px = make_pattern(64, 64, 3);
-    assert_int_equal(png_write_rgba8(path, 64, 64, px, 0, &e), 0);
+    assert_int_equal(png_write_rgba8(path, 64, 64, px, 0, PNG_COMPRESSION_SMALL, &e), 0);
     size_t len;
     unsigned char *whole = read_bytes(path, &len);
     assert_true(len > 100);
@@ -256,7 +291,7 @@ static void test_max_size(void **state)
     struct error e;
     path_in_tmp(path, sizeof path, "big.png");
     unsigned char *px = make_pattern(64, 32, 4);
-    assert_int_equal(png_write_rgba8(path, 64, 32, px, 0, &e), 0);
+    assert_int_equal(png_write_rgba8(path, 64, 32, px, 0, PNG_COMPRESSION_SMALL, &e), 0);
 
     int w, h;
     unsigned char *got = NULL;
@@ -283,7 +318,7 @@ static void test_missing_directory(void **state)
     struct error e;
     path_in_tmp(path, sizeof path, "no/such/dir/out.png");
     unsigned char *px = make_pattern(4, 4, 5);
-    assert_int_equal(png_write_rgba8(path, 4, 4, px, 1, &e), -1);
+    assert_int_equal(png_write_rgba8(path, 4, 4, px, 1, PNG_COMPRESSION_SMALL, &e), -1);
     /* the message names the directory that is missing */
     char dir[256];
     snprintf(dir, sizeof dir, "%.*s", (int)(strrchr(path, '/') - path), path);
@@ -319,7 +354,7 @@ static void test_image_cache(void **state)
     struct error e;
     path_in_tmp(path, sizeof path, "kept.png");
     unsigned char *px = make_pattern(20, 10, 2), *other = make_pattern(20, 10, 3);
-    assert_int_equal(png_write_rgba8(path, 20, 10, px, 0, &e), 0);
+    assert_int_equal(png_write_rgba8(path, 20, 10, px, 0, PNG_COMPRESSION_SMALL, &e), 0);
     int w, h, owned;
     const unsigned char *got;
     image_cache_keep(1);
@@ -337,7 +372,7 @@ static void test_image_cache(void **state)
     assert_int_equal(e.status, ERROR_INPUT);
     /* removed, then another image under the same name: still the first */
     unlink(path);
-    assert_int_equal(png_write_rgba8(path, 20, 10, other, 0, &e), 0);
+    assert_int_equal(png_write_rgba8(path, 20, 10, other, 0, PNG_COMPRESSION_SMALL, &e), 0);
     assert_int_equal(image_read(path, 4096, &w, &h, &got, &owned, &e), 0);
     assert_memory_equal(got, px, 20 * 10 * 4);
     /* not kept: the file as it is now, owned by the caller */
@@ -407,6 +442,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_round_trip),
+        cmocka_unit_test(test_compressions),
         cmocka_unit_test(test_refuses_overwrite),
         cmocka_unit_test(test_overwrite_with_flag),
         cmocka_unit_test(test_truncated_and_corrupt),

@@ -1,0 +1,192 @@
+/* The time a user waits: `bentray render` of schwarzschild.scene as a user runs it, a fresh process
+ * each time (this program itself, started from its own path), against the start of such a process
+ * (a 2x2 frame of starflight.scene) and the frame drawn warm in a running process. The difference
+ * is what a fresh process pays besides its frame: the GL context, shaders (compiled, or loaded from
+ * Mesa's cache), the orbit table, the outcomes read back for the summary, the PNG. */
+#include <errno.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include "bench/bench.h"
+#include "io/clock.h"
+#include "io/tree_file.h"
+
+extern char **environ;
+
+/* What a fresh process is timed doing. */
+enum wait_run { WAIT_START, WAIT_FRESH, WAIT_SMALL, WAIT_COLD, WAIT_RUNS };
+static const char *const wait_what[WAIT_RUNS] = {
+    "process start: `bentray render` of starflight.scene at 2x2",
+    "fresh `bentray render`, the PNG written fast (the default)",
+    "the same with `--compression small`",
+    "the same with Mesa's shader cache off (`MESA_SHADER_CACHE_DISABLE=true`: a first run on a new machine)",
+};
+
+/* What a run needs: this program, the two scenes, and the file its PNG goes to (its standard
+ * output: a temporary file without a name, so that an interrupted bench leaves nothing behind). */
+struct wait_paths {
+    char self[4096], start_scene[4096], scene[4096];
+    int image_fd;
+};
+
+/* Runs ARGV (this program) with standard input and error on /dev/null and its output into the
+ * image file, emptied first, COLD adding the variable that turns Mesa's shader cache off; its wall
+ * time in *seconds. 0, or -1 with e. */
+static int run_wall(const struct wait_paths *p, char *const argv[], int cold, double *seconds, struct error *e)
+{
+    if (ftruncate(p->image_fd, 0) != 0 || lseek(p->image_fd, 0, SEEK_SET) != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "cannot empty the image file: %s", strerror(errno));
+    size_t n_env = 0;
+    while (environ[n_env])
+        n_env++;
+    char **env = calloc(n_env + 2, sizeof *env);
+    if (!env)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory");
+    memcpy(env, environ, n_env * sizeof *env);
+    static char cache_off[] = "MESA_SHADER_CACHE_DISABLE=true";
+    if (cold)
+        env[n_env++] = cache_off;
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_adddup2(&fa, p->image_fd, STDOUT_FILENO);
+    posix_spawn_file_actions_addopen(&fa, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+    pid_t pid;
+    double t0 = clock_seconds();
+    int rc = posix_spawn(&pid, p->self, &fa, NULL, argv, env);
+    posix_spawn_file_actions_destroy(&fa);
+    free(env);
+    if (rc != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "cannot start %s: %s", p->self, strerror(rc));
+    int status;
+    while (waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR)
+            return error_set(e, ERROR_RUNTIME, NULL, "waiting for %s: %s", p->self, strerror(errno));
+    *seconds = clock_seconds() - t0;
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "%s render --scene %s exited %d (run it by hand to see why)",
+                         p->self, argv[3], WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status));
+    return 0;
+}
+
+/* The median wall time of `runs` runs of WHICH; the image's size in *bytes. 0, or -1 with e. */
+static int time_run(struct bench *b, const struct wait_paths *p, enum wait_run which, const struct scene *s,
+                    double *median, long *bytes, struct error *e)
+{
+    char size[32];
+    snprintf(size, sizeof size, which == WAIT_START ? "2x2" : "%dx%d", s->render.width, s->render.height);
+    char *argv[16];
+    int n = 0;
+    argv[n++] = (char *)p->self;
+    argv[n++] = "render";
+    argv[n++] = "--scene";
+    argv[n++] = (char *)(which == WAIT_START ? p->start_scene : p->scene);
+    argv[n++] = "--size";
+    argv[n++] = size;
+    argv[n++] = "--backend";
+    argv[n++] = b->backend;
+    argv[n++] = "--out";
+    argv[n++] = "-";
+    argv[n++] = "--quiet";
+    if (which == WAIT_SMALL) {
+        argv[n++] = "--compression";
+        argv[n++] = "small";
+    }
+    argv[n] = NULL;
+    double times[64];
+    int runs = b->runs < 1 ? 1 : b->runs < 64 ? b->runs : 64;
+    for (int k = 0; k < runs; k++)
+        if (run_wall(p, argv, which == WAIT_COLD, &times[k], e) != 0)
+            return -1;
+    *median = bench_median(times, runs);
+    struct stat st;
+    *bytes = fstat(p->image_fd, &st) == 0 ? (long)st.st_size : -1;
+    return 0;
+}
+
+/* The paths of P, its image file made. 0, or -1 with e. */
+static int wait_paths_find(struct wait_paths *p, struct error *e)
+{
+    ssize_t n = readlink("/proc/self/exe", p->self, sizeof p->self - 1);
+    if (n <= 0 || (size_t)n >= sizeof p->self - 1)
+        return error_set(e, ERROR_RUNTIME, NULL, "cannot find this program's own path (/proc/self/exe)");
+    p->self[n] = '\0';
+    if (tree_file_find("assets/scenes/starflight.scene", p->start_scene, sizeof p->start_scene) != 0 ||
+        tree_file_find("assets/scenes/schwarzschild.scene", p->scene, sizeof p->scene) != 0)
+        return error_set(e, ERROR_INPUT, NULL, "assets/scenes/starflight.scene and schwarzschild.scene: not found "
+                         "beside this program or installed");
+    const char *tmp = getenv("TMPDIR");
+    char name[BENCH_PATH_LEN];
+    snprintf(name, sizeof name, "%s/bentray-wait-XXXXXX", tmp && *tmp ? tmp : "/tmp");
+    p->image_fd = mkstemp(name);
+    if (p->image_fd < 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "cannot make a file for the images (%s): %s", name, strerror(errno));
+    unlink(name);
+    return 0;
+}
+
+/* The section, its scene (schwarzschild at the bench's size) loaded into S. */
+static int wait_on(struct bench *b, struct scene *s, struct error *e)
+{
+    if (bench_load_scene(s, "schwarzschild", b->width, b->height, e) != 0)
+        return -1;
+    struct wait_paths p;
+    if (wait_paths_find(&p, e) != 0)
+        return -1;
+    bench_progress(b, "wait: the warm frame of schwarzschild at %dx%d", s->render.width, s->render.height);
+    struct bench_timing warm;
+    int rc = bench_time(b, s, b->runs, &warm, NULL, e);
+    b->done++;
+    double seconds[WAIT_RUNS] = {0};
+    long bytes[WAIT_RUNS] = {0};
+    for (int k = 0; k < WAIT_RUNS && rc == 0; k++) {
+        bench_progress(b, "wait: %s", wait_what[k]);
+        rc = time_run(b, &p, (enum wait_run)k, s, &seconds[k], &bytes[k], e);
+        b->done++;
+    }
+    close(p.image_fd);
+    if (rc != 0)
+        return -1;
+    FILE *csv = bench_data_file(b, "wait.csv", e);
+    if (!csv)
+        return -1;
+    fprintf(csv, "what,seconds,png_bytes\nwarm_frame,%.5f,\n", warm.median);
+    static const char *const keys[WAIT_RUNS] = {"process_start", "fresh_fast", "fresh_small", "fresh_cache_off"};
+    for (int k = 0; k < WAIT_RUNS; k++)
+        fprintf(csv, "%s,%.5f,%ld\n", keys[k], seconds[k], k == WAIT_START ? 0L : bytes[k]);
+    fclose(csv);
+    fprintf(b->md, "## The time a user waits\n\n`bentray render --scene schwarzschild.scene --size %dx%d` run as a "
+                   "user runs it, a fresh process each time (wall time from its start to its exit, the PNG "
+                   "written to standard output, a file), against the warm frame, the image alone drawn in a running process "
+                   "(as the kiosk draws it, `bentray bench`'s own timing). Median of %d runs. What a fresh "
+                   "process adds to its frame: the GL context, the shaders (loaded from Mesa's cache, or "
+                   "compiled where it is off), the orbit table, the rays' outcomes read back for the "
+                   "summary, the PNG.\n\n| what | seconds | PNG bytes |\n|---|---|---|\n",
+            s->render.width, s->render.height, b->runs);
+    fprintf(b->md, "| the warm frame (%s, %ld pass%s) | %.3f | |\n", warm.path, warm.passes, warm.passes == 1 ? "" : "es",
+            warm.median);
+    for (int k = 0; k < WAIT_RUNS; k++) {
+        char png[32] = "";
+        if (k != WAIT_START && bytes[k] >= 0)
+            snprintf(png, sizeof png, "%ld", bytes[k]);
+        fprintf(b->md, "| %s | %.3f | %s |\n", wait_what[k], seconds[k], png);
+    }
+    double start = seconds[WAIT_START], fresh = seconds[WAIT_FRESH];
+    double bound38 = start + 1.5 * warm.median, bound43 = start + 1.2 * warm.median;
+    fprintf(b->md, "\nTargets for the fresh render: at most the process start plus 1.5 times the warm frame "
+                   "(%.3f s): **%s**; at most the process start plus 1.2 times the warm frame (%.3f s): **%s**. "
+                   "What the fresh process adds beyond its start and its frame: %.3f s.\n\n",
+            bound38, fresh <= bound38 ? "met" : "MISSED", bound43, fresh <= bound43 ? "met" : "MISSED",
+            fresh - start - warm.median);
+    return 0;
+}
+
+int bench_wait(struct bench *b, struct error *e)
+{
+    return bench_with_scene(b, wait_on, e);
+}
