@@ -53,17 +53,9 @@ static const char *budget_key(const struct render_settings *r)
 
 static void summarise(const struct measured *m, const struct scene *s)
 {
-    long objects = 0, sky = 0, captured = 0, unfinished = 0, failed = 0;
     const struct dump *d = &m->dump;
-    size_t n = (size_t)d->width * d->height;
-    for (size_t i = 0; i < n; i++) {
-        int32_t o = d->records[i].outcome;
-        objects += o >= 0;
-        sky += o == DUMP_SKY;
-        captured += o == DUMP_CAPTURED;
-        unfinished += o == DUMP_UNFINISHED;
-        failed += o == DUMP_FAILED;
-    }
+    const struct outcome_counts *c = &m->counts;
+    long objects = c->objects, sky = c->sky, captured = c->captured, unfinished = c->unfinished, failed = c->failed;
     fprintf(stderr, "%s: %dx%d, %s model, %s\n", s->name, d->width, d->height, model_name(s->model.type), m->how);
     fprintf(stderr, "rays: %ld hit an object, %ld sky, %ld captured, %ld unfinished, %ld failed\n", objects, sky,
             captured, unfinished, failed);
@@ -78,8 +70,6 @@ static void summarise(const struct measured *m, const struct scene *s)
         fprintf(stderr, "warning: %ld non-finite values in the ray state\n", m->nonfinite);
 }
 
-/* A pixel whose brightest channel is at most this reads as black on a screen. */
-#define DARK_CHANNEL 16
 /* From this speed (units of c) on, the Doppler shift behind a moving observer dims what it sees there
  * by more than a factor of 3 in D (D = sqrt((1 - b) / (1 + b)) straight behind). */
 #define DIMMING_SPEED 0.5
@@ -109,14 +99,9 @@ static void warn_dark_behind(const struct scene *s, size_t dark, size_t n)
 static void warn_meaningless(const struct measured *m, const struct scene *s)
 {
     const struct dump *d = &m->dump;
-    size_t n = (size_t)d->width * d->height, failed = 0, unfinished = 0, captured = 0, dark = 0;
-    for (size_t i = 0; i < n; i++) {
-        const struct dump_record *rec = &d->records[i];
-        failed += rec->outcome == DUMP_FAILED;
-        unfinished += rec->outcome == DUMP_UNFINISHED;
-        captured += rec->outcome == DUMP_CAPTURED;
-        dark += rec->rgba[0] <= DARK_CHANNEL && rec->rgba[1] <= DARK_CHANNEL && rec->rgba[2] <= DARK_CHANNEL;
-    }
+    const struct outcome_counts *c = &m->counts;
+    size_t n = (size_t)d->width * d->height, failed = (size_t)c->failed, unfinished = (size_t)c->unfinished,
+           captured = (size_t)c->captured, dark = (size_t)c->dark;
     if (n > 0 && captured * 2 >= n)
         fprintf(stderr, "warning: %zu of %zu rays (%.0f%%) fell into the horizon: the black hole's shadow fills most "
                         "of the view (move camera.position away, widen camera.fov or lower model.mass)\n",

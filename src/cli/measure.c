@@ -1,5 +1,6 @@
 #include "cli/measure.h"
 #include "render/frame.h"
+#include "results/dump_scene.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,6 +25,43 @@ static long count_nonfinite(const struct render_result *res)
     return nonfinite;
 }
 
+/* The outcome of every ray of a frame read with RENDER_READ_OUTCOMES (or more), as the dump's records
+ * hold it (result_to_dump), counted; with the black pixels of its image. */
+static void count_outcomes(const struct render_result *res, struct outcome_counts *c)
+{
+    memset(c, 0, sizeof *c);
+    size_t n = (size_t)res->width * res->height;
+    for (size_t i = 0; i < n; i++) {
+        int32_t o = (int32_t)lrintf(res->image[4 * i + 3]);
+        if (res->position && res->position[4 * i + 3] < 0.0f)
+            o = DUMP_FAILED;
+        c->objects += o >= 0;
+        c->sky += o == DUMP_SKY;
+        c->captured += o == DUMP_CAPTURED;
+        c->unfinished += o == DUMP_UNFINISHED;
+        c->failed += o == DUMP_FAILED;
+        const unsigned char *p = res->rgba + 4 * i;
+        c->dark += p[0] <= OUTCOME_DARK_CHANNEL && p[1] <= OUTCOME_DARK_CHANNEL && p[2] <= OUTCOME_DARK_CHANNEL;
+    }
+}
+
+/* The same from a dump's records. */
+static void count_records(const struct dump *d, struct outcome_counts *c)
+{
+    memset(c, 0, sizeof *c);
+    size_t n = (size_t)d->width * d->height;
+    for (size_t i = 0; i < n; i++) {
+        int32_t o = d->records[i].outcome;
+        c->objects += o >= 0;
+        c->sky += o == DUMP_SKY;
+        c->captured += o == DUMP_CAPTURED;
+        c->unfinished += o == DUMP_UNFINISHED;
+        c->failed += o == DUMP_FAILED;
+        const uint8_t *p = d->records[i].rgba;
+        c->dark += p[0] <= OUTCOME_DARK_CHANNEL && p[1] <= OUTCOME_DARK_CHANNEL && p[2] <= OUTCOME_DARK_CHANNEL;
+    }
+}
+
 int measure_gpu(const struct scene *s, const char *backend, int need_state, enum progress_mode progress, int hdr,
                 struct measured *m, struct error *e)
 {
@@ -34,9 +72,17 @@ int measure_gpu(const struct scene *s, const char *backend, int need_state, enum
         return -1;
     snprintf(m->engine, sizeof m->engine, "gpu %s", info.path_name);
     snprintf(m->device, sizeof m->device, "%.120s on %s", info.renderer, info.backend);
-    if (result_to_dump(&res, s, m->engine, &m->dump) != 0) {
+    count_outcomes(&res, &m->counts);
+    if (need_state && result_to_dump(&res, s, m->engine, &m->dump) != 0) {
         render_result_free(&res);
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory");
+    }
+    if (!need_state) {
+        /* the header alone: a summary needs the counts, not a record a pixel */
+        dump_describe_scene(&m->dump, s);
+        m->dump.width = res.width;
+        m->dump.height = res.height;
+        snprintf(m->dump.engine, sizeof m->dump.engine, "%.*s", (int)sizeof m->dump.engine - 1, m->engine);
     }
     m->rgba = res.rgba;
     m->color = res.color;
@@ -64,6 +110,7 @@ int measure_cpu(const struct scene *s, const struct cpu_render_options *o, struc
     if (cpu_render(s, o, &img, e) != 0)
         return -1;                  /* its status stands: a texture it cannot read is the user's */
     m->dump = img.dump;
+    count_records(&m->dump, &m->counts);
     m->rgba = img.rgba;
     m->color = img.color;
     m->seconds = img.seconds;

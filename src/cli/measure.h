@@ -6,8 +6,19 @@
 #include "ref/engine_cpu.h"
 #include "scene/scene.h"
 
+/* The rays' outcomes counted, and the pixels that read as black: what a summary and its warnings
+ * say. */
+struct outcome_counts {
+    long objects, sky, captured, unfinished, failed;
+    long dark;              /* pixels whose brightest channel is at most OUTCOME_DARK_CHANNEL */
+};
+/* A pixel whose brightest channel is at most this reads as black on a screen. */
+#define OUTCOME_DARK_CHANNEL 16
+
 struct measured {
-    struct dump dump;       /* per-pixel records with colours */
+    struct dump dump;       /* per-pixel records with colours; on the GPU without need_state, only its
+                             * header (size, scene, engine): no records */
+    struct outcome_counts counts;
     unsigned char *rgba;    /* the image (owned) */
     float *color;           /* the same unclamped, RGBA floats, when asked for (hdr); else NULL */
     double seconds;         /* GPU: the passes, glFinish included; CPU: wall time of the render */
@@ -19,8 +30,8 @@ struct measured {
 };
 
 /* 0, or -1 with e (its status tells a user error, exit 2, from a runtime failure, 1). */
-/* need_state: the dump's every field; else its outcomes and colours only (what a summary counts:
- * a single-pass frame then runs once, not twice). progress: whether a long render reports its
+/* need_state: the dump's every record; else the rays' outcomes counted only (what a summary says:
+ * a single-pass frame then runs once, not twice, and no per-pixel records are made). progress: whether a long render reports its
  * rows and samples on stderr (io/progress.h). */
 int measure_gpu(const struct scene *s, const char *backend, int need_state, enum progress_mode progress, int hdr,
                 struct measured *m, struct error *e);
