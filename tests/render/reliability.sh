@@ -94,3 +94,13 @@ sed 's|^scenes = .*|scenes = '"$R"'/big_table.scene|; s|^start_scene = .*|start_
 mkdir -p "$R/big_table_out"
 check "a kiosk scene with a table too large to build ahead" 2 "big_table.scene: render.orbit_rows = 2048 and render.orbit_columns = 128 make an orbit table of 10.1 MB.*at most 8 MB in the kiosk" -- \
     $BT kiosk --config "$R/big_table.conf" --out "$R/big_table_out" --frames 1
+# animate's frames go through the same writer as render's images (io/output_file.h): a link at a
+# frame is replaced and its target kept, a file-size limit or an interrupt leaves the earlier frame
+# whole and no temporary, and two runs writing the same frames at once leave complete PNGs
+A=$R/frames && mkdir -p "$A"
+echo keep > "$R/frame_target" && ln -s "$R/frame_target" "$A/frame_0001.png"
+check "animate: a link at a frame is replaced, its target kept" 0 "^keep regular$" -- sh -c "$BT animate --scene $S --frames 1 --size 8x6 --out '$A' --force --quiet > /dev/null && echo \$(cat '$R/frame_target') \$(stat -c %F '$A/frame_0001.png' | cut -d' ' -f1)"
+echo 'old frame' > "$A/frame_0001.png"
+check "animate: a file-size limit keeps the old frame" 0 "^old frame; 0 temporaries$" -- sh -c "(ulimit -f 1; $BT animate --scene $S --frames 1 --size 160x120 --out '$A' --force --quiet) > /dev/null 2>&1; echo \"\$(cat '$A/frame_0001.png'); \$(ls '$A' | grep -c tmp-) temporaries\""
+check "animate: an interrupt leaves no temporary" 0 "^0 temporaries$" -- sh -c "timeout -s INT 1 $BT animate --scene assets/scenes/schwarzschild.scene --frames 40 --size 160x120 --out '$A' --force --quiet > /dev/null 2>&1; echo \"\$(ls '$A' | grep -c tmp-) temporaries\""
+check "animate: two writers at once leave whole frames" 0 "^6 of 6 whole, both wrote$" -- sh -c "$BT animate --scene $S --frames 6 --size 64x48 --out '$A' --force --quiet > /dev/null 2>&1 & a=\$!; $BT animate --scene $S --frames 6 --size 64x48 --set camera.fov=50 --out '$A' --force --quiet > /dev/null 2>&1; b=\$?; wait \$a; a=\$?; n=0; for f in '$A'/frame_000[1-6].png; do [ \"\$(tail -c 8 \"\$f\" | od -An -tx1 | tr -d ' \\n')\" = 49454e44ae426082 ] && n=\$((n + 1)); done; [ \$a\$b = 00 ] && w='both wrote' || w=\"exits \$a \$b\"; echo \"\$n of 6 whole, \$w\""
