@@ -124,11 +124,15 @@ void raystate_storage(struct raystate *rs, GLuint texture)
     for (int i = 0; i < rs->n_stored; i++)
         if (rs->stored[i] == texture)
             return;
+    /* given in the middle of a frame's set-up: the active unit's binding is left as it was */
+    GLint bound = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
     const struct float_format *f = rs->format;
     if (texture == rs->final_color)
         texture_define(texture, GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, rs->width, rs->height);
     else
         texture_define(texture, f->internal_format, f->format, f->type, rs->width, rs->height);
+    glBindTexture(GL_TEXTURE_2D, (GLuint)bound);
     rs->stored[rs->n_stored++] = texture;
 }
 
