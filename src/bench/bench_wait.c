@@ -2,7 +2,9 @@
  * each time (this program itself, started from its own path), against the start of such a process
  * (a 2x2 frame of starflight.scene) and the frame drawn warm in a running process. The difference
  * is what a fresh process pays besides its frame: the GL context, shaders (compiled, or loaded from
- * Mesa's cache), the orbit table, the outcomes read back for the summary, the PNG. */
+ * Mesa's cache), the orbit table, the outcomes read back for the summary, the PNG. An interrupt
+ * from the terminal reaches the child too (one process group); its image file has no name, so
+ * nothing is left behind. */
 #include <errno.h>
 #include <fcntl.h>
 #include <spawn.h>
@@ -47,18 +49,31 @@ static int run_wall(const struct wait_paths *p, char *const argv[], int cold, do
     char **env = calloc(n_env + 2, sizeof *env);
     if (!env)
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory");
-    memcpy(env, environ, n_env * sizeof *env);
+    /* the cache as the bench's own environment has it, but where the run is cold: off, whatever
+     * that environment says (the first of two settings would win) */
+    static const char cache_key[] = "MESA_SHADER_CACHE_DISABLE=";
     static char cache_off[] = "MESA_SHADER_CACHE_DISABLE=true";
+    size_t n = 0;
+    for (size_t i = 0; i < n_env; i++)
+        if (!cold || strncmp(environ[i], cache_key, sizeof cache_key - 1) != 0)
+            env[n++] = environ[i];
     if (cold)
-        env[n_env++] = cache_off;
+        env[n++] = cache_off;
     posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_adddup2(&fa, p->image_fd, STDOUT_FILENO);
-    posix_spawn_file_actions_addopen(&fa, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+    int rc = posix_spawn_file_actions_init(&fa);
+    if (rc == 0 && (posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0) != 0 ||
+                    posix_spawn_file_actions_adddup2(&fa, p->image_fd, STDOUT_FILENO) != 0 ||
+                    posix_spawn_file_actions_addopen(&fa, STDERR_FILENO, "/dev/null", O_WRONLY, 0) != 0)) {
+        posix_spawn_file_actions_destroy(&fa);
+        rc = ENOMEM;
+    }
+    if (rc != 0) {
+        free(env);
+        return error_set(e, ERROR_RUNTIME, NULL, "cannot start %s: %s", p->self, strerror(rc));
+    }
     pid_t pid;
     double t0 = clock_seconds();
-    int rc = posix_spawn(&pid, p->self, &fa, NULL, argv, env);
+    rc = posix_spawn(&pid, p->self, &fa, NULL, argv, env);
     posix_spawn_file_actions_destroy(&fa);
     free(env);
     if (rc != 0)
@@ -123,10 +138,17 @@ static int wait_paths_find(struct wait_paths *p, struct error *e)
     const char *tmp = getenv("TMPDIR");
     char name[BENCH_PATH_LEN];
     snprintf(name, sizeof name, "%s/bentray-wait-XXXXXX", tmp && *tmp ? tmp : "/tmp");
-    p->image_fd = mkstemp(name);
-    if (p->image_fd < 0)
+    int fd = mkstemp(name);
+    if (fd < 0)
         return error_set(e, ERROR_RUNTIME, NULL, "cannot make a file for the images (%s): %s", name, strerror(errno));
     unlink(name);
+    /* above the standard descriptors (a bench started with one closed would hand out 0, 1 or 2, which
+     * the child's own set-up replaces), and closed in the child, which writes to its dup2 alone */
+    p->image_fd = fcntl(fd, F_DUPFD_CLOEXEC, 3);
+    int saved = errno;
+    close(fd);
+    if (p->image_fd < 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "cannot keep a file for the images: %s", strerror(saved));
     return 0;
 }
 

@@ -61,7 +61,8 @@ int pass_run_targets(struct renderer *r, const struct stage_program *sp, const G
         glUseProgram(prog->id);
         glUniform2f(program_uniform(prog, "u_inv_size"), 1.0f / (float)rs->width, 1.0f / (float)rs->height);
         for (int i = 0; i < n_inputs; i++) {
-            raystate_storage(rs, inputs[i].texture);
+            if (raystate_storage(rs, inputs[i].texture, e) != 0)
+                return -1;
             glActiveTexture(GL_TEXTURE0 + i);
             glBindTexture(GL_TEXTURE_2D, inputs[i].texture);
             glUniform1i(program_uniform(prog, inputs[i].sampler), i);

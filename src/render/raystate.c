@@ -21,8 +21,6 @@ static GLuint make_fbo(struct raystate *rs, const GLuint target[RAYSTATE_MAX_TAR
     static const GLenum buffers[RAYSTATE_MAX_TARGETS] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
                                                          GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
     int n = target_count(target);
-    for (int i = 0; i < n; i++)
-        raystate_storage(rs, target[i]);
     GLuint fbo;
     glGenFramebuffers(1, &fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
@@ -34,6 +32,16 @@ static GLuint make_fbo(struct raystate *rs, const GLuint target[RAYSTATE_MAX_TAR
     /* the presentation image is 8-bit: only the float targets are the render path's concern */
     *status = render_path_framebuffer_status(target[0] == rs->final_color ? NULL : rs->format, n);
     return fbo;
+}
+
+/* Every colour target given its memory, before its framebuffer is made. 0, or -1 with e. */
+static int targets_storage(struct raystate *rs, const GLuint target[RAYSTATE_MAX_TARGETS], struct error *e)
+{
+    int n = target_count(target);
+    for (int i = 0; i < n; i++)
+        if (raystate_storage(rs, target[i], e) != 0)
+            return -1;
+    return 0;
 }
 
 /* What was attached, in which render path, and what to try instead (the GPU's failure). */
@@ -84,16 +92,13 @@ int raystate_init(struct raystate *rs, const struct render_path *path, int width
      * here; the setup stage's and every other float target have the same format */
     GLenum status;
     const GLuint setup[RAYSTATE_MAX_TARGETS] = {rs->result_image, path->mrt ? rs->result_velocity : 0, 0, 0};
-    GLuint fbo = make_fbo(rs, setup, &status);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteFramebuffers(1, &fbo);
-    char what[160];
-    snprintf(what, sizeof what, "render path %s: allocating the ray state (%s textures of %dx%d)", path->name, f->name,
-             width, height);
-    if (gl_check(what, e) != 0) {
+    if (targets_storage(rs, setup, e) != 0) {
         raystate_release(rs);
         return -1;
     }
+    GLuint fbo = make_fbo(rs, setup, &status);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         incomplete_message(rs, setup, status, e);
         raystate_release(rs);
@@ -116,14 +121,19 @@ static int own_texture(const struct raystate *rs, GLuint texture)
     return 0;
 }
 
-void raystate_storage(struct raystate *rs, GLuint texture)
+int raystate_stored(const struct raystate *rs, GLuint texture)
 {
-    /* another texture (a scene's, the orbit table, the HDR colour) has its memory already */
-    if (!own_texture(rs, texture))
-        return;
     for (int i = 0; i < rs->n_stored; i++)
         if (rs->stored[i] == texture)
-            return;
+            return 1;
+    return 0;
+}
+
+int raystate_storage(struct raystate *rs, GLuint texture, struct error *e)
+{
+    /* another texture (a scene's, the orbit table, the HDR colour) has its memory already */
+    if (!own_texture(rs, texture) || raystate_stored(rs, texture))
+        return 0;
     /* given in the middle of a frame's set-up: the active unit's binding is left as it was */
     GLint bound = 0;
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
@@ -133,7 +143,13 @@ void raystate_storage(struct raystate *rs, GLuint texture)
     else
         texture_define(texture, f->internal_format, f->format, f->type, rs->width, rs->height);
     glBindTexture(GL_TEXTURE_2D, (GLuint)bound);
+    char what[160];
+    snprintf(what, sizeof what, "render path %s: allocating the ray state (a %s texture of %dx%d)", rs->path_name,
+             texture == rs->final_color ? "RGBA8" : f->name, rs->width, rs->height);
+    if (gl_check(what, e) != 0)
+        return -1;   /* not kept as given: a later pass tries again, and fails as clearly */
     rs->stored[rs->n_stored++] = texture;
+    return 0;
 }
 
 size_t raystate_bytes(const struct raystate *rs)
@@ -188,6 +204,8 @@ GLuint raystate_fbo_targets(struct raystate *rs, const GLuint target[RAYSTATE_MA
         error_set(e, ERROR_RUNTIME, NULL, "internal: more than %d framebuffer combinations", RAYSTATE_MAX_FBOS);
         return 0;
     }
+    if (targets_storage(rs, target, e) != 0)
+        return 0;
     GLenum status;
     GLuint fbo = make_fbo(rs, target, &status);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
@@ -205,7 +223,6 @@ GLuint raystate_fbo_targets(struct raystate *rs, const GLuint target[RAYSTATE_MA
 int raystate_read(struct raystate *rs, GLuint texture, float *out, struct error *e)
 {
     int w = rs->width, h = rs->height;
-    raystate_storage(rs, texture);
     GLuint fbo = raystate_fbo(rs, texture, 0, e);
     if (!fbo)
         return -1;

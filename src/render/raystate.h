@@ -7,10 +7,10 @@
  * therefore copies a ray's final state, once, into the result textures (never read while they
  * are written), and marks the ray in the depth buffer that every ray-state framebuffer shares.
  *
- * A texture takes memory only once a pass writes it, reads it or is handed it
- * (raystate_storage): the single pass writes two of the thirteen float textures, or none where
- * only the image is read, so its frames neither clear nor hold the others (a fifth of the memory
- * a frame holds on a board whose GPU shares 1 GB with everything else). */
+ * A texture takes memory only once a pass writes or reads it (raystate_storage): the single pass
+ * writes two of the thirteen float textures (the results it ends in, checked at the start), so
+ * its frames neither clear nor hold the others, on a board whose GPU shares 1 GB with everything
+ * else. */
 #ifndef BT_RAYSTATE_H
 #define BT_RAYSTATE_H
 #include "gl/gl_api.h"
@@ -39,15 +39,18 @@ struct raystate {
     int n_stored;
 };
 
-/* Allocates every texture and builds the path's first framebuffer (its colour targets and the
- * depth buffer), so that a format this GPU cannot render into fails here, named with the path.
- * On failure nothing stays allocated. */
+/* Names every texture, gives the result targets their memory and builds their framebuffer (with
+ * the depth buffer), so that a format this GPU cannot render into fails here, named with the
+ * path. On failure nothing stays allocated. */
 int raystate_init(struct raystate *rs, const struct render_path *path, int width, int height, struct error *e);
 void raystate_release(struct raystate *rs);
 /* Gives TEXTURE, one of the ray state's, its memory if it has none yet (its texels then read as
- * zero on llvmpipe, undefined elsewhere, as the texture's first contents always were). Every
- * pass's targets and inputs and every read-back pass through it; so must a texture handed out. */
-void raystate_storage(struct raystate *rs, GLuint texture);
+ * zero on llvmpipe, undefined elsewhere, as the texture's first contents always were); the active
+ * unit's binding is left as it was. Every pass's targets (raystate_fbo) and inputs pass through
+ * it. 0, or -1 with e where the GPU has no memory for it. */
+int raystate_storage(struct raystate *rs, GLuint texture, struct error *e);
+/* Whether TEXTURE has its memory (a pass wrote or read it). */
+int raystate_stored(const struct raystate *rs, GLuint texture);
 /* Bytes of GPU memory the ray state's textures hold now (the depth buffer included). */
 size_t raystate_bytes(const struct raystate *rs);
 /* Framebuffer with target0 (and target1 when nonzero) and the shared depth buffer attached;

@@ -432,23 +432,24 @@ void renderer_set_reads(struct renderer *r, int with_state)
     r->reads = with_state;
 }
 
-void renderer_textures(struct renderer *r, struct renderer_textures *out)
+/* A texture of the ray state that the last run wrote (it has its memory), else 0. */
+static GLuint written(const struct raystate *rs, GLuint texture)
+{
+    return raystate_stored(rs, texture) ? texture : 0;
+}
+
+void renderer_textures(const struct renderer *r, struct renderer_textures *out)
 {
     memset(out, 0, sizeof *out);
     if (!r->have_state)
         return;
-    /* what is handed out is sampled: each has its memory, as every texture a pass reads */
-    const GLuint handed[] = {r->rs.final_color, r->rs.result_position, r->rs.result_velocity, r->rs.result_hit,
-                             r->rs.result_image};
-    for (size_t i = 0; i < sizeof handed / sizeof handed[0]; i++)
-        raystate_storage(&r->rs, handed[i]);
     out->width = r->rs.width;
     out->height = r->rs.height;
-    out->image = r->rs.final_color;
-    out->position = r->rs.result_position;
-    out->velocity = r->rs.result_velocity;
-    out->hit = r->rs.result_hit;
-    out->outcome = r->rs.result_image;
+    out->image = written(&r->rs, r->rs.final_color);
+    out->position = written(&r->rs, r->rs.result_position);
+    out->velocity = written(&r->rs, r->rs.result_velocity);
+    out->hit = written(&r->rs, r->rs.result_hit);
+    out->outcome = written(&r->rs, r->rs.result_image);
     if (r->exact_orbits && r->orbit_texture) {
         out->orbit_table = r->orbit_texture;
         out->orbit_width = r->orbit.width;

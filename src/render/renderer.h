@@ -74,9 +74,10 @@ int renderer_read_position(struct renderer *r, int x, int y, float xyzw[4], stru
 void render_result_free(struct render_result *res);
 /* The textures of the last run, on the GPU, for a display to draw from (the kiosk's compositor and
  * pipeline view): the final image (RGBA8) and each ray's final state (layout: common.glsl).
- * Valid until the next run or renderer_destroy; all 0 before the first run. A single-pass frame
- * writes the hit and position textures only when renderer_complete_state (or renderer_read with
- * the state) asks for them. */
+ * Valid until the next run or renderer_destroy; all 0 before the first run, and each 0 that no
+ * run has written yet (a texture takes memory only once written, render/raystate.h). A
+ * single-pass frame writes the hit and position textures only when renderer_complete_state (or
+ * renderer_read with the state) asks for them. */
 struct renderer_textures {
     int width, height;
     GLuint image, position, velocity, hit, outcome;
@@ -87,7 +88,7 @@ struct renderer_textures {
     int orbit_width, orbit_height, orbit_columns, orbit_rows_per_side;
     double orbit_u_capture;         /* u where captured orbits end, just inside the horizon */
 };
-void renderer_textures(struct renderer *r, struct renderer_textures *out);
+void renderer_textures(const struct renderer *r, struct renderer_textures *out);
 /* Bytes of GPU memory the ray state holds now: only the textures its passes have used
  * (render/raystate.h), so a single-pass frame holds a fraction of the multipass scheme's. */
 size_t renderer_state_bytes(const struct renderer *r);

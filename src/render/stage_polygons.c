@@ -146,8 +146,9 @@ int stage_polygons(struct renderer *r, struct error *e)
             glViewport(0, 0, rs->width, rs->height);
             glUseProgram(p->id);
             glUniform2f(program_uniform(p, "u_inv_size"), 1.0f / (float)rs->width, 1.0f / (float)rs->height);
-            raystate_storage(rs, rs->hit[rs->cur_hit]);
-            raystate_storage(rs, rs->position[rs->cur_position]);
+            if (raystate_storage(rs, rs->hit[rs->cur_hit], e) != 0 ||
+                raystate_storage(rs, rs->position[rs->cur_position], e) != 0)
+                return -1;
             glActiveTexture(GL_TEXTURE0);
             glBindTexture(GL_TEXTURE_2D, rs->hit[rs->cur_hit]);
             glUniform1i(program_uniform(p, "u_hit"), 0);

@@ -89,8 +89,10 @@ static void test_single_pass_bit_identical(void **state)
 }
 
 /* The image of the single pass alone (only the image read: its colour drawn in the same pass), as
- * the kiosk draws it; *bytes (where not NULL) the GPU memory its ray state held. */
-static void render_image_only_held(const struct scene *s, struct render_result *image, size_t *bytes)
+ * the kiosk draws it; *bytes (where not NULL) the GPU memory its ray state held once the kiosk has
+ * taken the frame's textures, *t (where not NULL) those textures. */
+static void render_image_only_held(const struct scene *s, struct render_result *image, size_t *bytes,
+                                   struct renderer_textures *t)
 {
     struct error gl_err, e;
     struct renderer *r = renderer_create(hc_context(), s, &gl_err);
@@ -100,6 +102,10 @@ static void render_image_only_held(const struct scene *s, struct render_result *
     if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, &e) != 0 ||
         renderer_read(r, image, RENDER_READ_IMAGE, &e) != 0)
         fail_msg("render: %s", e.message);
+    struct renderer_textures handed;
+    renderer_textures(r, &handed);
+    if (t)
+        *t = handed;
     if (bytes)
         *bytes = renderer_state_bytes(r);
     renderer_destroy(r);
@@ -107,7 +113,7 @@ static void render_image_only_held(const struct scene *s, struct render_result *
 
 static void render_image_only(const struct scene *s, struct render_result *image)
 {
-    render_image_only_held(s, image, NULL);
+    render_image_only_held(s, image, NULL, NULL);
 }
 
 /* S drawn by the single pass and by the multipass scheme: the same dump records and image, bit for
@@ -131,8 +137,8 @@ static void expect_single_is_multipass(struct scene *s, const char *what, struct
 
 /* The ray state takes memory only for the textures a frame uses (render/raystate.h): the kiosk's
  * single pass, its image alone read, holds its two result targets (checked at the start), the
- * 8-bit image and the depth buffer, not the thirteen float textures the multipass scheme cycles
- * through; the picture is the multipass scheme's, bit for bit. */
+ * 8-bit image and the depth buffer once the kiosk has taken its textures, not the float textures
+ * the multipass scheme cycles through; the picture is the multipass scheme's, bit for bit. */
 static void test_single_pass_memory(void **state)
 {
     (void)state;
@@ -142,14 +148,19 @@ static void test_single_pass_memory(void **state)
     size_t texels = 64 * 48, float_texel = 16;
     struct render_result image;
     size_t single_bytes = 0;
+    struct renderer_textures handed;
     s.render.pipeline = PIPELINE_SINGLE;
-    render_image_only_held(&s, &image, &single_bytes);
+    render_image_only_held(&s, &image, &single_bytes, &handed);
     print_message("single pass, image only: %zu bytes of ray state (%zu texels)\n", single_bytes, texels);
     assert_true(single_bytes <= texels * (2 * float_texel + 4 + 2));
+    /* the image is handed out; the state the frame did not write is not (0), and takes no memory */
+    assert_true(handed.image != 0);
+    assert_int_equal(handed.hit, 0);
+    assert_int_equal(handed.position, 0);
     struct render_result multi_image;
     size_t multi_bytes = 0;
     s.render.pipeline = PIPELINE_MULTIPASS;
-    render_image_only_held(&s, &multi_image, &multi_bytes);
+    render_image_only_held(&s, &multi_image, &multi_bytes, NULL);
     print_message("multipass, image only: %zu bytes of ray state\n", multi_bytes);
     assert_true(multi_bytes >= texels * (9 * float_texel + 4 + 2));
     assert_memory_equal(image.rgba, multi_image.rgba, texels * 4);
