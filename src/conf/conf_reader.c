@@ -206,12 +206,12 @@ static char *next_line(char *buf, int size, void *stream)
         return NULL;
     }
     struct text_lines lines = {r->text, r->len, r->pos, r->line};
-    char why[128];
-    int got = text_lines_next(&lines, &start, &len, why, sizeof why);
+    struct error why;
+    int got = text_lines_next(&lines, &start, &len, &why);
     r->pos = lines.pos;
     r->line = lines.line;
     if (got < 0) {
-        fail(r, r->line, "%s", why);
+        fail(r, r->line, "%s", why.message);
         return NULL;
     }
     if (len > (size_t)limit) {
@@ -293,13 +293,10 @@ static int on_pair(void *user, const char *inih_section, const char *name, const
 int conf_read(const char *path, const struct conf_schema *schema, void *target, struct error *err)
 {
     size_t len;
-    memset(err, 0, sizeof *err);
-    snprintf(err->where, sizeof err->where, "%s", path);
-    char *text = text_file_read(path, schema->max_bytes, schema->what, &len, err->message, sizeof err->message);
-    if (!text) {
-        err->status = ERROR_INPUT;      /* a file that is not there, not a file, or too large */
-        return -1;
-    }
+    error_clear(err);
+    char *text = text_file_read(path, schema->max_bytes, schema->what, &len, err);
+    if (!text)
+        return -1;                      /* its status set where the failure is known */
     struct reader *r = calloc(1, sizeof *r);
     if (!r) {
         free(text);

@@ -78,12 +78,10 @@ static int parse_event(struct script_event *ev, char *text, const char *path, in
 int script_load(struct script *sc, const char *path, struct error *e)
 {
     sc->n = 0;
-    char why[256];
     size_t size;
-    errno = 0;
-    char *text = text_file_read(path, SCRIPT_MAX_BYTES, "script", &size, why, sizeof why);
+    char *text = text_file_read(path, SCRIPT_MAX_BYTES, "script", &size, e);
     if (!text)
-        return error_set(e, error_status_of_errno(errno), path, "%s", why);
+        return -1;
     /* lines end with LF or CR LF; a UTF-8 byte-order mark may open the file; a NUL byte is refused
      * (text_lines_next), and so is a carriage return inside a line, where a file with CR line ends
      * would otherwise lose every event after its first line */
@@ -91,10 +89,11 @@ int script_load(struct script *sc, const char *path, struct error *e)
     const char *start;
     size_t n;
     int rc = 0, more;
-    while (rc == 0 && (more = text_lines_next(&lines, &start, &n, why, sizeof why)) != 0) {
+    struct error why;
+    while (rc == 0 && (more = text_lines_next(&lines, &start, &n, &why)) != 0) {
         int line = lines.line;
         if (more < 0) {
-            rc = refuse(e, path, line, "%s", why);
+            rc = refuse(e, path, line, "%s", why.message);
             break;
         }
         if (n > SCRIPT_LINE_MAX) {

@@ -166,11 +166,10 @@ int png_read_rgba8(const char *path, int max_size, int *width, int *height,
     ctx.max_size = max_size;
     ctx.status = ERROR_INPUT;
 
-    char why[256];
-    errno = 0;
-    ctx.fp = regular_file_open(path, "image", why, sizeof why);
+    struct error why;
+    ctx.fp = regular_file_open(path, "image", &why);
     if (!ctx.fp)
-        return error_set(e, error_status_of_errno(errno), NULL, "%s: %s", path, why);
+        return error_set(e, why.status, NULL, "%s: %s", path, why.message);
     /* Checking the signature ourselves gives a plain message instead of libpng's. */
     unsigned char sig[8];
     if (fread(sig, 1, sizeof sig, ctx.fp) != sizeof sig || png_sig_cmp(sig, 0, sizeof sig) != 0) {

@@ -12,21 +12,24 @@
 #define EDIT_MAX_LEN 256
 #define EDIT_TOO_FAR 1000
 
-FILE *regular_file_open(const char *path, const char *what, char *msg, size_t msglen)
+FILE *regular_file_open(const char *path, const char *what, struct error *e)
 {
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) {
-        snprintf(msg, msglen, "cannot open the %s: %s", what, strerror(errno));
+        int errnum = errno;
+        error_set(e, error_status_of_errno(errnum), path, "cannot open the %s: %s", what, strerror(errnum));
         return NULL;
     }
     struct stat st;
     if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        int e = errno;
-        snprintf(msg, msglen, "cannot read the %s: %s", what,
-                 S_ISFIFO(st.st_mode) ? "it is a FIFO, not a regular file"
-                 : S_ISDIR(st.st_mode) ? "it is a directory, not a regular file"
-                 : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "it is a device, not a regular file"
-                 : S_ISSOCK(st.st_mode) ? "it is a socket, not a regular file" : strerror(e));
+        /* fstat failing is the system's; a file that is not a regular one is the user's */
+        int errnum = S_ISREG(st.st_mode) ? errno : 0;
+        error_set(e, error_status_of_errno(errnum), path, "cannot read the %s: %s", what,
+                  errnum ? strerror(errnum)
+                  : S_ISFIFO(st.st_mode) ? "it is a FIFO, not a regular file"
+                  : S_ISDIR(st.st_mode) ? "it is a directory, not a regular file"
+                  : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "it is a device, not a regular file"
+                  : S_ISSOCK(st.st_mode) ? "it is a socket, not a regular file" : "not a regular file");
         close(fd);
         return NULL;
     }
@@ -36,30 +39,32 @@ FILE *regular_file_open(const char *path, const char *what, char *msg, size_t ms
         fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
     FILE *f = fdopen(fd, "rb");
     if (!f) {
-        snprintf(msg, msglen, "cannot open the %s: %s", what, strerror(errno));
+        int errnum = errno;
+        error_set(e, ERROR_RUNTIME, path, "cannot open the %s: %s", what, strerror(errnum));
         close(fd);
     }
     return f;
 }
 
-char *text_file_read(const char *path, long max_bytes, const char *what, size_t *len, char *msg, size_t msglen)
+char *text_file_read(const char *path, long max_bytes, const char *what, size_t *len, struct error *e)
 {
-    FILE *f = regular_file_open(path, what, msg, msglen);
+    FILE *f = regular_file_open(path, what, e);
     if (!f)
         return NULL;
     char *text = malloc((size_t)max_bytes + 2);
     if (!text) {
         fclose(f);
-        snprintf(msg, msglen, "out of memory reading the %s", what);
+        error_set(e, ERROR_RUNTIME, path, "out of memory reading the %s", what);
         return NULL;
     }
     size_t n = fread(text, 1, (size_t)max_bytes + 1, f);
     if (ferror(f)) {
-        snprintf(msg, msglen, "cannot read the %s: %s", what, strerror(errno));
+        int errnum = errno;
+        error_set(e, error_status_of_errno(errnum), path, "cannot read the %s: %s", what, strerror(errnum));
         free(text);
         text = NULL;
     } else if (n > (size_t)max_bytes) {
-        snprintf(msg, msglen, "the file is larger than %ld bytes: not a %s?", max_bytes, what);
+        error_set(e, ERROR_INPUT, path, "the file is larger than %ld bytes: not a %s?", max_bytes, what);
         free(text);
         text = NULL;
     } else {
@@ -70,7 +75,7 @@ char *text_file_read(const char *path, long max_bytes, const char *what, size_t 
     return text;
 }
 
-int text_lines_next(struct text_lines *t, const char **start, size_t *n, char *msg, size_t msglen)
+int text_lines_next(struct text_lines *t, const char **start, size_t *n, struct error *e)
 {
     if (t->pos >= t->len)
         return 0;
@@ -82,10 +87,8 @@ int text_lines_next(struct text_lines *t, const char **start, size_t *n, char *m
     size_t len = raw;
     if (len > 0 && s[len - 1] == '\r')
         len--;
-    if (memchr(s, '\0', len)) {
-        snprintf(msg, msglen, "the line holds a NUL byte: is this a text file?");
-        return -1;
-    }
+    if (memchr(s, '\0', len))
+        return error_set(e, ERROR_INPUT, NULL, "the line holds a NUL byte: is this a text file?");
     if (t->line == 1 && len >= 3 && memcmp(s, "\xEF\xBB\xBF", 3) == 0) {
         s += 3;
         len -= 3;

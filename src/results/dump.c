@@ -109,11 +109,10 @@ int dump_write(const char *path, const struct dump *d, int overwrite, struct err
 int dump_read(const char *path, struct dump *d, struct error *e)
 {
     memset(d, 0, sizeof *d);
-    char why[256];
-    errno = 0;
-    FILE *f = regular_file_open(path, "dump", why, sizeof why);
+    struct error why;
+    FILE *f = regular_file_open(path, "dump", &why);
     if (!f)
-        return error_set(e, error_status_of_errno(errno), NULL, "%s: %s", path, why);
+        return error_set(e, why.status, NULL, "%s: %s", path, why.message);
     unsigned char header[DUMP_HEADER_SIZE], rec[DUMP_RECORD_SIZE];
     if (fread(header, sizeof header, 1, f) != 1 || memcmp(header, DUMP_MAGIC, 8) != 0) {
         fclose(f);

@@ -281,10 +281,24 @@ static void test_whole_file_problems(void **state)
     print_message("%s: %s\n", err.where, err.message);
     assert_string_equal(err.where, path);
     assert_non_null(strstr(err.message, "store file"));
+    assert_int_equal(err.status, ERROR_INPUT);
     memset(&s, 0, sizeof s);
     assert_int_equal(conf_read("/nonexistent/store", &schema, &s, &err), -1);
     assert_string_equal(err.where, "/nonexistent/store");
+    assert_int_equal(err.status, ERROR_INPUT);
     assert_int_equal(s.opened, 0);
+    /* a directory is the user's mistake too, said as such, its status set where it is found */
+    assert_int_equal(conf_read("/tmp", &schema, &s, &err), -1);
+    assert_string_equal(err.where, "/tmp");
+    assert_non_null(strstr(err.message, "it is a directory, not a regular file"));
+    assert_int_equal(err.status, ERROR_INPUT);
+    /* a NUL byte in a line: not text, at its line */
+    static const char nul[] = "[shelf]\nlabel = a\0b\n";
+    assert_int_equal(read_text(nul, sizeof nul - 1, &s, &err), -1);
+    print_message("%s: %s\n", err.where, err.message);
+    assert_non_null(strstr(err.where, ":2"));
+    assert_non_null(strstr(err.message, "NUL byte"));
+    assert_int_equal(err.status, ERROR_INPUT);
 }
 
 static void test_kind_guess(void **state)
