@@ -1,6 +1,5 @@
 #include "cli/measure.h"
 #include "render/frame.h"
-#include "results/dump_scene.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -25,6 +24,17 @@ static long count_nonfinite(const struct render_result *res)
     return nonfinite;
 }
 
+/* One ray's outcome and its pixel, counted. */
+static void count_one(struct outcome_counts *c, int32_t outcome, const unsigned char rgba[4])
+{
+    c->objects += outcome >= 0;
+    c->sky += outcome == DUMP_SKY;
+    c->captured += outcome == DUMP_CAPTURED;
+    c->unfinished += outcome == DUMP_UNFINISHED;
+    c->failed += outcome == DUMP_FAILED;
+    c->dark += rgba[0] <= OUTCOME_DARK_CHANNEL && rgba[1] <= OUTCOME_DARK_CHANNEL && rgba[2] <= OUTCOME_DARK_CHANNEL;
+}
+
 /* The outcome of every ray of a frame read with RENDER_READ_OUTCOMES (or more), as the dump's records
  * hold it (result_to_dump), counted; with the black pixels of its image. */
 static void count_outcomes(const struct render_result *res, struct outcome_counts *c)
@@ -33,15 +43,7 @@ static void count_outcomes(const struct render_result *res, struct outcome_count
     size_t n = (size_t)res->width * res->height;
     for (size_t i = 0; i < n; i++) {
         int32_t o = (int32_t)lrintf(res->image[4 * i + 3]);
-        if (res->position && res->position[4 * i + 3] < 0.0f)
-            o = DUMP_FAILED;
-        c->objects += o >= 0;
-        c->sky += o == DUMP_SKY;
-        c->captured += o == DUMP_CAPTURED;
-        c->unfinished += o == DUMP_UNFINISHED;
-        c->failed += o == DUMP_FAILED;
-        const unsigned char *p = res->rgba + 4 * i;
-        c->dark += p[0] <= OUTCOME_DARK_CHANNEL && p[1] <= OUTCOME_DARK_CHANNEL && p[2] <= OUTCOME_DARK_CHANNEL;
+        count_one(c, res->position && res->position[4 * i + 3] < 0.0f ? DUMP_FAILED : o, res->rgba + 4 * i);
     }
 }
 
@@ -50,16 +52,8 @@ static void count_records(const struct dump *d, struct outcome_counts *c)
 {
     memset(c, 0, sizeof *c);
     size_t n = (size_t)d->width * d->height;
-    for (size_t i = 0; i < n; i++) {
-        int32_t o = d->records[i].outcome;
-        c->objects += o >= 0;
-        c->sky += o == DUMP_SKY;
-        c->captured += o == DUMP_CAPTURED;
-        c->unfinished += o == DUMP_UNFINISHED;
-        c->failed += o == DUMP_FAILED;
-        const uint8_t *p = d->records[i].rgba;
-        c->dark += p[0] <= OUTCOME_DARK_CHANNEL && p[1] <= OUTCOME_DARK_CHANNEL && p[2] <= OUTCOME_DARK_CHANNEL;
-    }
+    for (size_t i = 0; i < n; i++)
+        count_one(c, d->records[i].outcome, d->records[i].rgba);
 }
 
 int measure_gpu(const struct scene *s, const char *backend, int need_state, enum progress_mode progress, int hdr,
@@ -77,13 +71,8 @@ int measure_gpu(const struct scene *s, const char *backend, int need_state, enum
         render_result_free(&res);
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory");
     }
-    if (!need_state) {
-        /* the header alone: a summary needs the counts, not a record a pixel */
-        dump_describe_scene(&m->dump, s);
-        m->dump.width = res.width;
-        m->dump.height = res.height;
-        snprintf(m->dump.engine, sizeof m->dump.engine, "%.*s", (int)sizeof m->dump.engine - 1, m->engine);
-    }
+    if (!need_state)
+        result_dump_header(&res, s, m->engine, &m->dump);   /* a summary needs the counts, not records */
     m->rgba = res.rgba;
     m->color = res.color;
     res.rgba = NULL;                /* kept; the ray state is not */

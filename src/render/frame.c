@@ -161,14 +161,19 @@ int render_frame(const struct scene *s, const struct frame_request *req, struct 
     return rc;
 }
 
-int result_to_dump(const struct render_result *res, const struct scene *s, const char *engine, struct dump *d)
+void result_dump_header(const struct render_result *res, const struct scene *s, const char *engine, struct dump *d)
 {
     memset(d, 0, sizeof *d);
     dump_describe_scene(d, s);
-    size_t n = (size_t)res->width * res->height;
     d->width = res->width;
     d->height = res->height;
     snprintf(d->engine, sizeof d->engine, "%s", engine);
+}
+
+int result_to_dump(const struct render_result *res, const struct scene *s, const char *engine, struct dump *d)
+{
+    result_dump_header(res, s, engine, d);
+    size_t n = (size_t)res->width * res->height;
     d->records = calloc(n, sizeof *d->records);
     if (!d->records)
         return -1;

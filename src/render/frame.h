@@ -35,5 +35,7 @@ int frame_run_samples(struct renderer *r, const struct scene *s, struct render_r
 /* Per-pixel records (and colours) from a result read with its state, or with its outcomes only
  * (RENDER_READ_OUTCOMES: hit, position, direction, depth and steps are then 0). */
 int result_to_dump(const struct render_result *res, const struct scene *s, const char *engine, struct dump *d);
+/* The dump's header alone (scene, size, engine), no records: what result_to_dump fills first. */
+void result_dump_header(const struct render_result *res, const struct scene *s, const char *engine, struct dump *d);
 
 #endif

@@ -132,7 +132,7 @@ int raystate_stored(const struct raystate *rs, GLuint texture)
 int raystate_storage(struct raystate *rs, GLuint texture, struct error *e)
 {
     /* another texture (a scene's, the orbit table, the HDR colour) has its memory already */
-    if (!own_texture(rs, texture) || raystate_stored(rs, texture))
+    if (raystate_stored(rs, texture) || !own_texture(rs, texture))
         return 0;
     /* given in the middle of a frame's set-up: the active unit's binding is left as it was */
     GLint bound = 0;
