@@ -169,6 +169,41 @@ void controlled_step(vec3 x, vec3 v, float h, out vec3 x1, out vec3 v1, out bool
 #endif
 
 #ifndef MODEL_FLAT
+// The velocity where a step of length h from (x0, v0) to (x1, v1) crossed the bounding sphere: the
+// sky's direction, as the CPU reference takes it (src/ref/reference.c). The step's end lies beyond
+// the sphere, and a field that still pulls there (Lorenz's grows with the distance) would turn the
+// end's velocity by the pull over the rest of the step: an error in proportion to the step, which
+// held the scenes' steps small. The crossing is found on the step's cubic Hermite curve (its dense
+// output from both ends' positions and velocities, third order in h for the velocity), from the
+// chord's crossing by Newton's steps. Models whose sky lies along the orbit's direction at infinity
+// (SKY_AT_INFINITY) take it from the step's end, a point of the same orbit.
+const int EXIT_NEWTON_STEPS = 3;
+
+vec3 exit_velocity(vec3 x0, vec3 v0, vec3 x1, vec3 v1, float h)
+{
+    vec3 o0 = x0 - u_bound_center;
+    vec3 chord = x1 - x0;
+    // the chord's crossing: |o0 + t chord|^2 = R^2 with |o0| < R, the root in [0, 1]
+    float a = max(dot(chord, chord), 1.0e-30);
+    float b = dot(o0, chord);
+    float c = dot(o0, o0) - u_bound_radius2;
+    float t = clamp((sqrt(max(b * b - a * c, 0.0)) - b) / a, 0.0, 1.0);
+    vec3 hv0 = h * v0;
+    vec3 hv1 = h * v1;
+    for (int i = 0; i < EXIT_NEWTON_STEPS; i++) {
+        float t2 = t * t;
+        float t3 = t2 * t;
+        vec3 p = (2.0 * t3 - 3.0 * t2 + 1.0) * o0 + (t3 - 2.0 * t2 + t) * hv0 + (3.0 * t2 - 2.0 * t3) * (o0 + chord)
+                 + (t3 - t2) * hv1;
+        vec3 dp = (6.0 * t2 - 6.0 * t) * (-chord) + (3.0 * t2 - 4.0 * t + 1.0) * hv0 + (3.0 * t2 - 2.0 * t) * hv1;
+        float f = dot(p, p) - u_bound_radius2;
+        float slope = 2.0 * dot(p, dp);
+        t = clamp(t - f / (abs(slope) > 1.0e-30 ? slope : 1.0e-30), 0.0, 1.0);
+    }
+    float t2 = t * t;
+    return (6.0 * t2 - 6.0 * t) * (-chord) / h + (3.0 * t2 - 4.0 * t + 1.0) * v0 + (3.0 * t2 - 2.0 * t) * v1;
+}
+
 // One step as the scheme defines it: a ray stops moving once it left the bounding sphere, fell
 // into the horizon or its state stopped being finite (the last finite state is kept, and the
 // step count turns negative: failed); the ray state is updated with selects (see the precision
@@ -184,6 +219,11 @@ void step_checked(inout vec3 x, inout vec3 v, inout float steps, inout float h, 
     bool take = running && ok && accept;
     float next_steps = travelled_after(steps, h_try);
     float failed_steps = -1.0 - steps;
+#ifndef SKY_AT_INFINITY
+    // a ray that left for the sky: its velocity where it crossed the bounding sphere
+    bool left = take && outside_bounds(x1) && !captured(x1);
+    v1 = left ? exit_velocity(x, v, x1, v1, h_try) : v1;
+#endif
     x = take ? x1 : x;
     v = take ? v1 : v;
     steps = take ? next_steps : (running && !ok ? failed_steps : steps);

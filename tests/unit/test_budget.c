@@ -63,7 +63,10 @@ static void test_default_budget_lets_rays_finish(void **state)
 static void test_unfinished_rays_show_their_colour(void **state)
 {
     (void)state;
-    static const char *const sets[] = {"render.max_path=12.3", "render.unfinished_color=0.25 0.5 1", NULL};
+    /* steps of 1/6, three to a segment of 0.5: a budget between two segments' ends */
+    static const char *const sets[] = {"render.max_path=12.3", "render.unfinished_color=0.25 0.5 1",
+                                       "render.step=0.16666667", "render.steps_per_segment=3",
+                                       "render.steps_per_pass=3", NULL};
     static struct scene s;
     struct cpu_image cpu;
     struct hc_gpu g;

@@ -36,8 +36,9 @@ static void test_plan(void **state)
     }
 }
 
-/* lorenz with a budget 400 times its own: its preview (32 x 18) is drawn in tiles, one a call, not
- * shown until whole; then it holds what the renderer draws of the preview scene in one run. */
+/* lorenz with a budget of 9e4 steps a ray (a thousand times its own): its preview (32 x 18) is
+ * drawn in tiles, one a call, not shown until whole; then it holds what the renderer draws of the
+ * preview scene in one run. */
 static void test_tiled_preview(void **state)
 {
     (void)state;
@@ -57,7 +58,7 @@ static void test_tiled_preview(void **state)
     static struct scene base;
     struct error se;
     assert_int_equal(scene_load(&base, c.kiosk.scenes[scene], &se), 0);
-    base.render.max_path *= 400.0;
+    base.render.max_path = 9e4 * base.render.step_size;
     assert_int_equal(scene_validate(&base, &se), 0);
     static struct kiosk_view v;
     if (kiosk_view_init(&v, &c, hc_context(), &e) != 0 || kiosk_view_load(&v, scene, &base, &e) != 0)
