@@ -34,7 +34,7 @@ check "kiosk without devices" 0 "^1 1 1 1 2 frames$" -- sh -c "$BT kiosk --confi
 # a scene this GPU cannot draw is left out at start with the reason, the others are shown; where it
 # can draw none, the kiosk stops once with exit 3, which the service does not restart
 mkdir -p "$TMP/gpu/scenes" "$TMP/gpu/out" "$TMP/gpu/none" && ln -s "$PWD/assets/sky" "$TMP/gpu/sky" && ln -s "$PWD/assets/textures" "$TMP/gpu/textures"
-sed 's/^max_path = 90$/max_path = 4200\npipeline = single/' assets/scenes/lorenz.scene > "$TMP/gpu/scenes/lorenz_single.scene"
+sed 's/^max_path = 90$/max_path = 2100\npipeline = single/' assets/scenes/lorenz.scene > "$TMP/gpu/scenes/lorenz_single.scene"
 sed "s|^scenes = .*|scenes = $TMP/gpu/scenes/lorenz_single.scene, $PWD/assets/scenes/starflight.scene|; s|^start_scene = .*|start_scene = 0|;
      /^assets_root/d; s|path = visitor.events|path = $PWD/tests/kiosk/visitor.events|; s|\.\./\.\./assets|$PWD/assets|g" $K > "$TMP/gpu/k.conf"
 check "kiosk leaves out a scene this GPU cannot draw" 0 "lorenz_single.scene: this GPU \(.*\) cannot draw it: render.pipeline = single: this GPU ends a fragment-shader loop after 4096 turns \(probed\).*; the kiosk shows the other scenes \| .*the start scene .*lorenz_single.scene cannot be drawn; the kiosk starts with .*starflight.scene \| 2 frames$" -- \

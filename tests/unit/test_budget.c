@@ -63,10 +63,7 @@ static void test_default_budget_lets_rays_finish(void **state)
 static void test_unfinished_rays_show_their_colour(void **state)
 {
     (void)state;
-    /* steps of 1/6, three to a segment of 0.5: a budget between two segments' ends */
-    static const char *const sets[] = {"render.max_path=12.3", "render.unfinished_color=0.25 0.5 1",
-                                       "render.step=0.16666667", "render.steps_per_segment=3",
-                                       "render.steps_per_pass=3", NULL};
+    static const char *const sets[] = {"render.max_path=12.3", "render.unfinished_color=0.25 0.5 1", NULL};
     static struct scene s;
     struct cpu_image cpu;
     struct hc_gpu g;
@@ -90,7 +87,7 @@ static void test_unfinished_rays_show_their_colour(void **state)
         assert_true(unfinished > d->width * d->height / 10);
         assert_int_equal(coloured, unfinished);
     }
-    assert_true(fabs(render_path_budget(&s.render) - 12.5) < 1e-6);   /* step 0.16666667 x 3 x 25 */
+    assert_true(fabs(render_path_budget(&s.render) - 12.5) < 1e-6);   /* step 0.5 x 1 x 25 */
     long differ = 0;
     for (int i = 0; i < 32 * 24; i++)
         differ += (g.dump.records[i].outcome == DUMP_UNFINISHED) != (cpu.dump.records[i].outcome == DUMP_UNFINISHED);
