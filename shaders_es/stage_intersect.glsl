@@ -332,55 +332,42 @@ bool cull_group_clear(vec4 ends, float r_lo, float r_hi)
 // CHORD_CULL_MARGIN of their reach (relative to the object's radius) and CHORD_CULL_POSITION_MARGIN
 // of the points' coordinates larger, hundreds of times what those roundings can move a point. An
 // object that moves (MOVING_TEST) comes near every chord.
+// The balls and planes are the frame's, the same for every pixel: computed once on the CPU
+// (chord_cull_pack, src/render/stage_intersect.c), not in every pixel. Why: computed in the shader,
+// ten floats an object stayed live across the whole loop, more than the register file of an
+// exhibit's GPU holds; as uniforms, V3D's and Bifrost's compilers read them where they are used
+// (`make shader-stats`: the kiosk's lorenz frame went from 82 to 46 spills on V3D 4.2, from 24 to 7
+// on Mali-G52). They are copied once a pixel (chord_cull_prepare) and used from the copies: those
+// compilers see through the copy, while llvmpipe, which loads a uniform from memory at each use,
+// keeps the copies in its registers (read at each use, its frame took twice as long).
 const float CHORD_CULL_MARGIN = 1e-3;
 const float CHORD_CULL_POSITION_MARGIN = 1e-5;
-vec4 chord_ball[BATCH_SIZE];    // centre, radius
-vec4 chord_plane[BATCH_SIZE];   // a flat object's unit normal, 1; 0 for the others
-vec2 chord_scale[BATCH_SIZE];   // 1 / radius (0: every chord is near), the centre's position margin
+uniform vec4 u_chord_ball[BATCH_SIZE];    // centre, radius
+uniform vec4 u_chord_plane[BATCH_SIZE];   // a flat object's unit normal, 1; 0 for the others
+uniform vec2 u_chord_scale[BATCH_SIZE];   // 1 / radius (0: every chord is near), the centre's position margin
+vec4 chord_ball[BATCH_SIZE];
+vec4 chord_plane[BATCH_SIZE];
+vec2 chord_scale[BATCH_SIZE];
 
-void chord_ball_of(int n, vec3 centre, float radius, vec3 normal, float is_flat)
-{
-    chord_ball[n] = vec4(centre, radius);
-    chord_plane[n] = vec4(normal, is_flat);
-    chord_scale[n] = vec2(1.0 / max(radius, 1e-30),
-                          CHORD_CULL_POSITION_MARGIN * (abs(centre.x) + abs(centre.y) + abs(centre.z)));
-}
-
-// Each object's ball and plane (BATCH_TESTS, each test replaced by them), once per pixel.
 void chord_cull_prepare()
 {
-#undef TEST_SPHERE
-#undef TEST_DISK
-#undef TEST_RECT
-#undef TEST_TRIANGLE
-#undef MOVING_TEST
-#define TEST_SPHERE(n) { vec4 g0 = GEOMETRY(n, 0); chord_ball_of(n, g0.xyz, g0.w, vec3(0.0), 0.0); }
-#define TEST_DISK(n) { vec4 g0 = GEOMETRY(n, 0); \
-                       chord_ball_of(n, g0.xyz, g0.w, normalize(GEOMETRY(n, 1).xyz), 1.0); }
-#define TEST_RECT(n) { vec4 g0 = GEOMETRY(n, 0); vec3 g1 = GEOMETRY(n, 1).xyz, g2 = GEOMETRY(n, 2).xyz; \
-                       chord_ball_of(n, g0.xyz, max(length(g1 + g2), length(g1 - g2)), \
-                                     normalize(cross(g1, g2)), 1.0); }
-#define TEST_TRIANGLE(n) { vec3 v0 = GEOMETRY(n, 0).xyz, v1 = GEOMETRY(n, 1).xyz, v2 = GEOMETRY(n, 2).xyz; \
-                           vec3 c = (v0 + v1 + v2) / 3.0; \
-                           chord_ball_of(n, c, max(length(v0 - c), max(length(v1 - c), length(v2 - c))), \
-                                         normalize(cross(v1 - v0, v2 - v0)), 1.0); }
-#define MOVING_TEST(n, test) { test chord_ball[n].w = 1e30; chord_plane[n].w = 0.0; chord_scale[n].x = 0.0; }
-    BATCH_TESTS
-#undef TEST_SPHERE
-#undef TEST_DISK
-#undef TEST_RECT
-#undef TEST_TRIANGLE
-#undef MOVING_TEST
+    for (int n = 0; n < BATCH_SIZE; n++) {
+        chord_ball[n] = u_chord_ball[n];
+        chord_plane[n] = u_chord_plane[n];
+        chord_scale[n] = u_chord_scale[n];
+    }
 }
 
-bool chord_near_object(int n, vec3 mid, float half_length, float mid_margin)
+// Whether a chord about mid, of half length half_length, comes near the object of this ball, plane
+// and scales.
+bool chord_near_object(vec4 ball_of, vec4 plane_of, vec2 scale, vec3 mid, float half_length, float mid_margin)
 {
-    vec3 from_centre = mid - chord_ball[n].xyz;
-    float reach = chord_ball[n].w + half_length;
-    float margin = CHORD_CULL_MARGIN * reach * (1.0 + reach * chord_scale[n].x) + mid_margin + chord_scale[n].y;
+    vec3 from_centre = mid - ball_of.xyz;
+    float reach = ball_of.w + half_length;
+    float margin = CHORD_CULL_MARGIN * reach * (1.0 + reach * scale.x) + mid_margin + scale.y;
     float within = reach + margin;
     bool ball = dot(from_centre, from_centre) <= within * within;
-    bool plane = chord_plane[n].w == 0.0 || abs(dot(from_centre, chord_plane[n].xyz)) <= half_length + margin;
+    bool plane = plane_of.w == 0.0 || abs(dot(from_centre, plane_of.xyz)) <= half_length + margin;
     return ball && plane;
 }
 
@@ -391,11 +378,17 @@ bool chord_near(vec3 a, vec3 b)
     float half_length = 0.5 * length(b - a);
     float mid_margin = CHORD_CULL_POSITION_MARGIN * (abs(mid.x) + abs(mid.y) + abs(mid.z));
     bool near = false;
-#define TEST_SPHERE(n) near = near || chord_near_object(n, mid, half_length, mid_margin);
+#undef TEST_SPHERE
+#undef TEST_DISK
+#undef TEST_RECT
+#undef TEST_TRIANGLE
+#undef MOVING_TEST
+#define TEST_SPHERE(n) near = near || chord_near_object(chord_ball[n], chord_plane[n], chord_scale[n], \
+                                                      mid, half_length, mid_margin);
 #define TEST_DISK(n) TEST_SPHERE(n)
 #define TEST_RECT(n) TEST_SPHERE(n)
 #define TEST_TRIANGLE(n) TEST_SPHERE(n)
-#define MOVING_TEST(n, test) test
+#define MOVING_TEST(n, test) near = true;
     BATCH_TESTS
 #undef TEST_SPHERE
 #undef TEST_DISK

@@ -3,12 +3,16 @@
  * A batch holds only the primitive types it contains; its program is cached by that list. */
 #include "physics/relativity.h"
 #include "render/stages.h"
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #define GEOMETRY_VECS 5
 #define MATERIAL_VECS 5         /* stages.h: intersect_pack_material */
 #define MOTION_VECS 2
+#define CHORD_VECS 3            /* the integrated single pass's cull: ball, plane, scales */
+/* shaders_es/stage_intersect.glsl's CHORD_CULL_POSITION_MARGIN */
+#define CHORD_CULL_POSITION_MARGIN 1e-5
 /* uniform vectors a pass needs besides its objects: lights, ambient, segment, sizes, camera, observer
  * and black-body table (rounded up) */
 #define RESERVED_UNIFORM_VECS (20 + 3 * SCENE_MAX_LIGHTS)
@@ -69,6 +73,44 @@ static void pack_geometry(const struct object *o, float g[GEOMETRY_VECS][4])
     }
 }
 
+/* The ball and plane of one object for the integrated single pass's cull (the chord_near of
+ * shaders_es/stage_intersect.glsl, which says what they bound): computed once a frame here, in
+ * double, rather than in every pixel. An object that moves comes near every chord. */
+static void chord_cull_pack(const struct object *o, float ball[4], float plane[4], float scale[2])
+{
+    vec3d centre = o->center, normal = {0.0, 0.0, 0.0};
+    double radius = o->radius, is_flat = 1.0;
+    switch (o->type) {
+    case PRIM_SPHERE:
+        is_flat = 0.0;
+        break;
+    case PRIM_DISK:
+        normal = v3_normalize(o->normal);
+        break;
+    case PRIM_RECT:
+        radius = fmax(v3_len(v3_add(o->axis_u, o->axis_v)), v3_len(v3_sub(o->axis_u, o->axis_v)));
+        normal = v3_normalize(v3_cross(o->axis_u, o->axis_v));
+        break;
+    case PRIM_TRIANGLE:
+    default:
+        centre = v3_scale(v3_add(o->vertex[0], v3_add(o->vertex[1], o->vertex[2])), 1.0 / 3.0);
+        radius = 0.0;
+        for (int k = 0; k < 3; k++)
+            radius = fmax(radius, v3_len(v3_sub(o->vertex[k], centre)));
+        normal = v3_normalize(v3_cross(v3_sub(o->vertex[1], o->vertex[0]), v3_sub(o->vertex[2], o->vertex[0])));
+        break;
+    }
+    struct object_motion m;
+    if (object_motion(o, &m)) {
+        radius = 1e30;
+        is_flat = 0.0;
+    }
+    pack3(ball, centre, radius);
+    pack3(plane, normal, is_flat);
+    scale[0] = object_motion(o, &m) ? 0.0f : (float)(1.0 / fmax(radius, 1e-30));
+    scale[1] = (float)(CHORD_CULL_POSITION_MARGIN * (fabs(centre.x) + fabs(centre.y) + fabs(centre.z)));
+}
+
 void intersect_pack_material(const struct material *m, int object_id, float out[MATERIAL_VECS][4])
 {
     pack3(out[0], m->color, m->checker);
@@ -112,6 +154,7 @@ void object_batch_set_uniforms(const struct program_uniforms *p, const void *arg
     const struct scene *s = b->r->scene;
     float geometry[OBJECT_BATCH_MAX][GEOMETRY_VECS][4], material[OBJECT_BATCH_MAX][MATERIAL_VECS][4];
     float motion[OBJECT_BATCH_MAX][MOTION_VECS][4];
+    float chord_ball[OBJECT_BATCH_MAX][4], chord_plane[OBJECT_BATCH_MAX][4], chord_scale[OBJECT_BATCH_MAX][2];
     GLint units[OBJECT_BATCH_MAX];
     int unit = FIRST_OBJECT_UNIT;
     for (int i = 0; i < b->count; i++) {
@@ -121,6 +164,7 @@ void object_batch_set_uniforms(const struct program_uniforms *p, const void *arg
         pack_geometry(&rest, geometry[i]);
         pack_motion(o, motion[i]);
         intersect_pack_material(&o->material, b->object[i], material[i]);
+        chord_cull_pack(o, chord_ball[i], chord_plane[i], chord_scale[i]);
         units[i] = FIRST_OBJECT_UNIT;
         if (o->material.texture >= 0) {
             glActiveTexture(GL_TEXTURE0 + unit);
@@ -132,6 +176,13 @@ void object_batch_set_uniforms(const struct program_uniforms *p, const void *arg
     glUniform4fv(program_uniform(p, "u_materials"), MATERIAL_VECS * b->count, &material[0][0][0]);
     if (batch_moves(b)) {
         glUniform4fv(program_uniform(p, "u_motion"), MOTION_VECS * b->count, &motion[0][0][0]);
+    }
+    /* the integrated single pass's cull (CHORD_CULL) */
+    GLint chords = program_uniform(p, "u_chord_ball");
+    if (chords >= 0) {
+        glUniform4fv(chords, b->count, &chord_ball[0][0]);
+        glUniform4fv(program_uniform(p, "u_chord_plane"), b->count, &chord_plane[0][0]);
+        glUniform2fv(program_uniform(p, "u_chord_scale"), b->count, &chord_scale[0][0]);
     }
     GLint textures = program_uniform(p, "u_textures");
     if (textures >= 0)
@@ -234,7 +285,8 @@ int object_batch_all(const struct renderer *r, struct object_batch *b)
  * after the pass's own (the single pass adds the integration's: model, step control, bounds). */
 static int pass_capacity(const struct renderer *r, int single_pass)
 {
-    int per_object = GEOMETRY_VECS + MATERIAL_VECS + (scene_has_moving_objects(r->scene) ? MOTION_VECS : 0);
+    int per_object = GEOMETRY_VECS + MATERIAL_VECS + (scene_has_moving_objects(r->scene) ? MOTION_VECS : 0) +
+                     (single_pass && !r->exact_orbits ? CHORD_VECS : 0);
     int reserved = RESERVED_UNIFORM_VECS + (r->exact_orbits ? ORBIT_UNIFORM_VECS : 0) +
                    (single_pass ? FRAME_UNIFORM_VECS : 0);
     int by_uniforms = (r->caps.max_fragment_uniform_vectors - reserved) / per_object;
