@@ -1,38 +1,26 @@
 #include "ref/surface.h"
+#include "scene/object_bound.h"
 
 void surface_init(struct surface *sf, const struct object *o)
 {
-    *sf = (struct surface){.object = o, .center = o->center, .radius = o->radius};
+    struct object_bound b;
+    object_bound(o, &b);
+    *sf = (struct surface){.object = o, .center = b.centre, .radius = o->radius, .bound_radius = b.radius,
+                           .normal = b.normal, .is_sphere = !b.flat};
     switch (o->type) {
     case PRIM_SPHERE:
-        sf->is_sphere = 1;
-        sf->bound_radius = o->radius;
         sf->degenerate = !(o->radius > 0.0);
         break;
     case PRIM_DISK:
-        sf->normal = v3_normalize(o->normal);
-        sf->bound_radius = o->radius;
         sf->degenerate = v3_len(o->normal) == 0.0;
         break;
-    case PRIM_RECT: {
-        vec3d n = v3_cross(o->axis_u, o->axis_v);
-        sf->normal = v3_normalize(n);
-        sf->bound_radius = v3_len(v3_add(o->axis_u, o->axis_v));
-        sf->degenerate = v3_len(n) == 0.0;
+    case PRIM_RECT:
+        sf->degenerate = v3_len(v3_cross(o->axis_u, o->axis_v)) == 0.0;
         break;
-    }
     case PRIM_TRIANGLE:
-    default: {
-        vec3d n = v3_cross(v3_sub(o->vertex[1], o->vertex[0]), v3_sub(o->vertex[2], o->vertex[0]));
-        sf->normal = v3_normalize(n);
-        sf->center = v3_scale(v3_add(o->vertex[0], v3_add(o->vertex[1], o->vertex[2])), 1.0 / 3.0);
-        for (int i = 0; i < 3; i++) {
-            double r = v3_len(v3_sub(o->vertex[i], sf->center));
-            sf->bound_radius = r > sf->bound_radius ? r : sf->bound_radius;
-        }
-        sf->degenerate = v3_len(n) == 0.0;
+    default:
+        sf->degenerate = v3_len(v3_cross(v3_sub(o->vertex[1], o->vertex[0]), v3_sub(o->vertex[2], o->vertex[0]))) == 0.0;
         break;
-    }
     }
 }
 

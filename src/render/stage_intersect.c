@@ -3,6 +3,7 @@
  * A batch holds only the primitive types it contains; its program is cached by that list. */
 #include "physics/relativity.h"
 #include "render/stages.h"
+#include "scene/object_bound.h"
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -78,37 +79,16 @@ static void pack_geometry(const struct object *o, float g[GEOMETRY_VECS][4])
  * double, rather than in every pixel. An object that moves comes near every chord. */
 static void chord_cull_pack(const struct object *o, float ball[4], float plane[4], float scale[2])
 {
-    vec3d centre = o->center, normal = {0.0, 0.0, 0.0};
-    double radius = o->radius, is_flat = 1.0;
-    switch (o->type) {
-    case PRIM_SPHERE:
-        is_flat = 0.0;
-        break;
-    case PRIM_DISK:
-        normal = v3_normalize(o->normal);
-        break;
-    case PRIM_RECT:
-        radius = fmax(v3_len(v3_add(o->axis_u, o->axis_v)), v3_len(v3_sub(o->axis_u, o->axis_v)));
-        normal = v3_normalize(v3_cross(o->axis_u, o->axis_v));
-        break;
-    case PRIM_TRIANGLE:
-    default:
-        centre = v3_scale(v3_add(o->vertex[0], v3_add(o->vertex[1], o->vertex[2])), 1.0 / 3.0);
-        radius = 0.0;
-        for (int k = 0; k < 3; k++)
-            radius = fmax(radius, v3_len(v3_sub(o->vertex[k], centre)));
-        normal = v3_normalize(v3_cross(v3_sub(o->vertex[1], o->vertex[0]), v3_sub(o->vertex[2], o->vertex[0])));
-        break;
-    }
+    struct object_bound bound;
+    object_bound(o, &bound);
     struct object_motion m;
-    if (object_motion(o, &m)) {
-        radius = 1e30;
-        is_flat = 0.0;
-    }
-    pack3(ball, centre, radius);
-    pack3(plane, normal, is_flat);
-    scale[0] = object_motion(o, &m) ? 0.0f : (float)(1.0 / fmax(radius, 1e-30));
-    scale[1] = (float)(CHORD_CULL_POSITION_MARGIN * (fabs(centre.x) + fabs(centre.y) + fabs(centre.z)));
+    int moving = object_motion(o, &m);
+    double radius = moving ? 1e30 : bound.radius;
+    vec3d c = bound.centre;
+    pack3(ball, c, radius);
+    pack3(plane, bound.normal, bound.flat && !moving ? 1.0 : 0.0);
+    scale[0] = moving ? 0.0f : (float)(1.0 / fmax(radius, 1e-30));
+    scale[1] = (float)(CHORD_CULL_POSITION_MARGIN * (fabs(c.x) + fabs(c.y) + fabs(c.z)));
 }
 
 void intersect_pack_material(const struct material *m, int object_id, float out[MATERIAL_VECS][4])

@@ -4,6 +4,7 @@
  * builds again when either changes (the kiosk's mass knob, a moving camera), or takes from the
  * tables built ahead (render/orbit_store.h). */
 #include "render/stages.h"
+#include "scene/object_bound.h"
 #include "gl/texture.h"
 #include <math.h>
 #include <stdio.h>
@@ -18,21 +19,11 @@
  * distance to its bounding ball, and for the flat primitives to their plane. */
 static double object_distance(const struct object *o, vec3d c)
 {
-    vec3d centre = o->center, normal = o->normal;
-    double reach = o->radius;
-    if (o->type == PRIM_RECT) {
-        reach = v3_len(v3_add(o->axis_u, o->axis_v));
-        normal = v3_cross(o->axis_u, o->axis_v);
-    } else if (o->type == PRIM_TRIANGLE) {
-        centre = v3_scale(v3_add(o->vertex[0], v3_add(o->vertex[1], o->vertex[2])), 1.0 / 3.0);
-        reach = 0.0;
-        for (int k = 0; k < 3; k++)
-            reach = fmax(reach, v3_len(v3_sub(o->vertex[k], centre)));
-        normal = v3_cross(v3_sub(o->vertex[1], o->vertex[0]), v3_sub(o->vertex[2], o->vertex[0]));
-    }
-    double d = v3_len(v3_sub(centre, c)) - reach;
-    if (o->type != PRIM_SPHERE && v3_len(normal) > 0.0)
-        d = fmax(d, fabs(v3_dot(v3_normalize(normal), v3_sub(c, centre))));
+    struct object_bound b;
+    object_bound(o, &b);
+    double d = v3_len(v3_sub(b.centre, c)) - b.radius;
+    if (b.flat && v3_len(b.normal) > 0.0)
+        d = fmax(d, fabs(v3_dot(b.normal, v3_sub(c, b.centre))));
     return d;
 }
 
