@@ -77,6 +77,8 @@ struct pareto_point {
     double seconds, outcome_pct, sky_p99, hit_p99;
     int front;
     long passes;
+    const char *not_applicable;   /* why the configuration was not run on this scene, or NULL */
+    char realised[48];            /* the factors as this scene's whole steps a chord allow, where not as named */
 };
 
 /* Largest K <= 64 dividing n (a segment ends on a pass boundary). */
@@ -147,10 +149,44 @@ static int configure(struct scene *s, const struct scene *base, int c, const cha
                      why.message);
 }
 
-/* The orbit table needs 32-bit floats: a scene on exact orbits has no fp16 variant of its default. */
+/* The step and segment factors that apply_config realises on scene s: a segment holds a whole
+ * number of steps, at least one, so a factor may come out otherwise than named (a step x2 of three
+ * steps a chord is x1.5) or not at all (a step x2 of one step a chord keeps the step). */
+static void realised_factors(const struct scene *s, const struct pareto_config *c, double *step, double *segment)
+{
+    int n = s->render.steps_per_segment;
+    long by_step = lround(n / c->step_factor), by_segment = lround(n * c->segment_factor);
+    *step = c->step_factor != 1.0 ? (double)n / (double)(by_step < 1 ? 1 : by_step) : 1.0;
+    *segment = c->segment_factor != 1.0 ? (double)(by_segment < 1 ? 1 : by_segment) / n : 1.0;
+}
+
+/* Why configuration c is not run on scene s, or NULL. The orbit table needs 32-bit floats: a scene
+ * on exact orbits has no fp16 variant of its default. A variant whose factor the scene's whole
+ * steps a chord cannot realise at all would repeat another row. */
+static const char *config_not_applicable(const struct scene *s, const struct pareto_config *c)
+{
+    if (c->fp16 && c->scene_method && s->render.method == METHOD_ORBIT_TABLE)
+        return "the orbit table needs fp32";
+    double step, segment;
+    realised_factors(s, c, &step, &segment);
+    if ((c->step_factor != 1.0 && step == 1.0) || (c->segment_factor != 1.0 && segment == 1.0))
+        return "not with this scene's steps a chord";
+    return NULL;
+}
+
 static int config_applies(const struct scene *s, const struct pareto_config *c)
 {
-    return !(c->fp16 && c->scene_method && s->render.method == METHOD_ORBIT_TABLE);
+    return config_not_applicable(s, c) == NULL;
+}
+
+/* The factors actually taken, where they are not those of the configuration's name (else ""). */
+static void realised_note(const struct scene *s, const struct pareto_config *c, char *out, size_t len)
+{
+    double step, segment;
+    realised_factors(s, c, &step, &segment);
+    out[0] = '\0';
+    if (fabs(step - c->step_factor) > 1e-2 * c->step_factor || fabs(segment - c->segment_factor) > 1e-2 * c->segment_factor)
+        snprintf(out, len, " (here step x%.3g, segment x%.3g)", step, segment);
 }
 
 static double nan_as_zero(double x)
@@ -202,7 +238,7 @@ static int measure_on(struct bench *b, int k, struct scene *base, struct scene *
     int n = b->quick ? 3 : configs_of(base);
     for (int c = 0; c < n; c++) {
         if (!config_applies(base, &configs[c])) {
-            pts[c] = (struct pareto_point){NAN, NAN, NAN, NAN, 0, 0};
+            pts[c] = (struct pareto_point){NAN, NAN, NAN, NAN, 0, 0, config_not_applicable(base, &configs[c]), ""};
             continue;
         }
         if (configure(s, base, c, ps->title, e) != 0) {
@@ -225,7 +261,8 @@ static int measure_on(struct bench *b, int k, struct scene *base, struct scene *
         dump_free(&d);
         b->done++;
         pts[c] = (struct pareto_point){t.median, 100.0 * cr.outcome_fraction, cr.sky_angle.p99, cr.hit_relative.p99, 0,
-                                      t.passes};
+                                      t.passes, NULL, ""};
+        realised_note(base, &configs[c], pts[c].realised, sizeof pts[c].realised);
     }
     cpu_image_free(&ref);
     mark_front(pts, n);
@@ -319,10 +356,12 @@ static void print_scene(struct bench *b, int k, const struct pareto_point *p, in
                    "front |\n|---|---|---|---|---|---|---|\n", scenes[k].title);
     for (int c = 0; c < n; c++) {
         if (isnan(p[c].seconds)) {
-            fprintf(b->md, "| %s | n/a (the orbit table needs fp32) | | | | | |\n", configs[c].name);
+            fprintf(b->md, "| %s | n/a (%s) | | | | | |\n", configs[c].name,
+                    p[c].not_applicable ? p[c].not_applicable : "not measured");
             continue;
         }
-        fprintf(b->md, "| %s | %.4f | %ld | %.3f%% | %.2g | %.2g | %s |\n", configs[c].name, p[c].seconds, p[c].passes,
+        fprintf(b->md, "| %s%s | %.4f | %ld | %.3f%% | %.2g | %.2g | %s |\n", configs[c].name, p[c].realised,
+                p[c].seconds, p[c].passes,
                 p[c].outcome_pct, p[c].sky_p99, p[c].hit_p99, p[c].front ? "yes" : "" );
     }
     static const double sky_levels[] = {1e-2, 1e-3, 1e-4, 1e-5}, pct_levels[] = {1.0, 0.1};
@@ -416,7 +455,9 @@ int bench_pareto(struct bench *b, struct error *e)
                    "whole segment unless said; median seconds per frame of %d runs, and the error against the "
                    "CPU reference of the scene default: differing outcomes, the 99th percentile of the exit "
                    "direction error of sky pixels and of the hit error relative to the object's size. "
-                   "\"step xF\" multiplies the step and keeps the segment length; \"segment xF\" multiplies the "
+                   "\"step xF\" multiplies the step and keeps the segment length (a segment holds whole steps: where "
+                   "the scene's steps a segment allow only another factor, the row says which it took, and where "
+                   "they allow none, the row is n/a); \"segment xF\" multiplies the "
                    "segment and keeps the step and the path; \"step max x4\" bounds adaptive steps at 4 times the "
                    "scene's step. \"orbit table, chord C\" (Schwarzschild only) integrates nothing: each ray "
                    "follows its exact orbit from the table, in chords within C of it, in one pass "
