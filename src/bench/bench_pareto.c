@@ -90,24 +90,35 @@ static int unroll_for(int n)
     return 1;
 }
 
-static void apply_config(struct scene *s, const struct pareto_config *c)
+/* Steps a segment for a wanted (fractional) number: the nearest whole number, at least one. */
+static int whole_steps(double wanted)
 {
-    struct render_settings *r = &s->render;
+    long n = lround(wanted);
+    return n < 1 ? 1 : (int)n;
+}
+
+/* The configuration's step and segment factors on r, as near as whole steps a segment allow. */
+static void apply_factors(struct render_settings *r, const struct pareto_config *c)
+{
     double segment = r->steps_per_segment * r->step_size;
-    if (!c->scene_method)
-        r->method = c->method;
     if (c->step_factor != 1.0) {
-        long n = lround(r->steps_per_segment / c->step_factor);
-        r->steps_per_segment = n < 1 ? 1 : (int)n;
+        r->steps_per_segment = whole_steps(r->steps_per_segment / c->step_factor);
         r->step_size = segment / r->steps_per_segment;
     }
     if (c->segment_factor != 1.0) {
         render_fix_segments(r);
         long path = (long)r->segments * r->steps_per_segment;
-        long n = lround(r->steps_per_segment * c->segment_factor);
-        r->steps_per_segment = n < 1 ? 1 : (int)n;
+        r->steps_per_segment = whole_steps(r->steps_per_segment * c->segment_factor);
         r->segments = (int)((path + r->steps_per_segment - 1) / r->steps_per_segment);
     }
+}
+
+static void apply_config(struct scene *s, const struct pareto_config *c)
+{
+    struct render_settings *r = &s->render;
+    if (!c->scene_method)
+        r->method = c->method;
+    apply_factors(r, c);
     if (!c->scene_method) {       /* the scene default's variants keep its step control too */
         r->step_control = c->control;
         if (c->control != STEP_FIXED)
@@ -149,15 +160,15 @@ static int configure(struct scene *s, const struct scene *base, int c, const cha
                      why.message);
 }
 
-/* The step and segment factors that apply_config realises on scene s: a segment holds a whole
+/* The step and segment factors that apply_factors realises on scene s: a segment holds a whole
  * number of steps, at least one, so a factor may come out otherwise than named (a step x2 of three
  * steps a chord is x1.5) or not at all (a step x2 of one step a chord keeps the step). */
 static void realised_factors(const struct scene *s, const struct pareto_config *c, double *step, double *segment)
 {
-    int n = s->render.steps_per_segment;
-    long by_step = lround(n / c->step_factor), by_segment = lround(n * c->segment_factor);
-    *step = c->step_factor != 1.0 ? (double)n / (double)(by_step < 1 ? 1 : by_step) : 1.0;
-    *segment = c->segment_factor != 1.0 ? (double)(by_segment < 1 ? 1 : by_segment) / n : 1.0;
+    struct render_settings r = s->render;
+    apply_factors(&r, c);
+    *step = r.step_size / s->render.step_size;
+    *segment = r.steps_per_segment * r.step_size / (s->render.steps_per_segment * s->render.step_size);
 }
 
 /* Why configuration c is not run on scene s, or NULL. The orbit table needs 32-bit floats: a scene

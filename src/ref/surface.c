@@ -7,21 +7,8 @@ void surface_init(struct surface *sf, const struct object *o)
     object_bound(o, &b);
     *sf = (struct surface){.object = o, .center = b.centre, .radius = o->radius, .bound_radius = b.radius,
                            .normal = b.normal, .is_sphere = !b.flat};
-    switch (o->type) {
-    case PRIM_SPHERE:
-        sf->degenerate = !(o->radius > 0.0);
-        break;
-    case PRIM_DISK:
-        sf->degenerate = v3_len(o->normal) == 0.0;
-        break;
-    case PRIM_RECT:
-        sf->degenerate = v3_len(v3_cross(o->axis_u, o->axis_v)) == 0.0;
-        break;
-    case PRIM_TRIANGLE:
-    default:
-        sf->degenerate = v3_len(v3_cross(v3_sub(o->vertex[1], o->vertex[0]), v3_sub(o->vertex[2], o->vertex[0]))) == 0.0;
-        break;
-    }
+    /* never hit: a sphere without radius, a flat object without a plane (object_bound's normal 0) */
+    sf->degenerate = b.flat ? v3_len(b.normal) == 0.0 : !(o->radius > 0.0);
 }
 
 double surface_value(const struct surface *sf, vec3d x)

@@ -76,18 +76,16 @@ static void pack_geometry(const struct object *o, float g[GEOMETRY_VECS][4])
 
 /* The ball and plane of one object for the integrated single pass's cull (the chord_near of
  * shaders_es/stage_intersect.glsl, which says what they bound): computed once a frame here, in
- * double, rather than in every pixel. An object that moves comes near every chord. */
+ * double, rather than in every pixel. The shader reads none of them for an object that moves: its
+ * slot is near every chord. */
 static void chord_cull_pack(const struct object *o, float ball[4], float plane[4], float scale[2])
 {
     struct object_bound bound;
     object_bound(o, &bound);
-    struct object_motion m;
-    int moving = object_motion(o, &m);
-    double radius = moving ? 1e30 : bound.radius;
     vec3d c = bound.centre;
-    pack3(ball, c, radius);
-    pack3(plane, bound.normal, bound.flat && !moving ? 1.0 : 0.0);
-    scale[0] = moving ? 0.0f : (float)(1.0 / fmax(radius, 1e-30));
+    pack3(ball, c, bound.radius);
+    pack3(plane, bound.normal, bound.flat ? 1.0 : 0.0);
+    scale[0] = (float)(1.0 / fmax(bound.radius, 1e-30));
     scale[1] = (float)(CHORD_CULL_POSITION_MARGIN * (fabs(c.x) + fabs(c.y) + fabs(c.z)));
 }
 
@@ -134,7 +132,6 @@ void object_batch_set_uniforms(const struct program_uniforms *p, const void *arg
     const struct scene *s = b->r->scene;
     float geometry[OBJECT_BATCH_MAX][GEOMETRY_VECS][4], material[OBJECT_BATCH_MAX][MATERIAL_VECS][4];
     float motion[OBJECT_BATCH_MAX][MOTION_VECS][4];
-    float chord_ball[OBJECT_BATCH_MAX][4], chord_plane[OBJECT_BATCH_MAX][4], chord_scale[OBJECT_BATCH_MAX][2];
     GLint units[OBJECT_BATCH_MAX];
     int unit = FIRST_OBJECT_UNIT;
     for (int i = 0; i < b->count; i++) {
@@ -144,7 +141,6 @@ void object_batch_set_uniforms(const struct program_uniforms *p, const void *arg
         pack_geometry(&rest, geometry[i]);
         pack_motion(o, motion[i]);
         intersect_pack_material(&o->material, b->object[i], material[i]);
-        chord_cull_pack(o, chord_ball[i], chord_plane[i], chord_scale[i]);
         units[i] = FIRST_OBJECT_UNIT;
         if (o->material.texture >= 0) {
             glActiveTexture(GL_TEXTURE0 + unit);
@@ -157,9 +153,12 @@ void object_batch_set_uniforms(const struct program_uniforms *p, const void *arg
     if (batch_moves(b)) {
         glUniform4fv(program_uniform(p, "u_motion"), MOTION_VECS * b->count, &motion[0][0][0]);
     }
-    /* the integrated single pass's cull (CHORD_CULL) */
+    /* the integrated single pass's cull (CHORD_CULL): only the programs that read it */
     GLint chords = program_uniform(p, "u_chord_ball");
     if (chords >= 0) {
+        float chord_ball[OBJECT_BATCH_MAX][4], chord_plane[OBJECT_BATCH_MAX][4], chord_scale[OBJECT_BATCH_MAX][2];
+        for (int i = 0; i < b->count; i++)
+            chord_cull_pack(&s->objects[b->object[i]], chord_ball[i], chord_plane[i], chord_scale[i]);
         glUniform4fv(chords, b->count, &chord_ball[0][0]);
         glUniform4fv(program_uniform(p, "u_chord_plane"), b->count, &chord_plane[0][0]);
         glUniform2fv(program_uniform(p, "u_chord_scale"), b->count, &chord_scale[0][0]);
