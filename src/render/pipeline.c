@@ -127,6 +127,11 @@ int pipeline_choose(const struct renderer *r, int per_segment_hook, struct pipel
         return -1;
     if (single) {
         out->kind = PIPELINE_RUN_SINGLE;
+        if (orbit_crossings_apply(r)) {
+            size_t used = strlen(out->why);
+            snprintf(out->why + used, sizeof out->why - used, "; the objects' planes pass through the mass: "
+                     "each met where the orbits cross it");
+        }
         return 0;
     }
     char fused_why[200];

@@ -24,6 +24,7 @@ struct frame_args {
     const struct renderer *r;
     struct object_batch batch;
     enum frame_output output;
+    int crossings;                /* orbit_crossings_apply */
 };
 
 static void set_frame(const struct program_uniforms *p, const void *arg)
@@ -35,6 +36,8 @@ static void set_frame(const struct program_uniforms *p, const void *arg)
         sky_colour_set_uniforms(p, r, UNIT_FRAME_SKY);
     if (r->exact_orbits) {
         orbit_set_uniforms(p, r, 0);
+        if (a->crossings)
+            orbit_crossings_set_uniforms(p, r);
         return;
     }
     integrate_set_uniforms(p, r->scene);
@@ -61,7 +64,7 @@ int stage_frame(struct renderer *r, enum frame_output output, struct error *e)
 {
     struct raystate *rs = &r->rs;
     const struct scene *s = r->scene;
-    struct frame_args a = {.r = r, .output = output};
+    struct frame_args a = {.r = r, .output = output, .crossings = orbit_crossings_apply(r)};
     if (frame_batch(r, &a.batch, e) != 0)
         return -1;
     char batch[4096];
@@ -76,7 +79,8 @@ int stage_frame(struct renderer *r, enum frame_output output, struct error *e)
         files[n++] = "orbit_table.glsl";
     files[n++] = "shade.glsl";
     files[n++] = "stage_intersect.glsl";
-    files[n++] = r->exact_orbits ? "stage_orbit_frame.glsl" : "stage_integrate.glsl";
+    files[n++] = !r->exact_orbits ? "stage_integrate.glsl" : a.crossings ? "stage_orbit_crossings.glsl"
+                                                                         : "stage_orbit_frame.glsl";
     if (!r->exact_orbits) {
         files[n++] = "segment_end.glsl";
         files[n++] = "stage_frame.glsl";

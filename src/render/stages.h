@@ -161,6 +161,12 @@ int stage_frame(struct renderer *r, enum frame_output output, struct error *e);
 /* Every object of the scene as the single pass's batch; -1 with e saying why they do not fit
  * (ERROR_INPUT: only render.pipeline = single asks for it where they do not). */
 int frame_batch(const struct renderer *r, struct object_batch *b, struct error *e);
+/* Exact orbits in one pass where every object is flat, static and lies in a plane through the mass,
+ * inside a bounding sphere about the mass that holds the camera (orbit_crossings.c): each object is
+ * met where the orbit crosses its plane (stage_orbit_crossings.glsl), not chord by chord. */
+int orbit_crossings_apply(const struct renderer *r);
+/* Its uniforms: each object's unit normal. */
+void orbit_crossings_set_uniforms(const struct program_uniforms *p, const struct renderer *r);
 int stage_terminate(struct renderer *r, int segment, struct error *e);
 /* Retire finished rays (all: every ray) into the result textures; mark them for early-z. */
 int stage_retire(struct renderer *r, int all, struct error *e);

@@ -291,11 +291,11 @@ check "starflight backends agree" 0 "outcome differs: 0 of" -- sh -c "$BT render
 # info --shader: the stage's fragment shader as the GL compiles it for the scene, which glslang's
 # GLSL ES 1.00 front end (stricter than Mesa's: no line continuation) compiles too; without MRT, as
 # no draw-buffers extension is known to glslang
-for case in "frame lorenz" "orbit_frame schwarzschild" "integrate lorenz" "intersect three_ships" "orbit neutron_star" \
+for case in "frame lorenz" "orbit_frame schwarzschild" "orbit_crossings demo" "integrate lorenz" "intersect three_ships" "orbit neutron_star" \
             "terminate potential" "sky demo" "setup refraction"; do
     set -- $case
     check "info --shader $1 ($2) compiles" 0 "^compiled$" -- sh -c "$BT info --shader $1 --scene assets/scenes/$2.scene \
-        --set render.pipeline=\$( [ $1 = frame ] || [ $1 = orbit_frame ] && echo auto || echo multipass) --no-mrt \
+        --set render.pipeline=\$( [ $1 = frame ] || [ $1 = orbit_frame ] || [ $1 = orbit_crossings ] && echo auto || echo multipass) --no-mrt \
         > '$TMP/stage.frag' && head -1 '$TMP/stage.frag' | grep -q '^#version 100$' && grep -q 'void main' '$TMP/stage.frag' \
         && glslangValidator -S frag '$TMP/stage.frag' > '$TMP/glslang.log' && echo compiled || cat '$TMP/glslang.log'"
 done
@@ -316,7 +316,7 @@ check "dumped programs compile and draw" 0 "^results: [1-9][0-9]* ok, 0 other$" 
     END { printf \"results: %d ok, %d other\\n\", ok, other }'"
 check "BT_SHADER_DUMP into a missing directory" 0 "BT_SHADER_DUMP: cannot write $TMP/no_such_dir/.*-stage_orbit_frame.frag: No such file" -- \
     env BT_SHADER_DUMP="$TMP/no_such_dir" $BT render --scene assets/scenes/schwarzschild.scene --size 16x12 --out "$TMP/undumped.png"
-check "info --shader unknown stage" 2 "no stage 'integrator' \(stages: fill, frame, integrate, intersect, orbit, orbit_frame," -- \
+check "info --shader unknown stage" 2 "no stage 'integrator' \(stages: fill, frame, integrate, intersect, orbit, orbit_crossings, orbit_frame," -- \
     $BT info --shader integrator --scene $S
 check "info --shader a stage not run" 1 "runs no program of stage_integrate.glsl \(single pass" -- \
     $BT info --shader integrate --scene assets/scenes/lorenz.scene

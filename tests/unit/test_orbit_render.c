@@ -69,6 +69,10 @@ static void test_single_pass_bit_identical(void **state)
         static struct scene s;
         static const char *const sets[] = {"render.method=orbit_table", "render.step_control=fixed", NULL};
         hc_load(&s, scenes[k], 64, 48, sets);
+        /* demo's disk lies in a plane through the mass, where the single pass meets it at the
+         * plane's crossings, not chord by chord (test_orbit_crossings.c compares the two): a
+         * bounding sphere 1e-9 of its radius off the mass keeps the chord walk compared here */
+        s.render.bound_center = v3_add(s.render.bound_center, v3(0.0, 0.0, 1e-9 * s.render.bound_radius));
         for (int sky_only = 0; sky_only < 2; sky_only++) {
             if (sky_only)
                 s.n_objects = 0;
