@@ -20,17 +20,20 @@ const float CROSSING_CHORD = 1e-3;
 const int MAX_PLANE_CROSSINGS = 16;
 const float HALF_TURN = 3.14159265358979;
 
-// The first angle in [0, pi) where the orbit's plane meets the plane through the mass with this
+// The first angle in [0, pi] where the orbit's plane meets the plane through the mass with this
 // normal; beyond any orbit's end where the two planes are one (no crossing to speak of, as a
 // chord inside a disk's plane meets nothing).
 float first_crossing(orbit_ray ray, vec3 normal)
 {
     float across_e1 = dot(normal, ray.e1);
     float across_e2 = dot(normal, ray.e2);
-    float phi = atan(-across_e1, across_e2);
-    float folded = phi < 0.0 ? phi + HALF_TURN : phi;
+    // the angle of (across_e2, -across_e1), or of its opposite, whichever lies in the upper half
+    // plane (accurate_angle, common.glsl: Mesa's atan is off by up to 3.3e-6 rad)
+    float up = abs(across_e1);
+    float right = across_e1 <= 0.0 ? across_e2 : -across_e2;
+    float phi = accurate_angle(up, right);
     bool same_plane = across_e1 == 0.0 && across_e2 == 0.0;
-    return same_plane ? 1e30 : folded;
+    return same_plane ? 1e30 : phi;
 }
 
 void main()
@@ -79,11 +82,18 @@ void main()
     // without a hit, each ray's outcome is its side of the critical angle, its sky along its
     // direction at infinity (as stage_orbit_frame.glsl's ORBIT_NOTHING_TO_MEET)
     bool escapes = ray.side_first < 0.5;
+    vec3 escape = orbit_direction_at_infinity(ray);
+#ifdef FRAME_COLOUR
+    // a captured ray is black whatever its direction
+    vec3 direction = escape;
+#else
     vec2 q_end = orbit_at(ray, 1.0);
     vec3 fallen = orbit_tangent(ray, q_end, 1.0);
-    vec3 escape = orbit_direction_at_infinity(ray);
     vec3 direction = escapes ? escape : fallen;
+#endif
     vec4 end_image = vec4(0.0, 0.0, 0.0, escapes ? CODE_SKY : CODE_CAPTURED);
+    // computed for every ray, then selected: see the precision note in common.glsl (shaded inside
+    // an `if`, llvmpipe's sky directions came out a hundred times less precise)
     vec4 new_hit, new_image;
     intersect_shade(best, hit_a, hit_b, new_hit, new_image);
     // the depth of a hit: the orbit's fraction there, in its chords (docs/DUMP.md)
