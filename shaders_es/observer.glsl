@@ -63,6 +63,42 @@ float static_lapse(vec3 p)
     return sqrt(max(1.0 - 2.0 * u_gravity_mass / r, 0.0));
 }
 
+#ifdef ACCRETION
+// physics/accretion.c's keplerian_emitter_shift: 1 / (u^t (1 - Omega lambda_z)) of matter on a
+// circular orbit at p about the mass, in the plane with unit normal axis (counterclockwise about
+// it), for light reaching the camera along the traced direction d (the photon travels along -d).
+// The static emitter's factor is static_lapse(p); that of a static observer at the camera is
+// applied by the caller.
+float keplerian_shift(vec3 p, vec3 d, vec3 axis)
+{
+    vec3 y = p - u_gravity_center;
+    float r = max(length(y), 1e-9);
+    vec3 radial = y / r;
+    vec3 dir = normalize(d);
+    float along = dot(dir, radial);
+    float across_length = length(dir - along * radial);
+    float safe_across = max(across_length, 1e-30);
+    // Binet's first integral: (du/dphi)^2 + u^2 (1 - 2 M u) = 1 / b^2
+    float u = 1.0 / r;
+    float w = -u * along / safe_across;
+    float b = inversesqrt(max(w * w + u * u * (1.0 - 2.0 * u_gravity_mass * u), 1e-30));
+    // the photon's angular momentum over its energy, about the axis
+    float lambda_z = b * dot(cross(radial, -dir), axis) / safe_across;
+    float omega = sqrt(u_gravity_mass * u * u * u);
+    float inverse_ut = sqrt(max(1.0 - 3.0 * u_gravity_mass * u, 0.0));
+    return inverse_ut / (1.0 - omega * lambda_z);
+}
+
+// physics/accretion.c's thin_disk_temperature: peak at r = 49/36 r_in, 0 inside r_in.
+float thin_disk_temperature(float peak, float r_in, float r)
+{
+    float r_peak = 1.3611111111111112 * r_in;
+    float ratio = r_in / max(r, 1e-30);
+    float profile = pow(r_peak / max(r, 1e-30), 0.75) * pow(max(7.0 * (1.0 - sqrt(ratio)), 0.0), 0.25);
+    return r > r_in ? peak * profile : 0.0;
+}
+#endif
+
 // The display colour of a black body at its apparent temperature: texel centres at
 // (0.5 + u_blackbody_texels * (ln T - ln T_min)) / size, clamped to the table's ends.
 vec3 blackbody_colour(float temperature)

@@ -44,6 +44,11 @@ bool clock_face_mark(vec2 uv, float turns)
 #ifdef DOPPLER_COLOUR
 // K; above 0 the surface's emission is a black body whose luminance the RGB emission gives
 float surface_emission_temperature;
+#ifdef ACCRETION
+// above 0: the surface is an accretion disk with this inner radius (physics/accretion.h), its
+// temperature the peak of a thin disk's profile, its matter on Keplerian orbits about its normal
+float surface_accretion_inner;
+#endif
 #endif
 
 struct surface_material {
@@ -80,7 +85,18 @@ vec3 shade(vec3 p, vec3 normal, vec2 uv, vec3 ray_direction, surface_material m)
 #else
     float emitted_doppler = doppler_at_camera * static_lapse(p);
 #endif
-    vec3 glow = rgb_luminance(m.emission) * blackbody_colour(surface_emission_temperature * emitted_doppler);
+    float emitted_temperature = surface_emission_temperature;
+#ifdef ACCRETION
+    // matter on its orbit, at its place's temperature (computed for every surface, then selected:
+    // see the precision note in common.glsl)
+    bool accretes = surface_accretion_inner > 0.0;
+    float orbiting_doppler = doppler_at_camera * keplerian_shift(p, ray_direction, normal);
+    float disk_temperature = thin_disk_temperature(surface_emission_temperature, surface_accretion_inner,
+                                                   length(p - u_gravity_center));
+    emitted_doppler = accretes ? orbiting_doppler : emitted_doppler;
+    emitted_temperature = accretes ? disk_temperature : emitted_temperature;
+#endif
+    vec3 glow = rgb_luminance(m.emission) * blackbody_colour(emitted_temperature * emitted_doppler);
     bool glows = surface_emission_temperature > 0.0;
     black_bodies += glows ? glow : vec3(0.0);
     color -= glows ? m.emission : vec3(0.0);

@@ -507,6 +507,9 @@ void intersect_shade(candidate best, vec3 a, vec3 b, out vec4 new_hit, out vec4 
     vec3 p = mix(a, b, best.t);
 #ifdef DOPPLER_COLOUR
     surface_emission_temperature = emitter.x;
+#ifdef ACCRETION
+    surface_accretion_inner = emitter.y;
+#endif
 #endif
 #ifdef CLOCKS
     // the clock shows its proper time when the light left it: scene time t_obs - |p - camera| on

@@ -1,6 +1,7 @@
 #include "ref/shade_cpu.h"
 #include "scene/camera.h"
 #include "io/png_io.h"
+#include "physics/accretion.h"
 #include "physics/blackbody.h"
 #include "physics/relativity.h"
 #include "results/dump.h"
@@ -106,12 +107,12 @@ static vec3d blackbody_colour(const struct cpu_materials *mat, double temperatur
 
 /* The frequency ratios of observer.glsl: static emitters at p, the observer moving and at rest
  * in the static frame at the camera. */
+static double gravity_mass(const struct scene *s) { return s->model.type == MODEL_SCHWARZSCHILD ? s->model.mass : 0.0; }
+
 static double static_lapse(const struct scene *s, vec3d p)
 {
-    if (s->model.type != MODEL_SCHWARZSCHILD)
-        return 1.0;
     double r = fmax(v3_len(v3_sub(p, s->model.center)), 1e-9);
-    return sqrt(fmax(1.0 - 2.0 * s->model.mass / r, 0.0));
+    return sqrt(fmax(1.0 - 2.0 * gravity_mass(s) / r, 0.0));
 }
 
 static double doppler_at_camera(const struct scene *s, vec3d view) { return camera_doppler(s, view); }
@@ -156,9 +157,18 @@ static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray
     vec3d black_bodies = v3(0.0, 0.0, 0.0);
     /* the light the surface sends itself */
     double emitted = camera_doppler * (moving ? emission_doppler(motion.beta, v_out) : static_lapse(s, ray->hit));
+    double temperature = m->temperature;
+    if (m->accretion) {
+        /* matter on its orbit about the mass, at its place's temperature (physics/accretion.h) */
+        const struct object *o = &s->objects[ray->outcome];
+        vec3d from_mass = v3_sub(ray->hit, s->model.center);
+        emitted = camera_doppler * keplerian_emitter_shift(gravity_mass(s), from_mass, ray->velocity,
+                                                           v3_normalize(o->normal));
+        temperature = thin_disk_temperature(m->temperature, o->inner_radius, v3_len(from_mass));
+    }
     if (doppler && m->temperature > 0.0) {
         color = v3_sub(color, m->emission);
-        black_bodies = v3_scale(blackbody_colour(mat, m->temperature * emitted), rgb_luminance(m->emission));
+        black_bodies = v3_scale(blackbody_colour(mat, temperature * emitted), rgb_luminance(m->emission));
     }
     for (int i = 0; i < s->n_lights; i++) {
         vec3d to_light = v3_normalize(v3_sub(s->lights[i].position, ray->hit));

@@ -89,14 +89,16 @@ static void chord_cull_pack(const struct object *o, float ball[4], float plane[4
     scale[1] = (float)(CHORD_CULL_POSITION_MARGIN * (fabs(c.x) + fabs(c.y) + fabs(c.z)));
 }
 
-void intersect_pack_material(const struct material *m, int object_id, float out[MATERIAL_VECS][4])
+void intersect_pack_material(const struct object *o, int object_id, float out[MATERIAL_VECS][4])
 {
+    const struct material *m = &o->material;
     pack3(out[0], m->color, m->checker);
     pack3(out[1], m->emission, object_id);
     out[2][0] = (float)m->ambient, out[2][1] = (float)m->diffuse;
     out[2][2] = (float)m->specular, out[2][3] = (float)m->shininess;
     pack3(out[3], m->checker_color, m->clock_period);
-    out[4][0] = (float)m->temperature, out[4][1] = out[4][2] = out[4][3] = 0.0f;
+    out[4][0] = (float)m->temperature, out[4][2] = out[4][3] = 0.0f;
+    out[4][1] = m->accretion ? (float)o->inner_radius : 0.0f;    /* shade.glsl: an accretion disk's inner edge */
 }
 
 /* beta, gamma and the rest frame's origin (shaders_es/stage_intersect.glsl); gamma 1 at rest */
@@ -116,6 +118,14 @@ static int batch_moves(const struct object_batch *b)
         if (object_motion(&b->r->scene->objects[b->object[i]], &m))
             return 1;
     return 0;
+}
+
+static int batch_accretes(const struct object_batch *b)
+{
+    int accretes = 0;
+    for (int i = 0; i < b->count; i++)
+        accretes |= b->r->scene->objects[b->object[i]].material.accretion;
+    return accretes;
 }
 
 static int batch_clocks(const struct object_batch *b)
@@ -140,7 +150,7 @@ void object_batch_set_uniforms(const struct program_uniforms *p, const void *arg
         object_rest_geometry(o, &rest);
         pack_geometry(&rest, geometry[i]);
         pack_motion(o, motion[i]);
-        intersect_pack_material(&o->material, b->object[i], material[i]);
+        intersect_pack_material(o, b->object[i], material[i]);
         units[i] = FIRST_OBJECT_UNIT;
         if (o->material.texture >= 0) {
             glActiveTexture(GL_TEXTURE0 + unit);
@@ -206,6 +216,8 @@ int object_batch_defines(const struct object_batch *b, char *out, size_t len)
         used += (size_t)snprintf(out + used, len - used, "\n#define MOVING_OBJECTS 1");
     if (batch_clocks(b) && used < len)
         used += (size_t)snprintf(out + used, len - used, "\n#define CLOCKS 1");
+    if (batch_accretes(b) && used < len)
+        used += (size_t)snprintf(out + used, len - used, "\n#define ACCRETION 1");
     if (textured && used < len) {
         used += (size_t)snprintf(out + used, len - used, "\n#define TEXTURED 1\n#define BATCH_TEXTURES");
         for (int i = 0; i < b->count && used < len; i++)

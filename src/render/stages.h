@@ -181,6 +181,6 @@ int polygons_load(struct renderer *r, struct error *e);
 void polygons_release(struct renderer *r);
 int stage_polygons(struct renderer *r, struct error *e);
 /* One object's material vectors as the intersection and polygon shaders read them. */
-void intersect_pack_material(const struct material *m, int object_id, float out[5][4]);
+void intersect_pack_material(const struct object *o, int object_id, float out[5][4]);
 
 #endif

@@ -76,6 +76,8 @@ struct material {
     vec3d checker_color;     /* second colour of the checkerboard */
     double clock_period;     /* > 0: a clock face in texture space, one turn per period of proper time */
     double temperature;      /* K; > 0: the emission is a black body, its luminance from `emission` */
+    int accretion;           /* a disk of matter on Keplerian orbits about the mass, hottest at
+                                `temperature` (physics/accretion.h) */
 };
 
 /* Geometry of one object. Which fields are used depends on the primitive. */

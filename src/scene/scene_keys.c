@@ -463,6 +463,7 @@ const struct conf_key scene_keys[] = {
     {SECTION_OBJECT, "checker", CONF_NUMBER, NON_NEGATIVE, .offset = AT_OBJECT(material.checker)},
     {SECTION_OBJECT, "checker_color", CONF_COLOR, COLOR_RANGE, .offset = AT_OBJECT(material.checker_color)},
     {SECTION_OBJECT, "temperature", CONF_NUMBER, TEMPERATURE_RANGE, .offset = AT_OBJECT(material.temperature)},
+    {SECTION_OBJECT, "accretion", CHOICE(switch_names, AT_OBJECT(material.accretion)), .applies = FOR_PRIM(PRIM_DISK)},
     {SECTION_OBJECT, "clock_period", CONF_NUMBER, .lo = 0.0, .hi = 1e9, .offset = AT_OBJECT(material.clock_period)},
     {SECTION_OBJECT, "velocity", CONF_VECTOR, ANY, .offset = AT_OBJECT(velocity)},
     {SECTION_OBJECT, "frame_origin", CONF_VECTOR, ANY, .set = set_frame_origin},

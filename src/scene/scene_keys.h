@@ -11,6 +11,9 @@
 #define SCENE_MAX_FILE_BYTES (1L << 20)
 /* Rectangle half-edges may deviate from a right angle by this much (cosine of their angle). */
 #define SCENE_RECT_ORTHO_TOL 1e-6
+/* An accretion disk's centre may sit this far (relative to its radius) from the mass: roundings of
+ * the scene's numbers. */
+#define SCENE_ACCRETION_CENTRE_TOL 1e-9
 /* Capacity of per-key bookkeeping arrays; the table is checked against it at compile time. */
 #define SCENE_KEY_TABLE_MAX 128
 

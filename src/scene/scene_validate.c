@@ -106,6 +106,32 @@ static int validate_render(const struct scene *s, struct error *err)
     return 0;
 }
 
+/* accretion = on: matter on circular orbits about the mass (physics/accretion.h) */
+static int validate_accretion(const struct scene *s, const struct object *o, struct error *err)
+{
+    int schwarzschild = s->model.type == MODEL_SCHWARZSCHILD;
+    double mass = schwarzschild ? s->model.mass : 0.0;
+    if (!schwarzschild && s->model.type != MODEL_FLAT)
+        return invalid(s, err, "[object %s]: accretion = on puts matter on orbits about a black hole; model %s has "
+                       "none (model.type = schwarzschild, or flat, where the matter rests)", o->name,
+                       model_name(s->model.type));
+    if (!(o->material.temperature > 0.0))
+        return invalid(s, err, "[object %s]: accretion = on needs the disk's hottest temperature: set temperature "
+                       "(K)", o->name);
+    if (v3_dot(o->velocity, o->velocity) > 0.0)
+        return invalid(s, err, "[object %s]: an accretion disk's matter orbits the mass; it takes no velocity",
+                       o->name);
+    double off = v3_len(v3_sub(o->center, s->model.center));
+    if (schwarzschild && !(off <= SCENE_ACCRETION_CENTRE_TOL * o->radius))
+        return invalid(s, err, "[object %s]: an accretion disk orbits the mass: its center must be model.center "
+                       "(it is %g away)", o->name, off);
+    if (!(o->inner_radius > 3.0 * mass) || !(o->inner_radius > 0.0))
+        return invalid(s, err, "[object %s]: accretion = on with inner_radius %g: matter orbits the mass only "
+                       "beyond the photon sphere, 3M = %g, and stably beyond 6M = %g; raise inner_radius (above 0)",
+                       o->name, o->inner_radius, 3.0 * mass, 6.0 * mass);
+    return 0;
+}
+
 static int validate_objects(const struct scene *s, struct error *err)
 {
     for (int i = 0; i < s->n_objects; i++) {
@@ -142,6 +168,8 @@ static int validate_objects(const struct scene *s, struct error *err)
         if (speed > 0.0 && !model_is_straight(&s->model))
             return invalid(s, err, "[object %s] moves, but light is bent here (model %s): moving objects are "
                            "traced in flat space only", o->name, model_name(s->model.type));
+        if (o->material.accretion && validate_accretion(s, o, err) != 0)
+            return -1;
         if (o->material.texture >= s->n_textures)
             return invalid(s, err, "[object %s]: texture index %d, but the scene has %d textures",
                            o->name, o->material.texture, s->n_textures);
