@@ -1,5 +1,5 @@
 /* Anti-aliasing (render.samples): the cost of N rays a pixel against the error left, for a scene
- * with edges, lensed textures and a shadow (demo.scene), against 64 rays a pixel. */
+ * with edges, a lensed disk and a shadow (demo.scene), against 64 rays a pixel. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
