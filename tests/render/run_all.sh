@@ -335,6 +335,8 @@ check "bench sections" 0 "^14 sections, table1 21 rows, pipelines 23 rows, figur
 # the disk's target: demo's view with one ray a pixel, timed warm, met or missed said
 check "bench disk target" 0 "^Target: demo.scene's view \(the disk around the hole\) at [0-9]+x[0-9]+, one ray a pixel, .* in at most 30 ms: \*\*(met|missed)\*\* \([0-9]+ ms\)\.$" -- \
     grep "^Target: demo.scene's view" "$TMP/bench/BENCH.md"
+check "bench accretion cost" 0 "^The accretion disk's light \(each point's orbit and temperature, docs/RELATIVITY.md\) costs [-+][0-9.]+ ms of that: [0-9.]+ ms with the disk's matter at rest at one temperature\.$" -- \
+    grep "^The accretion disk's light" "$TMP/bench/BENCH.md"
 # the time a user waits: fresh render processes timed against the warm frame, both targets said
 check "bench wait targets" 0 "^Targets for the fresh render: .* \*\*(met|MISSED)\*\*; .* \*\*(met|MISSED)\*\*" -- \
     grep '^Targets for the fresh render' "$TMP/bench/BENCH.md"
