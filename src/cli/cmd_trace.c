@@ -7,6 +7,7 @@
 #include "ref/shade_cpu.h"
 #include "ref/straight.h"
 #include "physics/orbit_table.h"
+#include "physics/accretion.h"
 #include "scene/camera.h"
 #include <math.h>
 #include <stdio.h>
@@ -82,6 +83,21 @@ static void print_json(const struct scene *s, long px, long py, const char *engi
         print_string(s->objects[rec->outcome].name);
         printf(",\n");
         print_vec("hit", rec->hit, ",");
+        const struct object *o = &s->objects[rec->outcome];
+        if (o->material.accretion) {
+            /* the frequency ratio of the disk's light at the camera: its matter's orbit, the
+             * static observer's gravitational shift and the camera's motion (docs/RELATIVITY.md);
+             * the photon's L_z / E from the ray's final position and direction, a point of the same
+             * orbit (an exact orbit's ray may end at its chord's end, past the hit) */
+            vec3d hit = v3(rec->hit[0], rec->hit[1], rec->hit[2]);
+            vec3d end = v3(rec->position[0], rec->position[1], rec->position[2]);
+            vec3d along = v3(rec->direction[0], rec->direction[1], rec->direction[2]);
+            double mass = s->model.type == MODEL_SCHWARZSCHILD ? s->model.mass : 0.0;
+            double lambda_z = photon_lambda_z(mass, v3_sub(end, s->model.center), along, v3_normalize(o->normal));
+            double g = camera_doppler(s, camera_view_direction(s, (int)px, (int)py)) *
+                       keplerian_emitter_shift(mass, v3_len(v3_sub(hit, s->model.center)), lambda_z);
+            printf("  \"g\": %.9g,\n", g);
+        }
     }
     printf("  \"depth\": %.9g,\n  \"steps\": %u,\n", rec->depth, rec->steps);
     printf("  \"color\": [%u, %u, %u],\n", rec->rgba[0], rec->rgba[1], rec->rgba[2]);

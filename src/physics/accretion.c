@@ -11,25 +11,30 @@ double thin_disk_temperature(double peak_k, double r_in, double r)
     return peak_k * pow(r_peak / r, 0.75) * pow(7.0 * (1.0 - sqrt(r_in / r)), 0.25);
 }
 
-double keplerian_emitter_shift(double mass, vec3d y, vec3d d, vec3d axis)
+double photon_lambda_z(double mass, vec3d y, vec3d d, vec3d axis)
 {
     double r = v3_len(y);
-    if (!(r > 3.0 * mass) || !(r > 0.0))
+    vec3d dir = v3_normalize(d);
+    if (!(r > 0.0))
         return 0.0;
     vec3d radial = v3_scale(y, 1.0 / r);
-    vec3d dir = v3_normalize(d);
     double along = v3_dot(dir, radial);
-    vec3d across = v3_sub(dir, v3_scale(radial, along));
-    double across_length = v3_len(across);
+    double across_length = v3_len(v3_sub(dir, v3_scale(radial, along)));
     if (!(across_length > 0.0))
-        return sqrt(1.0 - 3.0 * mass / r);    /* a radial photon carries no angular momentum */
-    /* Binet's first integral: (du/dphi)^2 + u^2 (1 - 2 M u) = 1 / b^2 */
+        return 0.0;    /* a radial photon carries no angular momentum */
     double u = 1.0 / r;
     double w = -u * along / across_length;
     double b = 1.0 / sqrt(w * w + u * u * (1.0 - 2.0 * mass * u));
-    /* the photon's angular momentum: y x (-d), of length r b E-units, along the orbit's normal */
+    /* y x (-d) has length r |d| sin(angle): its unit vector is the orbit plane's normal, the way
+     * the photon turns about the mass */
     vec3d spin = v3_cross(radial, v3_scale(dir, -1.0));
-    double lambda_z = b * v3_dot(spin, axis) / across_length;
-    double omega = sqrt(mass * u * u * u);
-    return sqrt(1.0 - 3.0 * mass * u) / (1.0 - omega * lambda_z);
+    return b * v3_dot(spin, axis) / across_length;
+}
+
+double keplerian_emitter_shift(double mass, double r, double lambda_z)
+{
+    if (!(r > 3.0 * mass) || !(r > 0.0))
+        return 0.0;
+    double omega = sqrt(mass / (r * r * r));
+    return sqrt(1.0 - 3.0 * mass / r) / (1.0 - omega * lambda_z);
 }

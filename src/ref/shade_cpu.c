@@ -162,8 +162,8 @@ static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray
         /* matter on its orbit about the mass, at its place's temperature (physics/accretion.h) */
         const struct object *o = &s->objects[ray->outcome];
         vec3d from_mass = v3_sub(ray->hit, s->model.center);
-        emitted = camera_doppler * keplerian_emitter_shift(gravity_mass(s), from_mass, ray->velocity,
-                                                           v3_normalize(o->normal));
+        double lambda_z = photon_lambda_z(gravity_mass(s), from_mass, ray->velocity, v3_normalize(o->normal));
+        emitted = camera_doppler * keplerian_emitter_shift(gravity_mass(s), v3_len(from_mass), lambda_z);
         temperature = thin_disk_temperature(m->temperature, o->inner_radius, v3_len(from_mass));
     }
     if (doppler && m->temperature > 0.0) {

@@ -116,6 +116,16 @@ for ray in "neutron_star 160 120" "neutron_star 40 40" "schwarzschild 170 100" "
         "$BT trace --scene assets/scenes/$sc.scene --pixel $px $py > $TMP/orbit_gpu.json && $BT trace --scene assets/scenes/$sc.scene --pixel $px $py --engine cpu > $TMP/orbit_cpu.json && awk -f tests/render/polyline_gap.awk $TMP/orbit_cpu.json $TMP/orbit_gpu.json"
 done
 check "trace doppler ahead" 0 "\"doppler\": 1\.99" -- $BT trace --scene assets/scenes/starflight.scene --size 32x24 --pixel 16 12
+# the accretion disk's frequency ratio g at the hit: above 1 where the matter comes towards the
+# camera (left), below 1 where it goes away, the same on both engines to float roundings
+for side in "150 140 approaching 1" "330 140 receding 0"; do
+    set -- $side
+    check "trace accretion g, $3 side" 0 "^agree $4\$" -- sh -c "$BT trace --scene assets/scenes/demo.scene --pixel $1 $2 \
+        --engine gpu | sed -n 's/^  \"g\": \(.*\),\$/\1/p' > $TMP/g_gpu && $BT trace --scene assets/scenes/demo.scene \
+        --pixel $1 $2 --engine cpu | sed -n 's/^  \"g\": \(.*\),\$/\1/p' > $TMP/g_cpu && \
+        awk -v a=\$(cat $TMP/g_gpu) -v b=\$(cat $TMP/g_cpu) 'BEGIN { d = a / b - 1; if (d < 0) d = -d;
+        print (d <= 1e-5 ? \"agree\" : \"differ \" a \" \" b), (b > 1) }'"
+done
 check "trace doppler behind" 0 "\"doppler\": 0\.50" -- $BT trace --scene assets/scenes/starflight.scene --size 32x24 --pixel 16 12 --set "camera.look_at=0 0 1"
 check "trace colour" 0 "\"color\": \[[0-9]+, [0-9]+, [0-9]+\]," -- $BT trace --scene $S --size 32x24 --pixel 16 12 --engine cpu
 check "trace json" 0 "\"outcome\": \"(object|sky)\"" -- $BT trace --scene $S --size 32x24 --pixel 16 12
