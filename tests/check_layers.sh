@@ -46,5 +46,16 @@ for dir in src/*/; do
         done
     done
 done
+# Models behind their table (physics/model.h, struct model_ops): no file outside src/physics tests
+# a model's type, so that a new model goes where docs/ARCHITECTURE.md says. Two files name each
+# model on purpose: scene_keys.c, whose key table says which model each key applies to, and the
+# bench's float kernel (bench/cpu_limit.c), which holds its own copy of each force law.
+tests_of_models=$(grep -nE '(==|!=) *MODEL_[A-Z]+|MODEL_[A-Z]+ *(==|!=)|case MODEL_[A-Z]+' \
+    $(find src -name '*.[ch]' ! -path 'src/physics/*' ! -name scene_keys.c ! -name cpu_limit.c) |
+    grep -v 'MODEL_COUNT' || true)
+if [ -n "$tests_of_models" ]; then
+    echo "$tests_of_models" | sed 's/$/: tests a model'"'"'s type outside src\/physics: ask its model_ops (physics\/model.h)/'
+    wrong=$((wrong + $(echo "$tests_of_models" | wc -l)))
+fi
 echo "layers: $checked includes checked, $wrong wrong"
 [ "$wrong" = 0 ]

@@ -145,7 +145,7 @@ static void apply_config(struct scene *s, const struct pareto_config *c)
  * only for Schwarzschild. */
 static int configs_of(const struct scene *base)
 {
-    return base->model.type == MODEL_SCHWARZSCHILD ? N_CONFIGS : N_CONFIGS - N_ORBIT_CONFIGS;
+    return model_ops_of(base->model.type)->exact_orbits ? N_CONFIGS : N_CONFIGS - N_ORBIT_CONFIGS;
 }
 
 /* S = BASE in configuration C, validated; 0, or -1 with e naming the configuration and the scene. */

@@ -92,7 +92,7 @@ static void print_json(const struct scene *s, long px, long py, const char *engi
             vec3d hit = v3(rec->hit[0], rec->hit[1], rec->hit[2]);
             vec3d end = v3(rec->position[0], rec->position[1], rec->position[2]);
             vec3d along = v3(rec->direction[0], rec->direction[1], rec->direction[2]);
-            double mass = s->model.type == MODEL_SCHWARZSCHILD ? s->model.mass : 0.0;
+            double mass = model_gravity_mass(&s->model);
             double lambda_z = photon_lambda_z(mass, v3_sub(end, s->model.center), along, v3_normalize(o->normal));
             double g = camera_doppler(s, camera_view_direction(s, (int)px, (int)py)) *
                        keplerian_emitter_shift(mass, v3_len(v3_sub(hit, s->model.center)), lambda_z);

@@ -112,7 +112,7 @@ static void hud_view_of(struct kiosk *k, struct hud_view *v)
     v->explanation = s->description;
     v->has_speed = 1;
     v->speed = k->state.speed;
-    v->has_mass = s->model.type == MODEL_SCHWARZSCHILD;
+    v->has_mass = model_ops_of(s->model.type)->has_mass;
     v->mass = k->state.mass;
     v->camera_distance = v3_len(v3_sub(s->camera.position, s->model.center));
     static const char *const effects[] = {"geometry", "Doppler colour", "Doppler colour + searchlight"};
@@ -531,7 +531,7 @@ static int preflight(struct kiosk *k, struct error *e)
         /* a black hole whose mass the [mass] knob sets directly (no [kiosk] mass_key): at the knob's
          * largest mass its shadow spans at most the share of the view a scene's [kiosk] may reach */
         const struct scene *sc = &k->scenes[i];
-        if (sc->model.type == MODEL_SCHWARZSCHILD && sc->kiosk.mass.key[0] == '\0') {
+        if (model_ops_of(sc->model.type)->has_mass && sc->kiosk.mass.key[0] == '\0') {
             *trial = *sc;
             trial->model.mass = c->mass.max;
             double across = scene_shadow_diameter_deg(trial);

@@ -136,7 +136,7 @@ int kiosk_state_apply(const struct kiosk_state *st, const struct scene *base, st
     if (!ms->key[0])
         out->observer.velocity = v3_scale(view, st->speed);
     out->observer.effects = kiosk_state_effects(st, base);
-    if (!mm->key[0] && out->model.type == MODEL_SCHWARZSCHILD)
+    if (!mm->key[0] && model_ops_of(out->model.type)->has_mass)
         out->model.mass = st->mass;
     const struct knob_mapping *maps[2] = {ms, mm};
     const double params[2] = {st->speed_param, st->mass_param};

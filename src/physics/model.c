@@ -2,6 +2,7 @@
  * shaders_es/model_*.glsl must compute the same functions; change both together. */
 #include "physics/model.h"
 #include "physics/dormand_prince.h"
+#include "physics/escape.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -15,19 +16,42 @@
 static const double noise_dir[3][3] = {{0.8, 0.6, 0.0}, {0.0, 0.8, 0.6}, {0.6, 0.0, 0.8}};
 static const double noise_phase[3] = {0.0, 1.7, 4.1};
 
-const char *model_name(enum model_type t)
+static double schwarzschild_gravity_mass(const struct model *m) { return m->mass; }
+
+static int schwarzschild_at_infinity(const struct model *m, vec3d x, vec3d v, vec3d *out)
 {
-    switch (t) {
-    case MODEL_FLAT: return "flat";
-    case MODEL_LORENZ: return "lorenz";
-    case MODEL_ROSSLER: return "rossler";
-    case MODEL_POTENTIAL: return "potential";
-    case MODEL_REFRACTION: return "refraction";
-    case MODEL_SCHWARZSCHILD: return "schwarzschild";
-    case MODEL_COUNT: break;
-    }
-    return "unknown";
+    return escape_direction(m->mass, m->center, x, v, out);
 }
+
+static const char *potential_defines(const struct model *m)
+{
+    return m->profile == PROFILE_POLYNOMIAL ? "#define PROFILE_POLYNOMIAL 1\n" : "";
+}
+
+static const struct model_ops model_table[MODEL_COUNT] = {
+    [MODEL_FLAT] = {.name = "flat"},
+    [MODEL_LORENZ] = {.name = "lorenz", .integrates = 1},
+    [MODEL_ROSSLER] = {.name = "rossler", .integrates = 1},
+    [MODEL_POTENTIAL] = {.name = "potential", .integrates = 1, .shader_defines = potential_defines},
+    [MODEL_REFRACTION] = {.name = "refraction", .integrates = 1},
+    [MODEL_SCHWARZSCHILD] = {.name = "schwarzschild", .integrates = 1, .has_mass = 1, .exact_orbits = 1,
+                             .gravity_mass = schwarzschild_gravity_mass,
+                             .direction_at_infinity = schwarzschild_at_infinity},
+};
+
+const struct model_ops *model_ops_of(enum model_type t)
+{
+    static const struct model_ops unknown = {.name = "unknown"};
+    return (unsigned)t < MODEL_COUNT ? &model_table[t] : &unknown;
+}
+
+double model_gravity_mass(const struct model *m)
+{
+    const struct model_ops *ops = model_ops_of(m->type);
+    return ops->gravity_mass ? ops->gravity_mass(m) : 0.0;
+}
+
+const char *model_name(enum model_type t) { return model_ops_of(t)->name; }
 
 const char *method_name(enum integration_method m)
 {

@@ -38,6 +38,28 @@ struct model {
 };
 
 const char *model_name(enum model_type t);
+
+/* What the rest of the program asks of a model, so that no file outside src/physics tests a model's
+ * type (docs/ARCHITECTURE.md, "A new model"; `make check-layers` checks it): one row per model in
+ * model.c, beside its force law. */
+struct model_ops {
+    const char *name;            /* model.type in a scene file; its shader is shaders_es/model_NAME.glsl */
+    int integrates;              /* 0: its rays are straight lines whatever its keys (flat space) */
+    int has_mass;                /* model.mass is its parameter: the kiosk's mass knob sets it */
+    int exact_orbits;            /* render.method = orbit_table follows its rays (physics/orbit_table.h) */
+    /* the mass whose static observers' clocks run slow, which shifts the frequency of light
+     * between them (docs/RELATIVITY.md); NULL: none */
+    double (*gravity_mass)(const struct model *m);
+    /* where a ray that left the bounding sphere at x moving along v is seen: the unit direction it
+     * goes in at infinity (*out), 1; 0 where it keeps its own (light that falls in); NULL: the
+     * model's field is left behind at the sphere, which sees the sky along the ray's direction there */
+    int (*direction_at_infinity)(const struct model *m, vec3d x, vec3d v, vec3d *out);
+    /* the variant of its shader (#define lines, or ""); NULL: one shader for every value */
+    const char *(*shader_defines)(const struct model *m);
+};
+const struct model_ops *model_ops_of(enum model_type t);
+/* ops->gravity_mass of m, 0 without one */
+double model_gravity_mass(const struct model *m);
 /* Are the rays of this model straight lines: flat space, or a model with every field off (no
  * strength, no mass, no index change)? Such rays are not integrated but cast in one segment. */
 int model_is_straight(const struct model *m);

@@ -183,8 +183,8 @@ static void finish(struct tracer *t, struct ref_ray *out, int32_t outcome, vec3d
     /* around a mass the sky is looked up where the light goes at infinity (physics/escape.h) */
     const struct model *m = &t->scene->model;
     vec3d at_infinity;
-    if (outcome == DUMP_SKY && m->type == MODEL_SCHWARZSCHILD &&
-        escape_direction(m->mass, m->center, x, v, &at_infinity))
+    const struct model_ops *ops = model_ops_of(m->type);
+    if (outcome == DUMP_SKY && ops->direction_at_infinity && ops->direction_at_infinity(m, x, v, &at_infinity))
         out->velocity = v3_scale(at_infinity, v3_len(v));
     out->lambda = lambda;
     out->depth = lambda / (rs->steps_per_segment * rs->step_size);

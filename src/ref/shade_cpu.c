@@ -107,12 +107,10 @@ static vec3d blackbody_colour(const struct cpu_materials *mat, double temperatur
 
 /* The frequency ratios of observer.glsl: static emitters at p, the observer moving and at rest
  * in the static frame at the camera. */
-static double gravity_mass(const struct scene *s) { return s->model.type == MODEL_SCHWARZSCHILD ? s->model.mass : 0.0; }
-
 static double static_lapse(const struct scene *s, vec3d p)
 {
     double r = fmax(v3_len(v3_sub(p, s->model.center)), 1e-9);
-    return sqrt(fmax(1.0 - 2.0 * gravity_mass(s) / r, 0.0));
+    return sqrt(fmax(1.0 - 2.0 * model_gravity_mass(&s->model) / r, 0.0));
 }
 
 static double doppler_at_camera(const struct scene *s, vec3d view) { return camera_doppler(s, view); }
@@ -162,8 +160,8 @@ static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray
         /* matter on its orbit about the mass, at its place's temperature (physics/accretion.h) */
         const struct object *o = &s->objects[ray->outcome];
         vec3d from_mass = v3_sub(ray->hit, s->model.center);
-        double lambda_z = photon_lambda_z(gravity_mass(s), from_mass, ray->velocity, v3_normalize(o->normal));
-        emitted = camera_doppler * keplerian_emitter_shift(gravity_mass(s), v3_len(from_mass), lambda_z);
+        double lambda_z = photon_lambda_z(model_gravity_mass(&s->model), from_mass, ray->velocity, v3_normalize(o->normal));
+        emitted = camera_doppler * keplerian_emitter_shift(model_gravity_mass(&s->model), v3_len(from_mass), lambda_z);
         temperature = thin_disk_temperature(m->temperature, o->inner_radius, v3_len(from_mass));
     }
     if (doppler && m->temperature > 0.0) {

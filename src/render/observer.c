@@ -14,12 +14,6 @@ int observer_defines(const struct scene *s, char *out, size_t len)
     return n < 0 || (size_t)n >= len ? -1 : 0;
 }
 
-/* The gravitating mass the frequency shift between static observers follows; 0 without one. */
-static double gravity_mass(const struct scene *s)
-{
-    return s->model.type == MODEL_SCHWARZSCHILD ? s->model.mass : 0.0;
-}
-
 void observer_set_uniforms(const struct program_uniforms *p, const struct renderer *r)
 {
     const struct scene *s = r->scene;
@@ -57,7 +51,7 @@ void observer_set_uniforms(const struct program_uniforms *p, const struct render
     uniform_float(p, "u_blackbody_log_min", log(BLACKBODY_T_MIN_K));
     uniform_float(p, "u_blackbody_texels", (BLACKBODY_LUT_SIZE - 1) / log(BLACKBODY_T_MAX_K / BLACKBODY_T_MIN_K));
     uniform_float(p, "u_blackbody_size", BLACKBODY_LUT_SIZE);
-    double mass = gravity_mass(s);
+    double mass = model_gravity_mass(&s->model);
     uniform_vec3(p, "u_gravity_center", s->model.center);
     uniform_float(p, "u_gravity_mass", mass);
     uniform_float(p, "u_observer_lapse", 1.0 / gravitational_shift(mass, INFINITY, v3_len(v3_sub(s->camera.position,

@@ -32,13 +32,13 @@ static uint64_t assets_key(const struct scene *s)
  * but those within a few microradians of it (orbit_table.h): flat space, on exact orbits. */
 static int mass_unresolved(const struct scene *s)
 {
-    return s->model.type == MODEL_SCHWARZSCHILD &&
+    return model_ops_of(s->model.type)->exact_orbits &&
            !orbit_table_resolves(s->model.mass, v3_len(v3_sub(s->camera.position, s->model.center)));
 }
 
 int scene_on_exact_orbits(const struct scene *s)
 {
-    return s->render.method == METHOD_ORBIT_TABLE && s->model.type == MODEL_SCHWARZSCHILD &&
+    return s->render.method == METHOD_ORBIT_TABLE && model_ops_of(s->model.type)->exact_orbits &&
            !model_is_straight(&s->model) && !mass_unresolved(s);
 }
 
@@ -57,7 +57,8 @@ static int renderer_follow_scene(struct renderer *r, struct error *e)
     r->exact_orbits = !r->straight && r->method == METHOD_ORBIT_TABLE;
     /* integrated rays around a mass look the sky up along their direction at infinity (exact
      * orbits take it from the orbit table) */
-    r->sky_at_infinity = !r->straight && !r->exact_orbits && scene->model.type == MODEL_SCHWARZSCHILD;
+    const struct model_ops *ops = model_ops_of(scene->model.type);
+    r->sky_at_infinity = !r->straight && !r->exact_orbits && ops->direction_at_infinity;
     snprintf(r->model_file, sizeof r->model_file, "model_%s.glsl",
              r->straight ? "flat" : model_name(scene->model.type));
     static const char *const method_defines[] = {"EULER", "RK4", "DOPRI5", "ORBIT_TABLE"};
@@ -69,8 +70,7 @@ static int renderer_follow_scene(struct renderer *r, struct error *e)
              r->sky_at_infinity ? "#define SKY_AT_INFINITY 1\n" : "",
              method_defines[r->method],
              control_defines[scene->render.step_control], scene->render.steps_per_pass,
-             !r->straight && scene->model.type == MODEL_POTENTIAL && scene->model.profile == PROFILE_POLYNOMIAL
-                 ? "#define PROFILE_POLYNOMIAL 1\n" : "");
+             !r->straight && ops->shader_defines ? ops->shader_defines(&scene->model) : "");
     if (observer_defines(scene, r->observer_defines, sizeof r->observer_defines) != 0)
         return error_set(e, ERROR_RUNTIME, NULL, "internal: the observer's defines do not fit");
     return observer_lut_load(r, e);

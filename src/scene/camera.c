@@ -54,10 +54,11 @@ vec3d camera_ray_at(const struct scene *s, int i, int j, double dx, double dy)
 
 double camera_lapse(const struct scene *s)
 {
-    if (s->model.type != MODEL_SCHWARZSCHILD)
+    double mass = model_gravity_mass(&s->model);
+    if (mass == 0.0)
         return 1.0;
     double r = fmax(v3_len(v3_sub(s->camera.position, s->model.center)), 1e-9);
-    return sqrt(fmax(1.0 - 2.0 * s->model.mass / r, 0.0));
+    return sqrt(fmax(1.0 - 2.0 * mass / r, 0.0));
 }
 
 double camera_doppler(const struct scene *s, vec3d view)

@@ -45,7 +45,7 @@ void scene_default_method(struct scene *s)
 {
     if (s->render.method_named)
         return;
-    s->render.method = s->model.type == MODEL_SCHWARZSCHILD && s->render.step_control == STEP_FIXED
+    s->render.method = model_ops_of(s->model.type)->exact_orbits && s->render.step_control == STEP_FIXED
                            ? METHOD_ORBIT_TABLE : METHOD_RK4;
 }
 

@@ -52,8 +52,8 @@ static int validate_camera(const struct scene *s, struct error *err)
         return invalid(s, err, "the camera is %g from render.bound_center, outside the bounding "
                        "sphere of radius %g: enlarge render.bound_radius or move the camera",
                        from_bound, s->render.bound_radius);
-    if (s->model.type == MODEL_SCHWARZSCHILD) {
-        double horizon = 2.0 * s->model.mass;
+    double horizon = model_capture_radius(&s->model);
+    if (horizon > 0.0) {
         double r = v3_len(v3_sub(c->position, s->model.center));
         if (!(r > horizon))
             return invalid(s, err, "the camera is %g from the mass, inside the horizon radius "
@@ -81,7 +81,8 @@ static int validate_render(const struct scene *s, struct error *err)
         return invalid(s, err, "render.step_control = embedded needs render.method = dopri5 (the embedded "
                        "pair gives the error estimate); use step_control = doubling with %s",
                        method_name(r->method));
-    if (r->method == METHOD_ORBIT_TABLE && s->model.type != MODEL_SCHWARZSCHILD && s->model.type != MODEL_FLAT)
+    const struct model_ops *ops = model_ops_of(s->model.type);
+    if (r->method == METHOD_ORBIT_TABLE && !ops->exact_orbits && ops->integrates)
         return invalid(s, err, "render.method = orbit_table follows the exact orbits of Schwarzschild space; model %s "
                        "has none: use euler, rk4 or dopri5", model_name(s->model.type));
     if (r->method == METHOD_ORBIT_TABLE && r->step_control != STEP_FIXED)
@@ -93,7 +94,7 @@ static int validate_render(const struct scene *s, struct error *err)
                        "budget to segments)", r->segments, r->max_path);
     long needed = render_segments_needed(r);
     /* flat space and exact orbits take no steps */
-    if (r->method != METHOD_ORBIT_TABLE && s->model.type != MODEL_FLAT && needed > SCENE_MAX_SEGMENTS)
+    if (r->method != METHOD_ORBIT_TABLE && ops->integrates && needed > SCENE_MAX_SEGMENTS)
         return invalid(s, err, "a path budget of %g (render.max_path%s) takes %ld segments of %d steps of %g, more "
                        "than the %d a frame may run: raise render.step or render.steps_per_segment, or lower "
                        "render.max_path", render_requested_path(r),
@@ -109,9 +110,10 @@ static int validate_render(const struct scene *s, struct error *err)
 /* accretion = on: matter on circular orbits about the mass (physics/accretion.h) */
 static int validate_accretion(const struct scene *s, const struct object *o, struct error *err)
 {
-    int schwarzschild = s->model.type == MODEL_SCHWARZSCHILD;
-    double mass = schwarzschild ? s->model.mass : 0.0;
-    if (!schwarzschild && s->model.type != MODEL_FLAT)
+    const struct model_ops *ops = model_ops_of(s->model.type);
+    int schwarzschild = ops->gravity_mass != NULL;
+    double mass = model_gravity_mass(&s->model);
+    if (!schwarzschild && ops->integrates)
         return invalid(s, err, "[object %s]: accretion = on puts matter on orbits about a black hole; model %s has "
                        "none (model.type = schwarzschild, or flat, where the matter rests)", o->name,
                        model_name(s->model.type));
@@ -209,7 +211,8 @@ static double camera_radius(const struct scene *s)
 
 double scene_shadow_diameter_deg(const struct scene *s)
 {
-    if (s->model.type != MODEL_SCHWARZSCHILD)
+    /* the shadow of the orbits physics/orbit_table.h holds */
+    if (!model_ops_of(s->model.type)->exact_orbits)
         return 0.0;
     return shadow_diameter_deg(s->model.mass, camera_radius(s));
 }

@@ -23,7 +23,7 @@ static const char *const variation_names[VAR_COUNT] = {
 static int vary(struct scene *s, enum variation v)
 {
     struct render_settings *r = &s->render;
-    int flat = s->model.type == MODEL_FLAT, orbit = r->method == METHOD_ORBIT_TABLE;
+    int flat = !model_ops_of(s->model.type)->integrates, orbit = r->method == METHOD_ORBIT_TABLE;
     switch (v) {
     case VAR_FP16:
         /* the orbit table needs 32-bit floats */
@@ -87,7 +87,7 @@ static void write_row(FILE *f, const struct scene *s, const char *variation, con
         snprintf(psnr, sizeof psnr, "identical");
     else
         snprintf(psnr, sizeof psnr, "%.1f", c->psnr_db);
-    int cpu = strncmp(m->engine, "cpu", 3) == 0, flat = s->model.type == MODEL_FLAT;
+    int cpu = strncmp(m->engine, "cpu", 3) == 0, flat = !model_ops_of(s->model.type)->integrates;
     snprintf(k, sizeof k, cpu || flat ? "–" : "%d", r->steps_per_pass);
     char step[32], per_segment[16], segments[32];
     int orbit = !cpu && !flat && r->method == METHOD_ORBIT_TABLE;
