@@ -8,7 +8,11 @@
 // few table lookups a pixel, where stage_orbit_frame.glsl follows the orbit chord by chord. Nothing
 // else can end the ray first: the C side checked that the bounding sphere is about the mass and
 // holds the camera and every object (so every point of the orbit up to a hit lies inside it), and
-// a crossing inside the capture sphere is none. It writes what stage_orbit_frame.glsl writes.
+// a crossing inside the capture sphere is none. It writes the targets stage_orbit_frame.glsl writes,
+// with the hit's own point where the walk writes the end of the chord that carries it (position,
+// and for --dump the final position), its depth the orbit's fraction there in chords, and w of the
+// velocity target the fraction of the orbit reached (1 for a ray without a hit, as the walk's
+// ORBIT_NOTHING_TO_MEET).
 uniform vec3 u_crossing_normal[BATCH_SIZE];   // each object's unit normal
 
 // Half the length of the chord across a crossing, relative to its distance from the mass: long
@@ -33,14 +37,16 @@ float first_crossing(orbit_ray ray, vec3 normal)
     float right = across_e1 <= 0.0 ? across_e2 : -across_e2;
     float phi = accurate_angle(up, right);
     bool same_plane = across_e1 == 0.0 && across_e2 == 0.0;
-    return same_plane ? 1e30 : phi;
+    float never = 1e30;
+    return same_plane ? never : phi;
 }
 
 void main()
 {
     orbit_ray ray = orbit_ray_of();
     float first[BATCH_SIZE];
-    float earliest = 1e30;
+    float never = 1e30;
+    float earliest = never;
     for (int n = 0; n < BATCH_SIZE; n++) {
         first[n] = first_crossing(ray, u_crossing_normal[n]);
         earliest = min(earliest, first[n]);

@@ -5,7 +5,8 @@
 #define BT_ACCRETION_H
 #include "physics/vec3.h"
 
-/* The temperature of a thin disk (Shakura and Sunyaev 1973) with inner edge r_in at radius r:
+/* The temperature of a thin disk (Shakura and Sunyaev 1973) with inner edge r_in at radius r (from
+ * the disk's centre):
  * T(r) proportional to r^(-3/4) (1 - sqrt(r_in / r))^(1/4), scaled so that its peak, at
  * r = 49/36 r_in, is peak_k. 0 inside r_in (and for r_in <= 0). */
 double thin_disk_temperature(double peak_k, double r_in, double r);

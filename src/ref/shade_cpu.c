@@ -162,7 +162,7 @@ static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray
         vec3d from_mass = v3_sub(ray->hit, s->model.center);
         double lambda_z = photon_lambda_z(model_gravity_mass(&s->model), from_mass, ray->velocity, v3_normalize(o->normal));
         emitted = camera_doppler * keplerian_emitter_shift(model_gravity_mass(&s->model), v3_len(from_mass), lambda_z);
-        temperature = thin_disk_temperature(m->temperature, o->inner_radius, v3_len(from_mass));
+        temperature = thin_disk_temperature(m->temperature, o->inner_radius, v3_len(v3_sub(ray->hit, o->center)));
     }
     if (doppler && m->temperature > 0.0) {
         color = v3_sub(color, m->emission);

@@ -9,9 +9,10 @@
 #include <math.h>
 
 /* How far (relative to the object's size and distance) a plane may pass from the mass and still
- * count as through it: roundings of a scene's own numbers, far below the shader's chord across
- * each crossing (CROSSING_CHORD of the radius there). */
-#define CROSSING_PLANE_TOLERANCE 1e-12
+ * count as through it: roundings of a scene's own numbers (an accretion disk's centre may sit as
+ * far from the mass, SCENE_ACCRETION_CENTRE_TOL), far below the shader's chord across each
+ * crossing (CROSSING_CHORD of the radius there), which meets the object's own plane. */
+#define CROSSING_PLANE_TOLERANCE 1e-9
 /* The bounding sphere's centre on the mass: to roundings, relative to its radius. */
 #define CROSSING_CENTRE_TOLERANCE 1e-12
 
@@ -51,12 +52,13 @@ void orbit_crossings_set_uniforms(const struct program_uniforms *p, const struct
 {
     const struct scene *s = r->scene;
     float normals[OBJECT_BATCH_MAX][3];
-    for (int i = 0; i < s->n_objects && i < OBJECT_BATCH_MAX; i++) {
+    int n = s->n_objects < OBJECT_BATCH_MAX ? s->n_objects : OBJECT_BATCH_MAX;
+    for (int i = 0; i < n; i++) {
         struct object_bound b;
         object_bound(&s->objects[i], &b);
         normals[i][0] = (float)b.normal.x;
         normals[i][1] = (float)b.normal.y;
         normals[i][2] = (float)b.normal.z;
     }
-    glUniform3fv(program_uniform(p, "u_crossing_normal"), s->n_objects, &normals[0][0]);
+    glUniform3fv(program_uniform(p, "u_crossing_normal"), n, &normals[0][0]);
 }

@@ -216,6 +216,42 @@ static void test_gpu_against_reference(void **state)
     }
 }
 
+static void test_flat_space_moved(void **state)
+{
+    (void)state;
+    /* flat space (or the mass knob at 0): the matter rests, and its temperature falls off from the
+     * disk's own centre, wherever that is: the disk and the camera moved together draw the same */
+    static struct scene here, there;
+    disk_scene(&here, v3(0.0, 3.0, 30.0), v3(0.0, 1.0, 0.0), 96, 54);
+    here.model.type = MODEL_FLAT;
+    here.render.method = METHOD_RK4;
+    hc_validate(&here);
+    there = here;
+    vec3d shift = v3(20.0, -5.0, 3.0);
+    there.camera.position = v3_add(here.camera.position, shift);
+    there.camera.look_at = v3_add(here.camera.look_at, shift);
+    there.render.bound_center = v3_add(here.render.bound_center, shift);
+    there.objects[0].center = v3_add(here.objects[0].center, shift);
+    hc_validate(&there);
+    struct hc_gpu a, b;
+    hc_gpu_render(&here, &a);
+    hc_gpu_render(&there, &b);
+    int most = 0;
+    long lit = 0;
+    for (int k = 0; k < 96 * 54 * 4; k++) {
+        int d = abs(a.res.rgba[k] - b.res.rgba[k]);
+        most = d > most ? d : most;
+        lit += k % 4 != 3 && a.res.rgba[k] > 64;
+    }
+    print_message("flat space, the disk moved by (20, -5, 3): pixels differ by at most %d/255, %ld channels lit\n",
+                  most, lit);
+    assert_true(lit > 1000);
+    /* float roundings of the moved coordinates only */
+    assert_true(most <= 2);
+    hc_gpu_free(&a);
+    hc_gpu_free(&b);
+}
+
 /* ---- 3. what validation refuses ---- */
 
 static void expect_refused(struct scene *s, const char *words)
@@ -259,6 +295,7 @@ int main(void)
         cmocka_unit_test(test_face_on),
         cmocka_unit_test(test_edge_on),
         cmocka_unit_test(test_gpu_against_reference),
+        cmocka_unit_test(test_flat_space_moved),
         cmocka_unit_test(test_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
