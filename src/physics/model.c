@@ -28,6 +28,48 @@ static const char *potential_defines(const struct model *m)
     return m->profile == PROFILE_POLYNOMIAL ? "#define PROFILE_POLYNOMIAL 1\n" : "";
 }
 
+/* Newtonian gravity for light (Soldner 1801): corpuscles of light pulled by a point mass M,
+ * a = -M y / r^3 (G = c = 1), launched at the speed that is c far away, sqrt(1 + 2M/r) where they
+ * start. They run on hyperbolas, deflected by 2 atan(M / b): 2M/b far from the mass, half of
+ * general relativity's 4M/b (Schwarzschild), which is what the 1919 eclipse measured. The mass
+ * is a dark star of radius 2M (Michell 1784), where the escape speed is c: light that reaches it is
+ * absorbed, which a ray does below b = 2 sqrt(2) M (its shadow; Schwarzschild's is 3 sqrt(3) M). */
+static vec3d newtonian_accel(const struct model *m, vec3d y)
+{
+    double r = v3_len(y);
+    if (r < CENTER_GUARD_RADIUS)
+        return v3(0.0, 0.0, 0.0);
+    double inv_r = 1.0 / r;
+    return v3_scale(y, -m->mass * inv_r * inv_r * inv_r);
+}
+
+static vec3d newtonian_initial_velocity(const struct model *m, vec3d x, vec3d dir)
+{
+    double r = fmax(v3_len(v3_sub(x, m->center)), CENTER_GUARD_RADIUS);
+    return v3_scale(dir, sqrt(1.0 + 2.0 * m->mass / r));
+}
+
+/* The asymptote of the hyperbola through x with velocity v: with h = y x v and the eccentricity
+ * vector e = v x h / M - y / r, the orbit reaches infinity at the true anomaly nu with
+ * cos nu = -1 / |e|, going along cos nu e/|e| + sin nu (h/|h| x e/|e|). */
+static int newtonian_at_infinity(const struct model *m, vec3d x, vec3d v, vec3d *out)
+{
+    vec3d y = v3_sub(x, m->center);
+    double r = v3_len(y);
+    vec3d h = v3_cross(y, v);
+    double h_len = v3_len(h);
+    if (!(m->mass > 0.0) || !(r > 0.0) || !(h_len > 0.0) || !(0.5 * v3_dot(v, v) > m->mass / r))
+        return 0;
+    vec3d e = v3_sub(v3_scale(v3_cross(v, h), 1.0 / m->mass), v3_scale(y, 1.0 / r));
+    double ecc = v3_len(e);
+    if (!(ecc > 1.0))
+        return 0;
+    vec3d e_hat = v3_scale(e, 1.0 / ecc);
+    vec3d ahead = v3_cross(v3_scale(h, 1.0 / h_len), e_hat);
+    *out = v3_add(v3_scale(e_hat, -1.0 / ecc), v3_scale(ahead, sqrt(1.0 - 1.0 / (ecc * ecc))));
+    return 1;
+}
+
 static const struct model_ops model_table[MODEL_COUNT] = {
     [MODEL_FLAT] = {.name = "flat"},
     [MODEL_LORENZ] = {.name = "lorenz", .integrates = 1},
@@ -37,6 +79,8 @@ static const struct model_ops model_table[MODEL_COUNT] = {
     [MODEL_SCHWARZSCHILD] = {.name = "schwarzschild", .integrates = 1, .has_mass = 1, .exact_orbits = 1,
                              .gravity_mass = schwarzschild_gravity_mass,
                              .direction_at_infinity = schwarzschild_at_infinity},
+    [MODEL_NEWTONIAN] = {.name = "newtonian", .integrates = 1, .has_mass = 1,
+                         .direction_at_infinity = newtonian_at_infinity},
 };
 
 const struct model_ops *model_ops_of(enum model_type t)
@@ -72,7 +116,8 @@ int model_is_straight(const struct model *m)
     case MODEL_ROSSLER: return m->strength == 0.0;
     case MODEL_POTENTIAL: return m->profile == PROFILE_YUKAWA ? m->zeta == 0.0 : m->strength == 0.0;
     case MODEL_REFRACTION: return m->amplitude == 0.0;
-    case MODEL_SCHWARZSCHILD: return m->mass == 0.0;
+    case MODEL_SCHWARZSCHILD:
+    case MODEL_NEWTONIAN: return m->mass == 0.0;
     case MODEL_COUNT: break;
     }
     return 0;
@@ -188,6 +233,7 @@ vec3d model_accel(const struct model *m, vec3d x, vec3d v)
         return v3_scale(grad, n);
     }
     case MODEL_SCHWARZSCHILD: return schwarzschild_accel(m, y, v);
+    case MODEL_NEWTONIAN: return newtonian_accel(m, y);
     case MODEL_FLAT:
     case MODEL_COUNT: break;
     }
@@ -214,6 +260,7 @@ vec3d model_initial_velocity(const struct model *m, vec3d x, vec3d dir)
     switch (m->type) {
     case MODEL_REFRACTION: return v3_scale(dir, refraction_index(m, x, NULL));
     case MODEL_SCHWARZSCHILD: return schwarzschild_initial_velocity(m, x, dir);
+    case MODEL_NEWTONIAN: return newtonian_initial_velocity(m, x, dir);
     case MODEL_FLAT:
     case MODEL_LORENZ:
     case MODEL_ROSSLER:
@@ -246,7 +293,9 @@ double orbit_critical_angle(double mass, double r_observer)
 
 double model_capture_radius(const struct model *m)
 {
-    if (m->type == MODEL_SCHWARZSCHILD && m->mass > 0.0)
+    /* Schwarzschild's horizon; the Newtonian dark star's surface (Michell 1784), where the escape
+     * speed is c: light that reaches it is absorbed */
+    if ((m->type == MODEL_SCHWARZSCHILD || m->type == MODEL_NEWTONIAN) && m->mass > 0.0)
         return 2.0 * m->mass;
     return 0.0;
 }

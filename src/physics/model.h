@@ -11,6 +11,7 @@ enum model_type {
     MODEL_POTENTIAL,      /* radial force field around a centre */
     MODEL_REFRACTION,     /* medium with varying index of refraction */
     MODEL_SCHWARZSCHILD,
+    MODEL_NEWTONIAN,      /* corpuscles of light pulled by a point mass (Soldner 1801) */
     MODEL_COUNT
 };
 
@@ -33,7 +34,7 @@ struct model {
     double radius;                           /* polynomial xi(r): range R (strength reused) */
     /* Varying index of refraction: n(x) = 1 + amplitude * shell(r) * (1 + noise_amplitude * N(x)) */
     double amplitude, shell_radius, shell_width, noise_amplitude, noise_frequency;
-    /* Schwarzschild */
+    /* Schwarzschild, Newtonian */
     double mass;                             /* M in scene length units (G = c = 1) */
 };
 

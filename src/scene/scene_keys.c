@@ -17,7 +17,7 @@
 
 /* ---- names of enumerations, in enum order ------------------------------------------------- */
 
-static const struct conf_choice model_names[] = {{"flat", 0}, {"lorenz", 1}, {"rossler", 2}, {"potential", 3}, {"refraction", 4}, {"schwarzschild", 5}, {NULL, 0}};
+static const struct conf_choice model_names[] = {{"flat", 0}, {"lorenz", 1}, {"rossler", 2}, {"potential", 3}, {"refraction", 4}, {"schwarzschild", 5}, {"newtonian", 6}, {NULL, 0}};
 static const struct conf_choice primitive_names[] = {{"sphere", 0}, {"triangle", 1}, {"disk", 2}, {"rect", 3}, {NULL, 0}};
 static const struct conf_choice method_names[] = {{"euler", 0}, {"rk4", 1}, {"dopri5", 2}, {"orbit_table", 3}, {NULL, 0}};
 static const struct conf_choice step_control_names[] = {{"fixed", 0}, {"doubling", 1}, {"embedded", 2}, {NULL, 0}};
@@ -403,8 +403,8 @@ const struct conf_key scene_keys[] = {
      .offset = AT_SCENE(model.noise_amplitude)},
     {SECTION_MODEL, "noise_frequency", CONF_NUMBER, NON_NEGATIVE, .applies = FOR_MODEL(MODEL_REFRACTION),
      .offset = AT_SCENE(model.noise_frequency)},
-    {SECTION_MODEL, "mass", CONF_NUMBER, NON_NEGATIVE, .applies = FOR_MODEL(MODEL_SCHWARZSCHILD),
-     .offset = AT_SCENE(model.mass)},
+    {SECTION_MODEL, "mass", CONF_NUMBER, NON_NEGATIVE,
+     .applies = FOR_MODEL(MODEL_SCHWARZSCHILD) | FOR_MODEL(MODEL_NEWTONIAN), .offset = AT_SCENE(model.mass)},
 
     {SECTION_LIGHTING, "ambient", CONF_COLOR, COLOR_RANGE, .offset = AT_SCENE(ambient_light)},
 
