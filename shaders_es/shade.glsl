@@ -48,7 +48,7 @@ float surface_emission_temperature;
 // above 0: the surface is an accretion disk with this inner radius (physics/accretion.h), its
 // temperature the peak of a thin disk's profile, its matter on Keplerian orbits about its normal
 float surface_accretion_inner;
-vec3 surface_accretion_centre;   // the disk's centre, which its temperature's radius is measured from
+float surface_accretion_radius;  // the hit's distance from the disk's own centre: its temperature's radius
 #endif
 #endif
 
@@ -93,7 +93,7 @@ vec3 shade(vec3 p, vec3 normal, vec2 uv, vec3 ray_direction, surface_material m)
     bool accretes = surface_accretion_inner > 0.0;
     float orbiting_doppler = doppler_at_camera * keplerian_shift(p, ray_direction, normal);
     float disk_temperature = thin_disk_temperature(surface_emission_temperature, surface_accretion_inner,
-                                                   length(p - surface_accretion_centre));
+                                                   surface_accretion_radius);
     emitted_doppler = accretes ? orbiting_doppler : emitted_doppler;
     emitted_temperature = accretes ? disk_temperature : emitted_temperature;
 #endif

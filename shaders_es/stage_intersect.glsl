@@ -509,9 +509,8 @@ void intersect_shade(candidate best, vec3 a, vec3 b, out vec4 new_hit, out vec4 
     surface_emission_temperature = emitter.x;
 #ifdef ACCRETION
     surface_accretion_inner = emitter.y;
-    surface_accretion_centre = GEOMETRY(0, 0).xyz;
-    for (int i = 1; i < BATCH_SIZE; i++)
-        surface_accretion_centre = best.slot == float(i) ? GEOMETRY(i, 0).xyz : surface_accretion_centre;
+    // a disk's surface is the hit relative to its centre (object_disk)
+    surface_accretion_radius = length(best.surface);
 #endif
 #endif
 #ifdef CLOCKS

@@ -73,9 +73,7 @@ void main()
             candidate trial = best;
             intersect_chord(a, b, phi, trial);
             bool closer = on_orbit && !captured(p) && trial.slot >= 0.0 && trial.key < best.key;
-            best.key = closer ? trial.key : best.key;
-            best.t = closer ? trial.t : best.t;
-            best.slot = closer ? trial.slot : best.slot;
+            best = closer ? trial : best;
             hit_a = closer ? a : hit_a;
             hit_b = closer ? b : hit_b;
             hit_s = closer ? s : hit_s;
