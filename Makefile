@@ -259,6 +259,10 @@ $(FUZZ_DIR)/%.o: %.c
 $(FUZZ_LIB): $(FUZZ_LIB_SRCS:%.c=$(FUZZ_DIR)/%.o)
 	@rm -f $@
 	$(AR) rcs $@ $^
+	@# the source the harnesses were built from, for the report (tests/fuzz/report.sh)
+	@{ git rev-parse --short HEAD 2>/dev/null || echo unknown; } | tr -d '\n' > $(FUZZ_DIR)/source
+	@if [ -n "$$(git status --porcelain -- src 2>/dev/null)" ]; then \
+	  printf ' (with uncommitted changes in src/)' >> $(FUZZ_DIR)/source; fi
 
 $(FUZZ_DIR)/fuzz_%: tests/fuzz/fuzz_%.c $(FUZZ_LIB)
 	@mkdir -p $(dir $@)

@@ -90,8 +90,13 @@ feeds() {
     esac
 }
 
-commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-if [ -n "$(git status --porcelain -- src 2>/dev/null)" ]; then commit="$commit (with uncommitted changes in src/)"; fi
+# the source the harnesses were built from (written when their library was built), else today's
+if [ -s "$dir/source" ]; then
+    commit=$(cat "$dir/source")
+else
+    commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+    if [ -n "$(git status --porcelain -- src 2>/dev/null)" ]; then commit="$commit (with uncommitted changes in src/)"; fi
+fi
 compiler=$(clang --version 2>/dev/null | head -n 1 || echo "clang")
 failed=$(awk -F'|' '$4 != 0' "$work/run" | wc -l | tr -d ' ')
 
