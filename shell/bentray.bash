@@ -30,7 +30,7 @@ _bentray()
         trace) opts="--scene --pixel --size --set --engine --backend --precision --no-mrt --shader-dir --rtol --help" ;;
         error) opts="$common --json --check" ;;
         bench) opts="--out --force --runs --size --only --kiosk --config --quick --backend --help" ;;
-        kiosk) opts="--config --display --backend --out --frames --force --check-inputs --help" ;;
+        kiosk) opts="--config --display --backend --out --frames --force --stats --check-inputs --help" ;;
         compare) [[ $cur == -* ]] && COMPREPLY=($(compgen -W "--json --help" -- "$cur")) || COMPREPLY=($(compgen -f -- "$cur")); return ;;
         info) opts="--backend --shader-dir --shader --scene --set --no-mrt --help" ;;
         *) opts="--help" ;;

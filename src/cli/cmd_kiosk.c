@@ -15,7 +15,7 @@ static void usage(FILE *out)
 {
     fprintf(out,
             "usage: bentray kiosk [--config FILE] [--display auto|kms|x11|headless] [--backend egl|osmesa|auto]\n"
-            "                     [--out DIR] [--frames N] [--force] [--check-inputs]\n"
+            "                     [--out DIR] [--frames N] [--force] [--stats] [--check-inputs]\n"
             "Run the exhibition kiosk: knobs for the observer's speed and the central mass, buttons for\n"
             "scenes and effects, a preview while a knob turns and the refined frame once it rests.\n"
             "  --config FILE    the kiosk's configuration (every key: kiosk/kiosk.conf); default %s\n"
@@ -24,6 +24,8 @@ static void usage(FILE *out)
             "  --out DIR        headless: overrides [display] headless_out\n"
             "  --frames N       headless: overrides [display] headless_frames\n"
             "  --force          headless: frames may replace the files of an earlier run\n"
+            "  --stats          the log gets each refined frame's times: its previews (average, longest)\n"
+            "                   and its bands, as in staff mode (the staff_mode action, key i)\n"
             "  --check-inputs   print every event of every configured input, one line each, and one\n"
             "                   line per missing device; no display. Stops on Ctrl-C or SIGTERM.\n"
             "%s"
@@ -90,12 +92,12 @@ int cmd_kiosk(int argc, char **argv)
 {
     const char *config = KIOSK_DEFAULT_CONFIG, *display = NULL, *out_dir = NULL, *backend = "auto";
     long frames = -1;
-    int force = 0, check_inputs = 0;
-    enum { CONFIG, DISPLAY, BACKEND, OUT, FRAMES, FORCE, CHECK_INPUTS };
+    int force = 0, check_inputs = 0, stats = 0;
+    enum { CONFIG, DISPLAY, BACKEND, OUT, FRAMES, FORCE, STATS, CHECK_INPUTS };
     static const struct option_spec specs[] = {
         {"--config", "FILE", CONFIG}, {"--display", "D", DISPLAY}, {"--backend", "B", BACKEND},
         {"--out", "DIR", OUT},        {"--frames", "N", FRAMES},   {"--force", NULL, FORCE},
-        {"--check-inputs", NULL, CHECK_INPUTS}, {NULL, NULL, 0},
+        {"--stats", NULL, STATS},    {"--check-inputs", NULL, CHECK_INPUTS}, {NULL, NULL, 0},
     };
     struct option_reader rd = {.cmd = "kiosk", .own = specs, .usage = usage, .argc = argc, .argv = argv};
     const struct option_spec *sp;
@@ -123,6 +125,9 @@ int cmd_kiosk(int argc, char **argv)
             break;
         case FORCE:
             force = 1;
+            break;
+        case STATS:
+            stats = 1;
             break;
         case CHECK_INPUTS:
             check_inputs = 1;
@@ -176,7 +181,7 @@ int cmd_kiosk(int argc, char **argv)
         }
     }
     setvbuf(log, NULL, _IOLBF, 0);
-    struct kiosk_run_options o = {.gl_backend = backend, .force = force, .log = log};
+    struct kiosk_run_options o = {.gl_backend = backend, .force = force, .stats = stats, .log = log};
     enum kiosk_status status = kiosk_run(&c, &o);
     if (log != stderr)
         fclose(log);

@@ -20,7 +20,8 @@
     X(PREVIOUS_SCENE, "previous_scene")                                                            \
     X(CYCLE_EFFECTS, "cycle_effects")                                                              \
     X(RESET, "reset")                                                                              \
-    X(PIPELINE_VIEW, "pipeline_view")
+    X(PIPELINE_VIEW, "pipeline_view")                                                              \
+    X(STAFF_MODE, "staff_mode")
 
 #define KIOSK_ACTION_ENUM(id, name) KIOSK_ACTION_##id,
 enum kiosk_action { KIOSK_ACTIONS(KIOSK_ACTION_ENUM) KIOSK_ACTION_COUNT };

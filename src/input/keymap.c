@@ -4,7 +4,7 @@
 
 const char *const keymap_help =
     "keys: Up/Down or w/s speed, Right/Left or d/a mass, n/p next/previous scene, e effects,\n"
-    "      r reset, v pipeline view, q or Escape stop\n";
+    "      r reset, v pipeline view, i staff mode, q or Escape stop\n";
 
 static void knob(struct input_event *ev, enum input_knob k, long counts)
 {
@@ -41,6 +41,7 @@ int keymap_event(enum key_code code, int ch, struct input_event *ev)
     case 'e': action(ev, KIOSK_ACTION_CYCLE_EFFECTS); return 1;
     case 'r': action(ev, KIOSK_ACTION_RESET); return 1;
     case 'v': action(ev, KIOSK_ACTION_PIPELINE_VIEW); return 1;
+    case 'i': action(ev, KIOSK_ACTION_STAFF_MODE); return 1;
     case 'q': ev->kind = INPUT_QUIT; return 1;
     default: return 0;
     }

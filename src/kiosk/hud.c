@@ -11,11 +11,20 @@
 /* Text heights as fractions of the screen's height: body text h/30 is 24 px at 720p, 36 at 1080p. */
 #define BODY_TEXT_DIVISOR 30
 #define TITLE_TEXT_DIVISOR 20
+/* A visitor's block is smaller, in a corner: body h/40 (18 px at 720p, 27 at 1080p), title h/26;
+ * with its title, a caption of up to three rows and three lines it keeps within the top 30% of
+ * the screen. */
+#define VISITOR_BODY_DIVISOR 40
+#define VISITOR_TITLE_DIVISOR 26
 /* Below this FreeType's glyphs stop being legible; a tiny preview window still gets text. */
 #define MIN_TEXT_PX 8
 /* Row pitch over text height: room for descenders (DejaVu's reach 0.24 em) and a gap. */
 #define ROW_PITCH_NUM 4
 #define ROW_PITCH_DEN 3
+/* A visitor's block of lines wraps within this share of the screen's width (staff's: all of it). */
+#define VISITOR_WIDTH_NUM 10
+#define VISITOR_WIDTH_DEN 20
+#define VISITOR_MIN_EMS 30
 /* A long explanation wraps into this many rows at most, for the whole block. */
 #define MAX_ROWS (2 * HUD_MAX_LINES)
 
@@ -92,10 +101,74 @@ static void format_amount(char *out, size_t len, double x)
         snprintf(out, len, "%.2g", x);
 }
 
+/* v/c as a visitor reads it: "90%", "99.5%" (as many decimals as format_speed takes). */
+static void format_percent_of_light(char *out, size_t len, double v)
+{
+    int decimals = 0;
+    while (decimals < 4 && fabs(v) < 1.0 && fabs(v) >= 1.0 - 0.5 * pow(10.0, -(decimals + 2)))
+        decimals++;
+    snprintf(out, len, "%.*f%%", decimals, 100.0 * v);
+}
+
+/* The effects (enum relativity_effects: geometry, Doppler colour, searchlight): staff's names and
+ * a visitor's words. */
+static const char *const effects_names[3] = {"geometry", "Doppler colour", "Doppler colour + searchlight"};
+static const char *const effects_words[3] = {
+    "Colours: as the light left its source",
+    "Colours: shifted by motion and gravity",
+    "Colours: shifted, and brighter where light comes towards you",
+};
+
+static int effects_known(int effects)
+{
+    return effects >= 0 && effects < 3;
+}
+
+/* A visitor's knob line: the knob in words and what it is at; `brief`: the indicator's short form
+ * (without the clocks, or flat space's why). */
+static void visitor_knob(char *out, size_t len, const struct hud_view *v, enum hud_knob knob, double value,
+                         int brief)
+{
+    char a[48], g[32];
+    if (knob == HUD_KNOB_SPEED && !present(v->speed_key)) {
+        const char *label = present(v->speed_label) ? v->speed_label : "Speed";
+        format_percent_of_light(a, sizeof a, value);
+        if (value == 0.0)
+            snprintf(out, len, "%s: at rest", label);
+        else if (fabs(value) < 1.0 && !brief) {
+            snprintf(g, sizeof g, "%.2f", lorentz_gamma(v3(value, 0.0, 0.0)));
+            snprintf(out, len, "%s: %s of light speed, clocks %s× slower", label, a, g);
+        } else
+            snprintf(out, len, "%s: %s of light speed", label, a);
+        return;
+    }
+    if (knob == HUD_KNOB_MASS && !present(v->mass_key)) {
+        const char *label = present(v->mass_label) ? v->mass_label : "Black hole";
+        double share = 100.0 * v->shadow_share;
+        if (value == 0.0)
+            snprintf(out, len, brief ? "%s: none" : "%s: none, light goes straight", label);
+        else if (share >= 100.0)
+            snprintf(out, len, "%s: its shadow fills the view", label);
+        else if (share >= 1.0)
+            snprintf(out, len, "%s: shadow %.0f%% of the view's height", label, share);
+        else
+            snprintf(out, len, "%s: shadow under 1%% of the view", label);
+        return;
+    }
+    /* a knob mapped to a key: how far along its range, not the key's number */
+    const char *label = knob == HUD_KNOB_SPEED ? v->speed_label : v->mass_label;
+    const double *range = knob == HUD_KNOB_SPEED ? v->speed_range : v->mass_range;
+    double span = range[1] - range[0];
+    double along = span > 0.0 ? 100.0 * (value - range[0]) / span : 0.0;
+    along = isnan(along) ? 0.0 : along < 0.0 ? 0.0 : along > 100.0 ? 100.0 : along;
+    snprintf(out, len, "%s: %.0f%%", present(label) ? label : knob == HUD_KNOB_SPEED ? "Speed knob" : "Mass knob",
+             along);
+}
+
 static int collect_lines(const struct hud_view *v, char lines[][HUD_LINE_LEN], enum line_kind *kinds, int max)
 {
     int n = 0;
-    char a[32], b[32];
+    char a[32], b[32], knob[HUD_LINE_LEN];
 #define LINE(kind, ...)                                        \
     do {                                                       \
         if (n < max) {                                         \
@@ -105,8 +178,28 @@ static int collect_lines(const struct hud_view *v, char lines[][HUD_LINE_LEN], e
             n++;                                               \
         }                                                      \
     } while (0)
-    if (present(v->title))
-        LINE(LINE_TITLE, "%s", v->title);
+    if (!v->staff) {
+        /* a visitor's words: no file, key or symbol, nothing the knobs contradict */
+        if (present(v->title))
+            LINE(LINE_TITLE, "%s", v->title);
+        if (present(v->caption))
+            LINE(LINE_BODY, "%s", v->caption);
+        if (v->has_speed || present(v->speed_key)) {
+            visitor_knob(knob, sizeof knob, v, HUD_KNOB_SPEED, present(v->speed_key) ? v->speed_param : v->speed, 0);
+            LINE(LINE_BODY, "%s", knob);
+        }
+        if (v->has_mass || present(v->mass_key)) {
+            visitor_knob(knob, sizeof knob, v, HUD_KNOB_MASS, present(v->mass_key) ? v->mass_param : v->mass, 0);
+            LINE(LINE_BODY, "%s", knob);
+        }
+        if (effects_known(v->effects))
+            LINE(LINE_BODY, "%s", effects_words[v->effects]);
+        if (present(v->notice))
+            LINE(LINE_NOTICE, "%s", v->notice);
+        return n;
+    }
+    if (present(v->name))
+        LINE(LINE_TITLE, "%s", v->name);
     if (present(v->explanation))
         LINE(LINE_BODY, "%s", v->explanation);
     const char *const keys[2] = {v->speed_key, v->mass_key}, *const knobs[2] = {"speed", "mass"};
@@ -134,15 +227,17 @@ static int collect_lines(const struct hud_view *v, char lines[][HUD_LINE_LEN], e
                  rs, b);
         }
     }
-    if (v->effects)
-        LINE(LINE_BODY, "effects: %s", v->effects);
+    if (effects_known(v->effects))
+        LINE(LINE_BODY, "effects: %s", effects_names[v->effects]);
     /* no rate while none was drawn in the last second: "0.0 frames/s" reads as broken */
     if (v->fps > 0.0 && v->refining)
-        LINE(LINE_BODY, "%.1f frames/s   refining...", v->fps);
+        LINE(LINE_BODY, "staff mode   %.1f frames/s   refining...", v->fps);
     else if (v->fps > 0.0)
-        LINE(LINE_BODY, "%.1f frames/s", v->fps);
+        LINE(LINE_BODY, "staff mode   %.1f frames/s", v->fps);
     else if (v->refining)
-        LINE(LINE_BODY, "refining...");
+        LINE(LINE_BODY, "staff mode   refining...");
+    else
+        LINE(LINE_BODY, "staff mode");
     if (present(v->notice))
         LINE(LINE_NOTICE, "%s", v->notice);
 #undef LINE
@@ -238,7 +333,9 @@ static int wrap_rows(struct hud_font *font, const struct hud_view *v, int h, int
     enum line_kind kinds[HUD_MAX_LINES];
     int n_lines = collect_lines(v, lines, kinds, HUD_MAX_LINES), n = 0;
     for (int l = 0; l < n_lines && n < MAX_ROWS; l++) {
-        int px = scaled(h, kinds[l] == LINE_TITLE ? TITLE_TEXT_DIVISOR : BODY_TEXT_DIVISOR);
+        int title = v->staff ? TITLE_TEXT_DIVISOR : VISITOR_TITLE_DIVISOR;
+        int body = v->staff ? BODY_TEXT_DIVISOR : VISITOR_BODY_DIVISOR;
+        int px = scaled(h, kinds[l] == LINE_TITLE ? title : body);
         const unsigned char *color = kinds[l] == LINE_TITLE    ? title_color
                                      : kinds[l] == LINE_NOTICE ? notice_color
                                                                : body_color;
@@ -262,10 +359,17 @@ static int wrap_rows(struct hud_font *font, const struct hud_view *v, int h, int
 /* The block of lines in the top-left corner, on its band. */
 static void draw_lines(struct hud_font *font, unsigned char *rgba, int w, int h, const struct hud_view *v)
 {
-    int body_px = scaled(h, BODY_TEXT_DIVISOR);
+    int body_px = scaled(h, v->staff ? BODY_TEXT_DIVISOR : VISITOR_BODY_DIVISOR);
     int margin = body_px / 2, pad = body_px / 2;
     struct row rows[MAX_ROWS];
-    int n = wrap_rows(font, v, h, w - 2 * margin - 2 * pad, rows);
+    /* a visitor's lines keep to a corner: wrapped within VISITOR_WIDTH_NUM / VISITOR_WIDTH_DEN of the
+     * width, or VISITOR_MIN_EMS text heights where that is more (a small window, whose text stays at
+     * its smallest legible size), never wider than the screen */
+    int corner = w * VISITOR_WIDTH_NUM / VISITOR_WIDTH_DEN;
+    corner = corner < VISITOR_MIN_EMS * body_px ? VISITOR_MIN_EMS * body_px : corner;
+    corner = corner > w ? w : corner;
+    int avail = (v->staff ? w : corner) - 2 * margin - 2 * pad;
+    int n = wrap_rows(font, v, h, avail, rows);
     if (n == 0)
         return;
     int widest = 0, height = 0;
@@ -288,7 +392,21 @@ static void draw_indicator(struct hud_font *font, unsigned char *rgba, int w, in
 {
     char label[HUD_LINE_LEN], lo[48], hi[48], value[96], number[32];
     const char *key = v->indicator == HUD_KNOB_SPEED ? v->speed_key : v->mass_key;
-    if (present(key)) {
+    if (!v->staff) {
+        /* the knob in words over its bar; the ends: the speed's range, a mapped knob's 0% and
+         * 100%, or no black hole and a large one */
+        visitor_knob(label, sizeof label, v, v->indicator, v->indicator_value, 1);
+        if (present(key)) {
+            snprintf(lo, sizeof lo, "0%%");
+            snprintf(hi, sizeof hi, "100%%");
+        } else if (v->indicator == HUD_KNOB_SPEED) {
+            format_percent_of_light(lo, sizeof lo, v->indicator_min);
+            format_percent_of_light(hi, sizeof hi, v->indicator_max);
+        } else {
+            snprintf(lo, sizeof lo, "%s", v->indicator_min == 0.0 ? "none" : "small");
+            snprintf(hi, sizeof hi, "large");
+        }
+    } else if (present(key)) {
         format_amount(number, sizeof number, v->indicator_value);
         snprintf(label, sizeof label, "%s knob   %s = %s", v->indicator == HUD_KNOB_SPEED ? "speed" : "mass", key,
                  number);

@@ -92,6 +92,12 @@ struct kiosk {
     double notice_until;
     int draws_this_second, draws_last_second;
     double second_start;
+    /* the frame times of the picture being refined (--stats, staff mode): its previews since the
+     * last refined frame, the bands' time, from the last change of state to the refined frame */
+    struct frame_times {
+        int previews, bands;
+        double preview_seconds, preview_longest, band_seconds, changed_at;
+    } times;
     /* headless frames */
     int frames_written;
     long long drawn;                 /* previews and bands drawn */
@@ -103,30 +109,64 @@ static double kiosk_now(const struct kiosk *k)
     return k->virtual_clock ? (double)k->turn / KIOSK_VIRTUAL_FPS : clock_seconds();
 }
 
+/* The black hole's shadow (mass M) as a share of the view's height, as a visitor sees it: the
+ * static observer's angular diameter, aberrated by the camera's velocity towards the hole (the part
+ * along the direction to it, as though the hole were ahead: tan(a'/2) = sqrt((1 - b) / (1 + b))
+ * tan(a/2)). A figure for the HUD's words, not a measurement. */
+static double shadow_share(const struct scene *s, double mass, vec3d velocity)
+{
+    const double pi = 3.14159265358979323846;
+    double across = scene_shadow_diameter_deg_at(s, mass);
+    if (across <= 0.0 || across >= 360.0)
+        return across <= 0.0 ? 0.0 : 360.0 / s->camera.fov_deg;
+    vec3d to_hole = v3_normalize(v3_sub(s->model.center, s->camera.position));
+    double beta = v3_dot(velocity, to_hole);
+    beta = beta > 0.999999 ? 0.999999 : beta < -0.999999 ? -0.999999 : beta;
+    double half = 0.5 * across * pi / 180.0;
+    double seen = 2.0 * atan(sqrt((1.0 - beta) / (1.0 + beta)) * tan(half)) * 180.0 / pi;
+    return seen / s->camera.fov_deg;
+}
+
 /* The scene's view of the knobs and what the HUD says about them. */
 static void hud_view_of(struct kiosk *k, struct hud_view *v)
 {
     const struct scene *s = &k->scenes[k->state.scene];
     memset(v, 0, sizeof *v);
-    v->title = s->name;
+    v->staff = k->state.staff;
+    v->title = s->kiosk.title[0] ? s->kiosk.title : s->name;
+    v->caption = s->kiosk.caption;
+    v->name = s->name;
     v->explanation = s->description;
     v->has_speed = 1;
     v->speed = k->state.speed;
     v->has_mass = model_ops_of(s->model.type)->has_mass;
     v->mass = k->state.mass;
     v->camera_distance = v3_len(v3_sub(s->camera.position, s->model.center));
-    static const char *const effects[] = {"geometry", "Doppler colour", "Doppler colour + searchlight"};
-    v->effects = scene_has_black_body(s) ? effects[kiosk_state_effects(&k->state, s)] : NULL;
+    v->effects = scene_has_black_body(s) ? (int)kiosk_state_effects(&k->state, s) : -1;
     v->fps = kiosk_view_refined(&k->view) && k->draws_last_second == 0 ? -1.0 : k->draws_last_second;
     v->refining = !kiosk_view_refined(&k->view);
-    /* knobs the scene maps to its own keys show those instead of speed and mass */
+    /* knobs the scene maps to its own keys show those instead of speed and mass; a mass knob mapped
+     * to the black hole's own mass is the black hole's */
     const struct knob_mapping *ms = &s->kiosk.speed, *mm = &s->kiosk.mass;
+    v->speed_label = ms->label;
+    v->mass_label = mm->label;
+    v->speed_range[0] = ms->min;
+    v->speed_range[1] = ms->max;
+    v->mass_range[0] = mm->min;
+    v->mass_range[1] = mm->max;
+    /* a mass knob mapped to the black hole's mass, without words of its own, shows the shadow */
+    int hole_mapped = v->has_mass && strcmp(mm->key, "model.mass") == 0 && !mm->label[0];
+    if (hole_mapped)
+        v->mass = knob_turn_mapped(mm, s, k->state.mass_param, 0);
+    vec3d view = v3_normalize(v3_sub(s->camera.look_at, s->camera.position));
+    vec3d velocity = ms->key[0] ? s->observer.velocity : v3_scale(view, k->state.speed);
+    v->shadow_share = shadow_share(s, v->mass, velocity);
     if (ms->key[0]) {
         v->has_speed = 0;
         v->speed_key = ms->key;
         v->speed_param = knob_turn_mapped(ms, s, k->state.speed_param, 0);
     }
-    if (mm->key[0]) {
+    if (mm->key[0] && !hole_mapped) {
         v->has_mass = 0;
         v->mass_key = mm->key;
         v->mass_param = knob_turn_mapped(mm, s, k->state.mass_param, 0);
@@ -136,7 +176,8 @@ static void hud_view_of(struct kiosk *k, struct hud_view *v)
         int speed = k->indicator == HUD_KNOB_SPEED;
         const struct knob_mapping *m = speed ? ms : mm;
         const struct kiosk_knob *knob = speed ? &k->cfg->speed : &k->cfg->mass;
-        v->indicator_value = m->key[0] ? (speed ? v->speed_param : v->mass_param) : speed ? k->state.speed : k->state.mass;
+        double mapped = speed ? v->speed_param : hole_mapped ? v->mass : v->mass_param;
+        v->indicator_value = m->key[0] ? mapped : speed ? k->state.speed : k->state.mass;
         v->indicator_min = m->key[0] ? m->min : knob->min;
         v->indicator_max = m->key[0] ? m->max : knob->max;
     }
@@ -244,6 +285,8 @@ static void apply_event(struct kiosk *k, const struct input_event *ev, struct ev
 {
     struct kiosk_state proposed = k->state;
     kiosk_event_apply(k->cfg, &proposed, &k->scenes[proposed.scene], ev, out);
+    /* staff mode changes the HUD and the log, not the picture: taken whatever the picture does */
+    k->state.staff = proposed.staff;
     if (!out->changed)
         return;
     if (take_state(k, &proposed)) {
@@ -357,6 +400,43 @@ static void start_attract(struct kiosk *k)
     fprintf(k->log, "attract mode: no input for %d s, playing the tour\n", k->cfg->kiosk.idle_seconds);
 }
 
+/* Frame times (--stats, staff mode): a preview drawn after a change of state, from `started`. */
+static void count_preview(struct kiosk *k, double started)
+{
+    struct frame_times *t = &k->times;
+    double took = clock_seconds() - started;
+    if (t->previews == 0 && t->bands == 0)
+        t->changed_at = started;
+    t->previews++;
+    t->preview_seconds += took;
+    t->preview_longest = took > t->preview_longest ? took : t->preview_longest;
+    t->bands = 0;
+    t->band_seconds = 0.0;
+}
+
+/* A band of the refinement (or a tile of a preview) drawn from `started`; once the frame is
+ * refined, its times go to the log where asked for, and the count starts again. */
+static void count_band(struct kiosk *k, double started)
+{
+    struct frame_times *t = &k->times;
+    double now = clock_seconds();
+    if (t->previews == 0 && t->bands == 0)
+        t->changed_at = started;
+    t->bands++;
+    t->band_seconds += now - started;
+    if (!kiosk_view_refined(&k->view))
+        return;
+    if (k->opt->stats || k->state.staff) {
+        fprintf(k->log, "frame times: %s: %d preview%s at %dx%d, %.1f ms each on average, %.1f ms the longest; "
+                "refined %dx%d in %d bands, %.3f s of drawing, %.3f s after the last change\n",
+                k->scenes[k->state.scene].name, t->previews, t->previews == 1 ? "" : "s", k->view.preview_width, k->view.preview_height,
+                t->previews ? 1e3 * t->preview_seconds / t->previews : 0.0, 1e3 * t->preview_longest,
+                k->cfg->kiosk.width, k->cfg->kiosk.height, t->bands, t->band_seconds, now - t->changed_at);
+        fflush(k->log);
+    }
+    memset(t, 0, sizeof *t);
+}
+
 /* One turn of the loop; 1 to go on, 0 to stop, -1 on failure (e). */
 static int kiosk_turn(struct kiosk *k, struct error *e)
 {
@@ -383,16 +463,19 @@ static int kiosk_turn(struct kiosk *k, struct error *e)
         changed = 1;
     }
     int drew = 0;
+    double draw_started = clock_seconds();
     if (changed) {
         did = loading ? did : "drawing a preview";
         if (kiosk_view_preview(&k->view, &k->state, e) != 0)
             return -1;
         drew = 1;
+        count_preview(k, draw_started);
     } else if (!kiosk_view_refined(&k->view)) {
         did = kiosk_view_preview_pending(&k->view) ? "drawing a tile of the preview" : "refining the frame";
         if (kiosk_view_refine(&k->view, e) != 0)
             return -1;
         drew = 1;
+        count_band(k, draw_started);
     }
     k->draws_this_second += drew;
     k->drawn += drew;

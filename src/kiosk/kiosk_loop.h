@@ -29,6 +29,7 @@
 struct kiosk_run_options {
     const char *gl_backend;          /* headless: "egl", "osmesa" or "auto" */
     int force;                       /* headless: frames may replace files already there */
+    int stats;                       /* --stats: the log gets each refined frame's times (as in staff mode) */
     FILE *log;
 };
 

@@ -122,6 +122,9 @@ void kiosk_state_action(struct kiosk_state *st, const struct kiosk_config *c, co
     case KIOSK_ACTION_PIPELINE_VIEW:
         st->pipeline_view = !st->pipeline_view;
         break;
+    case KIOSK_ACTION_STAFF_MODE:
+        st->staff = !st->staff;
+        break;
     default:
         break;
     }

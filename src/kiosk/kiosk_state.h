@@ -19,6 +19,9 @@ struct kiosk_state {
      * effects button chose them */
     int effects_from_scene;
     int pipeline_view;               /* 1: show the renderer's stages instead of the image */
+    /* 1: staff mode: the HUD adds the scene's file name, keys, symbols and frame rate, and the log
+     * the frame times. Not part of what is drawn (kiosk_state_same leaves it out); reset ends it. */
+    int staff;
 };
 
 /* The effects the state shows in its scene `base` (the scene's own, or those chosen). */

@@ -232,8 +232,14 @@ struct quality_bound {
  * without a mass, a flow the observer's speed means nothing in): a numeric key of the scene, as
  * --set names it ("model.rho"), moved evenly from min to max over steps detents. key "": the knob
  * keeps its own meaning (kiosk/kiosk.conf [speed], [mass]). */
+/* What a visitor reads on the kiosk's screen: lines of text without a file's or a key's name. */
+#define SCENE_KIOSK_WORDS_LEN 64
+/* a caption: two rows of the kiosk's visitor block at any screen from 1024x768 (kiosk/hud.c) */
+#define SCENE_KIOSK_CAPTION_LEN 97
+
 struct knob_mapping {
     char key[SCENE_NAME_LEN];
+    char label[SCENE_KIOSK_WORDS_LEN];   /* what the knob changes, in a visitor's words ("" : none) */
     double min, max;
     int steps;
 };
@@ -244,6 +250,8 @@ struct knob_mapping {
 #define SCENE_KIOSK_SHADOW_MAX_FRACTION 0.6
 
 struct scene_kiosk {
+    char title[SCENE_KIOSK_WORDS_LEN];       /* the scene's title on the kiosk ("": its name) */
+    char caption[SCENE_KIOSK_CAPTION_LEN];   /* one line for visitors under the title ("": none) */
     struct knob_mapping speed, mass;
 };
 
@@ -319,6 +327,8 @@ int scene_kiosk_validate(const struct scene *s, struct error *err);
  * it (the rays that fall through the horizon: b < 3 sqrt(3) M); 0 where nothing casts one (no mass,
  * not Schwarzschild), 360 with the camera at or inside the horizon. */
 double scene_shadow_diameter_deg(const struct scene *s);
+/* The same with the model's mass taken as MASS (a kiosk knob's). */
+double scene_shadow_diameter_deg_at(const struct scene *s, double mass);
 /* The largest mass whose shadow, seen from the camera of s, spans at most `diameter_deg`, rounded
  * down to three significant digits (as messages print it). */
 double scene_mass_for_shadow(const struct scene *s, double diameter_deg);

@@ -473,6 +473,12 @@ const struct conf_key scene_keys[] = {
     {SECTION_QUALITY, "exit_p99", CONF_NUMBER, .lo = 0.0, .hi = 3.15, .offset = AT_SCENE(quality.exit_p99)},
     {SECTION_QUALITY, "hit_p99", CONF_NUMBER, .lo = 0.0, .hi = 1000.0, .offset = AT_SCENE(quality.hit_p99)},
 
+    {SECTION_KIOSK, "title", CONF_TEXT, .lo = 1, .hi = SCENE_KIOSK_WORDS_LEN - 1, .offset = AT_SCENE(kiosk.title)},
+    {SECTION_KIOSK, "caption", CONF_TEXT, .lo = 1, .hi = SCENE_KIOSK_CAPTION_LEN - 1, .offset = AT_SCENE(kiosk.caption)},
+    {SECTION_KIOSK, "speed_label", CONF_TEXT, .lo = 1, .hi = SCENE_KIOSK_WORDS_LEN - 1,
+     .offset = AT_SCENE(kiosk.speed.label)},
+    {SECTION_KIOSK, "mass_label", CONF_TEXT, .lo = 1, .hi = SCENE_KIOSK_WORDS_LEN - 1,
+     .offset = AT_SCENE(kiosk.mass.label)},
     {SECTION_KIOSK, "speed_key", CONF_TEXT, .lo = 1, .hi = SCENE_NAME_LEN - 1, .offset = AT_SCENE(kiosk.speed.key)},
     {SECTION_KIOSK, "speed_min", CONF_NUMBER, ANY, .offset = AT_SCENE(kiosk.speed.min)},
     {SECTION_KIOSK, "speed_max", CONF_NUMBER, ANY, .offset = AT_SCENE(kiosk.speed.max)},

@@ -209,12 +209,17 @@ static double camera_radius(const struct scene *s)
     return v3_len(v3_sub(s->camera.position, s->model.center));
 }
 
-double scene_shadow_diameter_deg(const struct scene *s)
+double scene_shadow_diameter_deg_at(const struct scene *s, double mass)
 {
     /* the shadow of the orbits physics/orbit_table.h holds */
     if (!model_ops_of(s->model.type)->exact_orbits)
         return 0.0;
-    return shadow_diameter_deg(s->model.mass, camera_radius(s));
+    return shadow_diameter_deg(mass, camera_radius(s));
+}
+
+double scene_shadow_diameter_deg(const struct scene *s)
+{
+    return scene_shadow_diameter_deg_at(s, s->model.mass);
 }
 
 double scene_mass_for_shadow(const struct scene *s, double diameter_deg)

@@ -12,6 +12,13 @@ mkdir -p "$TMP/kiosk"
 check "kiosk headless run" 0 "stopped after" -- $BT kiosk --config $K --out "$TMP/kiosk" --frames 8
 check "kiosk frames written" 0 "^8 frames$" -- sh -c "echo \$(ls $TMP/kiosk/frame_*.png | wc -l) frames"
 check "kiosk no overwrite" 2 "refusing to replace existing file .*frame_[0-9]+\.png \(use --force to overwrite it\): a frame of an earlier run" -- $BT kiosk --config $K --out "$TMP/kiosk" --frames 8
+# frame times in the log: every refined frame's with --stats, none without it, and in staff mode
+# (the staff_mode action, pressed by tests/kiosk/staff.events) until it is left
+check "kiosk stats" 0 "frame times: schwarzschild: 1 preview at 80x45, [0-9.]+ ms each on average, [0-9.]+ ms the longest; refined 160x90 in [0-9]+ bands, [0-9.]+ s of drawing, [0-9.]+ s after the last change" -- $BT kiosk --config $K --out "$TMP/kiosk" --frames 2 --force --stats
+check "kiosk no stats unasked" 0 "^0 lines$" -- sh -c "echo \$($BT kiosk --config $K --out $TMP/kiosk --frames 2 --force 2>&1 | grep -c 'frame times') lines"
+mkdir -p "$TMP/staff"
+sed "s|path = visitor.events|path = $PWD/tests/kiosk/staff.events|; s|\.\./\.\./assets|$PWD/assets|g" $K > "$TMP/staff/k.conf"
+check "kiosk staff mode logs frame times" 0 "^1 lines$" -- sh -c "echo \$($BT kiosk --config $TMP/staff/k.conf --out $TMP/staff --frames 2 2>&1 | grep -c 'frame times: schwarzschild') lines"
 check "kiosk osmesa run" 0 "headless screen 160x90 \(OSMesa.*stopped after" -- sh -c "$BT kiosk --config $K --out $TMP/kiosk --frames 2 --backend osmesa --force 2>&1 | tr '\n' ' '"
 # a bad script is refused before anything is shown, with FILE:LINE
 mkdir -p "$TMP/badscript"

@@ -5,6 +5,7 @@
 #include <stdint.h>
 #include <setjmp.h>
 #include <cmocka.h>
+#include <dirent.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -43,14 +44,18 @@ static int close_font(void **state)
 static struct hud_view schwarzschild_view(void)
 {
     struct hud_view v = {
-        .title = "Schwarzschild black hole",
+        .staff = 1,
+        .title = "A black hole bends light",
+        .caption = "Light passing close to the hole bends around it.",
+        .name = "Schwarzschild black hole",
         .explanation = "Light bends around the mass; inside the dark disc no ray escapes.",
         .has_speed = 1,
         .speed = 0.9,
         .has_mass = 1,
         .mass = 0.5,
         .camera_distance = 9.0,
-        .effects = "geometry",
+        .shadow_share = 0.27,
+        .effects = 0,
         .fps = 12.34,
         .refining = 0,
         .indicator = HUD_KNOB_NONE,
@@ -73,7 +78,7 @@ static void test_lines_schwarzschild(void **state)
     char lines[HUD_MAX_LINES][HUD_LINE_LEN];
     int n = hud_lines(&v, lines, HUD_MAX_LINES);
     assert_int_equal(n, 6);
-    assert_string_equal(lines[0], v.title);
+    assert_string_equal(lines[0], v.name);
     assert_string_equal(lines[1], v.explanation);
 
     int s = find_line(lines, n, "v = 0.90 c");
@@ -90,7 +95,7 @@ static void test_lines_schwarzschild(void **state)
     assert_non_null(strstr(lines[m], "r = 9.0"));
     assert_null(strstr(lines[m], "flat"));
     assert_true(find_line(lines, n, "effects: geometry") >= 0);
-    assert_true(find_line(lines, n, "12.3 frames/s") >= 0);
+    assert_true(find_line(lines, n, "staff mode   12.3 frames/s") >= 0);
     assert_int_equal(find_line(lines, n, "refining"), -1);
 
     /* near c the digits must not round to c itself, and gamma keeps growing */
@@ -120,13 +125,14 @@ static void test_lines_optional(void **state)
     (void)state;
     struct hud_view v = schwarzschild_view();
     v.has_speed = 0;
-    v.effects = NULL;
+    v.effects = -1;
     v.fps = -1.0;
     v.refining = 1;
     v.notice = "the hole cannot grow further: the camera would be inside its horizon";
     char lines[HUD_MAX_LINES][HUD_LINE_LEN];
     int n = hud_lines(&v, lines, HUD_MAX_LINES);
     assert_int_equal(n, 5);
+    assert_true(find_line(lines, n, "staff mode   refining...") >= 0);
     assert_int_equal(find_line(lines, n, "v = "), -1);
     assert_int_equal(find_line(lines, n, "γ"), -1);
     assert_int_equal(find_line(lines, n, "effects"), -1);
@@ -148,10 +154,66 @@ static void test_lines_optional(void **state)
     char title[2 * HUD_LINE_LEN + 1] = "";
     for (int i = 0; i < HUD_LINE_LEN; i++)
         strcat(title, "γ");
-    v.title = title;
+    v.name = title;
     n = hud_lines(&v, lines, HUD_MAX_LINES);
     size_t len = strlen(lines[0]);
     assert_true(len > 0 && len < HUD_LINE_LEN && len % 2 == 0);
+}
+
+/* What a visitor reads (staff mode off): the title and caption, the knobs in words, the colours;
+ * no file or key name, no symbol, no figure number, no frame rate. */
+static void test_lines_visitor(void **state)
+{
+    (void)state;
+    struct hud_view v = schwarzschild_view();
+    v.staff = 0;
+    v.effects = 1;
+    v.refining = 1;
+    char lines[HUD_MAX_LINES][HUD_LINE_LEN];
+    int n = hud_lines(&v, lines, HUD_MAX_LINES);
+    for (int i = 0; i < n; i++)
+        printf("  %s\n", lines[i]);
+    assert_int_equal(n, 5);
+    assert_string_equal(lines[0], v.title);
+    assert_string_equal(lines[1], v.caption);
+    assert_true(find_line(lines, n, "Speed: 90% of light speed, clocks 2.29× slower") >= 0);
+    assert_true(find_line(lines, n, "Black hole: shadow 27% of the view's height") >= 0);
+    assert_true(find_line(lines, n, "Colours: shifted by motion and gravity") >= 0);
+    static const char *const developer_words[] = {"frames/s", "staff", "M = ", "r_s", "γ", "v = ", "effects:",
+                                                  "Schwarzschild black hole", "Light bends around the mass",
+                                                  "model.", "Figure", "refining"};
+    for (size_t w = 0; w < sizeof developer_words / sizeof developer_words[0]; w++)
+        if (find_line(lines, n, developer_words[w]) >= 0)
+            fail_msg("a visitor reads '%s'", developer_words[w]);
+
+    /* at rest, no black hole, near c, a shadow that fills the view; the scene's own words */
+    v.speed = 0.0;
+    v.mass = 0.0;
+    n = hud_lines(&v, lines, HUD_MAX_LINES);
+    assert_true(find_line(lines, n, "Speed: at rest") >= 0);
+    assert_true(find_line(lines, n, "Black hole: none, light goes straight") >= 0);
+    v.speed = 0.995;
+    v.mass = 0.5;
+    v.shadow_share = 1.3;
+    v.speed_label = "Your speed";
+    v.mass_label = "The hole";
+    n = hud_lines(&v, lines, HUD_MAX_LINES);
+    assert_true(find_line(lines, n, "Your speed: 99.5% of light speed") >= 0);
+    assert_true(find_line(lines, n, "The hole: its shadow fills the view") >= 0);
+    v.shadow_share = 0.004;
+    n = hud_lines(&v, lines, HUD_MAX_LINES);
+    assert_true(find_line(lines, n, "The hole: shadow under 1% of the view") >= 0);
+
+    /* knobs mapped to keys: their words and how far along the range, not the key or its number */
+    struct hud_view m = {.title = "Light in a chaotic flow", .speed_key = "model.strength", .speed_param = 0.004,
+                         .speed_range = {0.0, 0.01}, .mass_key = "model.rho", .mass_param = 34.0,
+                         .mass_range = {0.0, 50.0}, .mass_label = "Chaos of the flow", .effects = -1};
+    n = hud_lines(&m, lines, HUD_MAX_LINES);
+    assert_int_equal(n, 3);
+    assert_true(find_line(lines, n, "Speed knob: 40%") >= 0);
+    assert_true(find_line(lines, n, "Chaos of the flow: 68%") >= 0);
+    assert_int_equal(find_line(lines, n, "model."), -1);
+    assert_int_equal(find_line(lines, n, "34"), -1);
 }
 
 static void test_text_width(void **state)
@@ -326,6 +388,57 @@ static struct rect draw_and_check_band(int w, int h, const struct hud_view *v)
     return b;
 }
 
+/* The visitor's block at w x h reaches no further than the top 30% of the screen (what make
+ * vm-test's screen comparison leaves to the HUD) and 60% of its width (half of a wide screen; on a
+ * narrower one, about 55 characters). */
+static void check_corner(const struct hud_view *v, int w, int h)
+{
+    struct rect b = draw_and_check_band(w, h, v);
+    if (b.y1 > 3 * h / 10 || b.x1 > 6 * w / 10 || (w * 9 >= h * 16 && b.x1 > w / 2))
+        fail_msg("%dx%d: the visitor's block reaches (%d, %d) with the caption \"%s\"", w, h, b.x1, b.y1,
+                 v->caption);
+}
+
+/* A visitor's block keeps to a corner: with both knobs and the colours, and the caption of every
+ * shipped scene, at 720p, 1080p and 1024x768; the longest caption a scene may have (96 bytes),
+ * in wide letters, on the wide screens. */
+static void test_visitor_band_in_a_corner(void **state)
+{
+    (void)state;
+    struct hud_view v = schwarzschild_view();
+    v.staff = 0;
+    v.effects = 2;
+    static const int sizes[][2] = {{1280, 720}, {1920, 1080}, {1024, 768}};
+    DIR *dir = opendir("assets/scenes");
+    assert_non_null(dir);
+    struct dirent *d;
+    int captions = 0;
+    while ((d = readdir(dir)) != NULL) {
+        size_t len = strlen(d->d_name);
+        if (len < 7 || strcmp(d->d_name + len - 6, ".scene") != 0)
+            continue;
+        char path[512], line[512];
+        snprintf(path, sizeof path, "assets/scenes/%s", d->d_name);
+        FILE *f = fopen(path, "r");
+        assert_non_null(f);
+        while (fgets(line, sizeof line, f))
+            if (strncmp(line, "caption = ", 10) == 0) {
+                line[strcspn(line, "\n")] = '\0';
+                v.caption = line + 10;
+                for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++)
+                    check_corner(&v, sizes[i][0], sizes[i][1]);
+                captions++;
+            }
+        fclose(f);
+    }
+    closedir(dir);
+    assert_true(captions >= 6);
+    v.caption = "Wow, WWW, MMM: Newton's gravity bends light only half as much as Einstein's; the eclipse showed.";
+    assert_int_equal(strlen(v.caption), 96);
+    check_corner(&v, 1280, 720);
+    check_corner(&v, 1920, 1080);
+}
+
 static void test_hud_scales_with_height(void **state)
 {
     (void)state;
@@ -497,11 +610,12 @@ static void test_draw_without_font_clears(void **state)
     hud_draw(font, rgba, W, H, &v);
 }
 
-/* A knob the scene maps to one of its keys shows that key and its value, not speed or mass. */
+/* Staff mode: a knob the scene maps to one of its keys shows that key and its value, not speed or
+ * mass. */
 static void test_lines_mapped_knobs(void **state)
 {
     (void)state;
-    struct hud_view v = {.title = "lorenz", .speed_key = "model.strength", .speed_param = 0.004,
+    struct hud_view v = {.staff = 1, .name = "lorenz", .speed_key = "model.strength", .speed_param = 0.004,
                          .mass_key = "model.rho", .mass_param = 34.0, .fps = -1.0};
     char lines[HUD_MAX_LINES][HUD_LINE_LEN];
     int n = hud_lines(&v, lines, HUD_MAX_LINES);
@@ -556,6 +670,8 @@ int main(void)
         cmocka_unit_test(test_lines_flat_space),
         cmocka_unit_test(test_lines_optional),
         cmocka_unit_test(test_lines_mapped_knobs),
+        cmocka_unit_test(test_lines_visitor),
+        cmocka_unit_test(test_visitor_band_in_a_corner),
         cmocka_unit_test(test_text_width),
         cmocka_unit_test(test_text_characters),
         cmocka_unit_test(test_text_draw_inside_its_box),

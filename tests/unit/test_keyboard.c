@@ -65,6 +65,11 @@ static void test_keys(void **state)
     assert_int_equal(ev[2].counts, -1);
     assert_int_equal(ev[0].source, 0);
     assert_true(ev[0].t == 1.0);
+    /* staff mode: i */
+    n = type_and_drain("i", ev, 16);
+    assert_int_equal(n, 1);
+    assert_int_equal(ev[0].kind, INPUT_ACTION);
+    assert_int_equal(ev[0].action, KIOSK_ACTION_STAFF_MODE);
 }
 
 static void test_arrow_split_across_reads(void **state)

@@ -115,6 +115,52 @@ static void test_actions(void **state)
     st.speed = 0.7;
     kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_RESET);
     assert_true(st.speed == config.speed.start && !st.pipeline_view);
+    /* staff mode: toggled, not part of what is drawn (the picture stays the same state), ended by
+     * reset, which a visitor may press */
+    struct kiosk_state before = st;
+    kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_STAFF_MODE);
+    assert_true(st.staff);
+    assert_true(kiosk_state_same(&before, &st));
+    kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_STAFF_MODE);
+    assert_false(st.staff);
+    kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_STAFF_MODE);
+    kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_RESET);
+    assert_false(st.staff);
+}
+
+/* The shipped attract tour (kiosk.conf's [attract] script) is a valid script, plays over the shipped
+ * scene list as it says: every scene shown once, back at the start scene when it ends (so that each
+ * pass begins where the visitor would), staff mode never entered, every event a visitor's. */
+static void test_shipped_tour(void **state)
+{
+    (void)state;
+    load_example();
+    static struct script sc;
+    struct error e;
+    assert_true(config.attract.script[0] != '\0');
+    if (script_load(&sc, config.attract.script, &e) != 0)
+        fail_msg("%s: %s", e.where, e.message);
+    struct kiosk_state st;
+    kiosk_state_reset(&st, &config);
+    int shown[KIOSK_MAX_SCENES] = {0}, frames = 0;
+    static struct scene scene;
+    hc_load(&scene, "schwarzschild", 16, 12, NULL);
+    shown[st.scene] = 1;
+    for (int i = 0; i < sc.n; i++) {
+        const struct script_event *ev = &sc.events[i];
+        frames += ev->kind == SCRIPT_FRAME;
+        if (ev->kind != SCRIPT_PRESS)
+            continue;
+        assert_int_not_equal(ev->action, KIOSK_ACTION_STAFF_MODE);
+        kiosk_state_action(&st, &config, &scene, ev->action);
+        shown[st.scene] = 1;
+    }
+    assert_int_equal(frames, 0);             /* a headless screen's event has no place on an exhibit */
+    assert_int_equal(st.scene, config.kiosk.start_scene);
+    for (int i = 0; i < config.kiosk.n_scenes; i++)
+        if (!shown[i])
+            fail_msg("the tour never shows %s", config.kiosk.scenes[i]);
+    assert_true(sc.events[sc.n - 1].t < 120.0);   /* a pass a visitor can stand */
 }
 
 /* Speed along the view, the black hole's mass (0: flat space, not integrated), the camera kept. */
@@ -324,6 +370,7 @@ int main(void)
         cmocka_unit_test(test_actions),
         cmocka_unit_test(test_apply),
         cmocka_unit_test(test_script),
+        cmocka_unit_test(test_shipped_tour),
         cmocka_unit_test(test_knobs_mapped_to_scene_keys),
         cmocka_unit_test(test_renderer_follows_the_scene),
     };
