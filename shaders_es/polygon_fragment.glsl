@@ -22,7 +22,7 @@ void main()
         discard;
     vec3 texel = vec3(1.0);
 #ifdef TEXTURED
-    texel = texture2D(u_texture, v_uv).rgb;
+    texel = texture_wrapped(u_texture, v_uv, u_material[4].zw);
 #endif
     surface_motion = u_body_motion;
 #ifdef CLOCKS

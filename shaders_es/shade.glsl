@@ -9,6 +9,29 @@ uniform float u_light_temperature[LIGHT_COUNT];   // K; 0: an RGB light
 #endif
 #endif
 
+#ifdef TEXTURED
+// An object's texture at uv. Along a coordinate that goes round (the sphere's longitude, the
+// disk's angle: src/scene/texture_wrap.h) the texels at its two ends are neighbours, and filtering
+// blends them across the seam as GL_REPEAT would, which ES 2.0 allows only for power-of-two sizes:
+// there, two lookups at the texel centres on either side (where GL_LINEAR gives the texel itself
+// along that coordinate), mixed. wrap_size: the texture's size along each coordinate that goes
+// round, 0 along one that does not (then both lookups are the plain one). ref/shade_cpu.c filters
+// the same way.
+vec3 texture_wrapped(sampler2D t, vec2 uv, vec2 wrap_size)
+{
+    vec2 wraps = vec2(greaterThan(wrap_size, vec2(0.0)));
+    vec2 size = max(wrap_size, vec2(1.0));
+    vec2 x = uv * size - 0.5;
+    vec2 below = floor(x);
+    vec2 f = x - below;
+    vec2 centre_below = (mod(below, size) + 0.5) / size;
+    vec2 centre_above = (mod(below + 1.0, size) + 0.5) / size;
+    vec3 a = texture2D(t, mix(uv, centre_below, wraps)).rgb;
+    vec3 b = texture2D(t, mix(uv, centre_above, wraps)).rgb;
+    return mix(a, b, dot(f, wraps));
+}
+#endif
+
 #ifdef MOVING_OBJECTS
 // beta, gamma of the surface being shaded (beta 0 for one at rest): it is lit in its rest frame
 vec4 surface_motion;

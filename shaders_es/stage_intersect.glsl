@@ -19,7 +19,8 @@ uniform vec4 u_materials[5 * BATCH_SIZE];
 #ifdef TEXTURED
 uniform sampler2D u_textures[BATCH_SIZE];
 // BATCH_TEXTURES lists SAMPLE_TEXTURE(slot) for the textured objects of the batch
-#define SAMPLE_TEXTURE(n) { vec3 sampled = texture2D(u_textures[n], uv).rgb; \
+// (the chosen slot's material is selected first: its emitter.zw are the sizes texture_wrapped takes)
+#define SAMPLE_TEXTURE(n) { vec3 sampled = texture_wrapped(u_textures[n], uv, emitter.zw); \
                             texel = best.slot == float(n) ? sampled : texel; }
 #endif
 

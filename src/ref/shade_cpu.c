@@ -1,4 +1,5 @@
 #include "ref/shade_cpu.h"
+#include "scene/texture_wrap.h"
 #include "scene/camera.h"
 #include "io/png_io.h"
 #include "physics/accretion.h"
@@ -55,17 +56,32 @@ static vec3d texel(const struct cpu_texture *t, int x, int y)
     return v3(p[0] / 255.0, p[1] / 255.0, p[2] / 255.0);
 }
 
-/* GL_LINEAR with GL_CLAMP_TO_EDGE: texel centres at (i + 0.5) / size. */
-static vec3d sample_bilinear(const struct cpu_texture *t, double s, double tc)
+/* Texel index i of n along an axis that goes round (wraps) or stops at its edges. */
+static int texel_index(int i, int n, int wraps)
+{
+    return wraps ? ((i % n) + n) % n : i;
+}
+
+/* GL_LINEAR with GL_CLAMP_TO_EDGE: texel centres at (i + 0.5) / size; along an axis that goes
+ * round (wrap_s, wrap_t: scene/texture_wrap.h), the texels at its two ends are neighbours, as the
+ * shaders filter them (texture_wrapped in shade.glsl). */
+static vec3d sample_bilinear_wrapped(const struct cpu_texture *t, double s, double tc, int wrap_s, int wrap_t)
 {
     s = s < 0.0 ? 0.0 : s > 1.0 ? 1.0 : s;
     tc = tc < 0.0 ? 0.0 : tc > 1.0 ? 1.0 : tc;
     double u = s * t->width - 0.5, v = tc * t->height - 0.5;
     int x0 = (int)floor(u), y0 = (int)floor(v);
     double fx = u - x0, fy = v - y0;
-    vec3d bottom = v3_add(v3_scale(texel(t, x0, y0), 1.0 - fx), v3_scale(texel(t, x0 + 1, y0), fx));
-    vec3d top = v3_add(v3_scale(texel(t, x0, y0 + 1), 1.0 - fx), v3_scale(texel(t, x0 + 1, y0 + 1), fx));
+    int xa = texel_index(x0, t->width, wrap_s), xb = texel_index(x0 + 1, t->width, wrap_s);
+    int ya = texel_index(y0, t->height, wrap_t), yb = texel_index(y0 + 1, t->height, wrap_t);
+    vec3d bottom = v3_add(v3_scale(texel(t, xa, ya), 1.0 - fx), v3_scale(texel(t, xb, ya), fx));
+    vec3d top = v3_add(v3_scale(texel(t, xa, yb), 1.0 - fx), v3_scale(texel(t, xb, yb), fx));
     return v3_add(v3_scale(bottom, 1.0 - fy), v3_scale(top, fy));
+}
+
+static vec3d sample_bilinear(const struct cpu_texture *t, double s, double tc)
+{
+    return sample_bilinear_wrapped(t, s, tc, 0, 0);
 }
 
 /* Face and (s, t) of a direction: table 3.21 of the OpenGL ES 3.2 specification. */
@@ -126,8 +142,12 @@ static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray
     const struct scene *s = mat->scene;
     const struct material *m = &s->objects[ray->outcome].material;
     vec3d base = m->color;
-    if (m->texture >= 0)
-        base = vmul(base, sample_bilinear(&mat->textures[m->texture], ray->uv[0], ray->uv[1]));
+    if (m->texture >= 0) {
+        int wraps[2];
+        texture_wraps(s->objects[ray->outcome].type, wraps);
+        base = vmul(base, sample_bilinear_wrapped(&mat->textures[m->texture], ray->uv[0], ray->uv[1], wraps[0],
+                                                  wraps[1]));
+    }
     if (m->checker > 0.0) {
         double sx = floor(ray->uv[0] * m->checker), sy = floor(ray->uv[1] * m->checker);
         if (fmod(sx + sy, 2.0) != 0.0)

@@ -3,6 +3,7 @@
  * A batch holds only the primitive types it contains; its program is cached by that list. */
 #include "physics/relativity.h"
 #include "render/stages.h"
+#include "scene/texture_wrap.h"
 #include "scene/object_bound.h"
 #include <math.h>
 #include <stdio.h>
@@ -89,16 +90,23 @@ static void chord_cull_pack(const struct object *o, float ball[4], float plane[4
     scale[1] = (float)(CHORD_CULL_POSITION_MARGIN * (fabs(c.x) + fabs(c.y) + fabs(c.z)));
 }
 
-void intersect_pack_material(const struct object *o, int object_id, float out[MATERIAL_VECS][4])
+void intersect_pack_material(const struct renderer *r, const struct object *o, int object_id,
+                             float out[MATERIAL_VECS][4])
 {
     const struct material *m = &o->material;
+    /* the size of the object's texture along each coordinate that goes round, 0 along one that
+     * does not (scene/texture_wrap.h; texture_wrapped in shade.glsl) */
+    int wraps[2];
+    texture_wraps(o->type, wraps);
     pack3(out[0], m->color, m->checker);
     pack3(out[1], m->emission, object_id);
     out[2][0] = (float)m->ambient, out[2][1] = (float)m->diffuse;
     out[2][2] = (float)m->specular, out[2][3] = (float)m->shininess;
     pack3(out[3], m->checker_color, m->clock_period);
-    out[4][0] = (float)m->temperature, out[4][2] = out[4][3] = 0.0f;
+    out[4][0] = (float)m->temperature;
     out[4][1] = m->accretion ? (float)o->inner_radius : 0.0f;    /* shade.glsl: an accretion disk's inner edge */
+    for (int k = 0; k < 2; k++)
+        out[4][2 + k] = m->texture >= 0 && wraps[k] ? (float)r->texture_size[m->texture][k] : 0.0f;
 }
 
 /* beta, gamma and the rest frame's origin (shaders_es/stage_intersect.glsl); gamma 1 at rest */
@@ -150,7 +158,7 @@ void object_batch_set_uniforms(const struct program_uniforms *p, const void *arg
         object_rest_geometry(o, &rest);
         pack_geometry(&rest, geometry[i]);
         pack_motion(o, motion[i]);
-        intersect_pack_material(o, b->object[i], material[i]);
+        intersect_pack_material(b->r, o, b->object[i], material[i]);
         units[i] = FIRST_OBJECT_UNIT;
         if (o->material.texture >= 0) {
             glActiveTexture(GL_TEXTURE0 + unit);

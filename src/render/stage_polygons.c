@@ -80,7 +80,7 @@ static void draw_object(struct renderer *r, const struct program_uniforms *p, in
     struct object_motion m;
     object_motion(o, &m);
     float material[5][4];
-    intersect_pack_material(o, k, material);
+    intersect_pack_material(r, o, k, material);
     glUniform4fv(program_uniform(p, "u_material"), 5, &material[0][0]);
     uniform_float(p, "u_object_id", k);
     glUniform4f(program_uniform(p, "u_body_motion"), (float)m.beta.x, (float)m.beta.y, (float)m.beta.z,

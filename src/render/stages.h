@@ -29,6 +29,7 @@ struct renderer {
     struct raystate rs;
     int have_state;
     GLuint textures[SCENE_MAX_TEXTURES];
+    int texture_size[SCENE_MAX_TEXTURES][2];   /* as uploaded (image_read may scale one down) */
     GLuint sky_cubemap;
     GLuint blackbody_lut;         /* Doppler colour effects only */
     int blackbody_tone;           /* the table's enum blackbody_tone */
@@ -181,6 +182,6 @@ int polygons_load(struct renderer *r, struct error *e);
 void polygons_release(struct renderer *r);
 int stage_polygons(struct renderer *r, struct error *e);
 /* One object's material vectors as the intersection and polygon shaders read them. */
-void intersect_pack_material(const struct object *o, int object_id, float out[5][4]);
+void intersect_pack_material(const struct renderer *r, const struct object *o, int object_id, float out[5][4]);
 
 #endif

@@ -7,7 +7,7 @@
 /* A texture that cannot be decoded is the scene's bad input: the message names the scene file and
  * the line of the key that named it (the validation read only the PNG's header). */
 static int upload(GLenum target, const struct scene *s, const char *key, int line, const char *path, int max_size,
-                  struct error *e)
+                  int size[2], struct error *e)
 {
     int w, h, owned = 0;
     const unsigned char *rgba = NULL;
@@ -19,6 +19,8 @@ static int upload(GLenum target, const struct scene *s, const char *key, int lin
     }
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(target, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    size[0] = w;
+    size[1] = h;
     if (owned)
         free((void *)rgba);
     return 0;
@@ -36,7 +38,8 @@ int textures_load(struct renderer *r, struct error *e)
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        if (upload(GL_TEXTURE_2D, s, "texture", s->texture_line[i], s->textures[i], max_size, e) != 0)
+        if (upload(GL_TEXTURE_2D, s, "texture", s->texture_line[i], s->textures[i], max_size, r->texture_size[i],
+                   e) != 0)
             return -1;
     }
     if (s->sky.type == SKY_CUBEMAP) {
@@ -49,7 +52,9 @@ int textures_load(struct renderer *r, struct error *e)
         for (int f = 0; f < SCENE_CUBEMAP_FACES; f++) {
             char path[SCENE_PATH_LEN + 16];
             scene_cubemap_face_path(s->sky.cubemap, f, path, sizeof path);
-            if (upload(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, s, "cubemap", s->cubemap_line, path, max_size, e) != 0)
+            int face_size[2];
+            if (upload(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f, s, "cubemap", s->cubemap_line, path, max_size, face_size,
+                       e) != 0)
                 return -1;
         }
     }
