@@ -43,57 +43,61 @@ static const char *misfit(const struct hid_layout *l, size_t offset)
     return l->report_id != 0 && offset == 0 ? "on the report id byte" : "past the end of the report";
 }
 
-static int refuse(char *why, size_t why_len, const char *fmt, ...)
+/* The layout's refusal, in e where the caller wants one (e may be NULL): -1. */
+__attribute__((format(printf, 2, 3)))
+static int refuse(struct error *e, const char *fmt, ...)
 {
-    if (why != NULL && why_len > 0) {
+    if (e != NULL) {
+        char message[sizeof e->message];
         va_list args;
         va_start(args, fmt);
-        vsnprintf(why, why_len, fmt, args);
+        vsnprintf(message, sizeof message, fmt, args);
         va_end(args);
+        error_set(e, ERROR_INPUT, NULL, "%s", message);
     }
     return -1;
 }
 
-static int axis_check(const struct hid_layout *l, char *why, size_t why_len)
+static int axis_check(const struct hid_layout *l, struct error *e)
 {
     const struct hid_axis *x = &l->axis;
     if (x->kind == HID_AXIS_NONE)
         return 0;
     if (x->kind != HID_AXIS_RELATIVE && x->kind != HID_AXIS_ABSOLUTE)
-        return refuse(why, why_len, "axis.kind %d: not none, relative or absolute", (int)x->kind);
+        return refuse(e, "axis.kind %d: not none, relative or absolute", (int)x->kind);
     if (x->size != 1 && x->size != 2 && x->size != 4)
-        return refuse(why, why_len, "axis.size %d: must be 1, 2 or 4 bytes", x->size);
+        return refuse(e, "axis.size %d: must be 1, 2 or 4 bytes", x->size);
     if (!field_fits(l, x->offset, (size_t)x->size))
-        return refuse(why, why_len, "axis.offset %zu, size %d: %s (report_len %zu)", x->offset,
+        return refuse(e, "axis.offset %zu, size %d: %s (report_len %zu)", x->offset,
                       x->size, misfit(l, x->offset), l->report_len);
 #if LONG_MAX < UINT32_MAX
     /* an unsigned 4-byte delta does not fit the reading's long on this host */
     if (x->kind == HID_AXIS_RELATIVE && x->size == 4 && !x->is_signed)
-        return refuse(why, why_len, "axis.is_signed: an unsigned 4-byte delta does not fit a long");
+        return refuse(e, "axis.is_signed: an unsigned 4-byte delta does not fit a long");
 #endif
     if (x->kind == HID_AXIS_ABSOLUTE && x->logical_min >= x->logical_max)
-        return refuse(why, why_len, "axis.logical_min %lld: not below axis.logical_max %lld",
+        return refuse(e, "axis.logical_min %lld: not below axis.logical_max %lld",
                       (long long)x->logical_min, (long long)x->logical_max);
     return 0;
 }
 
-int hid_layout_check(const struct hid_layout *l, char *why, size_t why_len)
+int hid_layout_check(const struct hid_layout *l, struct error *e)
 {
-    if (why != NULL && why_len > 0)
-        why[0] = '\0';
+    if (e != NULL)
+        error_clear(e);
     if (l->report_len == 0 || (l->report_id != 0 && l->report_len < 2))
-        return refuse(why, why_len, "report_len %zu: no room for a field", l->report_len);
-    if (axis_check(l, why, why_len) != 0)
+        return refuse(e, "report_len %zu: no room for a field", l->report_len);
+    if (axis_check(l, e) != 0)
         return -1;
     if (l->n_buttons < 0 || l->n_buttons > HID_MAX_BUTTONS)
-        return refuse(why, why_len, "n_buttons %d: 0 to %d", l->n_buttons, HID_MAX_BUTTONS);
+        return refuse(e, "n_buttons %d: 0 to %d", l->n_buttons, HID_MAX_BUTTONS);
     for (int i = 0; i < l->n_buttons; i++) {
         const struct hid_button_bit *b = &l->buttons[i];
         if (!field_fits(l, b->offset, 1))
-            return refuse(why, why_len, "buttons[%d].offset %zu: %s (report_len %zu)", i, b->offset,
+            return refuse(e, "buttons[%d].offset %zu: %s (report_len %zu)", i, b->offset,
                           misfit(l, b->offset), l->report_len);
         if (b->bit < 0 || b->bit >= BITS_PER_BYTE)
-            return refuse(why, why_len, "buttons[%d].bit %d: must be 0..7", i, b->bit);
+            return refuse(e, "buttons[%d].bit %d: must be 0..7", i, b->bit);
     }
     return 0;
 }
@@ -113,7 +117,7 @@ static double clamp01(double x)
 
 int hid_decode(const struct hid_layout *l, const uint8_t *report, size_t len, struct knob_reading *out)
 {
-    if (report == NULL || hid_layout_check(l, NULL, 0) != 0)
+    if (report == NULL || hid_layout_check(l, NULL) != 0)
         return -1;
     if (l->report_id != 0 && len >= 1 && report[0] != l->report_id)
         return 0;

@@ -5,6 +5,7 @@
 #define BT_KIOSK_HID_REPORT_H
 #include <stddef.h>
 #include <stdint.h>
+#include "io/error.h"
 
 struct knob_reading {
     int has_delta;
@@ -51,10 +52,11 @@ struct hid_layout {
     struct hid_button_bit buttons[HID_MAX_BUTTONS];
 };
 
-/* Returns 0 for a usable layout; else -1 with a message naming the field in why (when why is not
- * NULL; cut to why_len): an axis size other than 1, 2 or 4, a field beyond report_len or on the
- * report id byte, a bit outside 0..7, logical_min >= logical_max on an absolute axis. */
-int hid_layout_check(const struct hid_layout *l, char *why, size_t why_len);
+/* Returns 0 for a usable layout; else -1 with a message naming the field in e (ERROR_INPUT, no
+ * place; e may be NULL where no message is wanted): an axis size other than 1, 2 or 4, a field
+ * beyond report_len or on the report id byte, a bit outside 0..7, logical_min >= logical_max on an
+ * absolute axis. */
+int hid_layout_check(const struct hid_layout *l, struct error *e);
 
 /* Decodes one report. Returns 1 with *out written; 0 when the report starts with another report id
  * (another of the device's reports: not for this layout); -1 when it is shorter than report_len or

@@ -17,7 +17,7 @@ struct hid_source {
     int is_powermate;
     struct hid_layout layout;        /* hid: where the axis and the buttons lie */
     int layout_ok;                   /* hid: the layout passed hid_layout_check */
-    char layout_why[160];
+    char layout_why[sizeof ((struct error *)0)->message];
     int n_buttons;
     hid_device *dev;                 /* NULL while absent */
     struct input_hid_state state;
@@ -160,8 +160,12 @@ struct input_source *input_open_hid_api(const struct kiosk_input *in, int index,
     s->api = api;
     s->is_powermate = in->type == KIOSK_INPUT_POWERMATE;
     s->n_buttons = s->is_powermate ? 1 : in->buttons;
-    if (!s->is_powermate)
-        s->layout_ok = input_hid_layout(in, &s->layout, s->layout_why, sizeof s->layout_why) == 0;
+    if (!s->is_powermate) {
+        struct error refused;
+        s->layout_ok = input_hid_layout(in, &s->layout, &refused) == 0;
+        if (!s->layout_ok)
+            snprintf(s->layout_why, sizeof s->layout_why, "%s", refused.message);
+    }
     input_queue_clear(&s->queue);
     input_retry_init(&s->retry, now);
     /* a failure here is not fatal: hidapi's enumeration tries hid_init again at every look */

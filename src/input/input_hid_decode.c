@@ -4,7 +4,7 @@
 #include "input/input_hid_decode.h"
 #include <string.h>
 
-int input_hid_layout(const struct kiosk_input *in, struct hid_layout *layout, char *why, size_t why_len)
+int input_hid_layout(const struct kiosk_input *in, struct hid_layout *layout, struct error *e)
 {
     memset(layout, 0, sizeof *layout);
     layout->report_id = (uint8_t)in->report_id;
@@ -20,7 +20,7 @@ int input_hid_layout(const struct kiosk_input *in, struct hid_layout *layout, ch
         layout->buttons[i].offset = in->button_offset > 0 ? (size_t)in->button_offset : 0;
         layout->buttons[i].bit = i;
     }
-    return hid_layout_check(layout, why, why_len);
+    return hid_layout_check(layout, e);
 }
 
 void input_hid_state_reset(struct input_hid_state *s)

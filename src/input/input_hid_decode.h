@@ -10,9 +10,9 @@
 
 /* The layout of an [input NAME] of type hid: its axis, and its `buttons` bits counted up from bit
  * 0 of byte button_offset (so bit i of the reading is the configuration's bit i). Returns 0, or -1
- * with the reason in why (cut to why_len) for a layout hid_layout_check refuses, which a checked
- * configuration does not give. */
-int input_hid_layout(const struct kiosk_input *in, struct hid_layout *layout, char *why, size_t why_len);
+ * with the reason in e for a layout hid_layout_check refuses, which a checked configuration does
+ * not give. */
+int input_hid_layout(const struct kiosk_input *in, struct hid_layout *layout, struct error *e);
 
 /* What the previous readings left: the buttons down, the last position sent. */
 struct input_hid_state {

@@ -65,11 +65,11 @@ static void check_accepted(const struct kiosk_config *c)
             __builtin_trap();
         if (in->type == KIOSK_INPUT_HID) {
             struct hid_layout l;
-            char why[160];
+            struct error why;
             if (in->buttons > HID_MAX_BUTTONS)
                 __builtin_trap();
             /* the layout the kiosk's HID source reads the device with */
-            if (input_hid_layout(in, &l, why, sizeof why) != 0)
+            if (input_hid_layout(in, &l, &why) != 0)
                 __builtin_trap();
         } else if (in->type == KIOSK_INPUT_GPIO_ENCODER) {
             struct quadrature q;

@@ -883,8 +883,8 @@ static void test_hid_layout_from_config(void **state)
     in.button_offset = 3;
     in.buttons = 4;
     struct hid_layout l;
-    char why[128];
-    assert_int_equal(input_hid_layout(&in, &l, why, sizeof why), 0);
+    struct error why;
+    assert_int_equal(input_hid_layout(&in, &l, &why), 0);
     const uint8_t report[5] = {3, 0xf4, 0x01, 0xf5, 0};   /* 500; bits 0, 2 (and 4..7, not buttons) */
     struct knob_reading r;
     assert_int_equal(hid_decode(&l, report, sizeof report, &r), 1);
@@ -901,7 +901,7 @@ static void test_hid_layout_from_config(void **state)
     in.axis_signed = 1;
     in.axis_mode = KIOSK_AXIS_RELATIVE;
     in.axis_min = in.axis_max = 0;
-    assert_int_equal(input_hid_layout(&in, &l, why, sizeof why), 0);
+    assert_int_equal(input_hid_layout(&in, &l, &why), 0);
     const uint8_t turn[5] = {0xfe, 0, 0, 0x02, 0};
     assert_int_equal(hid_decode(&l, turn, sizeof turn, &r), 1);
     assert_true(r.has_delta);
@@ -910,8 +910,8 @@ static void test_hid_layout_from_config(void **state)
 
     /* what hid_layout_check refuses is refused with its reason */
     in.axis_size = 3;
-    assert_int_equal(input_hid_layout(&in, &l, why, sizeof why), -1);
-    assert_non_null(strstr(why, "axis.size"));
+    assert_int_equal(input_hid_layout(&in, &l, &why), -1);
+    assert_non_null(strstr(why.message, "axis.size"));
 }
 
 static struct knob_reading reading(long delta, unsigned buttons)
