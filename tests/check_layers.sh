@@ -57,5 +57,13 @@ if [ -n "$tests_of_models" ]; then
     echo "$tests_of_models" | sed 's/$/: tests a model'"'"'s type outside src\/physics: ask its model_ops (physics\/model.h)/'
     wrong=$((wrong + $(echo "$tests_of_models" | wc -l)))
 fi
+# One way to fail (io/error.h): no interface hands a message back through a buffer and its length
+# (char *msg, size_t len; char *err, size_t; why or reason likewise); a failure fills struct error.
+buffers=$(grep -nE '(char \*(msg|err|why|reason)[a-z_]*, *size_t)|(\b(msg|err|why|reason)_?len\b)' \
+    $(find src -name '*.h') || true)
+if [ -n "$buffers" ]; then
+    echo "$buffers" | sed 's/$/: hands a message back in a buffer: fill a struct error (io\/error.h)/'
+    wrong=$((wrong + $(echo "$buffers" | wc -l)))
+fi
 echo "layers: $checked includes checked, $wrong wrong"
 [ "$wrong" = 0 ]

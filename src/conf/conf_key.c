@@ -16,6 +16,8 @@
 #define HEX16_MAX 0xffff
 /* Room for a path in a reason, and for the reason in a message. */
 #define REASON_LEN 4608
+/* Room for a message with its key, section and reason, cut to struct error's when it is set. */
+#define MESSAGE_ROOM (REASON_LEN + 512)
 
 /* ---- finding a key ------------------------------------------------------------------------- */
 
@@ -337,23 +339,25 @@ static const struct conf_key *key_or_message(const struct conf_key_table *table,
 
 /* The setter, or the field copy and the check of what a FILE or DIR names. */
 static int store(const struct conf_key_table *table, void *owner, void *target, const struct conf_key *k,
-                 const union conf_parsed *v, char *reason, size_t len)
+                 const union conf_parsed *v, struct error *e)
 {
     if (k->set)
-        return k->set(owner, target, v, reason, len);
+        return k->set(owner, target, v, e);
     /* what a path names is looked at now, so the message can point at this line */
-    if (k->kind == CONF_FILE && conf_check_file(v->text, table->relative_note, reason, len) != 0)
+    if (k->kind == CONF_FILE && conf_check_file(v->text, table->relative_note, e) != 0)
         return -1;
-    if (k->kind == CONF_DIR && conf_check_dir(v->text, table->relative_note, reason, len) != 0)
+    if (k->kind == CONF_DIR && conf_check_dir(v->text, table->relative_note, e) != 0)
         return -1;
     store_value(k, target, v);
     return 0;
 }
 
-int conf_key_apply(const struct conf_key_table *table, void *owner, int section, int instance,
-                   const char *name, const char *value, char *msg, size_t msg_len)
+/* conf_key_apply's message into msg */
+static int apply_text(const struct conf_key_table *table, void *owner, int section, int instance,
+                      const char *name, const char *value, char *msg, size_t msg_len)
 {
-    char label[160], expected[192], path[REASON_LEN], reason[REASON_LEN];
+    char label[160], expected[192], path[REASON_LEN];
+    struct error reason;
     const char *why = NULL;
     union conf_parsed v;
 
@@ -380,18 +384,29 @@ int conf_key_apply(const struct conf_key_table *table, void *owner, int section,
                      " (a comment after a value starts with ' ;', not '#')");
         return -1;
     }
-    reason[0] = '\0';
-    if (store(table, owner, table->target(owner, section, instance), k, &v, reason, sizeof reason) != 0) {
-        snprintf(msg, msg_len, "key '%s' in %s: %s", name, label, reason);
+    error_clear(&reason);
+    if (store(table, owner, table->target(owner, section, instance), k, &v, &reason) != 0) {
+        snprintf(msg, msg_len, "key '%s' in %s: %s", name, label, reason.message);
         return -1;
     }
     return 0;
 }
 
-int conf_key_apply_number(const struct conf_key_table *table, void *owner, int section, int instance,
-                          const char *name, double value, char *msg, size_t msg_len)
+int conf_key_apply(const struct conf_key_table *table, void *owner, int section, int instance,
+                   const char *name, const char *value, struct error *e)
 {
-    char label[160], reason[REASON_LEN];
+    char msg[MESSAGE_ROOM];
+    if (apply_text(table, owner, section, instance, name, value, msg, sizeof msg) != 0)
+        return error_set(e, ERROR_INPUT, NULL, "%s", msg);
+    return 0;
+}
+
+/* conf_key_apply_number's message into msg */
+static int apply_number_text(const struct conf_key_table *table, void *owner, int section, int instance,
+                             const char *name, double value, char *msg, size_t msg_len)
+{
+    char label[160];
+    struct error reason;
     table->label(owner, section, instance, label, sizeof label);
     const struct conf_key *k = key_or_message(table, owner, section, instance, name, label, msg, msg_len);
     if (!k)
@@ -413,11 +428,20 @@ int conf_key_apply_number(const struct conf_key_table *table, void *owner, int s
         return -1;
     }
     union conf_parsed v = {.number = value};
-    reason[0] = '\0';
-    if (store(table, owner, table->target(owner, section, instance), k, &v, reason, sizeof reason) != 0) {
-        snprintf(msg, msg_len, "key '%s' in %s: %s", name, label, reason);
+    error_clear(&reason);
+    if (store(table, owner, table->target(owner, section, instance), k, &v, &reason) != 0) {
+        snprintf(msg, msg_len, "key '%s' in %s: %s", name, label, reason.message);
         return -1;
     }
+    return 0;
+}
+
+int conf_key_apply_number(const struct conf_key_table *table, void *owner, int section, int instance,
+                          const char *name, double value, struct error *e)
+{
+    char msg[MESSAGE_ROOM];
+    if (apply_number_text(table, owner, section, instance, name, value, msg, sizeof msg) != 0)
+        return error_set(e, ERROR_INPUT, NULL, "%s", msg);
     return 0;
 }
 
@@ -434,8 +458,9 @@ static void describe_types(const struct conf_key *type, char *buf, size_t len)
                                  i == 0 ? "type = " : "", type->choices[i].name);
 }
 
-int conf_key_check_required(const struct conf_key_table *table, const void *owner, int section, int instance,
-                            const int *key_line, char *msg, size_t msg_len)
+/* conf_key_check_required's message into msg */
+static int check_required_text(const struct conf_key_table *table, const void *owner, int section, int instance,
+                               const int *key_line, char *msg, size_t msg_len)
 {
     char label[160];
     table->label(owner, section, instance, label, sizeof label);
@@ -462,5 +487,14 @@ int conf_key_check_required(const struct conf_key_table *table, const void *owne
             snprintf(msg, msg_len, "%s needs '%s'", label, k->name);
         return -1;
     }
+    return 0;
+}
+
+int conf_key_check_required(const struct conf_key_table *table, const void *owner, int section, int instance,
+                            const int *key_line, struct error *e)
+{
+    char msg[MESSAGE_ROOM];
+    if (check_required_text(table, owner, section, instance, key_line, msg, sizeof msg) != 0)
+        return error_set(e, ERROR_INPUT, NULL, "%s", msg);
     return 0;
 }

@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "conf/conf_value.h"
+#include "io/error.h"
 
 enum conf_kind {
     CONF_NUMBER,        /* one double in [lo, hi] */
@@ -49,9 +50,9 @@ union conf_parsed {
 /* Stores a parsed value where a plain field copy is not enough (a check against other keys, a
  * file to look at, an enumeration's own defaults). owner is the whole configuration (the scene,
  * the kiosk's configuration), target the section instance's struct (the owner, an object, an
- * input). On failure it writes why into reason; the caller adds the key and the section. */
-typedef int (*conf_setter)(void *owner, void *target, const union conf_parsed *v, char *reason,
-                           size_t reason_len);
+ * input). On failure it returns -1 with why in e (ERROR_INPUT, no place); the caller adds the key
+ * and the section. */
+typedef int (*conf_setter)(void *owner, void *target, const union conf_parsed *v, struct error *e);
 
 struct conf_key {
     int section;                        /* the file kind's section enumeration */
@@ -99,24 +100,24 @@ int conf_key_find(const struct conf_key_table *table, int section, const char *n
  * or does not apply (then conf_key_apply says which). */
 const struct conf_key *conf_key_for(const struct conf_key_table *table, const void *owner, int section,
                                     int instance, const char *name);
-/* Parse VALUE for key NAME of a section instance and store it: 0, or -1 with the whole message
- * ("unknown key 'x' in [camera] (did you mean 'fov'?)", "key 'fov' in [camera]: expected ...,
- * got ..."). */
+/* Parse VALUE for key NAME of a section instance and store it: 0, or -1 with the whole message in
+ * e ("unknown key 'x' in [camera] (did you mean 'fov'?)", "key 'fov' in [camera]: expected ...,
+ * got ..."; ERROR_INPUT, no place: the caller knows the file and line, or the option). */
 int conf_key_apply(const struct conf_key_table *table, void *owner, int section, int instance,
-                   const char *name, const char *value, char *msg, size_t msg_len);
+                   const char *name, const char *value, struct error *e);
 /* The same for a number that comes as a number (a knob), checked as a number written in the file
  * would be: finite, a normal double, within the table's limit and the key's range. The key must
  * be a CONF_NUMBER. */
 int conf_key_apply_number(const struct conf_key_table *table, void *owner, int section, int instance,
-                          const char *name, double value, char *msg, size_t msg_len);
+                          const char *name, double value, struct error *e);
 /* "a number from 0 to 1", "one of off, on", for messages and help. */
 void conf_key_expected(const struct conf_key_table *table, const struct conf_key *k, char *buf, size_t len);
 /* For a section that ended: 0 when every CONF_REQUIRED key of its type was given (key_line[k]:
- * where key k, its index in the table, was set; 0 where not), else -1 with the message: "[input
+ * where key k, its index in the table, was set; 0 where not), else -1 with the message in e: "[input
  * knob] has no type: add 'type = powermate', ... or 'script'" for a section with types, then
  * "[input knob] of type 'hid' needs 'vid'", "[button b] needs 'action'". */
 int conf_key_check_required(const struct conf_key_table *table, const void *owner, int section, int instance,
-                            const int *key_line, char *msg, size_t msg_len);
+                            const int *key_line, struct error *e);
 /* The name of choice VALUE among CHOICES, "?" if none has it. */
 const char *conf_choice_name(const struct conf_choice *choices, int value);
 

@@ -30,38 +30,38 @@ int conf_path_join(const char *dir, const char *rel, char *out, size_t len)
 }
 
 /* A directory opens fine with fopen on Linux, so regular files are asked for explicitly. */
-int conf_check_file(const char *path, const char *note, char *reason, size_t len)
+int conf_check_file(const char *path, const char *note, struct error *e)
 {
     struct stat st;
     FILE *f;
     if (stat(path, &st) != 0) {
-        snprintf(reason, len, "cannot read \"%s\": %s%s%s%s", path, strerror(errno), note ? " (" : "",
+        error_set(e, ERROR_INPUT, NULL, "cannot read \"%s\": %s%s%s%s", path, strerror(errno), note ? " (" : "",
                  note ? note : "", note ? ")" : "");
         return -1;
     }
     if (!S_ISREG(st.st_mode)) {
-        snprintf(reason, len, "\"%s\" is not a regular file", path);
+        error_set(e, ERROR_INPUT, NULL, "\"%s\" is not a regular file", path);
         return -1;
     }
     f = fopen(path, "rb");
     if (!f) {
-        snprintf(reason, len, "cannot read \"%s\": %s", path, strerror(errno));
+        error_set(e, ERROR_INPUT, NULL, "cannot read \"%s\": %s", path, strerror(errno));
         return -1;
     }
     fclose(f);
     return 0;
 }
 
-int conf_check_dir(const char *path, const char *note, char *reason, size_t len)
+int conf_check_dir(const char *path, const char *note, struct error *e)
 {
     struct stat st;
     if (stat(path, &st) != 0) {
-        snprintf(reason, len, "no directory \"%s\": %s%s%s%s", path, strerror(errno), note ? " (" : "",
+        error_set(e, ERROR_INPUT, NULL, "no directory \"%s\": %s%s%s%s", path, strerror(errno), note ? " (" : "",
                  note ? note : "", note ? ")" : "");
         return -1;
     }
     if (!S_ISDIR(st.st_mode)) {
-        snprintf(reason, len, "\"%s\" is not a directory", path);
+        error_set(e, ERROR_INPUT, NULL, "\"%s\" is not a directory", path);
         return -1;
     }
     return 0;

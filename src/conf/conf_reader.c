@@ -81,19 +81,19 @@ const char *conf_kind_guess(const struct conf_schema *schema, const char *name)
 
 static int finish_section(struct reader *r)
 {
-    char msg[sizeof r->err->message];
+    struct error e;
     if (r->kind < 0)
         return 0;
-    if (conf_key_check_required(r->schema->keys, r->target, r->kind, r->instance, r->key_line, msg, sizeof msg) != 0)
-        return fail(r, r->header_line, "%s", msg);
-    if (r->schema->close && r->schema->close(r->target, r->kind, r->instance, r->key_line, msg, sizeof msg) != 0)
-        return fail(r, r->header_line, "%s", msg);
+    if (conf_key_check_required(r->schema->keys, r->target, r->kind, r->instance, r->key_line, &e) != 0)
+        return fail(r, r->header_line, "%s", e.message);
+    if (r->schema->close && r->schema->close(r->target, r->kind, r->instance, r->key_line, &e) != 0)
+        return fail(r, r->header_line, "%s", e.message);
     return 0;
 }
 
 static int open_section(struct reader *r, int kind, const char *name)
 {
-    char msg[sizeof r->err->message];
+    struct error e;
     for (int i = 0; i < r->n_seen; i++) {
         if (r->seen[i].kind == kind && strcmp(r->seen[i].name, name) == 0)
             return fail(r, r->line, "section [%s%s%s] appears twice (lines %d and %d): %s", r->schema->kind_name(kind),
@@ -102,8 +102,8 @@ static int open_section(struct reader *r, int kind, const char *name)
     }
     if (r->n_seen == CONF_MAX_SECTIONS)
         return fail(r, r->line, "too many sections: a %s holds at most %d", r->schema->what, CONF_MAX_SECTIONS);
-    if (r->schema->open(r->target, kind, name, r->line, &r->instance, msg, sizeof msg) != 0)
-        return fail(r, r->line, "%s", msg);
+    if (r->schema->open(r->target, kind, name, r->line, &r->instance, &e) != 0)
+        return fail(r, r->line, "%s", e.message);
     r->seen[r->n_seen].kind = kind;
     snprintf(r->seen[r->n_seen].name, sizeof r->seen[r->n_seen].name, "%s", name);
     r->seen[r->n_seen].line = r->line;
@@ -169,7 +169,8 @@ static int read_header(struct reader *r, char *line)
  * line for inih. */
 static char *continue_value(struct reader *r, char *line)
 {
-    char msg[sizeof r->err->message], label[CONF_NAME_MAX + 16], *cut;
+    char label[CONF_NAME_MAX + 16], *cut;
+    struct error e;
     if (*line == ';' || *line == '#') {
         *line = '\0';
         return line;
@@ -180,9 +181,9 @@ static char *continue_value(struct reader *r, char *line)
             break;
         }
     }
-    if (r->schema->continuation(r->target, r->kind, r->instance, r->continuing, conf_trim(line), msg, sizeof msg) != 0) {
+    if (r->schema->continuation(r->target, r->kind, r->instance, r->continuing, conf_trim(line), &e) != 0) {
         r->schema->keys->label(r->target, r->kind, r->instance, label, sizeof label);
-        fail(r, r->line, "key '%s' in %s: %s", r->continuing, label, msg);
+        fail(r, r->line, "key '%s' in %s: %s", r->continuing, label, e.message);
         return NULL;
     }
     *line = '\0';
@@ -245,7 +246,7 @@ static int on_pair(void *user, const char *inih_section, const char *name, const
 {
     struct reader *r = user;
     const struct conf_schema *schema = r->schema;
-    char msg[sizeof r->err->message];
+    struct error e;
     (void)inih_section;  /* tracked by read_header(), which keeps names inih would cut */
 
     if (r->failed)
@@ -277,8 +278,8 @@ static int on_pair(void *user, const char *inih_section, const char *name, const
         }
     }
     /* unknown keys too: one place words the message (with its guess at what was meant) */
-    if (conf_key_apply(keys, r->target, r->kind, r->instance, name, value, msg, sizeof msg) != 0 || key < 0) {
-        fail(r, r->line, "%s", msg);
+    if (conf_key_apply(keys, r->target, r->kind, r->instance, name, value, &e) != 0 || key < 0) {
+        fail(r, r->line, "%s", e.message);
         return 0;
     }
     r->key_line[key] = r->line;

@@ -45,20 +45,19 @@ struct conf_schema {
      * a key applies to (a section with types takes its 'type' first), the required keys */
     const struct conf_key_table *keys;
     /* a section starts at line: its instance (index of a named kind's instances, else 0); -1 with
-     * msg when the schema has no room for another */
-    int (*open)(void *target, int kind, const char *name, int line, int *instance, char *msg, size_t msglen);
+     * the reason in e when the schema has no room for another */
+    int (*open)(void *target, int kind, const char *name, int line, int *instance, struct error *e);
     /* NULL, or: the section ended (next header or end of file) with its required keys, checked
-     * first: -1 with msg, told at its header's line. key_line[k]: where key k (its index in the
-     * table) was set in it, 0 where not. */
-    int (*close)(void *target, int kind, int instance, const int *key_line, char *msg, size_t msglen);
+     * first: -1 with the reason in e, told at its header's line. key_line[k]: where key k (its index
+     * in the table) was set in it, 0 where not. */
+    int (*close)(void *target, int kind, int instance, const int *key_line, struct error *e);
     /* NULL, or: key (its index in the table) was set at line in the section: where it came from,
      * for a message about it later */
     void (*applied)(void *target, int kind, int instance, int key, int line);
     /* NULL, or 1 where the key's value goes on over indented lines, each handed to continuation
-     * (-1 with msg, told as "key 'KEY' in LABEL: MSG") */
+     * (-1 with the reason in e, told as "key 'KEY' in LABEL: REASON") */
     int (*continues)(int kind, const char *key);
-    int (*continuation)(void *target, int kind, int instance, const char *key, const char *item, char *msg,
-                        size_t msglen);
+    int (*continuation)(void *target, int kind, int instance, const char *key, const char *item, struct error *e);
 };
 
 /* Reads path into target by schema: 0, or -1 with the first error in err. */

@@ -20,20 +20,20 @@ static_assert(KIOSK_KEY_TABLE_MAX <= CONF_MAX_KEYS && KIOSK_NAME_LEN <= CONF_NAM
 static const char *kind_name(int kind) { return kiosk_section_name((enum kiosk_section)kind); }
 static int kind_named(int kind) { return kiosk_section_named((enum kiosk_section)kind); }
 
-static int open_section(void *target, int kind, const char *name, int line, int *instance, char *msg, size_t msglen)
+static int open_section(void *target, int kind, const char *name, int line, int *instance, struct error *e)
 {
     struct kiosk_config *c = target;
     *instance = 0;
     if (kind == KSEC_BUTTON) {
         if (c->n_buttons >= KIOSK_MAX_BUTTONS) {
-            snprintf(msg, msglen, "too many buttons: at most %d", KIOSK_MAX_BUTTONS);
+            error_set(e, ERROR_INPUT, NULL, "too many buttons: at most %d", KIOSK_MAX_BUTTONS);
             return -1;
         }
         *instance = c->n_buttons++;
         kiosk_button_defaults(&c->buttons[*instance], name);
     } else if (kind == KSEC_INPUT) {
         if (c->n_inputs >= KIOSK_MAX_INPUTS) {
-            snprintf(msg, msglen, "too many inputs: at most %d", KIOSK_MAX_INPUTS);
+            error_set(e, ERROR_INPUT, NULL, "too many inputs: at most %d", KIOSK_MAX_INPUTS);
             return -1;
         }
         *instance = c->n_inputs++;
@@ -53,13 +53,12 @@ static void applied(void *target, int kind, int instance, int key, int line)
 /* A scene list longer than inih's line limit goes on over indented lines. */
 static int continues(int kind, const char *key) { return kind == KSEC_KIOSK && strcmp(key, "scenes") == 0; }
 
-static int continuation(void *target, int kind, int instance, const char *key, const char *item, char *msg,
-                        size_t msglen)
+static int continuation(void *target, int kind, int instance, const char *key, const char *item, struct error *e)
 {
     (void)kind;
     (void)instance;
     (void)key;
-    return kiosk_scenes_append(target, item, msg, msglen);
+    return kiosk_scenes_append(target, item, e);
 }
 
 static const struct conf_schema kiosk_schema = {

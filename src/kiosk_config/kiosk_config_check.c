@@ -68,7 +68,7 @@ static int size_ok(int w, int h)
 static int check_kiosk(const struct kiosk_config *c, struct error *err)
 {
     const struct kiosk_main *k = &c->kiosk;
-    char reason[3 * KIOSK_PATH_LEN];
+    struct error outside;
 
     if (k->n_scenes < 1)
         return bad(c, err, line_of(c, KSEC_KIOSK, 0, NULL), "[kiosk] lists no scenes: set 'scenes' "
@@ -98,9 +98,9 @@ static int check_kiosk(const struct kiosk_config *c, struct error *err)
     if (k->assets_root[0] == '\0')
         return 0;
     for (int i = 0; i < k->n_scenes; i++) {
-        int inside = kiosk_path_inside(k->scenes[i], k->assets_root, reason, sizeof reason);
+        int inside = kiosk_path_inside(k->scenes[i], k->assets_root, &outside);
         if (inside != 1)
-            return bad_key(c, err, KSEC_KIOSK, 0, "scenes", ": scene %d: %s", i + 1, reason);
+            return bad_key(c, err, KSEC_KIOSK, 0, "scenes", ": scene %d: %s", i + 1, outside.message);
     }
     return 0;
 }

@@ -48,30 +48,31 @@ int kiosk_key_find(enum kiosk_section section, const char *name);
 /* Line where the key was set in the file, 0 when it was not (or the key does not exist). */
 int kiosk_key_line(const struct kiosk_config *c, enum kiosk_section section, int instance,
                    const char *name);
-/* Parse VALUE for key NAME of a section instance and store it: 0, or -1 with the whole message. */
+/* Parse VALUE for key NAME of a section instance and store it: 0, or -1 with the whole message in
+ * e (ERROR_INPUT, no place). */
 int kiosk_key_apply(struct kiosk_config *c, enum kiosk_section section, int instance,
-                    const char *name, const char *value, char *msg, size_t msg_len);
+                    const char *name, const char *value, struct error *e);
 
 /* Section names: 1 to KIOSK_NAME_LEN - 1 of letters, digits, '_' and '-'. */
 int kiosk_name_ok(const char *name);
 /* REL against the config's directory (absolute paths are kept): 0, or -1 if it does not fit. */
 int kiosk_resolve_path(const struct kiosk_config *c, const char *rel, char *out, size_t out_len);
 /* Whether PATH, with ".." and symbolic links resolved, lies inside the directory ROOT: 1 inside,
- * 0 outside (with both resolved paths in REASON), -1 when either cannot be resolved. */
-int kiosk_path_inside(const char *path, const char *root, char *reason, size_t len);
+ * 0 outside (with both resolved paths in e), -1 when either cannot be resolved (why, in e). */
+int kiosk_path_inside(const char *path, const char *root, struct error *e);
 /* Index of the scene called NAME (its file name without the extension), -1 if none is, -2 if
  * more than one is. */
 int kiosk_scene_find(const struct kiosk_config *c, const char *name);
 
 /* The table's setters (kiosk_config_values.c, kiosk_config_paths.c). */
-int kiosk_set_scenes(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len);
+int kiosk_set_scenes(void *owner, void *t, const union conf_parsed *v, struct error *e);
 /* More scenes for the list, from a line that continues 'scenes'. */
-int kiosk_scenes_append(struct kiosk_config *c, const char *text, char *reason, size_t len);
-int kiosk_set_start_scene(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len);
-int kiosk_set_log(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len);
-int kiosk_set_device(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len);
-int kiosk_set_mode(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len);
-int kiosk_set_input_type(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len);
+int kiosk_scenes_append(struct kiosk_config *c, const char *text, struct error *e);
+int kiosk_set_start_scene(void *owner, void *t, const union conf_parsed *v, struct error *e);
+int kiosk_set_log(void *owner, void *t, const union conf_parsed *v, struct error *e);
+int kiosk_set_device(void *owner, void *t, const union conf_parsed *v, struct error *e);
+int kiosk_set_mode(void *owner, void *t, const union conf_parsed *v, struct error *e);
+int kiosk_set_input_type(void *owner, void *t, const union conf_parsed *v, struct error *e);
 
 void kiosk_button_defaults(struct kiosk_button *b, const char *name);
 void kiosk_input_defaults(struct kiosk_input *in, const char *name);

@@ -21,19 +21,19 @@ int kiosk_resolve_path(const struct kiosk_config *c, const char *rel, char *out,
     return conf_path_join(c->dir, rel, out, out_len);
 }
 
-int kiosk_path_inside(const char *path, const char *root, char *reason, size_t len)
+int kiosk_path_inside(const char *path, const char *root, struct error *e)
 {
     char *real_path = realpath(path, NULL), *real_root = realpath(root, NULL);
     int inside = -1;
     if (!real_path || !real_root) {
-        snprintf(reason, len, "cannot resolve \"%s\": %s", real_path ? root : path, strerror(errno));
+        error_set(e, ERROR_INPUT, NULL, "cannot resolve \"%s\": %s", real_path ? root : path, strerror(errno));
     } else {
         size_t n = strlen(real_root);
         /* "/srv/assets2" is not inside "/srv/assets": the match has to end at a '/' */
         inside = strcmp(real_root, "/") == 0 ||
                  (strncmp(real_path, real_root, n) == 0 && real_path[n] == '/');
         if (!inside)
-            snprintf(reason, len, "\"%s\" is \"%s\", outside assets_root \"%s\"", path, real_path,
+            error_set(e, ERROR_INPUT, NULL, "\"%s\" is \"%s\", outside assets_root \"%s\"", path, real_path,
                      real_root);
     }
     free(real_path);
@@ -46,7 +46,7 @@ int kiosk_path_inside(const char *path, const char *root, char *reason, size_t l
 /* "a.scene, b.scene c.scene": commas or blanks between entries. An empty entry between two commas
  * is a slip (a deleted name), not a separator; a comma at the end of a line is not, since the list
  * may go on on the next. Paths with blanks cannot be listed. */
-int kiosk_scenes_append(struct kiosk_config *c, const char *text, char *reason, size_t len)
+int kiosk_scenes_append(struct kiosk_config *c, const char *text, struct error *e)
 {
     struct kiosk_main *k = &c->kiosk;
     const char *p = text;
@@ -56,7 +56,7 @@ int kiosk_scenes_append(struct kiosk_config *c, const char *text, char *reason, 
         size_t word = strcspn(p, SCENE_SEPARATORS);
         if (word == 0) {
             if (*p == ',' && after_comma) {
-                snprintf(reason, len, "empty entry in the list after scene %d: remove the extra ','",
+                error_set(e, ERROR_INPUT, NULL, "empty entry in the list after scene %d: remove the extra ','",
                          k->n_scenes);
                 return -1;
             }
@@ -66,10 +66,11 @@ int kiosk_scenes_append(struct kiosk_config *c, const char *text, char *reason, 
             continue;
         }
         if (k->n_scenes >= KIOSK_MAX_SCENES) {
-            snprintf(reason, len, "more than %d scenes", KIOSK_MAX_SCENES);
+            error_set(e, ERROR_INPUT, NULL, "more than %d scenes", KIOSK_MAX_SCENES);
             return -1;
         }
-        char rel[KIOSK_PATH_LEN], why[KIOSK_PATH_LEN + 128];
+        char rel[KIOSK_PATH_LEN];
+        struct error why;
         char *path = k->scenes[k->n_scenes];
         int number = k->n_scenes + 1;
         if (word < sizeof rel) {
@@ -77,12 +78,12 @@ int kiosk_scenes_append(struct kiosk_config *c, const char *text, char *reason, 
             rel[word] = '\0';
         }
         if (word >= sizeof rel || kiosk_resolve_path(c, rel, path, KIOSK_PATH_LEN) != 0) {
-            snprintf(reason, len, "scene %d: the path is longer than %d characters", number,
+            error_set(e, ERROR_INPUT, NULL, "scene %d: the path is longer than %d characters", number,
                      KIOSK_PATH_LEN - 1);
             return -1;
         }
-        if (conf_check_file(path, KIOSK_RELATIVE_NOTE, why, sizeof why) != 0) {
-            snprintf(reason, len, "scene %d: %s", number, why);
+        if (conf_check_file(path, KIOSK_RELATIVE_NOTE, &why) != 0) {
+            error_set(e, ERROR_INPUT, NULL, "scene %d: %s", number, why.message);
             return -1;
         }
         k->n_scenes++;
@@ -92,17 +93,17 @@ int kiosk_scenes_append(struct kiosk_config *c, const char *text, char *reason, 
     return 0;
 }
 
-int kiosk_set_scenes(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len)
+int kiosk_set_scenes(void *owner, void *t, const union conf_parsed *v, struct error *e)
 {
     struct kiosk_config *c = owner;
     const char *value = v->text;
     (void)t;
     c->kiosk.n_scenes = 0;
-    return kiosk_scenes_append(c, value, reason, len);
+    return kiosk_scenes_append(c, value, e);
 }
 
 /* A log file need not exist yet, but the directory it goes into must. */
-int kiosk_set_log(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len)
+int kiosk_set_log(void *owner, void *t, const union conf_parsed *v, struct error *e)
 {
     struct kiosk_config *c = owner;
     const char *value = v->text;
@@ -115,7 +116,7 @@ int kiosk_set_log(void *owner, void *t, const union conf_parsed *v, char *reason
         return 0;
     }
     if (kiosk_resolve_path(c, value, path, sizeof path) != 0) {
-        snprintf(reason, len, "the path is longer than %d characters", KIOSK_PATH_LEN - 1);
+        error_set(e, ERROR_INPUT, NULL, "the path is longer than %d characters", KIOSK_PATH_LEN - 1);
         return -1;
     }
     slash = strrchr(path, '/');
@@ -123,10 +124,10 @@ int kiosk_set_log(void *owner, void *t, const union conf_parsed *v, char *reason
         snprintf(dir, sizeof dir, ".");
     else
         snprintf(dir, sizeof dir, "%.*s", slash == path ? 1 : (int)(slash - path), path);
-    if (conf_check_dir(dir, KIOSK_RELATIVE_NOTE, reason, len) != 0)
+    if (conf_check_dir(dir, KIOSK_RELATIVE_NOTE, e) != 0)
         return -1;
     if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
-        snprintf(reason, len, "\"%s\" exists and is not a regular file", path);
+        error_set(e, ERROR_INPUT, NULL, "\"%s\" exists and is not a regular file", path);
         return -1;
     }
     memcpy(c->kiosk.log, path, sizeof path);
@@ -135,13 +136,13 @@ int kiosk_set_log(void *owner, void *t, const union conf_parsed *v, char *reason
 
 /* Not looked for here: at boot the card may appear after the kiosk's configuration is read, and the
  * display code says so when it opens it. */
-int kiosk_set_device(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len)
+int kiosk_set_device(void *owner, void *t, const union conf_parsed *v, struct error *e)
 {
     struct kiosk_config *c = owner;
     const char *value = v->text;
     (void)t;
     if (value[0] != '/' || strlen(value) >= sizeof c->display.drm_device) {
-        snprintf(reason, len, "expected an absolute device path such as /dev/dri/card0 (at most %d "
+        error_set(e, ERROR_INPUT, NULL, "expected an absolute device path such as /dev/dri/card0 (at most %d "
                  "characters), got \"%.80s\"", KIOSK_PATH_LEN - 1, value);
         return -1;
     }

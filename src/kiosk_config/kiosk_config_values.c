@@ -18,20 +18,20 @@ static int word_ok(const char *text)
 }
 
 int kiosk_key_apply(struct kiosk_config *c, enum kiosk_section section, int instance,
-                    const char *name, const char *value, char *msg, size_t msg_len)
+                    const char *name, const char *value, struct error *e)
 {
-    return conf_key_apply(&kiosk_key_table, c, (int)section, instance, name, value, msg, msg_len);
+    return conf_key_apply(&kiosk_key_table, c, (int)section, instance, name, value, e);
 }
 
 /* ---- setters ------------------------------------------------------------------------------- */
 
 /* Resolved once the whole file is read, since [kiosk] scenes may come after it. */
-int kiosk_set_start_scene(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len)
+int kiosk_set_start_scene(void *owner, void *t, const union conf_parsed *v, struct error *e)
 {
     struct kiosk_config *c = owner;
     (void)t;
     if (!word_ok(v->text)) {
-        snprintf(reason, len, "expected a scene's index (0 is the first) or its name, got \"%.*s\"",
+        error_set(e, ERROR_INPUT, NULL, "expected a scene's index (0 is the first) or its name, got \"%.*s\"",
                  CONF_QUOTE_MAX, v->text);
         return -1;
     }
@@ -40,7 +40,7 @@ int kiosk_set_start_scene(void *owner, void *t, const union conf_parsed *v, char
 }
 
 /* "1920x1080" */
-int kiosk_set_mode(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len)
+int kiosk_set_mode(void *owner, void *t, const union conf_parsed *v, struct error *e)
 {
     struct kiosk_config *c = owner;
     const char *value = v->text;
@@ -54,7 +54,7 @@ int kiosk_set_mode(void *owner, void *t, const union conf_parsed *v, char *reaso
     }
     if (!end || *end != '\0' || w < KIOSK_MIN_SIZE || w > KIOSK_MAX_SIZE || h < KIOSK_MIN_SIZE ||
         h > KIOSK_MAX_SIZE) {
-        snprintf(reason, len, "expected WIDTHxHEIGHT such as 1920x1080, each from %d to %d, got "
+        error_set(e, ERROR_INPUT, NULL, "expected WIDTHxHEIGHT such as 1920x1080, each from %d to %d, got "
                  "\"%.*s\"", KIOSK_MIN_SIZE, KIOSK_MAX_SIZE, CONF_QUOTE_MAX, value);
         return -1;
     }
@@ -64,10 +64,10 @@ int kiosk_set_mode(void *owner, void *t, const union conf_parsed *v, char *reaso
 }
 
 /* Each type starts from its own defaults: the PowerMate's USB ids. */
-int kiosk_set_input_type(void *owner, void *t, const union conf_parsed *v, char *reason, size_t len)
+int kiosk_set_input_type(void *owner, void *t, const union conf_parsed *v, struct error *e)
 {
     struct kiosk_input *in = t;
-    (void)owner, (void)reason, (void)len;
+    (void)owner, (void)e;
     in->type = (enum kiosk_input_type)v->integer;
     if (in->type == KIOSK_INPUT_POWERMATE) {
         in->vid = KIOSK_POWERMATE_VID;

@@ -116,22 +116,22 @@ int scene_resolve_path(const struct scene *s, const char *rel, char *out, size_t
 }
 
 /* A directory opens fine with fopen on Linux, so regular files are asked for explicitly. */
-static int check_readable(const char *what, const char *path, char *reason, size_t len)
+static int check_readable(const char *what, const char *path, struct error *e)
 {
     struct stat st;
     FILE *f;
     if (stat(path, &st) != 0) {
-        snprintf(reason, len, "cannot read %s \"%s\": %s (relative paths start at the scene "
+        error_set(e, ERROR_INPUT, NULL, "cannot read %s \"%s\": %s (relative paths start at the scene "
                  "file's directory)", what, path, strerror(errno));
         return -1;
     }
     if (!S_ISREG(st.st_mode)) {
-        snprintf(reason, len, "%s \"%s\" is not a regular file", what, path);
+        error_set(e, ERROR_INPUT, NULL, "%s \"%s\" is not a regular file", what, path);
         return -1;
     }
     f = fopen(path, "rb");
     if (!f) {
-        snprintf(reason, len, "cannot read %s \"%s\": %s", what, path, strerror(errno));
+        error_set(e, ERROR_INPUT, NULL, "cannot read %s \"%s\": %s", what, path, strerror(errno));
         return -1;
     }
     fclose(f);
@@ -142,11 +142,11 @@ static int check_readable(const char *what, const char *path, char *reason, size
 /* A PNG (texture or cube face) within SCENE_MAX_TEXTURE_SIZE a side; *declared tells whether the
  * header could be read, and then *w and *h hold its size. */
 static int check_image_size(const char *what, const char *path, unsigned long *w, unsigned long *h,
-                            int *declared, char *reason, size_t len)
+                            int *declared, struct error *e)
 {
     *declared = png_declared_size(path, w, h) == 0;
     if (*declared && (*w > SCENE_MAX_TEXTURE_SIZE || *h > SCENE_MAX_TEXTURE_SIZE)) {
-        snprintf(reason, len, "%s \"%s\" is %lux%lu pixels; at most %d pixels a side are allowed", what, path,
+        error_set(e, ERROR_INPUT, NULL, "%s \"%s\" is %lux%lu pixels; at most %d pixels a side are allowed", what, path,
                  *w, *h, SCENE_MAX_TEXTURE_SIZE);
         return -1;
     }
@@ -156,48 +156,48 @@ static int check_image_size(const char *what, const char *path, unsigned long *w
 /* ---- setters for what a field copy cannot do ---------------------------------------------- */
 
 /* The image's pixel count bounds every per-pixel allocation: checked whenever a side changes. */
-static int check_pixels(long width, long height, char *r, size_t n)
+static int check_pixels(long width, long height, struct error *e)
 {
     if (width * height > SCENE_MAX_PIXELS) {
-        snprintf(r, n, "the image would be %ldx%ld = %ld pixels; at most %ld pixels (width x height) are allowed",
+        error_set(e, ERROR_INPUT, NULL, "the image would be %ldx%ld = %ld pixels; at most %ld pixels (width x height) are allowed",
                  width, height, width * height, SCENE_MAX_PIXELS);
         return -1;
     }
     return 0;
 }
 
-static int set_width(void *owner, void *t, const union conf_parsed *v, char *r, size_t n)
+static int set_width(void *owner, void *t, const union conf_parsed *v, struct error *e)
 {
     struct scene *s = owner;
     (void)t;
-    if (check_pixels(v->integer, s->render.height, r, n) != 0)
+    if (check_pixels(v->integer, s->render.height, e) != 0)
         return -1;
     s->render.width = v->integer;
     return 0;
 }
 
-static int set_height(void *owner, void *t, const union conf_parsed *v, char *r, size_t n)
+static int set_height(void *owner, void *t, const union conf_parsed *v, struct error *e)
 {
     struct scene *s = owner;
     (void)t;
-    if (check_pixels(s->render.width, v->integer, r, n) != 0)
+    if (check_pixels(s->render.width, v->integer, e) != 0)
         return -1;
     s->render.height = v->integer;
     return 0;
 }
 
-static int set_method(void *owner, void *t, const union conf_parsed *v, char *r, size_t n)
+static int set_method(void *owner, void *t, const union conf_parsed *v, struct error *e)
 {
     struct scene *s = owner;
-    (void)t, (void)r, (void)n;
+    (void)t, (void)e;
     s->render.method = (enum integration_method)v->integer;
     s->render.method_named = 1;
     return 0;
 }
 
-static int set_frame_origin(void *owner, void *t, const union conf_parsed *v, char *r, size_t n)
+static int set_frame_origin(void *owner, void *t, const union conf_parsed *v, struct error *e)
 {
-    (void)owner, (void)r, (void)n;
+    (void)owner, (void)e;
     struct object *o = t;
     o->frame_origin = v3(v->v[0], v->v[1], v->v[2]);
     o->frame_origin_given = 1;
@@ -205,18 +205,18 @@ static int set_frame_origin(void *owner, void *t, const union conf_parsed *v, ch
 }
 
 /* Several objects often wear the same image: each file is kept once so it is uploaded once. */
-static int set_texture(void *owner, void *t, const union conf_parsed *v, char *r, size_t n)
+static int set_texture(void *owner, void *t, const union conf_parsed *v, struct error *e)
 {
     struct scene *s = owner;
     struct object *o = t;
     char path[SCENE_PATH_LEN];
     if (scene_resolve_path(s, v->text, path, sizeof path) != 0) {
-        snprintf(r, n, "the path is longer than %d characters", SCENE_PATH_LEN - 1);
+        error_set(e, ERROR_INPUT, NULL, "the path is longer than %d characters", SCENE_PATH_LEN - 1);
         return -1;
     }
     unsigned long w, h;
     int declared;
-    if (check_readable("texture", path, r, n) != 0 || check_image_size("texture", path, &w, &h, &declared, r, n) != 0)
+    if (check_readable("texture", path, e) != 0 || check_image_size("texture", path, &w, &h, &declared, e) != 0)
         return -1;
     for (int i = 0; i < s->n_textures; i++) {
         if (strcmp(s->textures[i], path) == 0) {
@@ -225,7 +225,7 @@ static int set_texture(void *owner, void *t, const union conf_parsed *v, char *r
         }
     }
     if (s->n_textures >= SCENE_MAX_TEXTURES) {
-        snprintf(r, n, "too many textures: a scene may use at most %d different files",
+        error_set(e, ERROR_INPUT, NULL, "too many textures: a scene may use at most %d different files",
                  SCENE_MAX_TEXTURES);
         return -1;
     }
@@ -241,7 +241,7 @@ void scene_cubemap_face_path(const char *prefix, int face, char *out, size_t len
     snprintf(out, len, "%s_%s.png", prefix, scene_cubemap_faces[face]);
 }
 
-static int set_cubemap(void *owner, void *t, const union conf_parsed *v, char *r, size_t n)
+static int set_cubemap(void *owner, void *t, const union conf_parsed *v, struct error *e)
 {
     struct scene *s = owner;
     const char *const *faces = scene_cubemap_faces;
@@ -249,7 +249,7 @@ static int set_cubemap(void *owner, void *t, const union conf_parsed *v, char *r
     (void)t;
     /* room for the longest face suffix, so every face path fits where the prefix fits */
     if (scene_resolve_path(s, v->text, prefix, sizeof prefix - sizeof "_px.png" + 1) != 0) {
-        snprintf(r, n, "the path is longer than %d characters",
+        error_set(e, ERROR_INPUT, NULL, "the path is longer than %d characters",
                  (int)(SCENE_PATH_LEN - sizeof "_px.png"));
         return -1;
     }
@@ -263,16 +263,16 @@ static int set_cubemap(void *owner, void *t, const union conf_parsed *v, char *r
         int declared;
         scene_cubemap_face_path(prefix, i, face, sizeof face);
         snprintf(what, sizeof what, "cubemap face %s", faces[i]);
-        if (check_readable(what, face, r, n) != 0 || check_image_size(what, face, &w, &h, &declared, r, n) != 0)
+        if (check_readable(what, face, e) != 0 || check_image_size(what, face, &w, &h, &declared, e) != 0)
             return -1;
         if (!declared)
             continue;
         if (w != h) {
-            snprintf(r, n, "%s \"%s\" is %lux%lu pixels; cube map faces must be square", what, face, w, h);
+            error_set(e, ERROR_INPUT, NULL, "%s \"%s\" is %lux%lu pixels; cube map faces must be square", what, face, w, h);
             return -1;
         }
         if (side_face && w != side) {
-            snprintf(r, n, "%s \"%s\" is %lux%lu pixels, face %s %lux%lu; every face must have the same size",
+            error_set(e, ERROR_INPUT, NULL, "%s \"%s\" is %lux%lu pixels, face %s %lux%lu; every face must have the same size",
                      what, face, w, h, side_face, side, side);
             return -1;
         }
@@ -597,9 +597,9 @@ int scene_key_find(enum scene_section_kind section, const char *name)
 }
 
 int scene_key_apply(struct scene *s, enum scene_section_kind section, int instance,
-                    const char *name, const char *value, char *msg, size_t msg_len)
+                    const char *name, const char *value, struct error *e)
 {
-    return conf_key_apply(&scene_key_table, s, (int)section, instance, name, value, msg, msg_len);
+    return conf_key_apply(&scene_key_table, s, (int)section, instance, name, value, e);
 }
 
 int scene_set_number(struct scene *s, const char *key, double value, struct error *err)
@@ -615,8 +615,10 @@ int scene_set_number(struct scene *s, const char *key, double value, struct erro
         err->status = ERROR_INPUT;
         return -1;
     }
-    if (conf_key_apply_number(&scene_key_table, s, section, 0, name, value, err->message, sizeof err->message) != 0) {
-        err->status = ERROR_INPUT;
+    char where[sizeof err->where];
+    memcpy(where, err->where, sizeof where);
+    if (conf_key_apply_number(&scene_key_table, s, section, 0, name, value, err) != 0) {
+        memcpy(err->where, where, sizeof where);
         return -1;
     }
     return 0;

@@ -52,9 +52,10 @@ void scene_section_label(const struct scene *s, enum scene_section_kind section,
 /* Index of the first table entry of SECTION called NAME (a name may have one entry per model
  * type it applies to), -1 when the section has no such key. */
 int scene_key_find(enum scene_section_kind section, const char *name);
-/* Parse VALUE for key NAME of a section instance and store it. 0, or -1 with a full message. */
+/* Parse VALUE for key NAME of a section instance and store it. 0, or -1 with the full message in e
+ * (ERROR_INPUT, no place). */
 int scene_key_apply(struct scene *s, enum scene_section_kind section, int instance,
-                    const char *name, const char *value, char *msg, size_t msg_len);
+                    const char *name, const char *value, struct error *e);
 
 const char *scene_model_type_name(enum model_type type);
 const char *scene_primitive_name(enum primitive_type type);

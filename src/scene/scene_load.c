@@ -19,21 +19,21 @@ static_assert(SCENE_KEY_TABLE_MAX <= CONF_MAX_KEYS && SCENE_NAME_LEN <= CONF_NAM
 static const char *kind_name(int kind) { return scene_section_name((enum scene_section_kind)kind); }
 static int kind_named(int kind) { return scene_section_named((enum scene_section_kind)kind); }
 
-static int open_section(void *target, int kind, const char *name, int line, int *instance, char *msg, size_t msglen)
+static int open_section(void *target, int kind, const char *name, int line, int *instance, struct error *e)
 {
     struct scene *s = target;
     (void)line;
     *instance = 0;
     if (kind == SECTION_OBJECT) {
         if (s->n_objects >= SCENE_MAX_OBJECTS) {
-            snprintf(msg, msglen, "too many objects: a scene holds at most %d", SCENE_MAX_OBJECTS);
+            error_set(e, ERROR_INPUT, NULL, "too many objects: a scene holds at most %d", SCENE_MAX_OBJECTS);
             return -1;
         }
         *instance = s->n_objects++;
         scene_object_defaults(&s->objects[*instance], name);
     } else if (kind == SECTION_LIGHT) {
         if (s->n_lights >= SCENE_MAX_LIGHTS) {
-            snprintf(msg, msglen, "too many lights: a scene holds at most %d", SCENE_MAX_LIGHTS);
+            error_set(e, ERROR_INPUT, NULL, "too many lights: a scene holds at most %d", SCENE_MAX_LIGHTS);
             return -1;
         }
         *instance = s->n_lights++;
@@ -178,11 +178,12 @@ int scene_set(struct scene *s, const char *assignment, struct error *err)
     value = strdup(eq + 1);
     if (!value)
         return set_fail(err, "out of memory");
-    rc = scene_key_apply(s, (enum scene_section_kind)kind, instance, key, conf_trim(value), err->message,
-                         sizeof err->message);
+    char where[sizeof err->where];
+    memcpy(where, err->where, sizeof where);
+    rc = scene_key_apply(s, (enum scene_section_kind)kind, instance, key, conf_trim(value), err);
     free(value);
-    if (rc != 0)
-        err->status = ERROR_INPUT;
+    /* the option is where the value came from */
+    memcpy(err->where, where, sizeof where);
     /* a model or a step control set here may change what an unnamed method defaults to */
     scene_default_method(s);
     /* An override of a fixed step's budget replaces the file's other way of giving it (a file

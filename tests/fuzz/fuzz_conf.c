@@ -58,25 +58,25 @@ static void check_number(double x, double lo, double hi, unsigned flags)
         __builtin_trap();
 }
 
-static int add_book(struct store *s, char *msg, size_t msglen)
+static int add_book(struct store *s, struct error *e)
 {
     if (s->n_books == MAX_BOOKS) {
-        snprintf(msg, msglen, "at most %d books", MAX_BOOKS);
+        error_set(e, ERROR_INPUT, NULL, "at most %d books", MAX_BOOKS);
         return -1;
     }
     s->n_books++;
     return 0;
 }
 
-static int set_books(void *owner, void *target, const union conf_parsed *v, char *reason, size_t len)
+static int set_books(void *owner, void *target, const union conf_parsed *v, struct error *e)
 {
     (void)target, (void)v;
-    return add_book(owner, reason, len);
+    return add_book(owner, e);
 }
 
-static int set_width(void *owner, void *target, const union conf_parsed *v, char *reason, size_t len)
+static int set_width(void *owner, void *target, const union conf_parsed *v, struct error *e)
 {
-    (void)target, (void)reason, (void)len;
+    (void)target, (void)e;
     check_number(v->number, 0.0, 100.0, CONF_ABOVE_LO | CONF_BELOW_HI);
     ((struct store *)owner)->width = v->number;
     return 0;
@@ -84,13 +84,13 @@ static int set_width(void *owner, void *target, const union conf_parsed *v, char
 
 /* the integer parser on the text itself: what it took is decimal digits after an optional minus
  * sign, then blanks at most */
-static int set_count(void *owner, void *target, const union conf_parsed *v, char *reason, size_t len)
+static int set_count(void *owner, void *target, const union conf_parsed *v, struct error *e)
 {
     const char *value = v->text;
     long long n;
     (void)target;
     if (conf_parse_integer(value, &n) != 0 || !conf_in_range((double)n, -5.0, 5.0, 0)) {
-        snprintf(reason, len, "expected an integer from -5 to 5");
+        error_set(e, ERROR_INPUT, NULL, "expected an integer from -5 to 5");
         return -1;
     }
     size_t d = value[0] == '-';
@@ -103,9 +103,9 @@ static int set_count(void *owner, void *target, const union conf_parsed *v, char
     return 0;
 }
 
-static int set_colour(void *owner, void *target, const union conf_parsed *v, char *reason, size_t len)
+static int set_colour(void *owner, void *target, const union conf_parsed *v, struct error *e)
 {
-    (void)target, (void)reason, (void)len;
+    (void)target, (void)e;
     for (int i = 0; i < 3; i++) {
         check_number(v->v[i], -INFINITY, INFINITY, 0);
         ((struct store *)owner)->colour[i] = v->v[i];
@@ -158,14 +158,14 @@ static const struct conf_key_table key_table = {
     .label = label, .target = key_target, .type_word = type_word, .type_of = type_of, .type_name = type_name,
 };
 
-static int open_section(void *target, int kind, const char *name, int line, int *instance, char *msg, size_t msglen)
+static int open_section(void *target, int kind, const char *name, int line, int *instance, struct error *e)
 {
     struct store *s = target;
     (void)line;
     *instance = 0;
     if (kind == BOX) {
         if (s->n_boxes == MAX_BOXES) {
-            snprintf(msg, msglen, "at most %d boxes", MAX_BOXES);
+            error_set(e, ERROR_INPUT, NULL, "at most %d boxes", MAX_BOXES);
             return -1;
         }
         *instance = s->n_boxes++;
@@ -176,11 +176,10 @@ static int open_section(void *target, int kind, const char *name, int line, int 
 
 static int continues(int kind, const char *key) { return kind == SHELF && strcmp(key, "books") == 0; }
 
-static int continuation(void *target, int kind, int instance, const char *key, const char *item, char *msg,
-                        size_t msglen)
+static int continuation(void *target, int kind, int instance, const char *key, const char *item, struct error *e)
 {
     (void)kind, (void)instance, (void)key, (void)item;
-    return add_book(target, msg, msglen);
+    return add_book(target, e);
 }
 
 static const struct conf_schema schema = {

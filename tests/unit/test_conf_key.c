@@ -49,12 +49,12 @@ static const struct conf_choice modes[] = {{"dim", 3}, {"bright", 7}, {NULL, 0}}
 static const struct conf_choice lamp_types[] = {{"bulb", LAMP_BULB}, {"led", LAMP_LED}, {"arc", LAMP_ARC}, {NULL, 0}};
 
 /* stores twice the count, so that a test can tell the setter ran instead of the field copy */
-static int set_colours(void *owner, void *target, const union conf_parsed *v, char *reason, size_t len)
+static int set_colours(void *owner, void *target, const union conf_parsed *v, struct error *e)
 {
     (void)owner;
     struct lamp *l = target;
     if (v->integer == 13) {
-        snprintf(reason, len, "13 colours bring bad luck");
+        error_set(e, ERROR_INPUT, NULL, "13 colours bring bad luck");
         return -1;
     }
     l->colour_count = 2 * v->integer;
@@ -153,12 +153,13 @@ static int setup(void **state)
 /* Applies and returns the message ("" when it was taken). */
 static const char *apply(int section, int instance, const char *key, const char *value)
 {
-    static char msg[1024];
-    msg[0] = '\0';
-    if (conf_key_apply(&table, &room, section, instance, key, value, msg, sizeof msg) == 0)
+    static struct error e;
+    static char *const msg = e.message;
+    error_clear(&e);
+    if (conf_key_apply(&table, &room, section, instance, key, value, &e) == 0)
         assert_string_equal(msg, "");
     else
-        assert_true(msg[0] != '\0');
+        assert_true(msg[0] != '\0' && e.status == ERROR_INPUT && e.where[0] == '\0');
     print_message("%s = \"%s\": %s\n", key, value, msg[0] ? msg : "taken");
     return msg;
 }
@@ -253,27 +254,28 @@ static void test_keys_and_types(void **state)
 static void test_required_and_numbers(void **state)
 {
     (void)state;
-    char msg[512];
+    struct error e;
+    const char *msg = e.message;
     int key_line[16] = {0};
-    assert_int_equal(conf_key_check_required(&table, &room, SEC_LAMP, 0, key_line, msg, sizeof msg), -1);
+    assert_int_equal(conf_key_check_required(&table, &room, SEC_LAMP, 0, key_line, &e), -1);
     assert_string_equal(msg, "[lamp desk] has no type: add 'type = bulb', 'led' or 'arc'");
     key_line[conf_key_find(&table, SEC_LAMP, "type")] = 3;
     /* a bulb needs no watts, a LED does */
-    assert_int_equal(conf_key_check_required(&table, &room, SEC_LAMP, 0, key_line, msg, sizeof msg), 0);
-    assert_int_equal(conf_key_check_required(&table, &room, SEC_LAMP, 1, key_line, msg, sizeof msg), -1);
+    assert_int_equal(conf_key_check_required(&table, &room, SEC_LAMP, 0, key_line, &e), 0);
+    assert_int_equal(conf_key_check_required(&table, &room, SEC_LAMP, 1, key_line, &e), -1);
     assert_string_equal(msg, "[lamp hall] of type 'led' needs 'watts'");
     key_line[conf_key_find(&table, SEC_LAMP, "watts")] = 4;
-    assert_int_equal(conf_key_check_required(&table, &room, SEC_LAMP, 1, key_line, msg, sizeof msg), 0);
-    assert_int_equal(conf_key_check_required(&table, &room, SEC_ROOM, 0, key_line, msg, sizeof msg), 0);
-    assert_int_equal(conf_key_apply_number(&table, &room, SEC_LAMP, 0, "watts", 40.0, msg, sizeof msg), 0);
+    assert_int_equal(conf_key_check_required(&table, &room, SEC_LAMP, 1, key_line, &e), 0);
+    assert_int_equal(conf_key_check_required(&table, &room, SEC_ROOM, 0, key_line, &e), 0);
+    assert_int_equal(conf_key_apply_number(&table, &room, SEC_LAMP, 0, "watts", 40.0, &e), 0);
     assert_true(room.lamps[0].watts == 40.0);
-    assert_int_equal(conf_key_apply_number(&table, &room, SEC_LAMP, 0, "watts", NAN, msg, sizeof msg), -1);
+    assert_int_equal(conf_key_apply_number(&table, &room, SEC_LAMP, 0, "watts", NAN, &e), -1);
     expect(msg, "(not a finite number)");
-    assert_int_equal(conf_key_apply_number(&table, &room, SEC_LAMP, 0, "watts", 1e-320, msg, sizeof msg), -1);
+    assert_int_equal(conf_key_apply_number(&table, &room, SEC_LAMP, 0, "watts", 1e-320, &e), -1);
     expect(msg, "(too large or too small for a double)");
-    assert_int_equal(conf_key_apply_number(&table, &room, SEC_LAMP, 0, "watts", 101.0, msg, sizeof msg), -1);
+    assert_int_equal(conf_key_apply_number(&table, &room, SEC_LAMP, 0, "watts", 101.0, &e), -1);
     expect(msg, "expected a number > 0 and <= 100, got 101");
-    assert_int_equal(conf_key_apply_number(&table, &room, SEC_LAMP, 0, "serial", 1.0, msg, sizeof msg), -1);
+    assert_int_equal(conf_key_apply_number(&table, &room, SEC_LAMP, 0, "serial", 1.0, &e), -1);
     expect(msg, "key 'serial' in [lamp desk] is not a number");
     assert_true(room.lamps[0].watts == 40.0);
 }
@@ -308,20 +310,21 @@ static void test_scene_and_kiosk_word_alike(void **state)
     (void)state;
     static struct scene s;
     static struct kiosk_config c;
-    char scene_msg[512], kiosk_msg[512];
+    struct error scene_e, kiosk_e;
+    const char *scene_msg = scene_e.message, *kiosk_msg = kiosk_e.message;
     scene_defaults(&s);
     kiosk_config_defaults(&c);
-    assert_int_equal(scene_key_apply(&s, SECTION_RENDER, 0, "bound_radius", "", scene_msg, sizeof scene_msg), -1);
-    assert_int_equal(kiosk_key_apply(&c, KSEC_SPEED, 0, "start", "", kiosk_msg, sizeof kiosk_msg), -1);
+    assert_int_equal(scene_key_apply(&s, SECTION_RENDER, 0, "bound_radius", "", &scene_e), -1);
+    assert_int_equal(kiosk_key_apply(&c, KSEC_SPEED, 0, "start", "", &kiosk_e), -1);
     expect(scene_msg, "key 'bound_radius' in [render] has an empty value");
     expect(kiosk_msg, "key 'start' in [speed] has an empty value");
     assert_string_equal(strstr(scene_msg, " has"), strstr(kiosk_msg, " has"));
-    assert_int_equal(scene_key_apply(&s, SECTION_RENDER, 0, "bound_radius", "2 # two", scene_msg, sizeof scene_msg), -1);
-    assert_int_equal(kiosk_key_apply(&c, KSEC_SPEED, 0, "start", "0.2 # two", kiosk_msg, sizeof kiosk_msg), -1);
+    assert_int_equal(scene_key_apply(&s, SECTION_RENDER, 0, "bound_radius", "2 # two", &scene_e), -1);
+    assert_int_equal(kiosk_key_apply(&c, KSEC_SPEED, 0, "start", "0.2 # two", &kiosk_e), -1);
     expect(scene_msg, "(a comment after a value starts with ' ;', not '#')");
     expect(kiosk_msg, "(a comment after a value starts with ' ;', not '#')");
-    assert_int_equal(scene_key_apply(&s, SECTION_RENDER, 0, "bound_radus", "2", scene_msg, sizeof scene_msg), -1);
-    assert_int_equal(kiosk_key_apply(&c, KSEC_SPEED, 0, "strat", "0.2", kiosk_msg, sizeof kiosk_msg), -1);
+    assert_int_equal(scene_key_apply(&s, SECTION_RENDER, 0, "bound_radus", "2", &scene_e), -1);
+    assert_int_equal(kiosk_key_apply(&c, KSEC_SPEED, 0, "strat", "0.2", &kiosk_e), -1);
     assert_string_equal(scene_msg, "unknown key 'bound_radus' in [render] (did you mean 'bound_radius'?)");
     assert_string_equal(kiosk_msg, "unknown key 'strat' in [speed] (did you mean 'start'?)");
 }

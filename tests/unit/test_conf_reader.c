@@ -37,20 +37,20 @@ static int kind_named(int kind) { return kind == BOX; }
 static const char *kind_list(void) { return "shelf, box NAME"; }
 static int name_ok(const char *name) { return strspn(name, "abcdefghijklmnopqrstuvwxyz_-0123456789") == strlen(name); }
 
-static int add_book(struct store *s, const char *item, char *msg, size_t msglen)
+static int add_book(struct store *s, const char *item, struct error *e)
 {
     if (s->n_books == MAX_BOOKS) {
-        snprintf(msg, msglen, "at most %d books", MAX_BOOKS);
+        error_set(e, ERROR_INPUT, NULL, "at most %d books", MAX_BOOKS);
         return -1;
     }
     snprintf(s->books[s->n_books++], sizeof s->books[0], "%s", item);
     return 0;
 }
 
-static int set_books(void *owner, void *target, const union conf_parsed *v, char *reason, size_t len)
+static int set_books(void *owner, void *target, const union conf_parsed *v, struct error *e)
 {
     (void)target;
-    return add_book(owner, v->text, reason, len);
+    return add_book(owner, v->text, e);
 }
 
 static const struct conf_choice box_types[] = {{"wood", WOOD}, {"card", CARD}, {NULL, 0}};
@@ -92,7 +92,7 @@ static const struct conf_key_table key_table = {
     .label = label, .target = key_target, .type_word = type_word, .type_of = type_of, .type_name = type_name,
 };
 
-static int open_section(void *target, int kind, const char *name, int line, int *instance, char *msg, size_t msglen)
+static int open_section(void *target, int kind, const char *name, int line, int *instance, struct error *e)
 {
     struct store *s = target;
     (void)line;
@@ -100,7 +100,7 @@ static int open_section(void *target, int kind, const char *name, int line, int 
     *instance = 0;
     if (kind == BOX) {
         if (s->n_boxes == MAX_BOXES) {
-            snprintf(msg, msglen, "too many boxes");
+            error_set(e, ERROR_INPUT, NULL, "too many boxes");
             return -1;
         }
         *instance = s->n_boxes++;
@@ -111,13 +111,13 @@ static int open_section(void *target, int kind, const char *name, int line, int 
 }
 
 /* after the required keys: a box of card holds at most 10 */
-static int close_section(void *target, int kind, int instance, const int *key_line, char *msg, size_t msglen)
+static int close_section(void *target, int kind, int instance, const int *key_line, struct error *e)
 {
     struct store *s = target;
     (void)key_line;
     s->closed++;
     if (kind == BOX && s->boxes[instance].type == CARD && s->boxes[instance].size > 10) {
-        snprintf(msg, msglen, "[box %s] of card holds at most 10", s->boxes[instance].name);
+        error_set(e, ERROR_INPUT, NULL, "[box %s] of card holds at most 10", s->boxes[instance].name);
         return -1;
     }
     return 0;
@@ -132,13 +132,12 @@ static void applied(void *target, int kind, int instance, int key, int line)
 
 static int continues(int kind, const char *key) { return kind == SHELF && strcmp(key, "books") == 0; }
 
-static int continuation(void *target, int kind, int instance, const char *key, const char *item, char *msg,
-                        size_t msglen)
+static int continuation(void *target, int kind, int instance, const char *key, const char *item, struct error *e)
 {
     (void)kind;
     (void)instance;
     (void)key;
-    return add_book(target, item, msg, msglen);
+    return add_book(target, item, e);
 }
 
 static const struct conf_schema schema = {

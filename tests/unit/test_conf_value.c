@@ -117,12 +117,12 @@ static void test_scene_and_kiosk_agree(void **state)
     static struct scene s;
     static struct kiosk_config c;
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        char scene_msg[512], kiosk_msg[512];
+        struct error scene_e, kiosk_e;
+        const char *scene_msg = scene_e.message, *kiosk_msg = kiosk_e.message;
         scene_defaults(&s);
         kiosk_config_defaults(&c);
-        int scene_rc = scene_key_apply(&s, SECTION_RENDER, 0, "bound_radius", cases[i].value, scene_msg,
-                                       sizeof scene_msg);
-        int kiosk_rc = kiosk_key_apply(&c, KSEC_SPEED, 0, "start", cases[i].value, kiosk_msg, sizeof kiosk_msg);
+        int scene_rc = scene_key_apply(&s, SECTION_RENDER, 0, "bound_radius", cases[i].value, &scene_e);
+        int kiosk_rc = kiosk_key_apply(&c, KSEC_SPEED, 0, "start", cases[i].value, &kiosk_e);
         print_message("\"%s\": scene %s, kiosk %s\n", cases[i].value, scene_rc == 0 ? "ok" : scene_msg,
                       kiosk_rc == 0 ? "ok" : kiosk_msg);
         assert_int_equal(scene_rc, cases[i].ok ? 0 : -1);
