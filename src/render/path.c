@@ -88,8 +88,10 @@ int render_path_choose(const struct gl_caps *c, enum precision_choice precision,
     if (precision == PRECISION_FP16 && !f16)
         return error_set(e, ERROR_INPUT, NULL, "--precision fp16: no 16-bit float render target works here (%s)",
                          why16);
+    /* a failure of a path the scene forced is the user's request, of the automatic choice the machine's */
+    enum error_status whose = precision != PRECISION_AUTO || mrt == MRT_ON ? ERROR_INPUT : ERROR_RUNTIME;
     if (!f32 && !f16)
-        return error_set(e, ERROR_RUNTIME, NULL, "this GPU has no renderable float format for the ray state (%s; %s); "
+        return error_set(e, whose, NULL, "this GPU has no renderable float format for the ray state (%s; %s); "
                          "bentray needs RGBA32F or RGBA16F render targets", why32, why16);
     if (mrt == MRT_ON && !c->mrt_works)
         return error_set(e, ERROR_INPUT, NULL, "mrt=on: multiple render targets do not work here (%s)", c->mrt_why);
@@ -119,7 +121,7 @@ int render_path_choose(const struct gl_caps *c, enum precision_choice precision,
                      path_name(preferred->is_fp32, preferred_mrt), preferred->name);
     }
     if (!preferred)
-        return error_set(e, ERROR_RUNTIME, NULL, "internal: no render path fits precision %d and mrt %d",
+        return error_set(e, whose, NULL, "internal: no render path fits precision %d and mrt %d",
                          (int)precision, (int)mrt);
     if (!p->format) {
         /* nothing complete: the preferred path, so that its failure is the one reported */

@@ -98,10 +98,9 @@ static int renderer_open(struct renderer *r, const struct gl_context *ctx, const
         quad_release();
         return -1;
     }
+    /* its status says whose failure it is: a forced path that this GPU lacks is the user's request,
+     * no path at all the machine's */
     if (render_path_choose(&r->caps, scene->render.precision, scene->render.mrt, &r->path, e) != 0) {
-        /* a forced path that this GPU lacks is the user's request; no path at all is the machine's */
-        e->status = scene->render.precision != PRECISION_AUTO || scene->render.mrt == MRT_ON ? ERROR_INPUT
-                                                                                             : ERROR_RUNTIME;
         quad_release();
         return -1;
     }
@@ -138,10 +137,9 @@ static int renderer_open(struct renderer *r, const struct gl_context *ctx, const
     if (renderer_follow_scene(r, e) != 0)
         return -1;
     struct pipeline_choice_made forced;
-    if (pipeline_choose(r, 0, &forced, e) != 0) {
-        e->status = ERROR_INPUT;     /* render.pipeline asked for it, and it is refused before any work */
+    /* a pipeline the scene asks for and this GPU cannot run is refused before any work (ERROR_INPUT) */
+    if (pipeline_choose(r, 0, &forced, e) != 0)
         return -1;
-    }
     if (textures_load(r, e) != 0 || polygons_load(r, e) != 0)
         return -1;
     return 0;
