@@ -142,6 +142,18 @@ failed=$(awk -F'|' '$4 != 0' "$work/run" | wc -l | tr -d ' ')
     echo "($header). The working corpus (\`$dir/corpus/TARGET\`) starts from"
     echo "\`tests/fuzz/seeds/TARGET\` and keeps what earlier runs on this machine found."
     echo
+    echo "## All runs"
+    echo
+    echo "Every harness over every run so far (\`make fuzz FUZZ_TARGETS=TARGET\` runs one), against"
+    echo "10 million executions each:"
+    echo
+    echo "| target | executions, all runs | runs | seconds | crashes | last run | 10 million |"
+    echo "|---|---:|---:|---:|---:|---|---|"
+    tail -n +2 "$totals" | while IFS=, read -r t runs execs secs crashes first last; do
+        reached=$(awk -v n="$execs" 'BEGIN { print (n >= 10000000) ? "reached" : sprintf("**%.1f million short**", (10000000 - n) / 1e6) }')
+        echo "| $t | $execs | $runs | $secs | $crashes | $last | $reached |"
+    done
+    echo
     echo "## What each harness checks"
     echo
     echo "Beyond the sanitizers:"
