@@ -72,12 +72,17 @@ static int present(const char *s)
 }
 
 /* v/c with as many decimals as it takes not to read as c itself: 0.995 c is not "1.00 c". */
-static void format_speed(char *out, size_t len, double v)
+static int speed_decimals(double v)
 {
     int decimals = 2;
     while (decimals < 6 && fabs(v) < 1.0 && fabs(v) >= 1.0 - 0.5 * pow(10.0, -decimals))
         decimals++;
-    snprintf(out, len, "%.*f", decimals, v);
+    return decimals;
+}
+
+static void format_speed(char *out, size_t len, double v)
+{
+    snprintf(out, len, "%.*f", speed_decimals(v), v);
 }
 
 /* "v = 0.90 c   γ = 2.29": the Lorentz factor is what the visitor sees change (time dilation,
@@ -101,13 +106,10 @@ static void format_amount(char *out, size_t len, double x)
         snprintf(out, len, "%.2g", x);
 }
 
-/* v/c as a visitor reads it: "90%", "99.5%" (as many decimals as format_speed takes). */
+/* v/c as a visitor reads it: "90%", "99.5%": the digits format_speed shows, as a percentage. */
 static void format_percent_of_light(char *out, size_t len, double v)
 {
-    int decimals = 0;
-    while (decimals < 4 && fabs(v) < 1.0 && fabs(v) >= 1.0 - 0.5 * pow(10.0, -(decimals + 2)))
-        decimals++;
-    snprintf(out, len, "%.*f%%", decimals, 100.0 * v);
+    snprintf(out, len, "%.*f%%", speed_decimals(v) - 2, 100.0 * v);
 }
 
 /* The effects (enum relativity_effects: geometry, Doppler colour, searchlight): staff's names and
