@@ -67,16 +67,17 @@ void main()
 {
     orbit_ray ray = orbit_ray_of();
     cull_prepare(ray);
-    vec3 a = u_camera_position;
-    vec3 hit_a = a;
-    vec3 hit_b = a;
-    vec3 b = a;
-    vec2 q = vec2(1.0, 0.0);
-    float s = 0.0;
+    // What the loops carry from turn to turn is kept to what they cannot compute again: every value
+    // live across their turns takes a register for the whole loop, and an exhibit's GPU has few
+    // (`make shader-stats`). The chord a walk ends on is found again after it from where the ray
+    // stands (k, s and a), and a walk that goes on after a hit the orbit misses starts again from
+    // its chord k alone, with the same arithmetic, so that their values are the walk's own.
+    float k = 0.0;                       // the chord where the ray stands (a walk starts)
+    vec3 a = u_camera_position;          // where the ray stands: the start of chord k
+    vec3 b = a;                          // the end of the last chord tested
+    float s = 0.0;                       // the orbit's fraction at b (at a before the first chord)
+    vec2 q = vec2(1.0, 0.0);             // u, du/ds at s
     bool leaves = false;
-    float hit_s_a = 0.0;
-    float hit_s_b = 0.0;
-    float hit_segment = 0.0;
     float steps = 0.0;
     float code = CODE_UNFINISHED;
     float end_key = NO_HIT;
@@ -84,71 +85,64 @@ void main()
     // steps on the orbit (orbit_chord_from): once per ray, after the loop, rather than in a branch
     // of it that a group of pixels would take as often as any one of them leaves.
     bool leaving = false;
-    vec3 leave_a = a;
-    float leave_s = 0.0;
-    float leave_k = 0.0;
-    float leave_s1 = 0.0;
-    vec2 leave_q1 = q;
-    vec3 leave_from_bound = vec3(0.0);
     candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
-    // Chords are taken ORBIT_GROUP at a time. At a group's start a turn looks at the group's last
-    // end only: where the group can meet nothing, fall in or leave (group_clear), the ray moves
-    // there at once, to the point its last chord would have reached; otherwise the next turns
-    // follow the group chord by chord. Every turn evaluates the orbit once and tests one chord,
-    // whichever it does, so that a group of pixels where some rays pass a group over and others
-    // follow its chords pays for one turn, not for both.
-    vec2 q_group = orbit_at(ray, 0.0);   // u, du/ds where the ray is
-    vec2 cs_group = vec2(1.0, 0.0);      // cos, sin of its angle about the mass
-    float k = 0.0;
-    float k_end = 0.0;                   // end of the group being followed chord by chord
-    bool done = false;
-    bool falls = false;                  // whether the last chord tested ends inside the capture sphere
-    // A hit is found again on the orbit (orbit_refine_hit) after the loop; where the orbit misses
+    // A hit is found again on the orbit (orbit_refine_hit) after the walk; where the orbit misses
     // what the chord met, the ray goes on from that chord's end (as the multipass scheme, whose
-    // intersection stage keeps no such hit), up to ORBIT_HIT_TRIES times.
+    // intersection stage keeps no such hit), up to ORBIT_HIT_TRIES walks.
     for (int attempt = 0; attempt < ORBIT_HIT_TRIES; attempt++) {
+        // the walk starts at chord k: at the camera, or at the end of the chord before it
+        bool at_camera = k <= 0.0;
+        s = orbit_chord_end(ray, k);
+        q = orbit_at(ray, s);
+        float phi = s * ray.phi_end;
+        vec2 cs_group = at_camera ? vec2(1.0, 0.0) : vec2(cos(phi), sin(phi));  // cos, sin of phi at s
+        vec3 on_orbit = orbit_point(ray, q, s);
+        a = at_camera ? u_camera_position : on_orbit;
+        b = a;
+        steps = k;
+        code = CODE_UNFINISHED;
+        end_key = NO_HIT;
+        leaving = false;
+        best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
+        // Chords are taken ORBIT_GROUP at a time. At a group's start a turn looks at the group's
+        // last end only: where the group can meet nothing, fall in or leave (group_clear), the ray
+        // moves there at once, to the point its last chord would have reached; otherwise the next
+        // turns follow the group chord by chord. Every turn evaluates the orbit once and tests one
+        // chord, whichever it does, so that a group of pixels where some rays pass a group over
+        // and others follow its chords pays for one turn, not for both.
+        float k_end = k;                 // end of the group being followed chord by chord
+        bool done = false;
+        bool falls = false;              // whether the last chord tested ends inside the capture sphere
         for (int i = 0; i < 2 * MAX_SEGMENTS + 2; i++) {
             if (k >= ray.segments || leaving || done)
                 break;
             bool probe = k >= k_end;
             float group_end = min(k + ORBIT_GROUP, ray.segments);
             float k1 = probe ? group_end : k + 1.0;
-            float s_a = s;
             float s1 = orbit_chord_end(ray, k1);
             vec2 q1 = orbit_at(ray, s1);
             vec3 p1 = orbit_point(ray, q1, s1);
             float phi1 = s1 * ray.phi_end;
             vec2 cs1 = vec2(cos(phi1), sin(phi1));
-            bool clear = group_clear(ray, s_a, q_group, cs_group, s1, q1, cs1);
+            bool clear = group_clear(ray, s, q, cs_group, s1, q1, cs1);
             bool passes = probe && clear;
             bool chord = !probe;
             k_end = probe ? group_end : k_end;
             vec3 from_bound = p1 - u_bound_center;
+            // a leaving chord moves nothing: the ray stands at its start (a, s, k)
             leaving = chord && dot(from_bound, from_bound) >= u_bound_radius2;
-            leave_a = a;
-            leave_s = s_a;
-            leave_k = k;
-            leave_s1 = s1;
-            leave_q1 = q1;
-            leave_from_bound = from_bound;
             bool tested = chord && !leaving;
             bool moves = passes || tested;
             q = moves ? q1 : q;
             s = moves ? s1 : s;
             b = moves ? p1 : b;
             steps = moves ? k1 : steps;
-            q_group = moves ? q1 : q_group;
             cs_group = moves ? cs1 : cs_group;
             candidate trial = best;
             intersect_chord(a, p1, k, trial);
             best.key = tested ? trial.key : best.key;
             best.t = tested ? trial.t : best.t;
             best.slot = tested ? trial.slot : best.slot;
-            hit_a = tested ? a : hit_a;
-            hit_b = tested ? p1 : hit_b;
-            hit_s_a = tested ? s_a : hit_s_a;
-            hit_s_b = tested ? s1 : hit_s_b;
-            hit_segment = tested ? k : hit_segment;
             bool falls_in = tested && captured(p1);
             falls = falls_in;
             bool found = best.slot >= 0.0;
@@ -156,35 +150,39 @@ void main()
             code = ends ? CODE_CAPTURED : code;
             end_key = ends ? steps : end_key;
             done = found || ends;
+            // a chord with a hit (or that falls in) keeps its start: the ray stands at a, chord k
             a = moves && !done ? p1 : a;
             k = moves && !done ? k1 : k;
             // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
             if (k >= ray.segments || leaving || done)
                 break;
         }
+        // the chord the loop ended on starts at a, at fraction s_a of the orbit (chord k; as the
+        // intersection stage of the multipass scheme finds it)
+        float s_a = orbit_chord_end(ray, k);
         if (leaving) {
             // the leaving chord as the orbit stage makes it (orbit_chord_from): from its end outside
             // the sphere back to where the orbit crosses it, on the same values
-            q = leave_q1;
-            orbit_crossing(ray, leave_s, leave_s1, leave_from_bound, q, s);
+            float s1 = orbit_chord_end(ray, k + 1.0);
+            q = orbit_at(ray, s1);
+            vec3 from_bound = orbit_point(ray, q, s1) - u_bound_center;
+            orbit_crossing(ray, s_a, s1, from_bound, q, s);
             leaves = true;
             b = orbit_chord_point(ray, q, s, leaves);
-            steps = leave_k + 1.0;
-            intersect_chord(leave_a, b, leave_k, best);
-            hit_a = leave_a;
-            hit_b = b;
-            hit_s_a = leave_s;
-            hit_s_b = s;
-            hit_segment = leave_k;
+            steps = k + 1.0;
+            intersect_chord(a, b, k, best);
             bool found = best.slot >= 0.0;
             code = found ? code : CODE_SKY;
             end_key = found ? end_key : steps;
         }
-        // the hit found again on the orbit itself; where the orbit misses (lost), the chord's end
-        // decides as it would have without the hit: the ray leaves, falls in or goes on from there
+        // the hit found again on the orbit itself, on the chord from a (s_a) to b (s); where the
+        // orbit misses (lost), the chord's end decides as it would have without the hit: the ray
+        // leaves, falls in or goes on from there
         bool lost = false;
+        vec3 hit_a = a;
+        vec3 hit_b = b;
         if (best.slot >= 0.0)
-            orbit_refine_hit(ray, hit_s_a, hit_s_b, hit_segment, hit_a, hit_b, best, lost);
+            orbit_refine_hit(ray, s_a, s, k, hit_a, hit_b, best, lost);
         lost = lost && attempt < ORBIT_HIT_TRIES - 1;
         bool goes_on = lost && !leaving && !falls;
         bool stops = lost && !goes_on;
@@ -192,9 +190,10 @@ void main()
         end_key = stops ? steps : end_key;
         best.slot = lost ? -1.0 : best.slot;
         best.key = lost ? NO_HIT : best.key;
-        a = goes_on ? b : a;
+        // a hit kept: a and b become the short chord that carries it (for the shading below)
+        a = hit_a;
+        b = hit_b;
         k = goes_on ? steps : k;
-        done = !goes_on;
         // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
         if (!goes_on)
             break;
@@ -206,7 +205,7 @@ void main()
     vec3 escape = orbit_direction_at_infinity(ray);
     vec3 tangent = leaves ? escape : along_orbit;
     vec4 new_hit, new_image;
-    intersect_shade(best, hit_a, hit_b, new_hit, new_image);
+    intersect_shade(best, a, b, new_hit, new_image);
     bool found = best.slot >= 0.0;
     vec4 end_hit = vec4(end, end_key);
     vec4 end_image = vec4(0.0, 0.0, 0.0, code);
