@@ -537,13 +537,15 @@ void intersect_shade(candidate best, vec3 a, vec3 b, out vec4 new_hit, out vec4 
 // which runs from fraction s_a to s_b of the ray's orbit, is found again on the two halves of that
 // stretch of orbit, split in its middle, ORBIT_HIT_LEVELS times: the chord that carries the hit
 // halves at every level and its distance from the orbit falls fourfold. Every object is tested
-// again on each half, so a hit that the orbit reaches first is the one kept. Where at some level
-// neither half meets anything (a chord that crossed an object, or an edge of one, that the orbit
-// passes by), the hit is lost: its caller keeps no hit there and the ray goes on from the chord's
-// end. The split is never at the hit itself: the orbit there lies within the chord's error of the
-// object's surface, often closer than a float rounding, where both halves could miss a surface
-// that the orbit does cross. Used by the intersection stage and by the single pass alike, with the
-// same arithmetic, so both find the same hits.
+// again on the first half, so a hit that the orbit reaches first is the one kept; where the first
+// half meets nothing, the hit lies on the second, which the next level splits in turn, untested:
+// one half tested a level, not two. The last chord is tested after the last level where no level
+// tested it. Where it meets nothing (a chord that crossed an object, or an edge of one, that the
+// orbit passes by), the hit is lost: its caller keeps no hit there and the ray goes on from the
+// chord's end. The split is never at the hit itself: the orbit there lies within the chord's
+// error of the object's surface, often closer than a float rounding, where both halves could miss
+// a surface that the orbit does cross. Used by the intersection stage and by the single pass
+// alike, with the same arithmetic, so both find the same hits.
 const int ORBIT_HIT_LEVELS = 4;
 
 // best: the hit on chord a -> b (segment `segment`); a and b become the ends of the short chord
@@ -552,38 +554,39 @@ const int ORBIT_HIT_LEVELS = 4;
 void orbit_refine_hit(orbit_ray ray, float s_a, float s_b, float segment, inout vec3 a, inout vec3 b,
                       inout candidate best, out bool lost)
 {
-    lost = false;
     float lo = s_a;
     float hi = s_b;
     float none = NO_HIT;
     float no_slot = -1.0;
+    float key = best.key;
+    bool tested = true;    // whether best is chord a -> b's own hit
     for (int level = 0; level < ORBIT_HIT_LEVELS; level++) {
         float s_m = lo + 0.5 * (hi - lo);
         vec2 q = orbit_at(ray, s_m);
         vec3 m = orbit_point(ray, q, s_m);
         candidate first = candidate(none, 0.0, no_slot, vec3(0.0), vec3(0.0));
-        candidate second = candidate(none, 0.0, no_slot, vec3(0.0), vec3(0.0));
         intersect_chord(a, m, segment, first);
-        intersect_chord(m, b, segment, second);
-        bool in_first = first.slot >= 0.0;
-        bool in_second = !in_first && second.slot >= 0.0;
-        lost = !(in_first || in_second);
-        float key = best.key;
-        best = in_first ? first : in_second ? second : best;
-        best.key = key;
-        float new_lo = in_second ? s_m : lo;
-        float new_hi = in_first ? s_m : hi;
-        vec3 new_a = in_second ? m : a;
-        vec3 new_b = in_first ? m : b;
+        tested = first.slot >= 0.0;
+        best = tested ? first : best;
+        float new_lo = tested ? lo : s_m;
+        float new_hi = tested ? s_m : hi;
+        vec3 new_a = tested ? a : m;
+        vec3 new_b = tested ? m : b;
         lo = new_lo;
         hi = new_hi;
         a = new_a;
         b = new_b;
-        // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end"); a lost hit is
-        // not kept, so the levels stop at the first that loses it
-        if (lost || level == ORBIT_HIT_LEVELS - 1)
+        // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
+        if (level == ORBIT_HIT_LEVELS - 1)
             break;
     }
+    // the last chord, where its own level did not test it: where it meets nothing, the hit is lost
+    candidate last = candidate(none, 0.0, no_slot, vec3(0.0), vec3(0.0));
+    if (!tested)
+        intersect_chord(a, b, segment, last);
+    lost = !tested && last.slot < 0.0;
+    best = tested ? best : last;
+    best.key = key;
 }
 #endif
 
