@@ -2,7 +2,8 @@
 // (layout of the textures: common.glsl).
 //   u_panel 0  ray positions: xyz / bound radius mapped to colour
 //   u_panel 1  ray directions: the unit velocity mapped to colour
-//   u_panel 2  depth: the segment index of the hit, blue (first) to red (last); grey: no hit
+//   u_panel 2  depth: the segment index of the hit, blue (first) to red (last); grey: no hit (a
+//              ray that reached the sky or fell in has a depth too: where it ended)
 //   u_panel 3  step size: log2 of h against the scene's step, blue (shorter) to red (longer);
 //              with exact orbits (u_orbit_rows > 0) the orbit table instead: one orbit per row,
 //              from the observer (left) to where it ends (right), coloured by u = 1/r against the
@@ -54,7 +55,8 @@ void main()
         c = len > 0.0 ? 0.5 + 0.5 * v / len : vec3(0.0);
     } else if (u_panel < 2.5) {
         float depth = texture2D(u_hit, v_uv).w;
-        c = depth < PIPELINE_NO_HIT ? ramp(depth / u_segments) : vec3(0.25);
+        bool hit = texture2D(u_outcome, v_uv).a > -0.5 && depth < PIPELINE_NO_HIT;
+        c = hit ? ramp(depth / u_segments) : vec3(0.25);
     } else if (u_panel < 3.5 && u_orbit_rows > 0.0) {
         c = orbit_table_panel(v_uv);
     } else if (u_panel < 3.5) {

@@ -164,15 +164,37 @@ int compositor_show_preview(struct compositor *c, struct error *e)
     return compositor_put_preview(c, c->preview, e);
 }
 
+void pipeline_panel_rect(int w, int h, int k, int *x, int *y, int *pw, int *ph)
+{
+    int cell_w = w / PIPELINE_COLUMNS, cell_h = h / PIPELINE_ROWS;
+    /* the frame's aspect w / h in a cell: as wide as the cell, or as high where that is narrower */
+    int fit_w = cell_w, fit_h = (int)((double)cell_w * h / w + 0.5);
+    if (fit_h > cell_h) {
+        fit_h = cell_h;
+        fit_w = (int)((double)cell_h * w / h + 0.5);
+    }
+    *pw = fit_w;
+    *ph = fit_h;
+    *x = (k % PIPELINE_COLUMNS) * cell_w + (cell_w - fit_w) / 2;
+    *y = (k / PIPELINE_COLUMNS) * cell_h + (cell_h - fit_h) / 2;
+}
+
+/* Panel k's viewport on the canvas (GL's rows bottom-up). */
+static void panel_viewport(const struct compositor *c, int k)
+{
+    int x, y, w, h;
+    pipeline_panel_rect(c->width, c->height, k, &x, &y, &w, &h);
+    glViewport(x, c->height - y - h, w, h);
+}
+
 int compositor_put_pipeline(struct compositor *c, const struct renderer_textures *t, double bound_radius,
                             int segments, double step, struct error *e)
 {
-    int pw = c->width / 3, ph = c->height / 2;
     to_canvas(c, 0, 0, c->width, c->height);
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
     /* top row: image, positions, directions; bottom row: segment index, step size, outcome */
-    glViewport(0, ph, pw, ph);
+    panel_viewport(c, 0);
     blit(c, t->image, GL_NEAREST, 0, 0, 1, 1);
     GLuint p = c->pipeline;
     glUseProgram(p);
@@ -191,9 +213,8 @@ int compositor_put_pipeline(struct compositor *c, const struct renderer_textures
     glUniform1f(glGetUniformLocation(p, "u_orbit_columns"), (float)t->orbit_columns);
     glUniform1f(glGetUniformLocation(p, "u_orbit_rows"), t->orbit_table ? (float)t->orbit_rows_per_side : 0.0f);
     glUniform1f(glGetUniformLocation(p, "u_orbit_u_capture"), (float)t->orbit_u_capture);
-    static const int cells[5][2] = {{1, 1}, {2, 1}, {0, 0}, {1, 0}, {2, 0}};
     for (int k = 0; k < 5; k++) {
-        glViewport(cells[k][0] * pw, cells[k][1] * ph, pw, ph);
+        panel_viewport(c, k + 1);
         glUniform1f(glGetUniformLocation(p, "u_panel"), (float)k);
         quad_draw(p, 0.0f);
     }

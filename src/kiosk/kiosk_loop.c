@@ -219,9 +219,11 @@ static int update_hud(struct kiosk *k, struct error *e, int *failed)
     int n = hud_lines(&v, lines, HUD_MAX_LINES);
     char text[sizeof k->hud_text];
     /* the indicator is drawn but not in the text (and its value not always): its coming and going
-     * and its bar must redraw the HUD too, and so must a new size */
-    size_t used = (size_t)snprintf(text, sizeof text, "%dx%d indicator %d %.17g\n", w, h, (int)v.indicator,
-                                   v.indicator == HUD_KNOB_NONE ? 0.0 : v.indicator_value);
+     * and its bar must redraw the HUD too, and so must a new size and the pipeline view, which
+     * labels its panels instead of the lines */
+    size_t used = (size_t)snprintf(text, sizeof text, "%dx%d indicator %d %.17g pipeline %d\n", w, h,
+                                   (int)v.indicator, v.indicator == HUD_KNOB_NONE ? 0.0 : v.indicator_value,
+                                   v.pipeline_view);
     for (int i = 0; i < n && used < sizeof text; i++)
         used += (size_t)snprintf(text + used, sizeof text - used, "%s\n", lines[i]);
     if (strcmp(text, k->hud_text) == 0)

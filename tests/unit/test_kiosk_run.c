@@ -9,6 +9,7 @@
 #include <cmocka.h>
 #include "kiosk_config/kiosk_config.h"
 #include "io/png_io.h"
+#include "kiosk/compositor.h"
 #include "kiosk/kiosk_loop.h"
 #include "kiosk/kiosk_state.h"
 #include "kiosk/kiosk_view.h"
@@ -242,23 +243,45 @@ static void test_attract_mode(void **state)
     config = visitor_config;
 }
 
+/* Pixel (x, y) of panel k of the pipeline frame (x, y from the panel's top-left corner). */
+static const unsigned char *panel_pixel(int k, int x, int y)
+{
+    int px, py, pw, ph;
+    pipeline_panel_rect(width, height, k, &px, &py, &pw, &ph);
+    return &frames[PIPELINE_FRAME][((size_t)(py + y) * width + px + x) * 4];
+}
+
 /* The pipeline view shows the renderer's own ray state in a 3 x 2 grid; its last panel colours each
  * ray by its outcome, in exactly one of five colours (shaders_es/kiosk_pipeline.glsl). The start
  * view of the black hole has rays that hit objects, rays that reach the sky and captured rays.
- * With exact orbits its step-size panel shows the orbit table instead. */
+ * Every panel keeps the frame's aspect ratio, centred in its cell with black above and below. The
+ * segment-of-the-hit panel colours the rays that hit an object only. With exact orbits its
+ * step-size panel shows the orbit table instead. */
 static void test_pipeline_view(void **state)
 {
     (void)state;
     static const unsigned char outcome[5][3] = {
         {51, 204, 77}, {77, 128, 255}, {0, 0, 0}, {230, 26, 26}, {230, 26, 230}};
     int seen[5] = {0}, other = 0;
-    int pw = width / 3, ph = height / 2;
-    /* the outcome panel, bottom right (rows top-down), less a pixel at each edge (a size that does
-     * not divide by 3 leaves a border column that may belong to the neighbour) and its upper half,
-     * where the HUD writes the panel's label */
-    for (int y = height - ph / 2; y < height - 1; y++)
-        for (int x = 2 * pw + 1; x < 3 * pw - 1; x++) {
-            const unsigned char *p = &frames[PIPELINE_FRAME][((size_t)y * width + x) * 4];
+    int px, py, pw, ph;
+    pipeline_panel_rect(width, height, 5, &px, &py, &pw, &ph);
+    print_message("panels of %dx%d on a %dx%d canvas, the outcome panel's at (%d, %d)\n", pw, ph, width, height,
+                  px, py);
+    /* the frame's aspect, to a pixel */
+    assert_true(abs(pw * height - ph * width) <= width + height);
+    assert_true(pw <= width / 3 && ph <= height / 2);
+    /* black where a cell is wider or higher than its panel: the row above the outcome panel */
+    if (py > height / 2)
+        for (int x = 0; x < pw; x++) {
+            const unsigned char *p = &frames[PIPELINE_FRAME][((size_t)(py - 1) * width + px + x) * 4];
+            assert_true(p[0] == 0 && p[1] == 0 && p[2] == 0);
+        }
+    /* the outcome panel, less a pixel at each edge (where the canvas's filter may mix in the band)
+     * and its upper quarter (the HUD may write the panel's label there on a small canvas) */
+    int hit_grey = 0, hit_coloured = 0, missed_coloured = 0;
+    for (int y = ph / 4; y < ph - 1; y++)
+        for (int x = 1; x < pw - 1; x++) {
+            const unsigned char *p = panel_pixel(5, x, y);
             int k = 0;
             while (k < 5 && (abs(p[0] - outcome[k][0]) > 1 || abs(p[1] - outcome[k][1]) > 1 ||
                              abs(p[2] - outcome[k][2]) > 1))
@@ -267,11 +290,22 @@ static void test_pipeline_view(void **state)
                 seen[k]++;
             else
                 other++;
+            /* the same ray in the segment-of-the-hit panel: grey (64) where it hit nothing */
+            const unsigned char *d = panel_pixel(3, x, y);
+            int grey = abs(d[0] - 64) <= 1 && abs(d[1] - 64) <= 1 && abs(d[2] - 64) <= 1;
+            hit_grey += k == 0 && grey;
+            hit_coloured += k == 0 && !grey;
+            missed_coloured += (k == 1 || k == 2) && !grey;
         }
     print_message("outcome panel: %d object, %d sky, %d captured, %d unfinished, %d failed, %d other pixels\n",
                   seen[0], seen[1], seen[2], seen[3], seen[4], other);
+    print_message("segment-of-the-hit panel: %d hits coloured, %d hits grey, %d sky or captured coloured\n",
+                  hit_coloured, hit_grey, missed_coloured);
     assert_int_equal(other, 0);
     assert_true(seen[0] > 0 && seen[1] > 0 && seen[2] > 0);
+    assert_true(hit_coloured > 0);
+    assert_int_equal(hit_grey, 0);
+    assert_int_equal(missed_coloured, 0);
 
     /* The black hole's rays follow exact orbits, so the step-size panel (bottom middle) shows the
      * orbit table: each row one orbit, coloured by 1/r against the horizon's, escaping orbits in
@@ -279,12 +313,13 @@ static void test_pipeline_view(void **state)
      * (red: 1/r at 0.9 of the horizon's or more, ramp() in kiosk_pipeline.glsl); no escaping
      * orbit comes nearer than the photon sphere (2/3, where the red channel is at most 140 of 255). */
     int near_horizon[2] = {0, 0}, panel_pixels = 0;
-    for (int y = height - ph + 1; y < height - 1; y++) {
-        int lower = y >= height - ph / 2;
-        if (y == height - ph / 2 - 1 || y == height - ph / 2)
+    pipeline_panel_rect(width, height, 4, &px, &py, &pw, &ph);
+    for (int y = 1; y < ph - 1; y++) {
+        int lower = y >= ph / 2;
+        if (y == ph / 2 - 1 || y == ph / 2)
             continue;                  /* the middle line, where the canvas's filter mixes both halves */
-        for (int x = pw + 1; x < 2 * pw - 1; x++) {
-            const unsigned char *p = &frames[PIPELINE_FRAME][((size_t)y * width + x) * 4];
+        for (int x = 1; x < pw - 1; x++) {
+            const unsigned char *p = panel_pixel(4, x, y);
             near_horizon[lower] += p[0] >= 230 && p[1] <= 100 && p[2] <= 40;
             panel_pixels++;
         }
@@ -307,6 +342,25 @@ static void test_screen_copied_or_drawn(void **state)
     setenv("BT_FAULT", "framebuffer_blit hud_whole", 1);
     run_config("tests/kiosk/headless_hud.conf", FRAMES, drawn);
     unsetenv("BT_FAULT");
+    /* the pipeline view labels its panels (hud.c) from the bands above them, and covers none of
+     * them below their upper halves, where a label may reach on a canvas this small (the HUD's
+     * lines would cover the image panel there): the HUD is drawn again when the view changes,
+     * though its lines' text does not */
+    int label = 0, covered = 0;
+    for (int k = 0; k < PIPELINE_COLUMNS * PIPELINE_ROWS; k++) {
+        int px, py, pw, ph;
+        pipeline_panel_rect(width, height, k, &px, &py, &pw, &ph);
+        for (int y = (k / PIPELINE_COLUMNS) * (height / PIPELINE_ROWS); y < py + ph; y++)
+            for (int x = px; x < px + pw; x++) {
+                int differs = memcmp(&copied[PIPELINE_FRAME][((size_t)y * width + x) * 4],
+                                     &frames[PIPELINE_FRAME][((size_t)y * width + x) * 4], 4) != 0;
+                label += y < py && differs;
+                covered += y >= py + ph / 2 && differs;
+            }
+    }
+    print_message("pipeline view: %d pixels of the panels' labels, %d of the panels covered\n", label, covered);
+    assert_true(label > 0);
+    assert_int_equal(covered, 0);
     int hud_pixels = 0;
     for (int f = 0; f < FRAMES; f++) {
         for (int i = 0; i < width * height * 4; i++)
