@@ -12,6 +12,8 @@
 //              (the shadow's edge) on the middle line, launch angles outwards from it as the
 //              table spaces them (logarithmically next to it)
 //   u_panel 4  outcome: objects green, sky blue, captured black, unfinished red, failed magenta
+//   u_panel 5  a colour scale below a panel: ramp() from its left end (0) to its right (1)
+//   u_panel 6  the outcome panel's legend: its five colours side by side on grey
 uniform sampler2D u_position;
 uniform sampler2D u_velocity;
 uniform sampler2D u_hit;
@@ -33,6 +35,14 @@ vec3 ramp(float t)
 {
     t = clamp(t, 0.0, 1.0);
     return vec3(smoothstep(0.4, 0.9, t), sin(3.14159265 * t), 1.0 - smoothstep(0.1, 0.6, t));
+}
+
+vec3 outcome_colour(float code)
+{
+    return code > -0.5 ? vec3(0.2, 0.8, 0.3)
+         : code > -1.5 ? vec3(0.3, 0.5, 1.0)
+         : code > -2.5 ? vec3(0.0)
+         : code > -3.5 ? vec3(0.9, 0.1, 0.1) : vec3(0.9, 0.1, 0.9);
 }
 
 vec3 orbit_table_panel(vec2 uv)
@@ -62,12 +72,15 @@ void main()
     } else if (u_panel < 3.5) {
         float h = abs(texture2D(u_velocity, v_uv).w);
         c = h > 0.0 ? ramp(0.5 + 0.125 * log2(h / u_step)) : vec3(0.0);
+    } else if (u_panel < 4.5) {
+        c = outcome_colour(texture2D(u_outcome, v_uv).a);
+    } else if (u_panel < 5.5) {
+        c = ramp(v_uv.x);
     } else {
-        float code = texture2D(u_outcome, v_uv).a;
-        c = code > -0.5 ? vec3(0.2, 0.8, 0.3)
-          : code > -1.5 ? vec3(0.3, 0.5, 1.0)
-          : code > -2.5 ? vec3(0.0)
-          : code > -3.5 ? vec3(0.9, 0.1, 0.1) : vec3(0.9, 0.1, 0.9);
+        // five swatches, each the middle 60% of its fifth of the strip
+        float slot = min(floor(v_uv.x * 5.0), 4.0);
+        float within = v_uv.x * 5.0 - slot;
+        c = within > 0.2 && within < 0.8 ? outcome_colour(-slot) : vec3(0.5);
     }
     gl_FragColor = vec4(c, 1.0);
 }

@@ -164,27 +164,18 @@ int compositor_show_preview(struct compositor *c, struct error *e)
     return compositor_put_preview(c, c->preview, e);
 }
 
-void pipeline_panel_rect(int w, int h, int k, int *x, int *y, int *pw, int *ph)
+/* A rectangle of the canvas (x, y from the top-left corner) as the viewport (GL's rows bottom-up). */
+static void canvas_viewport(const struct compositor *c, int x, int y, int w, int h)
 {
-    int cell_w = w / PIPELINE_COLUMNS, cell_h = h / PIPELINE_ROWS;
-    /* the frame's aspect w / h in a cell: as wide as the cell, or as high where that is narrower */
-    int fit_w = cell_w, fit_h = (int)((double)cell_w * h / w + 0.5);
-    if (fit_h > cell_h) {
-        fit_h = cell_h;
-        fit_w = (int)((double)cell_h * w / h + 0.5);
-    }
-    *pw = fit_w;
-    *ph = fit_h;
-    *x = (k % PIPELINE_COLUMNS) * cell_w + (cell_w - fit_w) / 2;
-    *y = (k / PIPELINE_COLUMNS) * cell_h + (cell_h - fit_h) / 2;
+    glViewport(x, c->height - y - h, w, h);
 }
 
-/* Panel k's viewport on the canvas (GL's rows bottom-up). */
+/* Panel k's viewport on the canvas. */
 static void panel_viewport(const struct compositor *c, int k)
 {
     int x, y, w, h;
     pipeline_panel_rect(c->width, c->height, k, &x, &y, &w, &h);
-    glViewport(x, c->height - y - h, w, h);
+    canvas_viewport(c, x, y, w, h);
 }
 
 int compositor_put_pipeline(struct compositor *c, const struct renderer_textures *t, double bound_radius,
@@ -216,6 +207,16 @@ int compositor_put_pipeline(struct compositor *c, const struct renderer_textures
     for (int k = 0; k < 5; k++) {
         panel_viewport(c, k + 1);
         glUniform1f(glGetUniformLocation(p, "u_panel"), (float)k);
+        quad_draw(p, 0.0f);
+    }
+    /* the colour scales under the segment-of-the-hit and step-size (orbit table) panels, the
+     * legend under the outcome panel (the HUD names their ends and colours) */
+    for (int k = 3; k < 6; k++) {
+        int x, y, w, h;
+        if (pipeline_legend_rect(c->width, c->height, k, &x, &y, &w, &h) != 0)
+            continue;
+        canvas_viewport(c, x, y, w, h);
+        glUniform1f(glGetUniformLocation(p, "u_panel"), k == 5 ? 6.0f : 5.0f);
         quad_draw(p, 0.0f);
     }
     return gl_check("drawing the pipeline view", e);

@@ -8,6 +8,7 @@
 #include "display/screen.h"
 #include "io/error.h"
 #include "render/renderer.h"
+#include "kiosk/pipeline_layout.h"
 
 struct compositor {
     int width, height;               /* the canvas: the refined frame */
@@ -45,13 +46,8 @@ int compositor_show_preview(struct compositor *c, struct error *e);
 /* The pipeline view of a run's ray state: five panels (positions, directions, segment index of
  * the hit, step size, outcome) and the image, in a 3 x 2 grid over the canvas. With exact orbits
  * (t->orbit_table) the step-size panel shows the orbit table the run followed. Each panel keeps the
- * frame's aspect ratio (round things stay round), centred in its cell; the bands above and below
- * it are black, and the HUD writes the panel's label into the upper one. */
-#define PIPELINE_COLUMNS 3
-#define PIPELINE_ROWS 2
-/* Panel k's rectangle on a canvas of w x h (x, y from the top-left corner): 0 the image, then
- * positions, directions (top row), segment index of the hit, step size, outcome (bottom row). */
-void pipeline_panel_rect(int w, int h, int k, int *x, int *y, int *pw, int *ph);
+ * frame's aspect ratio (round things stay round), centred in its cell (kiosk/pipeline_layout.h);
+ * the bands above and below it are black but for the colour scales and the outcome's legend. */
 int compositor_put_pipeline(struct compositor *c, const struct renderer_textures *t, double bound_radius,
                             int segments, double step, struct error *e);
 /* The HUD image (screen-sized, top row first, straight alpha), or NULL for none. */

@@ -6,6 +6,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+#include "kiosk/pipeline_layout.h"
 #include "physics/relativity.h"
 
 /* Text heights as fractions of the screen's height: body text h/30 is 24 px at 720p, 36 at 1080p. */
@@ -455,9 +456,43 @@ static void draw_indicator(struct hud_font *font, unsigned char *rgba, int w, in
 
 const char *const hud_pipeline_labels[HUD_PIPELINE_PANELS] = {
     "image", "ray positions", "ray directions", "segment of the hit", "step size",
-    "outcome: green object, blue sky, black captured, red unfinished",
+    "outcome",
 };
 const char *const hud_pipeline_table_label = "orbit table: 1/r along each orbit";
+
+/* What the colour scales and the legend below the panels say (kiosk_pipeline.glsl draws them):
+ * the ends of each scale, the outcome's five colours in the legend's order, and how the positions
+ * and directions take their colours. */
+static const char *const scale_ends[3][2] = {
+    {"first", "last segment"}, {"shorter", "longer than the step"}, {"far", "at the horizon"}};
+static const char *const outcome_words[5] = {"object", "sky", "fell in", "unfinished", "failed"};
+static const char *const colour_axes = "x, y, z as red, green, blue";
+#define LEGEND_TEXT_DIVISOR 45
+
+/* The words under panel k: under its colour scale's ends, its legend's colours, or on their own. */
+static void draw_panel_legend(struct hud_font *font, unsigned char *rgba, int w, int h, const struct hud_view *v, int k)
+{
+    int x, y, lw, lh;
+    if (k == 0 || pipeline_legend_rect(v->canvas_w, v->canvas_h, k, &x, &y, &lw, &lh) != 0)
+        return;
+    int px = scaled(h, LEGEND_TEXT_DIVISOR);
+    x += v->canvas_x;
+    int base = v->canvas_y + y + (k <= 2 ? px : lh + px + px / 4);
+    if (k <= 2) {
+        hud_text_draw(font, rgba, w, h, x, base, px, colour_axes, body_color);
+    } else if (k < 5) {
+        const char *const *ends = scale_ends[k == HUD_PIPELINE_TABLE_PANEL && v->orbit_table ? 2 : k - 3];
+        hud_text_draw(font, rgba, w, h, x, base, px, ends[0], body_color);
+        int right = hud_text_width(font, px, ends[1]);
+        hud_text_draw(font, rgba, w, h, x + lw - right, base, px, ends[1], body_color);
+    } else {
+        for (int i = 0; i < 5; i++) {
+            int tw = hud_text_width(font, px, outcome_words[i]);
+            hud_text_draw(font, rgba, w, h, x + (2 * i + 1) * lw / 10 - tw / 2, base, px, outcome_words[i],
+                          body_color);
+        }
+    }
+}
 
 /* Each panel's label on a band of its own in the panel's top-left corner, cut to the panel's width. */
 static void draw_panel_labels(struct hud_font *font, unsigned char *rgba, int w, int h, const struct hud_view *v)
@@ -477,6 +512,7 @@ static void draw_panel_labels(struct hud_font *font, unsigned char *rgba, int w,
         int tw = hud_text_width(font, px, text);
         fill_rect(rgba, w, h, x0, y0, x0 + tw + 2 * pad, y0 + px * ROW_PITCH_NUM / ROW_PITCH_DEN + pad, band_color);
         hud_text_draw(font, rgba, w, h, x0 + pad, y0 + px, px, text, body_color);
+        draw_panel_legend(font, rgba, w, h, v, p);
     }
 }
 

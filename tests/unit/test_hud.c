@@ -16,6 +16,7 @@
 #include <ft2build.h>
 #include FT_FREETYPE_H
 #include "kiosk/hud.h"
+#include "kiosk/pipeline_layout.h"
 
 /* fonts-dejavu-core, one of the project's Debian packages */
 #define FONT_PATH "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
@@ -625,9 +626,9 @@ static void test_lines_mapped_knobs(void **state)
     assert_true(find_line(lines, n, "M = ") < 0);
 }
 
-/* The pipeline view: each of the six panels has its label in its top-left corner, the scene's name
- * in the image panel's, and nothing of the HUD covers a panel below its label (the block of lines
- * used to cover most of the top row); the canvas may be letterboxed anywhere on the screen. */
+/* The pipeline view: each of the six panels has its label in its cell's top-left corner, above the
+ * panel, the scene's name in the image panel's, and nothing of the HUD covers a panel (the block of
+ * lines used to cover most of the top row); the canvas may be letterboxed anywhere on the screen. */
 static void test_pipeline_labels(void **state)
 {
     (void)state;
@@ -648,12 +649,29 @@ static void test_pipeline_labels(void **state)
         for (int y = y0; y < y0 + label_rows; y++)
             for (int x = x0; x < x0 + pw / 4; x++)
                 label += alpha_at(rgba, W, x, y) != 0;
-        for (int y = y0 + label_rows; y < y0 + ph; y++)
-            for (int x = x0; x < x0 + pw; x++)
+        int px, py, panel_w, panel_h;
+        pipeline_panel_rect(v.canvas_w, v.canvas_h, p, &px, &py, &panel_w, &panel_h);
+        assert_true(v.canvas_y + py >= y0 + label_rows);
+        for (int y = v.canvas_y + py; y < v.canvas_y + py + panel_h; y++)
+            for (int x = v.canvas_x + px; x < v.canvas_x + px + panel_w; x++)
                 covered += alpha_at(rgba, W, x, y) != 0;
-        printf("  panel %d (%s): %d label pixels, %d below it\n", p, hud_pipeline_labels[p], label, covered);
+        printf("  panel %d (%s): %d label pixels, %d on the panel\n", p, hud_pipeline_labels[p], label, covered);
         assert_true(label > 100);
         assert_int_equal(covered, 0);
+    }
+    /* the words of the colour scales and the legend, in the bands below the panels but the image's */
+    for (int p = 0; p < HUD_PIPELINE_PANELS; p++) {
+        int x, y, w, h, words = 0;
+        pipeline_panel_rect(v.canvas_w, v.canvas_h, p, &x, &y, &w, &h);
+        int cell_bottom = (p / PIPELINE_COLUMNS + 1) * (v.canvas_h / PIPELINE_ROWS);
+        for (int yy = v.canvas_y + y + h; yy < v.canvas_y + cell_bottom; yy++)
+            for (int xx = v.canvas_x + x; xx < v.canvas_x + x + w; xx++)
+                words += alpha_at(rgba, W, xx, yy) != 0;
+        printf("  panel %d: %d pixels of words below it\n", p, words);
+        if (p == 0)
+            assert_int_equal(words, 0);
+        else
+            assert_true(words > 100);
     }
     /* outside the canvas nothing */
     for (int y = 0; y < v.canvas_y; y++)

@@ -307,6 +307,28 @@ static void test_pipeline_view(void **state)
     assert_int_equal(hit_grey, 0);
     assert_int_equal(missed_coloured, 0);
 
+    /* below the outcome panel its legend: each of the five colours; below the segment-of-the-hit
+     * panel its colour scale, blue (the first segment) at its left end, red (the last) at its right */
+    int lx, ly, lw, lh, legend[5] = {0};
+    assert_int_equal(pipeline_legend_rect(width, height, 5, &lx, &ly, &lw, &lh), 0);
+    for (int x = lx; x < lx + lw; x++) {
+        const unsigned char *p = &frames[PIPELINE_FRAME][((size_t)(ly + lh / 2) * width + x) * 4];
+        for (int k = 0; k < 5; k++)
+            legend[k] += abs(p[0] - outcome[k][0]) <= 1 && abs(p[1] - outcome[k][1]) <= 1 &&
+                         abs(p[2] - outcome[k][2]) <= 1;
+    }
+    print_message("outcome legend: %d %d %d %d %d pixels of each colour\n", legend[0], legend[1], legend[2],
+                  legend[3], legend[4]);
+    for (int k = 0; k < 5; k++)
+        assert_true(legend[k] > 0);
+    assert_int_equal(pipeline_legend_rect(width, height, 3, &lx, &ly, &lw, &lh), 0);
+    const unsigned char *first = &frames[PIPELINE_FRAME][((size_t)(ly + lh / 2) * width + lx) * 4];
+    const unsigned char *last = &frames[PIPELINE_FRAME][((size_t)(ly + lh / 2) * width + lx + lw - 1) * 4];
+    print_message("segment scale: (%d, %d, %d) at its left end, (%d, %d, %d) at its right\n", first[0], first[1],
+                  first[2], last[0], last[1], last[2]);
+    assert_true(first[2] > 200 && first[0] < 40);
+    assert_true(last[0] > 200 && last[2] < 40);
+
     /* The black hole's rays follow exact orbits, so the step-size panel (bottom middle) shows the
      * orbit table: each row one orbit, coloured by 1/r against the horizon's, escaping orbits in
      * its upper half, captured ones in its lower. Only captured orbits come near the horizon
