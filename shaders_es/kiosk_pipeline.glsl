@@ -4,7 +4,9 @@
 //   u_panel 1  ray directions: the unit velocity mapped to colour
 //   u_panel 2  depth: the segment index of the hit, blue (first) to red (last); grey: no hit (a
 //              ray that reached the sky or fell in has a depth too: where it ended)
-//   u_panel 3  step size: log2 of h against the scene's step, blue (shorter) to red (longer);
+//   u_panel 3  step size: log2 of h against the scene's step, blue (shorter) to red (longer); with
+//              steps of fixed size (u_steps_budget > 0, h the same everywhere) the steps each ray
+//              took instead, blue (none) to red (the whole budget), black where the ray failed;
 //              with exact orbits (u_orbit_rows > 0) the orbit table instead: one orbit per row,
 //              from the observer (left) to where it ends (right), coloured by u = 1/r against the
 //              horizon's, blue (far) to red (at the horizon), the photon sphere at 2/3; escaping
@@ -22,6 +24,7 @@ uniform float u_panel;
 uniform float u_bound_radius;
 uniform float u_segments;
 uniform float u_step;
+uniform float u_steps_budget;       // the steps every ray has, where they are of fixed size; else 0
 uniform sampler2D u_orbit_table;
 uniform vec2 u_orbit_size;          // the table texture's width and height in texels
 uniform float u_orbit_columns;
@@ -69,6 +72,9 @@ void main()
         c = hit ? ramp(depth / u_segments) : vec3(0.25);
     } else if (u_panel < 3.5 && u_orbit_rows > 0.0) {
         c = orbit_table_panel(v_uv);
+    } else if (u_panel < 3.5 && u_steps_budget > 0.0) {
+        float steps = texture2D(u_position, v_uv).w;
+        c = steps >= 0.0 ? ramp(steps / u_steps_budget) : vec3(0.0);
     } else if (u_panel < 3.5) {
         float h = abs(texture2D(u_velocity, v_uv).w);
         c = h > 0.0 ? ramp(0.5 + 0.125 * log2(h / u_step)) : vec3(0.0);

@@ -179,7 +179,7 @@ static void panel_viewport(const struct compositor *c, int k)
 }
 
 int compositor_put_pipeline(struct compositor *c, const struct renderer_textures *t, double bound_radius,
-                            int segments, double step, struct error *e)
+                            int segments, double step, long steps_budget, struct error *e)
 {
     to_canvas(c, 0, 0, c->width, c->height);
     glClearColor(0, 0, 0, 1);
@@ -197,6 +197,7 @@ int compositor_put_pipeline(struct compositor *c, const struct renderer_textures
     glUniform1f(glGetUniformLocation(p, "u_bound_radius"), (float)bound_radius);
     glUniform1f(glGetUniformLocation(p, "u_segments"), (float)(segments > 0 ? segments : 1));
     glUniform1f(glGetUniformLocation(p, "u_step"), (float)step);
+    glUniform1f(glGetUniformLocation(p, "u_steps_budget"), (float)steps_budget);
     /* exact orbits: the step-size panel shows the orbit table instead */
     bind_sampler(p, "u_orbit_table", 4, t->orbit_table);
     glActiveTexture(GL_TEXTURE0);

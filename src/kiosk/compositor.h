@@ -45,11 +45,12 @@ int compositor_put_preview_tile(struct compositor *c, GLuint image, int tex_w, i
 int compositor_show_preview(struct compositor *c, struct error *e);
 /* The pipeline view of a run's ray state: five panels (positions, directions, segment index of
  * the hit, step size, outcome) and the image, in a 3 x 2 grid over the canvas. With exact orbits
- * (t->orbit_table) the step-size panel shows the orbit table the run followed. Each panel keeps the
+ * (t->orbit_table) the step-size panel shows the orbit table the run followed; with steps of fixed
+ * size (steps_budget > 0: the steps every ray has) the steps each ray took. Each panel keeps the
  * frame's aspect ratio (round things stay round), centred in its cell (kiosk/pipeline_layout.h);
  * the bands above and below it are black but for the colour scales and the outcome's legend. */
 int compositor_put_pipeline(struct compositor *c, const struct renderer_textures *t, double bound_radius,
-                            int segments, double step, struct error *e);
+                            int segments, double step, long steps_budget, struct error *e);
 /* The HUD image (screen-sized, top row first, straight alpha), or NULL for none. */
 int compositor_set_hud(struct compositor *c, const unsigned char *rgba, int width, int height, struct error *e);
 /* Where compositor_draw puts the canvas on a screen of sw x sh: keeping its aspect ratio, centred;

@@ -46,6 +46,7 @@ struct hud_view {
      * the image panel's label. canvas_*: where the canvas lies on the screen (top-down pixels). */
     int pipeline_view;
     int orbit_table;                 /* exact orbits: the step-size panel shows the orbit table */
+    int fixed_steps;                 /* steps of fixed size: that panel shows the steps each ray took */
     int canvas_x, canvas_y, canvas_w, canvas_h;
 };
 
@@ -55,6 +56,8 @@ extern const char *const hud_pipeline_labels[HUD_PIPELINE_PANELS];
 /* The step-size panel's label where it shows the orbit table, and that panel's index. */
 #define HUD_PIPELINE_TABLE_PANEL 4
 extern const char *const hud_pipeline_table_label;
+/* Its label where it shows the steps each ray took. */
+extern const char *const hud_pipeline_steps_label;
 
 /* The HUD's text, one line per entry (title, caption, knobs in words, colours, notice; in staff
  * mode the name, description, knobs with symbols and keys, effects, fps), for the log and for

@@ -155,6 +155,11 @@ static long steps_per_ray(const struct scene *s)
     return (long)render_segments(&s->render) * s->render.steps_per_segment;
 }
 
+long kiosk_fixed_step_budget(const struct scene *s)
+{
+    return s->render.step_control == STEP_FIXED ? steps_per_ray(s) : 0;
+}
+
 /* Tile k of t: its lower-left pixel and the part of it inside the frame. */
 static void tile_at(const struct kiosk_tiles *t, int k, int *x0, int *y0, int *w, int *h)
 {
@@ -217,7 +222,8 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, struc
     struct renderer_textures t;
     renderer_textures(v->renderer, &t);
     int rc = v->pipeline_view ? compositor_put_pipeline(&v->comp, &t, v->live.render.bound_radius,
-                                                        render_segments(&v->live.render), v->live.render.step_size, e)
+                                                        render_segments(&v->live.render), v->live.render.step_size,
+                                                        kiosk_fixed_step_budget(&v->live), e)
                               : compositor_put_preview(&v->comp, t.image, e);
     /* the pipeline view shows the preview's own state: it is not refined */
     v->refined_rows = v->pipeline_view ? k->height : 0;

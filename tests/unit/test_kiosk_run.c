@@ -352,6 +352,29 @@ static void test_pipeline_view(void **state)
     assert_true(near_horizon[1] > 0);
 }
 
+/* With steps of fixed size every ray's step is the scene's, and the step-size panel shows the steps
+ * each ray took instead (blue none to red the whole budget): lorenz's rays that hit an object near
+ * the camera take few, those that reach the sky many, so the panel is not one colour. */
+static void test_pipeline_steps_taken(void **state)
+{
+    (void)state;
+    struct kiosk_config saved = config;
+    unsigned char *frame[1];
+    run_config("tests/kiosk/pipeline_lorenz.conf", 1, frame);
+    int px, py, pw, ph, bluer = 0, greener = 0;
+    pipeline_panel_rect(width, height, 4, &px, &py, &pw, &ph);
+    for (int y = py + ph / 4; y < py + ph - 1; y++)
+        for (int x = px + 1; x < px + pw - 1; x++) {
+            const unsigned char *p = &frame[0][((size_t)y * width + x) * 4];
+            bluer += p[2] > 200 && p[1] < 150;
+            greener += p[1] > 200 && p[2] < 200;
+        }
+    print_message("steps-taken panel: %d pixels of few steps (blue), %d of more (green and on)\n", bluer, greener);
+    assert_true(bluer > 0 && greener > 0);
+    free(frame[0]);
+    config = saved;
+}
+
 /* The canvas is copied to a screen of its size where the GL can (glBlitFramebuffer), and the HUD
  * blended over the rows it covers. The frames of a run with the HUD on are the same bytes as
  * those of the plain way, the canvas drawn as a quad and the whole HUD blended over it (the fault
@@ -437,6 +460,7 @@ int main(void)
         cmocka_unit_test(test_controls_change_the_picture),
         cmocka_unit_test(test_preview_comes_first),
         cmocka_unit_test(test_pipeline_view),
+        cmocka_unit_test(test_pipeline_steps_taken),
         cmocka_unit_test(test_attract_mode),
         cmocka_unit_test(test_screen_copied_or_drawn),
         cmocka_unit_test(test_programs_compiled_ahead),
