@@ -11,6 +11,7 @@ md=docs/GALLERY.md
 ANIMATE="bentray animate --scene assets/scenes/demo.scene --frames 48 --size 320x180 --set-range model.mass=0:1.4 --fps 12 --out FRAMES --video docs/gallery/demo_mass.gif"
 CUBEMAP_SKY="bentray render --scene assets/scenes/star_sky.scene --size 1920x1080 --set sky.stars=0 --set sky.milky_way=0 --set sky.type=cubemap --set sky.cubemap=../sky/stars"
 POINT_SKY="bentray render --scene assets/scenes/star_sky.scene --size 1920x1080"
+PIPELINE_VIEW="bentray kiosk --config docs/gallery/pipeline_view.conf --display headless --out DIR --frames 1"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 {
@@ -43,9 +44,23 @@ trap 'rm -rf "$tmp"' EXIT
     echo
     echo "![star_sky with point stars and the Milky Way](gallery/star_sky_1080p.png)"
     echo
+    echo "## The kiosk's pipeline view"
+    echo
+    echo "The black hole's rays as the renderer leaves them (key \`v\` at the kiosk; docs/KIOSK.md, docs/PIPELINE.md):"
+    echo "the image, the rays' final positions and directions, the segment of each hit, the orbit table the"
+    echo "rays followed and each ray's outcome, each panel with what its colours mean below it."
+    echo
+    echo "\`$PIPELINE_VIEW\`"
+    echo
+    echo "![The kiosk's pipeline view of schwarzschild.scene](gallery/pipeline_view.png)"
+    echo
     echo "## Scenes"
     echo
 } > "$tmp/GALLERY.md"
+mkdir "$tmp/pipeline_view"
+$BT kiosk --config docs/gallery/pipeline_view.conf --display headless --out "$tmp/pipeline_view" --frames 1 \
+    > /dev/null 2> "$tmp/kiosk.log" || { cat "$tmp/kiosk.log" >&2; exit 1; }
+mv "$tmp/pipeline_view/frame_0001.png" "$OUT/pipeline_view.png"
 $BT render --scene assets/scenes/star_sky.scene --size 1920x1080 --set sky.stars=0 --set sky.milky_way=0 \
     --set sky.type=cubemap --set sky.cubemap=../sky/stars --out "$OUT/star_sky_cubemap_1080p.png" --force --quiet > /dev/null
 $BT render --scene assets/scenes/star_sky.scene --size 1920x1080 --out "$OUT/star_sky_1080p.png" --force --quiet > /dev/null
