@@ -168,6 +168,14 @@ void candidate_surface(vec3 a, vec3 b, inout candidate best)
 #define CONSIDER consider
 }
 
+#if defined(CHORD_CULL) || (defined(SINGLE_PASS) && defined(ORBIT_HITS))
+// Each object's bounding ball and, for a flat one, its plane (object_bound.h): the same for every
+// pixel, computed once a frame on the CPU in double (object_batch_set_uniforms), for the single
+// passes' culls below.
+uniform vec4 u_object_ball[BATCH_SIZE];   // centre, radius
+uniform vec4 u_object_plane[BATCH_SIZE];  // a flat object's unit normal, 1; 0 for the others
+#endif
+
 #if defined(SINGLE_PASS) && defined(ORBIT_HITS)
 // Where the chords of the single pass on exact orbits can meet an object (the single pass passes
 // over a group of chords that can meet none: group_clear in stage_orbit_frame.glsl). Every chord
@@ -192,12 +200,12 @@ float cull_wedge_start;
 float cull_wedge_width;
 // For a group of chords (group_clear): each object's ball cuts the orbit's plane in a disc that
 // spans radii rho_lo .. rho_hi about the mass; a flat object's plane is at signed distance
-// d + r (A cos phi + B sin phi) from the point at (r, phi) of the orbit's plane (plane = d, A, B,
-// sqrt(A^2 + B^2); all 0 for a sphere), which is largest at phi = plane_phi.
+// d + r (A cos phi + B sin phi) from the point at (r, phi) of the orbit's plane (cull_group_meets
+// finds d, A and B where it needs them, from the object's plane, u_object_plane: kept for every
+// object through the orbit's loop, five more floats a flat object took registers an exhibit's GPU
+// does not have, `make shader-stats`).
 float cull_rho_lo[BATCH_SIZE];
 float cull_rho_hi[BATCH_SIZE];
-vec4 cull_plane[BATCH_SIZE];
-float cull_plane_phi[BATCH_SIZE];
 float cull_wedge_rho_lo;
 float cull_wedge_rho_hi;
 
@@ -220,16 +228,6 @@ void cull_wedge(orbit_ray ray, vec3 centre, float radius)
     cull_wedge_rho_hi = rho + in_plane;
 }
 
-// The plane through p0 with unit normal n, as cull_plane holds it, for slot `slot`.
-void cull_flat(orbit_ray ray, int slot, vec3 p0, vec3 n)
-{
-    float along_e1 = dot(n, ray.e1);
-    float along_e2 = dot(n, ray.e2);
-    cull_plane[slot] = vec4(dot(n, u_model_center - p0), along_e1, along_e2,
-                            sqrt(along_e1 * along_e1 + along_e2 * along_e2));
-    cull_plane_phi[slot] = atan(along_e2, along_e1);
-}
-
 // Whether a chord within phi_a .. phi_b can meet object `slot`, by its wedge.
 bool cull_meets(int slot)
 {
@@ -248,17 +246,14 @@ void cull_prepare(orbit_ray ray)
 #undef TEST_TRIANGLE
 #define CULL_KEEP(n) cull_start[n] = cull_wedge_start; cull_width[n] = cull_wedge_width; \
                      cull_rho_lo[n] = cull_wedge_rho_lo; cull_rho_hi[n] = cull_wedge_rho_hi;
-#define TEST_SPHERE(n) { vec4 g0 = GEOMETRY(n, 0); cull_wedge(ray, g0.xyz, g0.w); CULL_KEEP(n) \
-                         cull_plane[n] = vec4(0.0); cull_plane_phi[n] = 0.0; }
-#define TEST_DISK(n) { vec4 g0 = GEOMETRY(n, 0); cull_wedge(ray, g0.xyz, g0.w); CULL_KEEP(n) \
-                       cull_flat(ray, n, g0.xyz, GEOMETRY(n, 1).xyz); }
+#define TEST_SPHERE(n) { vec4 g0 = GEOMETRY(n, 0); cull_wedge(ray, g0.xyz, g0.w); CULL_KEEP(n) }
+#define TEST_DISK(n) TEST_SPHERE(n)
 #define TEST_RECT(n) { vec4 g0 = GEOMETRY(n, 0); vec3 g1 = GEOMETRY(n, 1).xyz, g2 = GEOMETRY(n, 2).xyz; \
-                       cull_wedge(ray, g0.xyz, max(length(g1 + g2), length(g1 - g2))); CULL_KEEP(n) \
-                       cull_flat(ray, n, g0.xyz, normalize(cross(g1, g2))); }
+                       cull_wedge(ray, g0.xyz, max(length(g1 + g2), length(g1 - g2))); CULL_KEEP(n) }
 #define TEST_TRIANGLE(n) { vec3 v0 = GEOMETRY(n, 0).xyz, v1 = GEOMETRY(n, 1).xyz, v2 = GEOMETRY(n, 2).xyz; \
                            vec3 c = (v0 + v1 + v2) / 3.0; \
                            cull_wedge(ray, c, max(length(v0 - c), max(length(v1 - c), length(v2 - c)))); \
-                           CULL_KEEP(n) cull_flat(ray, n, v0, normalize(cross(v1 - v0, v2 - v0))); }
+                           CULL_KEEP(n) }
     BATCH_TESTS
 #undef TEST_SPHERE
 #undef TEST_DISK
@@ -274,16 +269,24 @@ void cull_prepare(orbit_ray ray)
 // holds every point of the region: the object is out of reach where its disc misses the wedge or
 // that ring, or where a flat object's plane leaves the whole region on one side (the signed
 // distance, linear in the point, is extreme at a corner of the region or where the outer arc
-// faces the plane's normal).
-bool cull_group_meets(int slot, vec4 ends, float r_lo, float r_in, float r_hi)
+// faces the plane's normal (A, B): where that direction lies between the two ends, by the signs of
+// their cross products with it; a group of half a turn or more may face it anywhere).
+bool cull_group_meets(orbit_ray ray, int slot, bool flat_object, vec4 ends, float r_lo, float r_in, float r_hi)
 {
     float span = cull_phi_b - cull_phi_a;
     bool ring = cull_rho_hi[slot] >= r_in && cull_rho_lo[slot] <= r_hi;
-    vec4 plane = cull_plane[slot];
+    vec3 n = flat_object ? u_object_plane[slot].xyz : vec3(0.0);
+    float along_e1 = dot(n, ray.e1);
+    float along_e2 = dot(n, ray.e2);
+    vec4 plane = vec4(dot(n, u_model_center - u_object_ball[slot].xyz), along_e1, along_e2,
+                      sqrt(along_e1 * along_e1 + along_e2 * along_e2));
+    float across_a = ends.x * along_e2 - ends.y * along_e1;
+    float across_b = along_e1 * ends.w - along_e2 * ends.z;
+    bool narrow = span < 0.5 * CULL_TURN;
+    bool faces = !narrow || (across_a >= 0.0 && across_b >= 0.0);
+    bool turns_away = !narrow || (across_a <= 0.0 && across_b <= 0.0);
     float f_a = plane.y * ends.x + plane.z * ends.y;
     float f_b = plane.y * ends.z + plane.z * ends.w;
-    bool faces = mod(cull_plane_phi[slot] - cull_phi_a, CULL_TURN) <= span;
-    bool turns_away = mod(cull_plane_phi[slot] + 0.5 * CULL_TURN - cull_phi_a, CULL_TURN) <= span;
     float f_max = faces ? plane.w : max(f_a, f_b);
     float f_min = turns_away ? -plane.w : min(f_a, f_b);
     float d_lo = plane.x + min(r_lo * f_min, r_hi * f_min);
@@ -295,7 +298,7 @@ bool cull_group_meets(int slot, vec4 ends, float r_lo, float r_in, float r_hi)
 
 // Whether a group of chords with ends as cull_group_meets takes them can meet no object of the
 // batch.
-bool cull_group_clear(vec4 ends, float r_lo, float r_hi)
+bool cull_group_clear(orbit_ray ray, vec4 ends, float r_lo, float r_hi)
 {
     bool meets = false;
     // the nearest a chord of the group comes to the mass: the same for every object
@@ -305,10 +308,10 @@ bool cull_group_clear(vec4 ends, float r_lo, float r_hi)
 #undef TEST_DISK
 #undef TEST_RECT
 #undef TEST_TRIANGLE
-#define TEST_SPHERE(n) meets = meets || cull_group_meets(n, ends, r_lo, r_in, r_hi);
-#define TEST_DISK(n) TEST_SPHERE(n)
-#define TEST_RECT(n) TEST_SPHERE(n)
-#define TEST_TRIANGLE(n) TEST_SPHERE(n)
+#define TEST_SPHERE(n) meets = meets || cull_group_meets(ray, n, false, ends, r_lo, r_in, r_hi);
+#define TEST_DISK(n) meets = meets || cull_group_meets(ray, n, true, ends, r_lo, r_in, r_hi);
+#define TEST_RECT(n) TEST_DISK(n)
+#define TEST_TRIANGLE(n) TEST_DISK(n)
     BATCH_TESTS
 #undef TEST_SPHERE
 #undef TEST_DISK
@@ -343,8 +346,6 @@ bool cull_group_clear(vec4 ends, float r_lo, float r_hi)
 // keeps the copies in its registers (read at each use, its frame took twice as long).
 const float CHORD_CULL_MARGIN = 1e-3;
 const float CHORD_CULL_POSITION_MARGIN = 1e-5;
-uniform vec4 u_chord_ball[BATCH_SIZE];    // centre, radius
-uniform vec4 u_chord_plane[BATCH_SIZE];   // a flat object's unit normal, 1; 0 for the others
 uniform vec2 u_chord_scale[BATCH_SIZE];   // 1 / radius (0: every chord is near), the centre's position margin
 vec4 chord_ball[BATCH_SIZE];
 vec4 chord_plane[BATCH_SIZE];
@@ -353,8 +354,8 @@ vec2 chord_scale[BATCH_SIZE];
 void chord_cull_prepare()
 {
     for (int n = 0; n < BATCH_SIZE; n++) {
-        chord_ball[n] = u_chord_ball[n];
-        chord_plane[n] = u_chord_plane[n];
+        chord_ball[n] = u_object_ball[n];
+        chord_plane[n] = u_object_plane[n];
         chord_scale[n] = u_chord_scale[n];
     }
 }

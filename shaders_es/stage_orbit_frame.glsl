@@ -60,7 +60,7 @@ bool group_clear(orbit_ray ray, float s_a, vec2 q_a, vec2 cs_a, float s_b, vec2 
     cull_phi_a = s_a * ray.phi_end;
     cull_phi_b = s_b * ray.phi_end;
     vec4 ends = vec4(cs_a, cs_b);
-    return !turns && !may_fall && !may_leave && cull_group_clear(ends, r_lo, r_hi);
+    return !turns && !may_fall && !may_leave && cull_group_clear(ray, ends, r_lo, r_hi);
 }
 
 void main()

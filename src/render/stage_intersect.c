@@ -75,8 +75,8 @@ static void pack_geometry(const struct object *o, float g[GEOMETRY_VECS][4])
     }
 }
 
-/* The ball and plane of one object for the integrated single pass's cull (the chord_near of
- * shaders_es/stage_intersect.glsl, which says what they bound): computed once a frame here, in
+/* The ball and plane of one object for the single passes' culls (chord_near and cull_group_meets
+ * in shaders_es/stage_intersect.glsl, which say what they bound): computed once a frame here, in
  * double, rather than in every pixel. The shader reads none of them for an object that moves: its
  * slot is near every chord. */
 static void chord_cull_pack(const struct object *o, float ball[4], float plane[4], float scale[2])
@@ -171,14 +171,15 @@ void object_batch_set_uniforms(const struct program_uniforms *p, const void *arg
     if (batch_moves(b)) {
         glUniform4fv(program_uniform(p, "u_motion"), MOTION_VECS * b->count, &motion[0][0][0]);
     }
-    /* the integrated single pass's cull (CHORD_CULL): only the programs that read it */
-    GLint chords = program_uniform(p, "u_chord_ball");
-    if (chords >= 0) {
-        float chord_ball[OBJECT_BATCH_MAX][4], chord_plane[OBJECT_BATCH_MAX][4], chord_scale[OBJECT_BATCH_MAX][2];
+    /* the single passes' culls (CHORD_CULL, and the orbit frame's groups): only the programs that
+     * read them (GL ignores a location of -1) */
+    GLint balls = program_uniform(p, "u_object_ball");
+    if (balls >= 0) {
+        float ball[OBJECT_BATCH_MAX][4], plane[OBJECT_BATCH_MAX][4], chord_scale[OBJECT_BATCH_MAX][2];
         for (int i = 0; i < b->count; i++)
-            chord_cull_pack(&s->objects[b->object[i]], chord_ball[i], chord_plane[i], chord_scale[i]);
-        glUniform4fv(chords, b->count, &chord_ball[0][0]);
-        glUniform4fv(program_uniform(p, "u_chord_plane"), b->count, &chord_plane[0][0]);
+            chord_cull_pack(&s->objects[b->object[i]], ball[i], plane[i], chord_scale[i]);
+        glUniform4fv(balls, b->count, &ball[0][0]);
+        glUniform4fv(program_uniform(p, "u_object_plane"), b->count, &plane[0][0]);
         glUniform2fv(program_uniform(p, "u_chord_scale"), b->count, &chord_scale[0][0]);
     }
     GLint textures = program_uniform(p, "u_textures");
