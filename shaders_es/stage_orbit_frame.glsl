@@ -74,8 +74,8 @@ void main()
     // its chord k alone, with the same arithmetic, so that their values are the walk's own.
     float k = 0.0;                       // the chord where the ray stands (a walk starts)
     vec3 a = u_camera_position;          // where the ray stands: the start of chord k
-    vec3 b = a;                          // the end of the last chord tested
-    float s = 0.0;                       // the orbit's fraction at b (at a before the first chord)
+    vec3 b = a;                          // the end of the chord the walk ended on
+    float s = 0.0;                       // the orbit's fraction where the ray moved last
     vec2 q = vec2(1.0, 0.0);             // u, du/ds at s
     bool leaves = false;
     float steps = 0.0;
@@ -98,10 +98,6 @@ void main()
         vec2 cs_group = at_camera ? vec2(1.0, 0.0) : vec2(cos(phi), sin(phi));  // cos, sin of phi at s
         vec3 on_orbit = orbit_point(ray, q, s);
         a = at_camera ? u_camera_position : on_orbit;
-        b = a;
-        steps = k;
-        code = CODE_UNFINISHED;
-        end_key = NO_HIT;
         leaving = false;
         best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
         // Chords are taken ORBIT_GROUP at a time. At a group's start a turn looks at the group's
@@ -111,8 +107,7 @@ void main()
         // chord, whichever it does, so that a group of pixels where some rays pass a group over
         // and others follow its chords pays for one turn, not for both.
         float k_end = k;                 // end of the group being followed chord by chord
-        bool done = false;
-        bool falls = false;              // whether the last chord tested ends inside the capture sphere
+        bool done = false;               // a hit found, or the chord ends inside the capture sphere
         for (int i = 0; i < 2 * MAX_SEGMENTS + 2; i++) {
             if (k >= ray.segments || leaving || done)
                 break;
@@ -128,28 +123,19 @@ void main()
             bool passes = probe && clear;
             bool chord = !probe;
             k_end = probe ? group_end : k_end;
-            vec3 from_bound = p1 - u_bound_center;
             // a leaving chord moves nothing: the ray stands at its start (a, s, k)
-            leaving = chord && dot(from_bound, from_bound) >= u_bound_radius2;
+            leaving = chord && outside_bounds(p1);
             bool tested = chord && !leaving;
             bool moves = passes || tested;
             q = moves ? q1 : q;
             s = moves ? s1 : s;
-            b = moves ? p1 : b;
-            steps = moves ? k1 : steps;
             cs_group = moves ? cs1 : cs_group;
             candidate trial = best;
             intersect_chord(a, p1, k, trial);
             best.key = tested ? trial.key : best.key;
             best.t = tested ? trial.t : best.t;
             best.slot = tested ? trial.slot : best.slot;
-            bool falls_in = tested && captured(p1);
-            falls = falls_in;
-            bool found = best.slot >= 0.0;
-            bool ends = !found && falls_in;
-            code = ends ? CODE_CAPTURED : code;
-            end_key = ends ? steps : end_key;
-            done = found || ends;
+            done = best.slot >= 0.0 || (tested && captured(p1));
             // a chord with a hit (or that falls in) keeps its start: the ray stands at a, chord k
             a = moves && !done ? p1 : a;
             k = moves && !done ? k1 : k;
@@ -157,9 +143,17 @@ void main()
             if (k >= ray.segments || leaving || done)
                 break;
         }
-        // the chord the loop ended on starts at a, at fraction s_a of the orbit (chord k; as the
-        // intersection stage of the multipass scheme finds it)
+        // The chord the walk ended on starts at a, at fraction s_a of the orbit (chord k; as the
+        // intersection stage of the multipass scheme finds it). Where it found a hit or fell in
+        // (done), it ends at s, where the ray moved last; otherwise the ray stands at its end.
         float s_a = orbit_chord_end(ray, k);
+        vec3 chord_end = orbit_point(ray, q, s);
+        b = done ? chord_end : a;
+        bool falls = done && captured(b);
+        bool found = best.slot >= 0.0;
+        steps = done ? k + 1.0 : k;
+        code = done && !found ? CODE_CAPTURED : CODE_UNFINISHED;
+        end_key = done && !found ? steps : NO_HIT;
         if (leaving) {
             // the leaving chord as the orbit stage makes it (orbit_chord_from): from its end outside
             // the sphere back to where the orbit crosses it, on the same values
@@ -171,7 +165,7 @@ void main()
             b = orbit_chord_point(ray, q, s, leaves);
             steps = k + 1.0;
             intersect_chord(a, b, k, best);
-            bool found = best.slot >= 0.0;
+            found = best.slot >= 0.0;
             code = found ? code : CODE_SKY;
             end_key = found ? end_key : steps;
         }
