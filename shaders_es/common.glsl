@@ -17,7 +17,8 @@ const float CODE_FAILED = -4.0;        // the integration produced a non-finite 
 // - constant expressions such as 7.0 / 9.0 fold at 16-bit precision: write the literal;
 // - a value assigned in the turn of a loop that breaks in that same turn can come out of it at
 //   16-bit precision: break at the top of the next turn instead (stage_frame.glsl), or keep the
-//   loop's inputs and compute the outputs again after it (stage_orbit_frame.glsl);
+//   loop's inputs and compute the outputs again after it (stage_orbit_frame.glsl; the walk's pass,
+//   stage_orbit_walk.glsl, writes only whole numbers, from which the finish computes them again);
 // - int is mediump by default, kept in 16 bits: a loop counter bound beyond 32767 is highp;
 // - Mesa's atan is off by up to 3.3e-6 rad on llvmpipe: accurate_angle below is not.
 

@@ -30,50 +30,17 @@ void main()
 #endif
 }
 #else
-// Chords taken together, ORBIT_GROUP at a time: a group whose chords can meet nothing is passed
-// over in one step, its end point computed as its last chord would compute it, so the rays, hits
-// and images stay those of the chord-by-chord walk (tests/unit/test_orbit_render.c).
-const float ORBIT_GROUP = 4.0;
-// How far, relative to the radius, the interpolated orbit might stray from the radii of its ends
-// between them (float roundings, and the interpolant's wiggle where the orbit is nearly circular)
-const float GROUP_RADIUS_MARGIN = 1e-3;
-// How many times a ray goes on after a hit its orbit misses (the last hit found is kept)
-const int ORBIT_HIT_TRIES = 3;
-
-// Whether the chords between fractions s_a and s_b of the orbit (where it has u, du/ds = q_a and
-// q_b) can meet no object, end inside the capture sphere or leave the bounding sphere. Without a
-// turning point between them (du/ds keeps its sign) all their ends lie between the radii of the
-// two ends; a group with one is followed chord by chord.
-bool group_clear(orbit_ray ray, float s_a, vec2 q_a, vec2 cs_a, float s_b, vec2 q_b, vec2 cs_b)
-{
-    bool turns = q_a.y * q_b.y <= 0.0;
-    float r_a = 1.0 / q_a.x;
-    float r_b = 1.0 / q_b.x;
-    float r_lo = min(r_a, r_b) * (1.0 - GROUP_RADIUS_MARGIN);
-    float r_hi = max(r_a, r_b) * (1.0 + GROUP_RADIUS_MARGIN);
-    float capture_offset = length(u_capture_center - u_model_center);
-    float nearest_capture = r_lo - capture_offset;
-    bool may_fall = u_capture_radius2 > 0.0 &&
-                    (nearest_capture <= 0.0 || nearest_capture * nearest_capture <= u_capture_radius2);
-    float farthest_bound = length(u_model_center - u_bound_center) + r_hi;
-    bool may_leave = farthest_bound * farthest_bound >= u_bound_radius2 * (1.0 - GROUP_RADIUS_MARGIN);
-    cull_phi_a = s_a * ray.phi_end;
-    cull_phi_b = s_b * ray.phi_end;
-    vec4 ends = vec4(cs_a, cs_b);
-    return !turns && !may_fall && !may_leave && cull_group_clear(ray, ends, r_lo, r_hi);
-}
+// ORBIT_HIT_TRIES (stage_frame.c): how many walks a ray takes at most, in one pass or in as many
+// pairs of passes; after a hit its orbit misses it goes on (the last hit found is kept).
+#ifdef ORBIT_WALKED
+uniform float u_orbit_last_try;       // 1 in the last pair of passes
+#endif
 
 void main()
 {
     orbit_ray ray = orbit_ray_of();
-    cull_prepare(ray);
-    // What the loops carry from turn to turn is kept to what they cannot compute again: every value
-    // live across their turns takes a register for the whole loop, and an exhibit's GPU has few
-    // (`make shader-stats`). The chord a walk ends on is found again after it from where the ray
-    // stands (k, s and a), and a walk that goes on after a hit the orbit misses starts again from
-    // its chord k alone, with the same arithmetic, so that their values are the walk's own.
-    float k = 0.0;                       // the chord where the ray stands (a walk starts)
-    vec3 a = u_camera_position;          // where the ray stands: the start of chord k
+    float k = 0.0;                       // the chord where the walk stopped
+    vec3 a = u_camera_position;          // its start
     vec3 b = a;                          // the end of the chord the walk ended on
     float s = 0.0;                       // the orbit's fraction where the ray moved last
     vec2 q = vec2(1.0, 0.0);             // u, du/ds at s
@@ -81,71 +48,38 @@ void main()
     float steps = 0.0;
     float code = CODE_UNFINISHED;
     float end_key = NO_HIT;
-    // The chord that leaves the bounding sphere ends where the orbit crosses it, found by Newton's
-    // steps on the orbit (orbit_chord_from): once per ray, after the loop, rather than in a branch
-    // of it that a group of pixels would take as often as any one of them leaves.
+    bool done = false;
     bool leaving = false;
     candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
+#ifdef ORBIT_WALKED
+    // where the walk pass stopped, and every value of the walk there found again from it
+    bool found_walking;
+    orbit_walk_read(k, done, leaving, found_walking);
+    float s_start;
+    vec2 q_start;
+    a = orbit_walk_start(ray, k, s_start, q_start);
+    float k_moved = done ? k + 1.0 : k;
+    s = orbit_chord_end(ray, k_moved);
+    q = orbit_at(ray, s);
+    if (found_walking)
+        intersect_chord(a, orbit_point(ray, q, s), k, best);
+    bool last_try = u_orbit_last_try > 0.0;
+    {
+#else
+    cull_prepare(ray);
     // A hit is found again on the orbit (orbit_refine_hit) after the walk; where the orbit misses
     // what the chord met, the ray goes on from that chord's end (as the multipass scheme, whose
     // intersection stage keeps no such hit), up to ORBIT_HIT_TRIES walks.
     for (int attempt = 0; attempt < ORBIT_HIT_TRIES; attempt++) {
-        // the walk starts at chord k: at the camera, or at the end of the chord before it
-        bool at_camera = k <= 0.0;
-        s = orbit_chord_end(ray, k);
-        q = orbit_at(ray, s);
-        float phi = s * ray.phi_end;
-        vec2 cs_group = at_camera ? vec2(1.0, 0.0) : vec2(cos(phi), sin(phi));  // cos, sin of phi at s
-        vec3 on_orbit = orbit_point(ray, q, s);
-        a = at_camera ? u_camera_position : on_orbit;
-        leaving = false;
-        best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
-        // Chords are taken ORBIT_GROUP at a time. At a group's start a turn looks at the group's
-        // last end only: where the group can meet nothing, fall in or leave (group_clear), the ray
-        // moves there at once, to the point its last chord would have reached; otherwise the next
-        // turns follow the group chord by chord. Every turn evaluates the orbit once and tests one
-        // chord, whichever it does, so that a group of pixels where some rays pass a group over
-        // and others follow its chords pays for one turn, not for both.
-        float k_end = k;                 // end of the group being followed chord by chord
-        bool done = false;               // a hit found, or the chord ends inside the capture sphere
-        for (int i = 0; i < 2 * MAX_SEGMENTS + 2; i++) {
-            if (k >= ray.segments || leaving || done)
-                break;
-            bool probe = k >= k_end;
-            float group_end = min(k + ORBIT_GROUP, ray.segments);
-            float k1 = probe ? group_end : k + 1.0;
-            float s1 = orbit_chord_end(ray, k1);
-            vec2 q1 = orbit_at(ray, s1);
-            vec3 p1 = orbit_point(ray, q1, s1);
-            float phi1 = s1 * ray.phi_end;
-            vec2 cs1 = vec2(cos(phi1), sin(phi1));
-            bool clear = group_clear(ray, s, q, cs_group, s1, q1, cs1);
-            bool passes = probe && clear;
-            bool chord = !probe;
-            k_end = probe ? group_end : k_end;
-            // a leaving chord moves nothing: the ray stands at its start (a, s, k)
-            leaving = chord && outside_bounds(p1);
-            bool tested = chord && !leaving;
-            bool moves = passes || tested;
-            q = moves ? q1 : q;
-            s = moves ? s1 : s;
-            cs_group = moves ? cs1 : cs_group;
-            candidate trial = best;
-            intersect_chord(a, p1, k, trial);
-            best.key = tested ? trial.key : best.key;
-            best.t = tested ? trial.t : best.t;
-            best.slot = tested ? trial.slot : best.slot;
-            done = best.slot >= 0.0 || (tested && captured(p1));
-            // a chord with a hit (or that falls in) keeps its start: the ray stands at a, chord k
-            a = moves && !done ? p1 : a;
-            k = moves && !done ? k1 : k;
-            // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
-            if (k >= ray.segments || leaving || done)
-                break;
-        }
+        orbit_walk(ray, k, a, s, q, done, leaving, best);
+        bool last_try = attempt == ORBIT_HIT_TRIES - 1;
+#endif
         // The chord the walk ended on starts at a, at fraction s_a of the orbit (chord k; as the
         // intersection stage of the multipass scheme finds it). Where it found a hit or fell in
         // (done), it ends at s, where the ray moved last; otherwise the ray stands at its end.
+        // The chord that leaves the bounding sphere ends where the orbit crosses it, found by
+        // Newton's steps on the orbit (orbit_chord_from): once per ray, here, rather than in a
+        // branch of the walk that a group of pixels would take as often as any one of them leaves.
         float s_a = orbit_chord_end(ray, k);
         vec3 chord_end = orbit_point(ray, q, s);
         b = done ? chord_end : a;
@@ -177,7 +111,7 @@ void main()
         vec3 hit_b = b;
         if (best.slot >= 0.0)
             orbit_refine_hit(ray, s_a, s, k, hit_a, hit_b, best, lost);
-        lost = lost && attempt < ORBIT_HIT_TRIES - 1;
+        lost = lost && !last_try;
         bool goes_on = lost && !leaving && !falls;
         bool stops = lost && !goes_on;
         code = stops ? (leaving ? CODE_SKY : CODE_CAPTURED) : code;
@@ -188,10 +122,17 @@ void main()
         a = hit_a;
         b = hit_b;
         k = goes_on ? steps : k;
+#ifdef ORBIT_WALKED
+        // the next pair of passes walks on from the chord's end (this pixel left as it is)
+        if (goes_on)
+            discard;
+    }
+#else
         // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
         if (!goes_on)
             break;
     }
+#endif
     // the final state again from (q, s), outside the loop: see the precision note in common.glsl
     vec3 end = orbit_chord_point(ray, q, s, leaves);
     // a ray that leaves looks the sky up along its direction at infinity (as the orbit stage)

@@ -10,17 +10,21 @@ struct pipeline_case {
     const char *label;
     int integrated;               /* 1: Schwarzschild integrated with rk4 instead of its exact orbits */
     int flow;                     /* one of the models without a closed form: the 3x target */
+    enum orbit_walk_choice walk;  /* exact orbits: where the single pass walks (render.orbit_walk) */
 };
 
 static const struct pipeline_case cases[] = {
-    {"lorenz", "lorenz", 0, 1},
-    {"rossler", "rossler", 0, 1},
-    {"potential", "potential", 0, 1},
-    {"refraction", "refraction", 0, 1},
-    {"schwarzschild", "schwarzschild, rk4", 1, 0},
-    {"schwarzschild", "schwarzschild, exact orbits", 0, 0},
-    {"demo", "demo, exact orbits", 0, 0},
-    {"test", "test (flat)", 0, 0},
+    {"lorenz", "lorenz", 0, 1, ORBIT_WALK_AUTO},
+    {"rossler", "rossler", 0, 1, ORBIT_WALK_AUTO},
+    {"potential", "potential", 0, 1, ORBIT_WALK_AUTO},
+    {"refraction", "refraction", 0, 1, ORBIT_WALK_AUTO},
+    {"schwarzschild", "schwarzschild, rk4", 1, 0, ORBIT_WALK_AUTO},
+    {"schwarzschild", "schwarzschild, exact orbits", 0, 0, ORBIT_WALK_INLINE},
+    {"schwarzschild", "schwarzschild, exact orbits, walk separate", 0, 0, ORBIT_WALK_SEPARATE},
+    {"neutron_star", "neutron_star, exact orbits", 0, 0, ORBIT_WALK_INLINE},
+    {"neutron_star", "neutron_star, exact orbits, walk separate", 0, 0, ORBIT_WALK_SEPARATE},
+    {"demo", "demo, exact orbits", 0, 0, ORBIT_WALK_AUTO},
+    {"test", "test (flat)", 0, 0, ORBIT_WALK_AUTO},
 };
 #define N_CASES (int)(sizeof cases / sizeof cases[0])
 #define FLOW_TARGET_SPEEDUP 3.0
@@ -41,7 +45,8 @@ static int pipelines_on(struct bench *b, struct scene *s, struct error *e)
                    "with the scene's early-z, unrolling and batches), by one fused pass a segment (`fused`: "
                    "integration, intersection and termination in one pass with four draw buffers; not for exact "
                    "orbits, which run their own stage: –) and by the single pass (`single`: the whole ray in one "
-                   "fragment-shader loop, docs/PIPELINE.md). Seconds per frame, median of %d runs; passes per "
+                   "fragment-shader loop, docs/PIPELINE.md; on exact orbits with the walk in the frame's pass, "
+                   "`render.orbit_walk = inline`, or in a pass of its own, `separate`, a GPU's default). Seconds per frame, median of %d runs; passes per "
                    "frame and the mean milliseconds per pass; the share of pixels whose outcome differs from the "
                    "multipass scheme's (0: the same rays; tests/unit/test_acceleration.c proves them "
                    "bit-identical).\n\n"
@@ -63,6 +68,8 @@ static int pipelines_on(struct bench *b, struct scene *s, struct error *e)
             }
             if (cases[k].integrated)
                 s->render.method = METHOD_RK4;
+            if (cases[k].walk != ORBIT_WALK_AUTO)
+                s->render.orbit_walk = cases[k].walk;
             /* exact orbits have no fused pass */
             if (row_pipelines[p] == PIPELINE_FUSED && s->render.method == METHOD_ORBIT_TABLE)
                 continue;

@@ -20,8 +20,8 @@ static void usage(FILE *out)
                  "as the GL compiles it for that scene, as `bentray render` draws it: the preamble, the\n"
                  "scene's defines, then each file after a comment with its name and a #line with its\n"
                  "number. A stage the scene's pipeline does not run prints nothing (exit 1).\n"
-                 "  --shader STAGE       one of: frame, orbit_frame, orbit_crossings (single pass), segment\n"
-                 "                       (fused), setup, integrate, orbit, intersect, terminate, retire, sky\n"
+                 "  --shader STAGE       one of: frame, orbit_frame, orbit_walk, orbit_crossings (single\n"
+                 "                       pass), segment (fused), setup, integrate, orbit, intersect, terminate, retire, sky\n"
                  "                       (multipass), fill\n");
 }
 

@@ -340,6 +340,10 @@ static void probe_query(struct gl_caps *c, GLuint prog)
                                                                   : "OpenGL below 2.0");
         return;
     }
+    if (gl_fault("occlusion_query")) {
+        snprintf(c->query_why, sizeof c->query_why, "BT_FAULT=occlusion_query");
+        return;
+    }
     c->query_target = c->is_es ? GL_ANY_SAMPLES_PASSED_CONSERVATIVE : 0x8914 /* GL_SAMPLES_PASSED */;
     GLuint tex, depth, fbo, query;
     tex = texture_create_nearest(GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, PROBE_SIZE, PROBE_SIZE);
@@ -451,6 +455,8 @@ int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, struct error 
     copy_string(c->vendor, sizeof c->vendor, GL_VENDOR);
     copy_string(c->glsl_version, sizeof c->glsl_version, GL_SHADING_LANGUAGE_VERSION);
     parse_version(c);
+    c->cpu_rasterizer = strstr(c->renderer, "llvmpipe") || strstr(c->renderer, "softpipe") ||
+                        strstr(c->renderer, "swrast") || strstr(c->renderer, "SwiftShader");
     /* GLSL ES 3.00 (and desktop GLSL) runs loops of any length; GLSL ES 1.00's appendix A lets a
      * GLES2 device refuse or cut a long fragment loop, so the single pass is not taken there
      * unless forced (render.pipeline = single) */

@@ -34,6 +34,9 @@ struct gl_caps {
     int max_fragment_uniform_vectors, max_texture_units;
     int mrt_works;
     char mrt_why[160];
+    /* the GL draws on the CPU (Mesa's llvmpipe or softpipe, swrast): its shaders' values live in
+     * the CPU's caches and memory, no register file of the GPU's bounds what a loop may carry */
+    int cpu_rasterizer;
     int long_loops;                  /* long fragment loops: the single-pass frame */
     /* the most turns one fragment-shader loop really runs, probed up to CAPS_LOOP_TURNS_PROBED
      * (llvmpipe ends every loop after 65535); 0 where long loops do not run */

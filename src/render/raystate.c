@@ -5,6 +5,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Whether TEXTURE is one of the ray state's RGBA8 textures (the rest hold the path's floats). */
+static int byte_texture(const struct raystate *rs, GLuint texture)
+{
+    return texture == rs->final_color || texture == rs->orbit_walk[0] || texture == rs->orbit_walk[1];
+}
+
 /* Colour targets in use: the first nonzero ones. */
 static int target_count(const GLuint target[RAYSTATE_MAX_TARGETS])
 {
@@ -29,8 +35,9 @@ static GLuint make_fbo(struct raystate *rs, const GLuint target[RAYSTATE_MAX_TAR
     if (n > 1)
         glDrawBuffers(n, buffers);    /* draw-buffer state belongs to the framebuffer: set once */
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rs->depth);
-    /* the presentation image is 8-bit: only the float targets are the render path's concern */
-    *status = render_path_framebuffer_status(target[0] == rs->final_color ? NULL : rs->format, n);
+    /* the presentation image and the walk's state are 8-bit: only the float targets are the render
+     * path's concern */
+    *status = render_path_framebuffer_status(byte_texture(rs, target[0]) ? NULL : rs->format, n);
     return fbo;
 }
 
@@ -48,7 +55,7 @@ static int targets_storage(struct raystate *rs, const GLuint target[RAYSTATE_MAX
 static void incomplete_message(const struct raystate *rs, const GLuint target[RAYSTATE_MAX_TARGETS], GLenum status,
                                struct error *e)
 {
-    int float_target = target[0] != rs->final_color;
+    int float_target = !byte_texture(rs, target[0]);
     int n = target_count(target);
     char count[16] = "";
     if (n > 1)
@@ -80,6 +87,8 @@ int raystate_init(struct raystate *rs, const struct render_path *path, int width
     for (int i = 0; i < 4; i++)
         *results[i] = texture_name_nearest();
     rs->final_color = texture_name_nearest();
+    for (int i = 0; i < 2; i++)
+        rs->orbit_walk[i] = texture_name_nearest();
     /* 16 bits are plenty: the buffer holds only 0 (terminated) and 1, and the quads sit at 0 and 0.5 */
     glGenRenderbuffers(1, &rs->depth);
     glBindRenderbuffer(GL_RENDERBUFFER, rs->depth);
@@ -114,7 +123,8 @@ static int own_texture(const struct raystate *rs, GLuint texture)
                                            rs->velocity[0],    rs->velocity[1],      rs->hit[0],
                                            rs->hit[1],         rs->image[0],         rs->image[1],
                                            rs->result_position, rs->result_velocity, rs->result_hit,
-                                           rs->result_image,   rs->final_color};
+                                           rs->result_image,   rs->final_color,          rs->orbit_walk[0],
+                                           rs->orbit_walk[1]};
     for (int i = 0; i < RAYSTATE_TEXTURES; i++)
         if (texture && own[i] == texture)
             return 1;
@@ -138,14 +148,14 @@ int raystate_storage(struct raystate *rs, GLuint texture, struct error *e)
     GLint bound = 0;
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
     const struct float_format *f = rs->format;
-    if (texture == rs->final_color)
+    if (byte_texture(rs, texture))
         texture_define(texture, GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, rs->width, rs->height);
     else
         texture_define(texture, f->internal_format, f->format, f->type, rs->width, rs->height);
     glBindTexture(GL_TEXTURE_2D, (GLuint)bound);
     char what[160];
     snprintf(what, sizeof what, "render path %s: allocating the ray state (a %s texture of %dx%d)", rs->path_name,
-             texture == rs->final_color ? "RGBA8" : f->name, rs->width, rs->height);
+             byte_texture(rs, texture) ? "RGBA8" : f->name, rs->width, rs->height);
     if (gl_check(what, e) != 0)
         return -1;   /* not kept as given: a later pass tries again, and fails as clearly */
     rs->stored[rs->n_stored++] = texture;
@@ -158,7 +168,7 @@ size_t raystate_bytes(const struct raystate *rs)
     size_t texels = (size_t)rs->width * rs->height;
     size_t bytes = texels * 2;   /* the 16-bit depth buffer */
     for (int i = 0; i < rs->n_stored; i++)
-        bytes += texels * (rs->stored[i] == rs->final_color ? 4 : texel);
+        bytes += texels * (byte_texture(rs, rs->stored[i]) ? 4 : texel);
     if (rs->hdr_color)
         bytes += texels * texel;
     return bytes;
@@ -183,6 +193,7 @@ void raystate_release(struct raystate *rs)
     GLuint results[4] = {rs->result_position, rs->result_velocity, rs->result_hit, rs->result_image};
     glDeleteTextures(4, results);
     glDeleteTextures(1, &rs->final_color);
+    glDeleteTextures(2, rs->orbit_walk);
     if (rs->hdr_color)
         glDeleteTextures(1, &rs->hdr_color);
     glDeleteRenderbuffers(1, &rs->depth);

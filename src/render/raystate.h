@@ -8,9 +8,9 @@
  * are written), and marks the ray in the depth buffer that every ray-state framebuffer shares.
  *
  * A texture takes memory only once a pass writes or reads it (raystate_storage): the single pass
- * writes two of the thirteen float textures (the results it ends in, checked at the start), so
- * its frames neither clear nor hold the others, on a board whose GPU shares 1 GB with everything
- * else. */
+ * writes two of the thirteen float textures (the results it ends in, checked at the start), and
+ * on exact orbits with its walk in a pass of its own the two RGBA8 walk textures, so its frames
+ * neither clear nor hold the others, on a board whose GPU shares 1 GB with everything else. */
 #ifndef BT_RAYSTATE_H
 #define BT_RAYSTATE_H
 #include "gl/gl_api.h"
@@ -20,7 +20,7 @@
 
 #define RAYSTATE_MAX_FBOS 32
 #define RAYSTATE_MAX_TARGETS 4     /* colour targets of one pass: the fused segment pass writes four */
-#define RAYSTATE_TEXTURES 14       /* the float textures below, and final_color */
+#define RAYSTATE_TEXTURES 16       /* the float textures below, final_color and orbit_walk */
 
 struct raystate {
     int width, height;
@@ -28,11 +28,13 @@ struct raystate {
     GLuint result_position, result_velocity, result_hit, result_image; /* final state of each ray */
     GLuint depth;                  /* renderbuffer: 0 where a ray has been terminated, 1 elsewhere */
     GLuint final_color;            /* RGBA8 image for presentation and PNG */
+    GLuint orbit_walk[2];          /* RGBA8: where each ray's walk along its exact orbit stopped
+                                      (shaders_es/stage_orbit_walk.glsl), ping-pong */
     GLuint hdr_color;              /* the colour unclamped (raystate_hdr_color); 0 until asked for */
     int cur_position, cur_velocity, cur_hit;  /* indices of the current copies */
     struct { GLuint target[RAYSTATE_MAX_TARGETS], fbo; } fbos[RAYSTATE_MAX_FBOS];
     int n_fbos;
-    const struct float_format *format;  /* of every texture but final_color; for messages */
+    const struct float_format *format;  /* of every texture but the RGBA8 ones; for messages */
     const char *path_name;         /* the render path these textures serve */
     int mrt;
     GLuint stored[RAYSTATE_TEXTURES];  /* the textures given memory so far (raystate_storage) */

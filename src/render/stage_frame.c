@@ -6,7 +6,9 @@
  * image and velocity, which the sky stage needs, and on demand (a dump, trace or the kiosk's
  * pipeline view) hit and position in a second pass of the same loop. Where only the image is read
  * (renderer_set_reads), the pass ends with the sky stage's colour instead (sky_colour.glsl) and
- * writes the final image itself: one full-screen pass and two float targets less. */
+ * writes the final image itself: one full-screen pass and two float targets less. On exact orbits
+ * the walk along the chords may run in a pass of its own before the one that finishes each ray
+ * (render.orbit_walk, orbit_walk_passes below, shaders_es/stage_orbit_walk.glsl). */
 #include "render/stages.h"
 #include <stdio.h>
 #include <string.h>
@@ -25,7 +27,13 @@ struct frame_args {
     struct object_batch batch;
     enum frame_output output;
     int crossings;                /* orbit_crossings_apply */
+    int walked;                   /* the walk in passes of its own (orbit_walk_passes) */
+    int attempt;                  /* ... and which of its pairs of passes this is */
 };
+
+/* Walks a ray takes at most: after a hit its orbit misses, it goes on from the chord's end (the
+ * last hit found is kept), as the multipass scheme's intersection stage keeps no such hit. */
+enum { ORBIT_HIT_TRIES = 3 };
 
 static void set_frame(const struct program_uniforms *p, const void *arg)
 {
@@ -38,6 +46,10 @@ static void set_frame(const struct program_uniforms *p, const void *arg)
         orbit_set_uniforms(p, r, 0);
         if (a->crossings)
             orbit_crossings_set_uniforms(p, r);
+        if (a->walked) {
+            uniform_float(p, "u_orbit_resume", a->attempt > 0);
+            uniform_float(p, "u_orbit_last_try", a->attempt == ORBIT_HIT_TRIES - 1);
+        }
         return;
     }
     integrate_set_uniforms(p, r->scene);
@@ -60,53 +72,138 @@ int frame_batch_defines(const struct renderer *r, const struct object_batch *b, 
     return 0;
 }
 
-int stage_frame(struct renderer *r, enum frame_output output, struct error *e)
+/* Whether the walk of rays on exact orbits runs in a pass of its own (render.orbit_walk): auto takes it
+ * on a GPU, whose register file the one pass overflows (`make shader-stats`: the kiosk's black-hole
+ * frame spills 263 values on V3D 4.2 in one pass, 94 and 37 in the two, and compiles in 27 s of an
+ * x86 core instead of 2 + 3), and not on a CPU rasteriser, where nothing spills into memory that was
+ * not there already and the finish pass only adds the work it does again. */
+int orbit_walk_separate(const struct renderer *r)
 {
-    struct raystate *rs = &r->rs;
+    switch (r->scene->render.orbit_walk) {
+    case ORBIT_WALK_SEPARATE: return 1;
+    case ORBIT_WALK_INLINE: return 0;
+    default: return !r->caps.cpu_rasterizer;
+    }
+}
+
+/* The frame's program: the walk's pass (FRAME_WALK), or the frame itself (writing OUTPUT). */
+static const struct stage_program *frame_program(struct renderer *r, const struct frame_args *a, int walk,
+                                                 struct error *e)
+{
     const struct scene *s = r->scene;
-    struct frame_args a = {.r = r, .output = output, .crossings = orbit_crossings_apply(r)};
-    if (frame_batch(r, &a.batch, e) != 0)
-        return -1;
+    enum frame_output output = a->output;
     char batch[4096];
-    if (frame_batch_defines(r, &a.batch, batch, sizeof batch, e) != 0)
-        return -1;
+    if (frame_batch_defines(r, &a->batch, batch, sizeof batch, e) != 0)
+        return NULL;
     const char *files[PRIM_COUNT + 12] = {"common.glsl", "bounds.glsl", r->model_file};
-    int n = object_batch_files(&a.batch, files, 3);
+    int n = object_batch_files(&a->batch, files, 3);
     files[n++] = "observer.glsl";
-    if (output == FRAME_WRITES_COLOUR)
+    if (output == FRAME_WRITES_COLOUR && !walk)
         files[n++] = "sky_colour.glsl";
     if (r->exact_orbits)
         files[n++] = "orbit_table.glsl";
     files[n++] = "shade.glsl";
     files[n++] = "stage_intersect.glsl";
-    files[n++] = !r->exact_orbits ? "stage_integrate.glsl" : a.crossings ? "stage_orbit_crossings.glsl"
-                                                                         : "stage_orbit_frame.glsl";
     if (!r->exact_orbits) {
+        files[n++] = "stage_integrate.glsl";
         files[n++] = "segment_end.glsl";
         files[n++] = "stage_frame.glsl";
+    } else if (a->crossings) {
+        files[n++] = "stage_orbit_crossings.glsl";
+    } else {
+        files[n++] = "stage_orbit_walk.glsl";
+        if (!walk)
+            files[n++] = "stage_orbit_frame.glsl";
     }
     files[n] = NULL;
-    char written[64];
-    snprintf(written, sizeof written, "%s%s",
-             output == FRAME_WRITES_STATE ? "#define FRAME_STATE 1\n" : output == FRAME_WRITES_COLOUR ? "#define FRAME_COLOUR 1\n" : "",
-             output == FRAME_WRITES_COLOUR ? sky_colour_defines(r) : "");
-    char defines[sizeof batch + sizeof r->model_defines + sizeof written + 128];
+    char written[96];
+    snprintf(written, sizeof written, "%s%s%s",
+             walk ? "#define ORBIT_WALK_PASS 1\n" : a->walked ? "#define ORBIT_WALKED 1\n" : "",
+             walk ? "" : output == FRAME_WRITES_STATE ? "#define FRAME_STATE 1\n" : output == FRAME_WRITES_COLOUR ? "#define FRAME_COLOUR 1\n" : "",
+             output == FRAME_WRITES_COLOUR && !walk ? sky_colour_defines(r) : "");
+    char defines[sizeof batch + sizeof r->model_defines + sizeof written + 160];
     if (r->exact_orbits)
-        snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define MAX_SEGMENTS %d\n%s%s", r->model_defines,
-                 batch, s->render.max_chords, written, a.batch.count == 0 ? "#define ORBIT_NOTHING_TO_MEET 1\n" : "");
+        snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define MAX_SEGMENTS %d\n#define ORBIT_HIT_TRIES %d\n%s%s",
+                 r->model_defines, batch, s->render.max_chords, ORBIT_HIT_TRIES, written,
+                 a->batch.count == 0 ? "#define ORBIT_NOTHING_TO_MEET 1\n" : "");
     else
         snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define CHORD_CULL 1\n#define PASSES_PER_SEGMENT %d\n%s",
                  r->model_defines, batch, r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass,
                  written);
-    const struct stage_program *sp =
-        program_cache_get(r->programs, files, defines, output != FRAME_WRITES_COLOUR, e);
-    if (!sp)
+    return program_cache_get(r->programs, files, defines, !walk && output != FRAME_WRITES_COLOUR, e);
+}
+
+/* The walk and the finish of rays on exact orbits in pairs of passes (stage_orbit_walk.glsl): the
+ * walk writes where each ray stopped into a spare position texture (the single pass uses none of
+ * them), the finish reads it and writes the frame's outputs, and marks the rays it finished in the
+ * depth buffer, as the multipass scheme's retirement does (stage_retire.c); a ray whose hit the
+ * orbit misses goes on in the next pair, whose passes the early-z test skips for every other ray.
+ * A pair runs only where a ray goes on: the walk after the first runs in an occlusion query
+ * (ES 3: any sample), and where it drew nothing, no ray goes on. */
+static int orbit_walk_passes(struct renderer *r, struct frame_args *a, GLuint out0, GLuint out1, struct error *e)
+{
+    struct raystate *rs = &r->rs;
+    const struct stage_program *walk = frame_program(r, a, 1, e);
+    const struct stage_program *finish = walk ? frame_program(r, a, 0, e) : NULL;
+    if (!finish)
         return -1;
+    GLuint state[2] = {rs->orbit_walk[0], rs->orbit_walk[1]};
+    GLuint fbo = raystate_fbo(rs, state[0], 0, e);
+    if (!fbo)
+        return -1;
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glDepthMask(GL_TRUE);
+    glClearDepthf(1.0f);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    int query = r->caps.occlusion_query;
+    if (query && !r->queries[0])
+        glGenQueries(2, r->queries);
+    int rc = 0;
+    for (int attempt = 0; attempt < ORBIT_HIT_TRIES && rc == 0; attempt++) {
+        a->attempt = attempt;
+        GLuint before = state[(attempt + 1) % 2], now = state[attempt % 2];
+        struct pass_input walk_in = {"u_orbit_walk", before};
+        int counted = query && attempt > 0;
+        if (counted)
+            glBeginQuery(r->caps.query_target, r->queries[0]);
+        rc = pass_run(r, walk, now, 0, &walk_in, 1, set_frame, a, e);
+        if (counted) {
+            glEndQuery(r->caps.query_target);
+            GLuint going_on = 1;
+            glGetQueryObjectuiv(r->queries[0], GL_QUERY_RESULT, &going_on);
+            if (going_on == 0)
+                break;
+        }
+        struct pass_input finish_in = {"u_orbit_walk", now};
+        r->depth_write_last = 1;
+        rc = rc != 0 ? rc : pass_run(r, finish, out0, out1, &finish_in, 1, set_frame, a, e);
+        r->depth_write_last = 0;
+    }
+    glDisable(GL_DEPTH_TEST);
+    return rc;
+}
+
+int stage_frame(struct renderer *r, enum frame_output output, struct error *e)
+{
+    struct raystate *rs = &r->rs;
+    struct frame_args a = {.r = r, .output = output, .crossings = orbit_crossings_apply(r)};
+    if (frame_batch(r, &a.batch, e) != 0)
+        return -1;
+    a.walked = r->exact_orbits && !a.crossings && a.batch.count > 0 && orbit_walk_separate(r);
     GLuint out0 = output == FRAME_WRITES_STATE ? rs->result_hit : output == FRAME_WRITES_COLOUR ? rs->final_color
                                                                                                : rs->result_image;
     GLuint out1 = output == FRAME_WRITES_STATE ? rs->result_position : output == FRAME_WRITES_COLOUR ? 0
                                                                                                     : rs->result_velocity;
-    if (pass_run(r, sp, out0, out1, NULL, 0, set_frame, &a, e) != 0)
-        return -1;
+    if (a.walked) {
+        if (orbit_walk_passes(r, &a, out0, out1, e) != 0)
+            return -1;
+    } else {
+        const struct stage_program *sp = frame_program(r, &a, 0, e);
+        if (!sp || pass_run(r, sp, out0, out1, NULL, 0, set_frame, &a, e) != 0)
+            return -1;
+    }
     return gl_check("the single-pass frame", e);
 }

@@ -159,6 +159,9 @@ int stage_segment(struct renderer *r, int segment, struct error *e);
  * in the shaders). */
 enum frame_output { FRAME_WRITES_OUTCOMES, FRAME_WRITES_STATE, FRAME_WRITES_COLOUR };
 int stage_frame(struct renderer *r, enum frame_output output, struct error *e);
+/* Whether a single pass on exact orbits walks in a pass of its own (render.orbit_walk; the frame's
+ * pass finishes each ray in a second), where it walks at all. */
+int orbit_walk_separate(const struct renderer *r);
 /* Every object of the scene as the single pass's batch; -1 with e saying why they do not fit
  * (ERROR_INPUT: only render.pipeline = single asks for it where they do not). */
 int frame_batch(const struct renderer *r, struct object_batch *b, struct error *e);

@@ -55,6 +55,10 @@ enum moving_objects_method { MOVING_RAYS, MOVING_POLYGONS };
  * to its end in one fragment-shader loop; fused runs each segment's integration, intersection
  * and termination as one pass (four draw buffers). */
 enum pipeline_choice { PIPELINE_AUTO, PIPELINE_MULTIPASS, PIPELINE_SINGLE, PIPELINE_FUSED };
+/* Where the single pass on exact orbits walks its chords: auto (a pass of its own on a GPU, in the
+ * frame's pass on a CPU rasteriser), separate (a walk pass, then a pass that finishes the ray),
+ * inline (one pass). The same rays either way (docs/PIPELINE.md). */
+enum orbit_walk_choice { ORBIT_WALK_AUTO, ORBIT_WALK_SEPARATE, ORBIT_WALK_INLINE };
 
 struct camera {
     vec3d position;
@@ -174,6 +178,7 @@ struct render_settings {
     double chord_tolerance;
     int max_chords;           /* method orbit_table: most chords a ray's orbit is split into */
     int orbit_rows, orbit_columns;
+    enum orbit_walk_choice orbit_walk;
     enum pipeline_choice pipeline;  /* MOVING_POLYGONS: segments along each edge of a primitive's mesh */
     /* the budget of a ray, in its affine parameter (the path length of light with |v| = 1): 0 takes
      * SCENE_PATH_BOUND_DIAMETERS diameters of the bounding sphere (render_path_budget) */

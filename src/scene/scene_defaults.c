@@ -37,6 +37,7 @@ static void render_defaults(struct render_settings *r)
     r->orbit_rows = 512;
     r->orbit_columns = 128;
     r->pipeline = PIPELINE_AUTO;
+    r->orbit_walk = ORBIT_WALK_AUTO;
     r->samples = 1;
     r->sky_alpha = 1.0;
 }

@@ -33,22 +33,39 @@ stats=$root/build/tests/gpus/compile_stats
 rm -rf "$work"
 mkdir -p "$work/dump" "$work/programs" "$work/logs"
 
-# 1. every program, by scene and pipeline, then the kiosk's compile-ahead
+# The programs are built on this machine's llvmpipe, a CPU rasteriser, where render.orbit_walk = auto
+# keeps the single pass's walk along exact orbits in one pass; every GPU takes it in a pass of its
+# own (docs/PIPELINE.md). So the scenes are copies that say so, their paths made absolute, and
+# the one-pass walk is built as a pipeline of its own ("single-inline") for comparison.
+mkdir -p "$work/scenes"
 for scene in "$root"/assets/scenes/*.scene; do
+    copy="$work/scenes/$(basename "$scene")"
+    sed -e "s|= \.\./|= $root/assets/|" -e 's|^\[render\]$|[render]\norbit_walk = separate|' "$scene" >"$copy"
+    grep -q '^orbit_walk = separate$' "$copy" || printf '\n[render]\norbit_walk = separate\n' >>"$copy"
+done
+
+# 1. every program, by scene and pipeline, then the kiosk's compile-ahead
+for scene in "$work"/scenes/*.scene; do
     name=$(basename "$scene" .scene)
     # the multipass scheme also with one target a pass (render.mrt = off): the variants a GPU with
     # one draw buffer builds (VC4, Mali-400, Mali-T720)
-    for pipeline in auto multipass fused multipass-1target; do
+    for pipeline in auto multipass fused multipass-1target single-inline; do
         d="$work/dump/$name@$pipeline"
         mkdir -p "$d"
         set -- --set render.pipeline=$pipeline
         [ $pipeline = multipass-1target ] && set -- --set render.pipeline=multipass --set render.mrt=off
+        if [ $pipeline = single-inline ]; then
+            grep -q '^method = orbit_table' "$scene" || continue
+            set -- --set render.pipeline=auto --set render.orbit_walk=inline
+        fi
         # a pipeline the scene cannot take is refused (exit 1): nothing is built, nothing counted
         BT_SHADER_DUMP=$d "$bentray" render --scene "$scene" --size 32x24 --out "$work/frame.png" --force \
             "$@" >"$work/logs/render-$name-$pipeline.log" 2>&1 || true
     done
 done
-sed -e "s|\.\./assets|$root/assets|g" -e 's|^compile_ahead = .*|compile_ahead = on|' \
+# the kiosk's scenes are the copies above, so its assets_root is where they lie
+sed -e "s|^assets_root = .*|assets_root = $work/scenes|" -e "s|\.\./assets/scenes|$work/scenes|g" \
+    -e "s|\.\./assets|$root/assets|g" -e 's|^compile_ahead = .*|compile_ahead = on|' \
     "$root/kiosk/kiosk.conf" >"$work/kiosk.conf"
 mkdir -p "$work/dump/kiosk@kiosk" "$work/kiosk-out"
 BT_SHADER_DUMP="$work/dump/kiosk@kiosk" "$bentray" kiosk --config "$work/kiosk.conf" --display headless \

@@ -138,6 +138,19 @@ check "info both back-ends work" 0 "^2$" -- sh -c "$BT info | grep -cE '^render 
 B=assets/scenes/schwarzschild.scene
 check "orbit table egl" 0 "2 passes \(single pass: OpenGL ES 3.2 runs" -- $BT render --scene $B --size 32x24 --backend egl --out "$TMP/o1.png"
 check "orbit table osmesa" 0 "on osmesa.*\(single pass: " -- $BT render --scene $B --size 32x24 --backend osmesa --out "$TMP/o2.png"
+# the walk along exact orbits in a pass of its own (a GPU's default; llvmpipe's is inline): the same
+# rays bit for bit on both back-ends, also where no occlusion query says that no ray goes on
+for walk_case in "egl" "osmesa" "egl BT_FAULT=occlusion_query"; do
+    set -- $walk_case
+    check "orbit walk separate is inline ($walk_case)" 0 "^same [4-9] passes$" -- sh -c "env ${2:-} $BT render --scene $B --size 64x48 \
+        --backend $1 --set render.orbit_walk=separate --force --out $TMP/ow_s.png --dump $TMP/ow_s.dump > $TMP/ow_s.txt 2>&1 && \
+        $BT render --scene $B --size 64x48 --backend $1 --set render.orbit_walk=inline --force --out $TMP/ow_i.png \
+        --dump $TMP/ow_i.dump >/dev/null 2>&1 && cmp $TMP/ow_s.png $TMP/ow_i.png && cmp $TMP/ow_s.dump $TMP/ow_i.dump && \
+        echo same \$(grep -o '[0-9]* passes' $TMP/ow_s.txt)"
+done
+check "info --shader orbit_walk compiles" 0 "^compiled$" -- sh -c "$BT info --shader orbit_walk --scene $B \
+    --set render.orbit_walk=separate --no-mrt > '$TMP/walk.frag' && grep -q 'void main' '$TMP/walk.frag' && \
+    glslangValidator -S frag '$TMP/walk.frag' > '$TMP/glslang_walk.log' && echo compiled || cat '$TMP/glslang_walk.log'"
 check "orbit table multipass" 0 "\(multipass: render.pipeline = multipass\)" -- $BT render --scene $B --size 32x24 --set render.pipeline=multipass --out "$TMP/o3.png"
 check "orbit table, other model" 2 "orbit_table follows the exact orbits of Schwarzschild space" -- $BT render --scene assets/scenes/lorenz.scene --set render.method=orbit_table --out "$TMP/o4.png"
 # integrated rays: the single pass where the GPU runs long loops, the multipass scheme on a GLES2

@@ -65,6 +65,7 @@ static void test_single_pass_bit_identical(void **state)
 {
     (void)state;
     static const char *const scenes[] = {"schwarzschild", "neutron_star", "blackhole_flight", "demo"};
+    static const enum orbit_walk_choice walks[] = {ORBIT_WALK_SEPARATE, ORBIT_WALK_INLINE};
     for (int k = 0; k < 4; k++) {
         static struct scene s;
         static const char *const sets[] = {"render.method=orbit_table", "render.step_control=fixed", NULL};
@@ -76,17 +77,30 @@ static void test_single_pass_bit_identical(void **state)
         for (int sky_only = 0; sky_only < 2; sky_only++) {
             if (sky_only)
                 s.n_objects = 0;
-            struct hc_gpu single, multi;
-            s.render.pipeline = PIPELINE_SINGLE;
-            hc_gpu_render(&s, &single);
+            struct hc_gpu multi;
             s.render.pipeline = PIPELINE_MULTIPASS;
             hc_gpu_render(&s, &multi);
-            char what[96];
-            snprintf(what, sizeof what, "%s%s", scenes[k], sky_only ? " (sky only)" : "");
-            expect_same_dumps(what, &single, &multi);
-            /* 2 passes: the loop and the sky (the hit and position pass ran for the read-back) */
-            assert_true(single.res.passes <= 3);
-            hc_gpu_free(&single);
+            /* the walk in a pass of its own (a GPU's default) and in the frame's pass (a CPU
+             * rasteriser's): the same rays, from the same arithmetic */
+            for (int w = 0; w < 2; w++) {
+                struct hc_gpu single;
+                s.render.pipeline = PIPELINE_SINGLE;
+                s.render.orbit_walk = walks[w];
+                hc_gpu_render(&s, &single);
+                char what[96];
+                snprintf(what, sizeof what, "%s%s, walk %s", scenes[k], sky_only ? " (sky only)" : "",
+                         walks[w] == ORBIT_WALK_SEPARATE ? "separate" : "inline");
+                expect_same_dumps(what, &single, &multi);
+                /* inline: 2 passes, the loop and the sky (the hit and position pass ran for the
+                 * read-back); separate: a walk and a finish, then the sky, and a walk more where
+                 * its occlusion query found that no ray went on after a lost hit, or the next
+                 * pair, up to ORBIT_HIT_TRIES (3) pairs; a scene without objects walks nowhere */
+                int separate = walks[w] == ORBIT_WALK_SEPARATE && !sky_only;
+                assert_true(single.res.passes <= (separate ? 2 * 3 + 1 : 3));
+                assert_true(single.res.passes >= (separate ? 3 : 2));
+                hc_gpu_free(&single);
+            }
+            s.render.orbit_walk = ORBIT_WALK_AUTO;
             hc_gpu_free(&multi);
         }
     }
@@ -125,24 +139,31 @@ static void render_image_only(const struct scene *s, struct render_result *image
  * caller to count its hits and free. */
 static void expect_single_is_multipass(struct scene *s, const char *what, struct hc_gpu *multi)
 {
-    struct hc_gpu single;
-    s->render.pipeline = PIPELINE_SINGLE;
-    hc_gpu_render(s, &single);
     s->render.pipeline = PIPELINE_MULTIPASS;
     hc_gpu_render(s, multi);
-    expect_same_dumps(what, &single, multi);
-    struct render_result image;
-    s->render.pipeline = PIPELINE_SINGLE;
-    render_image_only(s, &image);
-    assert_memory_equal(image.rgba, multi->res.rgba, (size_t)s->render.width * s->render.height * 4);
-    render_result_free(&image);
-    hc_gpu_free(&single);
+    static const enum orbit_walk_choice walks[] = {ORBIT_WALK_SEPARATE, ORBIT_WALK_INLINE};
+    for (int w = 0; w < 2; w++) {
+        struct hc_gpu single;
+        s->render.pipeline = PIPELINE_SINGLE;
+        s->render.orbit_walk = walks[w];
+        hc_gpu_render(s, &single);
+        char named[160];
+        snprintf(named, sizeof named, "%s, walk %s", what, w == 0 ? "separate" : "inline");
+        expect_same_dumps(named, &single, multi);
+        struct render_result image;
+        render_image_only(s, &image);
+        assert_memory_equal(image.rgba, multi->res.rgba, (size_t)s->render.width * s->render.height * 4);
+        render_result_free(&image);
+        hc_gpu_free(&single);
+    }
+    s->render.orbit_walk = ORBIT_WALK_AUTO;
 }
 
 /* The ray state takes memory only for the textures a frame uses (render/raystate.h): the kiosk's
  * single pass, its image alone read, holds its two result targets (checked at the start), the
- * 8-bit image and the depth buffer once the kiosk has taken its textures, not the float textures
- * the multipass scheme cycles through; the picture is the multipass scheme's, bit for bit. */
+ * 8-bit image and the depth buffer once the kiosk has taken its textures, and with the walk in a
+ * pass of its own the walk's two 8-bit state textures, not the float textures the multipass scheme
+ * cycles through; the picture is the multipass scheme's, bit for bit. */
 static void test_single_pass_memory(void **state)
 {
     (void)state;
@@ -154,13 +175,19 @@ static void test_single_pass_memory(void **state)
     size_t single_bytes = 0;
     struct renderer_textures handed;
     s.render.pipeline = PIPELINE_SINGLE;
+    s.render.orbit_walk = ORBIT_WALK_SEPARATE;
     render_image_only_held(&s, &image, &single_bytes, &handed);
     print_message("single pass, image only: %zu bytes of ray state (%zu texels)\n", single_bytes, texels);
-    assert_true(single_bytes <= texels * (2 * float_texel + 4 + 2));
+    assert_true(single_bytes <= texels * (2 * float_texel + 4 + 2 * 4 + 2));
     /* the image is handed out; the state the frame did not write is not (0), and takes no memory */
     assert_true(handed.image != 0);
     assert_int_equal(handed.hit, 0);
     assert_int_equal(handed.position, 0);
+    render_result_free(&image);
+    s.render.orbit_walk = ORBIT_WALK_INLINE;
+    render_image_only_held(&s, &image, &single_bytes, &handed);
+    print_message("single pass inline, image only: %zu bytes of ray state\n", single_bytes);
+    assert_true(single_bytes <= texels * (2 * float_texel + 4 + 2));
     struct render_result multi_image;
     size_t multi_bytes = 0;
     s.render.pipeline = PIPELINE_MULTIPASS;

@@ -1,0 +1,172 @@
+// The walk of render.method = orbit_table's single pass (stage_orbit_frame.glsl): a ray follows its
+// orbit chord by chord (orbit_chord, as the orbit stage), tests every object of the scene against
+// each chord (intersect_chord, as the intersection stage), and stops at the first chord that meets
+// one, that ends inside the capture sphere or that leaves the bounding sphere (as the termination
+// stage), or after its last chord. What happens there (the crossing of the bounding sphere, the
+// hit found again on the orbit, the shading, the sky) is the frame's finish.
+//
+// Where the ray state holds 32-bit floats, the walk is a pass of its own (ORBIT_WALK_PASS) that
+// writes where each ray stopped, and the finish a second pass that reads it (ORBIT_WALKED): the
+// walk's loop then holds none of the finish's values, and an exhibit's GPU runs it without
+// spilling most of its registers (`make shader-stats`). Elsewhere the frame calls orbit_walk
+// itself, in one pass.
+
+// Where a walk stopped, in one RGBA8 texel (4 bytes a ray, a tile-based GPU's bandwidth): its
+// chord k (two bytes: render.max_chords is at most 10000), how it stopped (1 at a hit or in the
+// capture sphere: done; 2 where the chord leaves the bounding sphere; 0 where the orbit's chords
+// ran out) and the object hit plus one (0: none). Whole numbers only: the finish finds every other
+// value of the walk again from them, with the walk's own arithmetic (the orbit's fraction where
+// the ray moved last is the end of chord k where done, its start otherwise; the hit is chord k's,
+// intersect_chord again), so the rays stay bit for bit those of one pass. A fraction written as the
+// loop left it could come out of the loop at 16-bit precision (the precision note in common.glsl).
+uniform sampler2D u_orbit_walk;
+
+vec4 orbit_walk_state(float k, bool done, bool leaving, candidate best)
+{
+    float k_high = floor(k / 256.0);
+    float k_low = k - 256.0 * k_high;
+    float how = done ? 1.0 : leaving ? 2.0 : 0.0;
+    vec4 bytes = vec4(k_low, k_high, how, best.slot + 1.0);
+    return bytes / 255.0;
+}
+
+// k, done, leaving and whether the walk found a hit (found: the object is the caller's to find
+// again, with the hit's fraction and key: intersect_chord)
+void orbit_walk_read(out float k, out bool done, out bool leaving, out bool found)
+{
+    vec4 bytes = floor(fetch(u_orbit_walk) * 255.0 + 0.5);
+    k = bytes.x + 256.0 * bytes.y;
+    done = bytes.z == 1.0;
+    leaving = bytes.z == 2.0;
+    found = bytes.w > 0.0;
+}
+
+// Where a walk from chord k starts: the chord's start (the camera for chord 0), the orbit's
+// fraction s there and u, du/ds = q.
+vec3 orbit_walk_start(orbit_ray ray, float k, out float s, out vec2 q)
+{
+    s = orbit_chord_end(ray, k);
+    q = orbit_at(ray, s);
+    vec3 on_orbit = orbit_point(ray, q, s);
+    return k <= 0.0 ? u_camera_position : on_orbit;
+}
+
+#ifndef ORBIT_WALKED
+// Chords taken together, ORBIT_GROUP at a time: a group whose chords can meet nothing is passed
+// over in one step, its end point computed as its last chord would compute it, so the rays, hits
+// and images stay those of the chord-by-chord walk (tests/unit/test_orbit_render.c).
+const float ORBIT_GROUP = 4.0;
+// How far, relative to the radius, the interpolated orbit might stray from the radii of its ends
+// between them (float roundings, and the interpolant's wiggle where the orbit is nearly circular)
+const float GROUP_RADIUS_MARGIN = 1e-3;
+
+// Whether the chords between fractions s_a and s_b of the orbit (where it has u, du/ds = q_a and
+// q_b) can meet no object, end inside the capture sphere or leave the bounding sphere. Without a
+// turning point between them (du/ds keeps its sign) all their ends lie between the radii of the
+// two ends; a group with one is followed chord by chord.
+bool group_clear(orbit_ray ray, float s_a, vec2 q_a, vec2 cs_a, float s_b, vec2 q_b, vec2 cs_b)
+{
+    bool turns = q_a.y * q_b.y <= 0.0;
+    float r_a = 1.0 / q_a.x;
+    float r_b = 1.0 / q_b.x;
+    float r_lo = min(r_a, r_b) * (1.0 - GROUP_RADIUS_MARGIN);
+    float r_hi = max(r_a, r_b) * (1.0 + GROUP_RADIUS_MARGIN);
+    float capture_offset = length(u_capture_center - u_model_center);
+    float nearest_capture = r_lo - capture_offset;
+    bool may_fall = u_capture_radius2 > 0.0 &&
+                    (nearest_capture <= 0.0 || nearest_capture * nearest_capture <= u_capture_radius2);
+    float farthest_bound = length(u_model_center - u_bound_center) + r_hi;
+    bool may_leave = farthest_bound * farthest_bound >= u_bound_radius2 * (1.0 - GROUP_RADIUS_MARGIN);
+    cull_phi_a = s_a * ray.phi_end;
+    cull_phi_b = s_b * ray.phi_end;
+    vec4 ends = vec4(cs_a, cs_b);
+    return !turns && !may_fall && !may_leave && cull_group_clear(ray, ends, r_lo, r_hi);
+}
+
+// The walk from chord k (cull_prepare done): where it stops, k is the chord it stopped on and a
+// that chord's start; s is where the ray moved last and q = u, du/ds there (the end of chord k
+// where done, its start otherwise); done: the chord meets an object (best) or ends inside the
+// capture sphere; leaving: it leaves the bounding sphere (untested: the finish tests it up to the
+// crossing); neither: the orbit's chords are all walked.
+void orbit_walk(orbit_ray ray, inout float k, out vec3 a, out float s, out vec2 q, out bool done,
+                out bool leaving, out candidate best)
+{
+    // What the loop carries from turn to turn is kept to what it cannot compute again: every value
+    // live across its turns takes a register for the whole loop, and an exhibit's GPU has few
+    // (`make shader-stats`).
+    bool at_camera = k <= 0.0;
+    a = orbit_walk_start(ray, k, s, q);
+    float phi = s * ray.phi_end;
+    vec2 cs_group = at_camera ? vec2(1.0, 0.0) : vec2(cos(phi), sin(phi));  // cos, sin of phi at s
+    leaving = false;
+    done = false;
+    best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
+    // Chords are taken ORBIT_GROUP at a time. At a group's start a turn looks at the group's last
+    // end only: where the group can meet nothing, fall in or leave (group_clear), the ray moves
+    // there at once, to the point its last chord would have reached; otherwise the next turns
+    // follow the group chord by chord. Every turn evaluates the orbit once and tests one chord,
+    // whichever it does, so that a group of pixels where some rays pass a group over and others
+    // follow its chords pays for one turn, not for both.
+    float k_end = k;                     // end of the group being followed chord by chord
+    for (int i = 0; i < 2 * MAX_SEGMENTS + 2; i++) {
+        if (k >= ray.segments || leaving || done)
+            break;
+        bool probe = k >= k_end;
+        float group_end = min(k + ORBIT_GROUP, ray.segments);
+        float k1 = probe ? group_end : k + 1.0;
+        float s1 = orbit_chord_end(ray, k1);
+        vec2 q1 = orbit_at(ray, s1);
+        vec3 p1 = orbit_point(ray, q1, s1);
+        float phi1 = s1 * ray.phi_end;
+        vec2 cs1 = vec2(cos(phi1), sin(phi1));
+        bool clear = group_clear(ray, s, q, cs_group, s1, q1, cs1);
+        bool passes = probe && clear;
+        bool chord = !probe;
+        k_end = probe ? group_end : k_end;
+        // a leaving chord moves nothing: the ray stands at its start (a, s, k)
+        leaving = chord && outside_bounds(p1);
+        bool tested = chord && !leaving;
+        bool moves = passes || tested;
+        q = moves ? q1 : q;
+        s = moves ? s1 : s;
+        cs_group = moves ? cs1 : cs_group;
+        candidate trial = best;
+        intersect_chord(a, p1, k, trial);
+        best.key = tested ? trial.key : best.key;
+        best.t = tested ? trial.t : best.t;
+        best.slot = tested ? trial.slot : best.slot;
+        done = best.slot >= 0.0 || (tested && captured(p1));
+        // a chord with a hit (or that falls in) keeps its start: the ray stands at a, chord k
+        a = moves && !done ? p1 : a;
+        k = moves && !done ? k1 : k;
+        // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
+        if (k >= ray.segments || leaving || done)
+            break;
+    }
+}
+#endif
+
+#ifdef ORBIT_WALK_PASS
+// The walk pass: from the camera (u_orbit_resume = 0), or, where the finish lost the hit a walk
+// stopped at (the orbit misses what the chord met), from that walk's chord's end.
+uniform float u_orbit_resume;
+
+void main()
+{
+    orbit_ray ray = orbit_ray_of();
+    cull_prepare(ray);
+    float k = 0.0;
+    if (u_orbit_resume > 0.0) {
+        bool done_before, leaving_before, found_before;
+        orbit_walk_read(k, done_before, leaving_before, found_before);
+        k = done_before ? k + 1.0 : k;
+    }
+    vec3 a;
+    float s;
+    vec2 q;
+    bool done, leaving;
+    candidate best;
+    orbit_walk(ray, k, a, s, q, done, leaving, best);
+    WRITE_TARGET0(orbit_walk_state(k, done, leaving, best));
+}
+#endif
