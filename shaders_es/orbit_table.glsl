@@ -152,11 +152,17 @@ float orbit_chord_end(orbit_ray ray, float k)
     return end;
 }
 
+// The point of the orbit where it has u, du/ds = q and its angle phi has cosine and sine cs.
+vec3 orbit_point_at(orbit_ray ray, vec2 q, vec2 cs)
+{
+    return u_model_center + (cs.x * ray.e1 + cs.y * ray.e2) / q.x;
+}
+
 // The point of the orbit at fraction s, where it has u, du/ds = q.
 vec3 orbit_point(orbit_ray ray, vec2 q, float s)
 {
     float phi = s * ray.phi_end;
-    return u_model_center + (cos(phi) * ray.e1 + sin(phi) * ray.e2) / q.x;
+    return orbit_point_at(ray, q, vec2(cos(phi), sin(phi)));
 }
 
 // d(point)/ds there.

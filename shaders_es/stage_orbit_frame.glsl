@@ -51,18 +51,10 @@ void main()
     bool done = false;
     bool leaving = false;
     candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
-#ifdef ORBIT_WALKED
-    // where the walk pass stopped, and every value of the walk there found again from it
     bool found_walking;
+#ifdef ORBIT_WALKED
+    // where the walk pass stopped
     orbit_walk_read(k, done, leaving, found_walking);
-    float s_start;
-    vec2 q_start;
-    a = orbit_walk_start(ray, k, s_start, q_start);
-    float k_moved = done ? k + 1.0 : k;
-    s = orbit_chord_end(ray, k_moved);
-    q = orbit_at(ray, s);
-    if (found_walking)
-        intersect_chord(a, orbit_point(ray, q, s), k, best);
     bool last_try = u_orbit_last_try > 0.0;
     {
 #else
@@ -71,9 +63,11 @@ void main()
     // what the chord met, the ray goes on from that chord's end (as the multipass scheme, whose
     // intersection stage keeps no such hit), up to ORBIT_HIT_TRIES walks.
     for (int attempt = 0; attempt < ORBIT_HIT_TRIES; attempt++) {
-        orbit_walk(ray, k, a, s, q, done, leaving, best);
+        orbit_walk(ray, k, done, leaving, found_walking);
         bool last_try = attempt == ORBIT_HIT_TRIES - 1;
 #endif
+        // every value of the walk where it stopped, found again from it
+        orbit_walk_found(ray, k, done, found_walking, a, s, q, best);
         // The chord the walk ended on starts at a, at fraction s_a of the orbit (chord k; as the
         // intersection stage of the multipass scheme finds it). Where it found a hit or fell in
         // (done), it ends at s, where the ray moved last; otherwise the ray stands at its end.

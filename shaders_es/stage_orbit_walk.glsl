@@ -14,24 +14,23 @@
 // Where a walk stopped, in one RGBA8 texel (4 bytes a ray, a tile-based GPU's bandwidth): its
 // chord k (two bytes: render.max_chords is at most 10000), how it stopped (1 at a hit or in the
 // capture sphere: done; 2 where the chord leaves the bounding sphere; 0 where the orbit's chords
-// ran out) and the object hit plus one (0: none). Whole numbers only: the finish finds every other
+// ran out) and whether it met an object (1) or not (0). Whole numbers only: the finish finds every other
 // value of the walk again from them, with the walk's own arithmetic (the orbit's fraction where
 // the ray moved last is the end of chord k where done, its start otherwise; the hit is chord k's,
 // intersect_chord again), so the rays stay bit for bit those of one pass. A fraction written as the
 // loop left it could come out of the loop at 16-bit precision (the precision note in common.glsl).
 uniform sampler2D u_orbit_walk;
 
-vec4 orbit_walk_state(float k, bool done, bool leaving, candidate best)
+vec4 orbit_walk_state(float k, bool done, bool leaving, bool found)
 {
     float k_high = floor(k / 256.0);
     float k_low = k - 256.0 * k_high;
     float how = done ? 1.0 : leaving ? 2.0 : 0.0;
-    vec4 bytes = vec4(k_low, k_high, how, best.slot + 1.0);
+    vec4 bytes = vec4(k_low, k_high, how, found ? 1.0 : 0.0);
     return bytes / 255.0;
 }
 
-// k, done, leaving and whether the walk found a hit (found: the object is the caller's to find
-// again, with the hit's fraction and key: intersect_chord)
+// k, done, leaving and whether the walk found a hit (orbit_walk_found finds it again)
 void orbit_walk_read(out float k, out bool done, out bool leaving, out bool found)
 {
     vec4 bytes = floor(fetch(u_orbit_walk) * 255.0 + 0.5);
@@ -49,6 +48,23 @@ vec3 orbit_walk_start(orbit_ray ray, float k, out float s, out vec2 q)
     q = orbit_at(ray, s);
     vec3 on_orbit = orbit_point(ray, q, s);
     return k <= 0.0 ? u_camera_position : on_orbit;
+}
+
+// What a walk that stopped at chord k found, again from k with the walk's own arithmetic: the
+// chord's start a, the orbit's fraction s where the ray moved last (the end of chord k where done,
+// its start otherwise) and u, du/ds = q there, and the hit best on chord k where found.
+void orbit_walk_found(orbit_ray ray, float k, bool done, bool found, out vec3 a, out float s, out vec2 q,
+                      out candidate best)
+{
+    float s_start;
+    vec2 q_start;
+    a = orbit_walk_start(ray, k, s_start, q_start);
+    float k_moved = done ? k + 1.0 : k;
+    s = orbit_chord_end(ray, k_moved);
+    q = orbit_at(ray, s);
+    best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
+    if (found)
+        intersect_chord(a, orbit_point(ray, q, s), k, best);
 }
 
 #ifndef ORBIT_WALKED
@@ -83,24 +99,27 @@ bool group_clear(orbit_ray ray, float s_a, vec2 q_a, vec2 cs_a, float s_b, vec2 
     return !turns && !may_fall && !may_leave && cull_group_clear(ray, ends, r_lo, r_hi);
 }
 
-// The walk from chord k (cull_prepare done): where it stops, k is the chord it stopped on and a
-// that chord's start; s is where the ray moved last and q = u, du/ds there (the end of chord k
-// where done, its start otherwise); done: the chord meets an object (best) or ends inside the
-// capture sphere; leaving: it leaves the bounding sphere (untested: the finish tests it up to the
-// crossing); neither: the orbit's chords are all walked.
-void orbit_walk(orbit_ray ray, inout float k, out vec3 a, out float s, out vec2 q, out bool done,
-                out bool leaving, out candidate best)
+// The walk from chord k (cull_prepare done): where it stops, k is the chord it stopped on; done: the
+// chord meets an object (found) or ends inside the capture sphere; leaving: it leaves the bounding
+// sphere (untested: the finish tests it up to the crossing); neither: the orbit's chords are all
+// walked. Nothing else comes out: the finish finds the rest again from k (orbit_walk_found).
+void orbit_walk(orbit_ray ray, inout float k, out bool done, out bool leaving, out bool found)
 {
     // What the loop carries from turn to turn is kept to what it cannot compute again: every value
     // live across its turns takes a register for the whole loop, and an exhibit's GPU has few
-    // (`make shader-stats`).
+    // (`make shader-stats`). The ray stands at the start of chord k: the camera, or the point of
+    // the orbit at s (q = u, du/ds there; cs_group = cos, sin of its angle), found from those at
+    // each turn rather than kept; the hit is found again after the walk.
     bool at_camera = k <= 0.0;
-    a = orbit_walk_start(ray, k, s, q);
+    float s;
+    vec2 q;
+    s = orbit_chord_end(ray, k);
+    q = orbit_at(ray, s);
     float phi = s * ray.phi_end;
-    vec2 cs_group = at_camera ? vec2(1.0, 0.0) : vec2(cos(phi), sin(phi));  // cos, sin of phi at s
+    vec2 cs_group = at_camera ? vec2(1.0, 0.0) : vec2(cos(phi), sin(phi));
     leaving = false;
     done = false;
-    best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
+    found = false;
     // Chords are taken ORBIT_GROUP at a time. At a group's start a turn looks at the group's last
     // end only: where the group can meet nothing, fall in or leave (group_clear), the ray moves
     // there at once, to the point its last chord would have reached; otherwise the next turns
@@ -111,34 +130,34 @@ void orbit_walk(orbit_ray ray, inout float k, out vec3 a, out float s, out vec2 
     for (int i = 0; i < 2 * MAX_SEGMENTS + 2; i++) {
         if (k >= ray.segments || leaving || done)
             break;
+        vec3 on_orbit = orbit_point_at(ray, q, cs_group);
+        vec3 a = k <= 0.0 ? u_camera_position : on_orbit;
         bool probe = k >= k_end;
         float group_end = min(k + ORBIT_GROUP, ray.segments);
         float k1 = probe ? group_end : k + 1.0;
         float s1 = orbit_chord_end(ray, k1);
         vec2 q1 = orbit_at(ray, s1);
-        vec3 p1 = orbit_point(ray, q1, s1);
         float phi1 = s1 * ray.phi_end;
         vec2 cs1 = vec2(cos(phi1), sin(phi1));
+        vec3 p1 = orbit_point_at(ray, q1, cs1);
         bool clear = group_clear(ray, s, q, cs_group, s1, q1, cs1);
         bool passes = probe && clear;
         bool chord = !probe;
         k_end = probe ? group_end : k_end;
-        // a leaving chord moves nothing: the ray stands at its start (a, s, k)
+        // a leaving chord moves nothing: the ray stands at its start (k)
         leaving = chord && outside_bounds(p1);
         bool tested = chord && !leaving;
         bool moves = passes || tested;
-        q = moves ? q1 : q;
-        s = moves ? s1 : s;
-        cs_group = moves ? cs1 : cs_group;
-        candidate trial = best;
+        candidate trial = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
         intersect_chord(a, p1, k, trial);
-        best.key = tested ? trial.key : best.key;
-        best.t = tested ? trial.t : best.t;
-        best.slot = tested ? trial.slot : best.slot;
-        done = best.slot >= 0.0 || (tested && captured(p1));
-        // a chord with a hit (or that falls in) keeps its start: the ray stands at a, chord k
-        a = moves && !done ? p1 : a;
-        k = moves && !done ? k1 : k;
+        found = tested && trial.slot >= 0.0;
+        done = found || (tested && captured(p1));
+        // a chord with a hit (or that falls in) keeps its start: the ray stands at chord k
+        bool onwards = moves && !done;
+        q = onwards ? q1 : q;
+        s = onwards ? s1 : s;
+        cs_group = onwards ? cs1 : cs_group;
+        k = onwards ? k1 : k;
         // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
         if (k >= ray.segments || leaving || done)
             break;
@@ -161,12 +180,8 @@ void main()
         orbit_walk_read(k, done_before, leaving_before, found_before);
         k = done_before ? k + 1.0 : k;
     }
-    vec3 a;
-    float s;
-    vec2 q;
-    bool done, leaving;
-    candidate best;
-    orbit_walk(ray, k, a, s, q, done, leaving, best);
-    WRITE_TARGET0(orbit_walk_state(k, done, leaving, best));
+    bool done, leaving, found;
+    orbit_walk(ray, k, done, leaving, found);
+    WRITE_TARGET0(orbit_walk_state(k, done, leaving, found));
 }
 #endif
