@@ -178,43 +178,92 @@ uniform vec4 u_object_plane[BATCH_SIZE];  // a flat object's unit normal, 1; 0 f
 
 #if defined(SINGLE_PASS) && defined(ORBIT_HITS)
 // Where the chords of the single pass on exact orbits can meet an object (the single pass passes
-// over a group of chords that can meet none: group_clear in stage_orbit_frame.glsl). Every chord
+// over a group of chords that can meet none: group_clear in stage_orbit_walk.glsl). Every chord
 // of a ray joins two points of its orbit, which lies in the plane of e1 and e2 through the mass,
 // at angles phi_a < phi_b about the mass (phi from e1 towards e2) less than half a turn apart:
 // the chord stays in that plane, inside the wedge between the two angles. An object's bounding
 // ball cuts the plane in a disc; where the ball misses the plane, or the disc lies outside the
-// wedge (the disc is seen from the mass within +- asin(radius / distance) of its centre's angle),
-// no chord of that wedge can meet the object. The balls are taken a little larger (CULL_MARGIN of
-// their distance from the mass) than the objects, and the angles wider (CULL_ANGLE_MARGIN), than
-// a float rounding of the chords' points could move them. Each chord's own tests are not guarded
-// by it: llvmpipe runs the body of an `if` for every pixel group whatever its condition, so such
-// a guard only added its own arithmetic there (docs/PIPELINE.md).
+// wedge, no chord of that wedge can meet the object. The balls are taken a little larger
+// (ORBIT_CULL_MARGIN of their distance from the mass, src/render/stage_intersect.c) than the
+// objects, and the discs wider (CULL_ANGLE_MARGIN of their distance: that angle seen from the
+// mass) than a float rounding of the chords' points could move them. Each chord's own tests are
+// not guarded by it: llvmpipe runs the body of an `if` for every pixel group whatever its
+// condition, so such a guard only added its own arithmetic there (docs/PIPELINE.md).
+// The disc is found at each test from the ray's e2 and two vectors an object, the same for every
+// pixel (computed once a frame on the CPU in double): kept per ray, four floats an object stayed
+// live through the whole walk, and made an exhibit's GPU spill (`make shader-stats`).
 const float CULL_TURN = 6.28318530717959;
-const float CULL_MARGIN = 1e-4;
 const float CULL_ANGLE_MARGIN = 1e-4;
+const float CULL_MARGIN = 1e-4;          // of a plane's distances (ORBIT_CULL_MARGIN's for the balls)
+uniform vec4 u_cull_ball[BATCH_SIZE];     // the ball's centre less the mass's centre (c), its radius
+uniform vec4 u_cull_across[BATCH_SIZE];   // c x e1 (e1: from the mass to the camera), and e1 . c
+
+// The disc object `slot`'s ball cuts from the ray's orbit plane: its centre (x, y), x along e1 and y
+// along e2, its radius (< 0 where the ball misses the plane) and the centre's distance from the mass.
+vec4 cull_disc_of(orbit_ray ray, int slot)
+{
+    vec4 ball = u_cull_ball[slot];
+    vec4 across = u_cull_across[slot];
+    float x = across.w;
+    float y = dot(ray.e2, ball.xyz);
+    float off_plane = dot(ray.e2, across.xyz);   // along e1 x e2
+    float in_plane = sqrt(max(ball.w * ball.w - off_plane * off_plane, 0.0));
+    float rho = sqrt(x * x + y * y);
+    float none = -1.0;
+    return vec4(x, y, abs(off_plane) <= ball.w ? in_plane : none, rho);
+}
+
+#ifdef ORBIT_WALK_PASS
+// The walk's own pass (an exhibit's GPU): each disc found where it is tested, and met against the
+// wedge and the ring in vector form, without an angle, so the loop keeps nothing per object.
+void cull_prepare(orbit_ray ray)
+{
+}
+
+// Whether the disc of object `slot` meets the wedge of the group (from phi_a, whose cosine and
+// sine are ends.xy, to phi_b, ends.zw) and the ring r_in .. r_hi.
+bool cull_disc_meets(orbit_ray ray, int slot, vec4 ends, float phi_a, float span, float r_in, float r_hi)
+{
+    vec4 disc = cull_disc_of(ray, slot);
+    float x = disc.x;
+    float y = disc.y;
+    float in_plane = disc.z;
+    float rho = disc.w;
+    bool ring = rho + in_plane >= r_in && rho - in_plane <= r_hi;
+    // the wedge is convex (less than half a turn): the disc meets it where its centre lies inside,
+    // or within reach of either edge, the rays from the mass along the two ends
+    float reach = in_plane + CULL_ANGLE_MARGIN * rho;
+    float from_a = ends.x * y - ends.y * x;
+    float to_b = x * ends.w - y * ends.z;
+    float along_a = ends.x * x + ends.y * y;
+    float along_b = ends.z * x + ends.w * y;
+    bool inside = from_a >= 0.0 && to_b >= 0.0;
+    float edge_a = along_a >= 0.0 ? abs(from_a) : rho;
+    float edge_b = along_b >= 0.0 ? abs(to_b) : rho;
+    bool wedge = span >= 0.5 * CULL_TURN || inside || edge_a <= reach || edge_b <= reach;
+    return in_plane >= 0.0 && wedge && ring;
+}
+#else
+// In the frame's pass (render.orbit_walk = inline, a CPU rasteriser's): each disc found once a ray,
+// from the objects' own geometry, and kept as the angles its wedge spans and the radii its ring
+// spans, which llvmpipe holds in its registers: a test is then a few comparisons (the discs of the
+// walk's own pass, found at each test, made llvmpipe's frames slower).
+const float CULL_MARGIN_BALL = 1e-4;      // ORBIT_CULL_MARGIN
 float cull_start[BATCH_SIZE];   // per object: where its wedge starts, in [0, 2 pi)
 float cull_width[BATCH_SIZE];   // its width (beyond a turn: every angle); < 0: misses the plane
-float cull_phi_a;               // the chords looked at span phi_a .. phi_b (set by the caller)
-float cull_phi_b;
+float cull_rho_lo[BATCH_SIZE];  // its ring
+float cull_rho_hi[BATCH_SIZE];
 float cull_wedge_start;
 float cull_wedge_width;
-// For a group of chords (group_clear): each object's ball cuts the orbit's plane in a disc that
-// spans radii rho_lo .. rho_hi about the mass; a flat object's plane is at signed distance
-// d + r (A cos phi + B sin phi) from the point at (r, phi) of the orbit's plane (cull_group_meets
-// finds d, A and B where it needs them, from the object's plane, u_object_plane: kept for every
-// object through the orbit's loop, five more floats a flat object took registers an exhibit's GPU
-// does not have, `make shader-stats`).
-float cull_rho_lo[BATCH_SIZE];
-float cull_rho_hi[BATCH_SIZE];
 float cull_wedge_rho_lo;
 float cull_wedge_rho_hi;
 
-// The wedge of the ball (centre, radius) about the mass in the orbit's plane.
+// The wedge and ring of the ball (centre, radius) about the mass in the orbit's plane.
 void cull_wedge(orbit_ray ray, vec3 centre, float radius)
 {
     vec3 from_mass = centre - u_model_center;
     float distance = length(from_mass);
-    float r = radius + CULL_MARGIN * (distance + radius);
+    float r = radius + CULL_MARGIN_BALL * (distance + radius);
     vec3 normal = cross(ray.e1, ray.e2);
     float off_plane = dot(normal, from_mass);
     float x = dot(ray.e1, from_mass);
@@ -226,15 +275,6 @@ void cull_wedge(orbit_ray ray, vec3 centre, float radius)
     cull_wedge_width = abs(off_plane) > r ? -1.0 : rho <= in_plane ? 2.0 * CULL_TURN : 2.0 * half_width;
     cull_wedge_rho_lo = rho - in_plane;
     cull_wedge_rho_hi = rho + in_plane;
-}
-
-// Whether a chord within phi_a .. phi_b can meet object `slot`, by its wedge.
-bool cull_meets(int slot)
-{
-    float span = cull_phi_b - cull_phi_a;
-    float from_start = mod(cull_phi_a - cull_start[slot], CULL_TURN);
-    bool overlaps = from_start <= cull_width[slot] || from_start + span >= CULL_TURN;
-    return span >= 0.5 * CULL_TURN || (cull_width[slot] >= 0.0 && overlaps);
 }
 
 // Each object's wedge for this ray: its bounding ball's (BATCH_TESTS, each test replaced by it).
@@ -260,9 +300,23 @@ void cull_prepare(orbit_ray ray)
 #undef TEST_RECT
 #undef TEST_TRIANGLE
 #undef CULL_KEEP
+#define TEST_SPHERE(slot) TEST_SPHERE_FULL(slot)
+#define TEST_DISK(slot) TEST_DISK_FULL(slot)
+#define TEST_RECT(slot) TEST_RECT_FULL(slot)
+#define TEST_TRIANGLE(slot) TEST_TRIANGLE_FULL(slot)
 }
 
-// A group of chords, whose ends all lie at angles phi_a .. phi_b (cull_phi_a, cull_phi_b) and at
+bool cull_disc_meets(orbit_ray ray, int slot, vec4 ends, float phi_a, float span, float r_in, float r_hi)
+{
+    float from_start = mod(phi_a - cull_start[slot], CULL_TURN);
+    bool overlaps = from_start <= cull_width[slot] || from_start + span >= CULL_TURN;
+    bool wedge = span >= 0.5 * CULL_TURN || (cull_width[slot] >= 0.0 && overlaps);
+    bool ring = cull_rho_hi[slot] >= r_in && cull_rho_lo[slot] <= r_hi;
+    return wedge && ring;
+}
+#endif
+
+// A group of chords, whose ends all lie at angles phi_a .. phi_b (span = phi_b - phi_a) and at
 // radii r_lo .. r_hi from the mass, where (cos, sin) of phi_a and phi_b are ends.xy and .zw: can
 // any of its chords meet object `slot`? Each chord joins two such ends, so it stays inside the
 // wedge, at radii of at least r_in = r_lo cos((phi_b - phi_a) / 2), and on the side of a plane that
@@ -271,10 +325,10 @@ void cull_prepare(orbit_ray ray)
 // distance, linear in the point, is extreme at a corner of the region or where the outer arc
 // faces the plane's normal (A, B): where that direction lies between the two ends, by the signs of
 // their cross products with it; a group of half a turn or more may face it anywhere).
-bool cull_group_meets(orbit_ray ray, int slot, bool flat_object, vec4 ends, float r_lo, float r_in, float r_hi)
+bool cull_group_meets(orbit_ray ray, int slot, bool flat_object, vec4 ends, float phi_a, float span, float r_lo,
+                      float r_in, float r_hi)
 {
-    float span = cull_phi_b - cull_phi_a;
-    bool ring = cull_rho_hi[slot] >= r_in && cull_rho_lo[slot] <= r_hi;
+    // a flat object's plane against the region
     vec3 n = flat_object ? u_object_plane[slot].xyz : vec3(0.0);
     float along_e1 = dot(n, ray.e1);
     float along_e2 = dot(n, ray.e2);
@@ -293,23 +347,22 @@ bool cull_group_meets(orbit_ray ray, int slot, bool flat_object, vec4 ends, floa
     float d_hi = plane.x + max(r_lo * f_max, r_hi * f_max);
     float margin = CULL_MARGIN * (abs(plane.x) + r_hi * plane.w);
     bool crosses = d_lo <= margin && d_hi >= -margin;
-    return cull_meets(slot) && ring && crosses;
+    return cull_disc_meets(ray, slot, ends, phi_a, span, r_in, r_hi) && crosses;
 }
 
 // Whether a group of chords with ends as cull_group_meets takes them can meet no object of the
 // batch.
-bool cull_group_clear(orbit_ray ray, vec4 ends, float r_lo, float r_hi)
+bool cull_group_clear(orbit_ray ray, vec4 ends, float phi_a, float span, float r_lo, float r_hi)
 {
     bool meets = false;
     // the nearest a chord of the group comes to the mass: the same for every object
-    float span = cull_phi_b - cull_phi_a;
     float r_in = span < 0.5 * CULL_TURN ? r_lo * cos(0.5 * span) : 0.0;
 #undef TEST_SPHERE
 #undef TEST_DISK
 #undef TEST_RECT
 #undef TEST_TRIANGLE
-#define TEST_SPHERE(n) meets = meets || cull_group_meets(ray, n, false, ends, r_lo, r_in, r_hi);
-#define TEST_DISK(n) meets = meets || cull_group_meets(ray, n, true, ends, r_lo, r_in, r_hi);
+#define TEST_SPHERE(n) meets = meets || cull_group_meets(ray, n, false, ends, phi_a, span, r_lo, r_in, r_hi);
+#define TEST_DISK(n) meets = meets || cull_group_meets(ray, n, true, ends, phi_a, span, r_lo, r_in, r_hi);
 #define TEST_RECT(n) TEST_DISK(n)
 #define TEST_TRIANGLE(n) TEST_DISK(n)
     BATCH_TESTS

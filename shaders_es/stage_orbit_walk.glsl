@@ -93,13 +93,13 @@ bool group_clear(orbit_ray ray, float s_a, vec2 q_a, vec2 cs_a, float s_b, vec2 
                     (nearest_capture <= 0.0 || nearest_capture * nearest_capture <= u_capture_radius2);
     float farthest_bound = length(u_model_center - u_bound_center) + r_hi;
     bool may_leave = farthest_bound * farthest_bound >= u_bound_radius2 * (1.0 - GROUP_RADIUS_MARGIN);
-    cull_phi_a = s_a * ray.phi_end;
-    cull_phi_b = s_b * ray.phi_end;
+    float phi_a = s_a * ray.phi_end;
+    float span = s_b * ray.phi_end - phi_a;
     vec4 ends = vec4(cs_a, cs_b);
-    return !turns && !may_fall && !may_leave && cull_group_clear(ray, ends, r_lo, r_hi);
+    return !turns && !may_fall && !may_leave && cull_group_clear(ray, ends, phi_a, span, r_lo, r_hi);
 }
 
-// The walk from chord k (cull_prepare done): where it stops, k is the chord it stopped on; done: the
+// The walk from chord k: where it stops, k is the chord it stopped on; done: the
 // chord meets an object (found) or ends inside the capture sphere; leaving: it leaves the bounding
 // sphere (untested: the finish tests it up to the crossing); neither: the orbit's chords are all
 // walked. Nothing else comes out: the finish finds the rest again from k (orbit_walk_found).

@@ -13,6 +13,10 @@
 #define MATERIAL_VECS 5         /* stages.h: intersect_pack_material */
 #define MOTION_VECS 2
 #define CHORD_VECS 3            /* the integrated single pass's cull: ball, plane, scales */
+#define ORBIT_CULL_VECS 4       /* the orbit frame's: ball, plane, the ball about the mass, across */
+/* how much larger than an object the orbit frame's cull takes its ball: of its distance from the
+ * mass and its radius (cull_group_meets in shaders_es/stage_intersect.glsl) */
+#define ORBIT_CULL_MARGIN 1e-4
 /* shaders_es/stage_intersect.glsl's CHORD_CULL_POSITION_MARGIN */
 #define CHORD_CULL_POSITION_MARGIN 1e-5
 /* uniform vectors a pass needs besides its objects: lights, ambient, segment, sizes, camera, observer
@@ -88,6 +92,21 @@ static void chord_cull_pack(const struct object *o, float ball[4], float plane[4
     pack3(plane, bound.normal, bound.flat ? 1.0 : 0.0);
     scale[0] = (float)(1.0 / fmax(bound.radius, 1e-30));
     scale[1] = (float)(CHORD_CULL_POSITION_MARGIN * (fabs(c.x) + fabs(c.y) + fabs(c.z)));
+}
+
+/* The same ball about the mass for the orbit frame's cull (cull_group_meets): its centre less the
+ * mass's (c), its radius with ORBIT_CULL_MARGIN, and c x e1 and e1 . c, where e1 is the unit vector
+ * from the mass to the camera (every ray's orbit plane holds it): with a ray's own e2 they give the
+ * disc the ball cuts from that plane, two dot products a test. */
+static void orbit_cull_pack(const struct scene *s, const struct object *o, float ball[4], float across[4])
+{
+    struct object_bound bound;
+    object_bound(o, &bound);
+    vec3d c = v3_sub(bound.centre, s->model.center);
+    vec3d e1 = v3_normalize(v3_sub(s->camera.position, s->model.center));
+    double radius = bound.radius + ORBIT_CULL_MARGIN * (v3_len(c) + bound.radius);
+    pack3(ball, c, radius);
+    pack3(across, v3_cross(c, e1), v3_dot(e1, c));
 }
 
 void intersect_pack_material(const struct renderer *r, const struct object *o, int object_id,
@@ -181,6 +200,14 @@ void object_batch_set_uniforms(const struct program_uniforms *p, const void *arg
         glUniform4fv(balls, b->count, &ball[0][0]);
         glUniform4fv(program_uniform(p, "u_object_plane"), b->count, &plane[0][0]);
         glUniform2fv(program_uniform(p, "u_chord_scale"), b->count, &chord_scale[0][0]);
+    }
+    GLint cull_balls = program_uniform(p, "u_cull_ball");
+    if (cull_balls >= 0) {
+        float ball[OBJECT_BATCH_MAX][4], across[OBJECT_BATCH_MAX][4];
+        for (int i = 0; i < b->count; i++)
+            orbit_cull_pack(s, &s->objects[b->object[i]], ball[i], across[i]);
+        glUniform4fv(cull_balls, b->count, &ball[0][0]);
+        glUniform4fv(program_uniform(p, "u_cull_across"), b->count, &across[0][0]);
     }
     GLint textures = program_uniform(p, "u_textures");
     if (textures >= 0)
@@ -286,7 +313,7 @@ int object_batch_all(const struct renderer *r, struct object_batch *b)
 static int pass_capacity(const struct renderer *r, int single_pass)
 {
     int per_object = GEOMETRY_VECS + MATERIAL_VECS + (scene_has_moving_objects(r->scene) ? MOTION_VECS : 0) +
-                     (single_pass && !r->exact_orbits ? CHORD_VECS : 0);
+                     (single_pass ? (r->exact_orbits ? ORBIT_CULL_VECS : CHORD_VECS) : 0);
     int reserved = RESERVED_UNIFORM_VECS + (r->exact_orbits ? ORBIT_UNIFORM_VECS : 0) +
                    (single_pass ? FRAME_UNIFORM_VECS : 0);
     int by_uniforms = (r->caps.max_fragment_uniform_vectors - reserved) / per_object;
