@@ -70,6 +70,12 @@ static void print_caps(const struct gl_caps *c)
                c->long_loops_why);
     else
         printf("pipeline:        %s; the single pass only when forced (%s)\n", else_path, c->long_loops_why);
+    /* render.orbit_walk = auto (stage_frame.c: orbit_walk_separate) */
+    if (c->cpu_rasterizer)
+        printf("orbit walk:      in the frame's pass (a CPU rasteriser: render.orbit_walk = auto takes inline)\n");
+    else
+        printf("orbit walk:      a pass of its own, then a pass that finishes each ray (a GPU: render.orbit_walk = "
+               "auto takes separate)\n");
 }
 
 /* The sources of the stage's programs, as compiled, in order. */

@@ -148,6 +148,7 @@ for walk_case in "egl" "osmesa" "egl BT_FAULT=occlusion_query"; do
         --dump $TMP/ow_i.dump >/dev/null 2>&1 && cmp $TMP/ow_s.png $TMP/ow_i.png && cmp $TMP/ow_s.dump $TMP/ow_i.dump && \
         echo same \$(grep -o '[0-9]* passes' $TMP/ow_s.txt)"
 done
+check "info says where the orbit walk runs" 0 "^orbit walk: +in the frame's pass \\(a CPU rasteriser" -- $BT info --backend egl
 check "info --shader orbit_walk compiles" 0 "^compiled$" -- sh -c "$BT info --shader orbit_walk --scene $B \
     --set render.orbit_walk=separate --no-mrt > '$TMP/walk.frag' && grep -q 'void main' '$TMP/walk.frag' && \
     glslangValidator -S frag '$TMP/walk.frag' > '$TMP/glslang_walk.log' && echo compiled || cat '$TMP/glslang_walk.log'"
