@@ -142,8 +142,10 @@ void main()
     WRITE_TARGET0(found ? new_hit : end_hit);
     WRITE_TARGET1(vec4(end, steps));
 #elif defined(FRAME_COLOUR)
-    // only the image is read: the sky stage's final colour, here (stage_frame.c)
-    WRITE_TARGET0(sky_final_colour(found ? new_image : end_image, tangent));
+    // only the image is read: the sky stage's final colour, here (stage_frame.c); the direction
+    // matters only for the sky, where the ray leaves along its direction at infinity, so the orbit
+    // where the walk stopped need not stay live through the hit's refinement for it
+    WRITE_TARGET0(sky_final_colour(found ? new_image : end_image, escape));
 #else
     float reached = leaves ? 1.0 : s;
     WRITE_TARGET0(found ? new_image : end_image);
