@@ -38,6 +38,27 @@ mkdir -p "$TMP/absent"
 check "kiosk without devices" 0 "^1 1 1 1 2 frames$" -- sh -c "$BT kiosk --config tests/kiosk/absent_devices.conf --out $TMP/absent --frames 2 > $TMP/absent/log 2>&1;
     for n in speed_knob mass_knob next_button box; do printf '%s ' \$(grep -c \"input \$n\" $TMP/absent/log); done;
     echo \$(ls $TMP/absent/frame_*.png | wc -l) frames"
+# the walk along exact orbits in a pass of its own (a GPU's default) and in the frame's pass
+# (llvmpipe's): the kiosk's frames byte for byte the same, previews, refined bands, both knobs, a
+# scene change, the effects and the pipeline view (its hit and position passes) included
+mkdir -p "$TMP/walk/scenes" "$TMP/walk/separate" "$TMP/walk/inline"
+ln -s "$PWD/assets/sky" "$TMP/walk/sky" && ln -s "$PWD/assets/textures" "$TMP/walk/textures"
+for walk in separate inline; do
+    for scene in schwarzschild blackhole_flight; do
+        sed "s/^\[render\]\$/[render]\norbit_walk = $walk/" "assets/scenes/$scene.scene" > "$TMP/walk/scenes/${scene}_$walk.scene"
+    done
+    sed "s|^scenes = .*|scenes = $TMP/walk/scenes/schwarzschild_$walk.scene, $TMP/walk/scenes/blackhole_flight_$walk.scene|;
+         s|^start_scene = .*|start_scene = 0|; /^assets_root/d; s|path = visitor.events|path = $PWD/tests/kiosk/visitor.events|;
+         s|\.\./\.\./assets|$PWD/assets|g" $K > "$TMP/walk/$walk.conf"
+done
+mkdir -p "$TMP/walk/programs"
+check "kiosk frames the same with the orbit walk separate and inline" 0 "^8 frames, 8 the same, walk pass built$" -- sh -c "
+    BT_SHADER_DUMP=$TMP/walk/programs $BT kiosk --config $TMP/walk/separate.conf --out $TMP/walk/separate \
+        --frames 8 >/dev/null 2>&1 &&
+    $BT kiosk --config $TMP/walk/inline.conf --out $TMP/walk/inline --frames 8 >/dev/null 2>&1 &&
+    n=0 && same=0 && for f in $TMP/walk/separate/frame_*.png; do n=\$((n + 1));
+        cmp -s \$f $TMP/walk/inline/\$(basename \$f) && same=\$((same + 1)); done;
+    ls $TMP/walk/programs | grep -q stage_orbit_walk && built='walk pass built'; echo \$n frames, \$same the same, \$built"
 # a scene this GPU cannot draw is left out at start with the reason, the others are shown; where it
 # can draw none, the kiosk stops once with exit 3, which the service does not restart
 mkdir -p "$TMP/gpu/scenes" "$TMP/gpu/out" "$TMP/gpu/none" && ln -s "$PWD/assets/sky" "$TMP/gpu/sky" && ln -s "$PWD/assets/textures" "$TMP/gpu/textures"
