@@ -34,6 +34,21 @@ int pass_move_rays(struct renderer *r, const struct stage_program *sp, int segme
     return 0;
 }
 
+int pass_early_z_begin(struct renderer *r, GLuint target, struct error *e)
+{
+    GLuint fbo = raystate_fbo(&r->rs, target, 0, e);
+    if (!fbo)
+        return -1;
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glDepthMask(GL_TRUE);
+    glClearDepthf(1.0f);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    return 0;
+}
+
 int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GLuint out1,
              const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
              struct error *e)

@@ -224,16 +224,8 @@ static int run_segments(struct renderer *r, int fused, segment_hook hook, void *
     int early_z = s->render.early_z;
     if (early_z) {
         /* every ray-state framebuffer shares the depth buffer: 1 = travelling */
-        GLuint fbo = raystate_fbo(&r->rs, r->rs.result_hit, 0, e);
-        if (!fbo)
+        if (pass_early_z_begin(r, r->rs.result_hit, e) != 0)
             return -1;
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-        glDepthMask(GL_TRUE);
-        glClearDepthf(1.0f);
-        glClear(GL_DEPTH_BUFFER_BIT);
-        glDepthMask(GL_FALSE);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
     }
     int orbit = r->exact_orbits;
     if (orbit && orbit_prepare(r, e) != 0)

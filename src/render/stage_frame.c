@@ -148,16 +148,8 @@ static int orbit_walk_passes(struct renderer *r, struct frame_args *a, GLuint ou
     if (!finish)
         return -1;
     GLuint state[2] = {rs->orbit_walk[0], rs->orbit_walk[1]};
-    GLuint fbo = raystate_fbo(rs, state[0], 0, e);
-    if (!fbo)
+    if (pass_early_z_begin(r, state[0], e) != 0)
         return -1;
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glDepthMask(GL_TRUE);
-    glClearDepthf(1.0f);
-    glClear(GL_DEPTH_BUFFER_BIT);
-    glDepthMask(GL_FALSE);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
     int query = r->caps.occlusion_query;
     if (query && !r->queries[0])
         glGenQueries(2, r->queries);

@@ -71,6 +71,10 @@ struct pass_input {
 
 typedef void (*set_uniforms_fn)(const struct program_uniforms *program, const void *arg);
 
+/* Every ray travelling: the depth buffer that every ray-state framebuffer shares cleared to 1 (through
+ * TARGET's framebuffer), and the early-z test on, GL_LESS, without depth writes until a stage that
+ * ends rays asks for them (depth_write_last). */
+int pass_early_z_begin(struct renderer *r, GLuint target, struct error *e);
 /* Draw the quad with each program of the stage into out0 (and out1), inputs bound as samplers. */
 int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GLuint out1,
              const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
