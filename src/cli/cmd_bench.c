@@ -241,11 +241,18 @@ int cmd_bench(int argc, char **argv)
     snprintf(b.backend, sizeof b.backend, "%s", b.ctx->backend);
     snprintf(b.renderer, sizeof b.renderer, "%s", (const char *)glGetString(GL_RENDERER));
     struct error md_err;
-    b.md = out ? bench_file(&b, md_path, &md_err) : stdout;
+    /* without --out the report goes to standard output, also only whole: kept in memory until the
+     * bench has succeeded */
+    char *report = NULL;
+    size_t report_len = 0;
+    b.md = out ? bench_file(&b, md_path, &md_err) : open_memstream(&report, &report_len);
     if (!b.md) {
-        fprintf(stderr, "bentray bench: %s\n", md_err.message);
+        if (out)
+            fprintf(stderr, "bentray bench: %s\n", md_err.message);
+        else
+            fprintf(stderr, "bentray bench: out of memory for the report\n");
         gl_context_destroy(b.ctx);
-        return exit_code_of(&md_err);
+        return out ? exit_code_of(&md_err) : EXIT_RUNTIME;
     }
     section_steps[5] = bench_pareto_count;
     for (int k = 0; k < N_SECTIONS; k++)
@@ -268,8 +275,14 @@ int cmd_bench(int argc, char **argv)
     if (out && rc == EXIT_OK && !kiosk_only)
         include_shader_stats(&b);
     fprintf(b.md, "Total bench time: %.0f s.\n", clock_seconds() - b.started);
-    if (out)
-        fclose(b.md);
+    fclose(b.md);
+    if (!out) {
+        if (rc == EXIT_OK && report && (fwrite(report, 1, report_len, stdout) != report_len || fflush(stdout) != 0)) {
+            fprintf(stderr, "bentray bench: writing the report to standard output: %s\n", strerror(errno));
+            rc = EXIT_RUNTIME;
+        }
+        free(report);
+    }
     gl_context_destroy(b.ctx);
     /* the report and its data are written only whole: a bench that failed or was interrupted
      * leaves the earlier ones as they were */

@@ -374,6 +374,8 @@ check "bench kiosk to stdout" 0 "^\| schwarzschild.scene( \| [0-9.]+){6} \| [0-9
 # the shipped configuration is found from the program's own place, whatever the working directory
 check "bench kiosk elsewhere" 0 "--config $(pwd)/kiosk/kiosk.conf" -- sh -c "cd '$TMP' && $(cd "$(dirname "$BT")" && pwd)/$(basename "$BT") bench --kiosk --quick"
 check "bench kiosk config missing" 2 "^bentray bench: kiosk: $TMP/none.conf" -- $BT bench --kiosk --quick --config "$TMP/none.conf"
+# ... and nothing of a report on standard output: a report is written whole or not at all
+check "bench kiosk failed writes no report" 0 "^0 bytes$" -- sh -c "$BT bench --kiosk --quick --config '$TMP/none.conf' 2>/dev/null | wc -c | sed 's/\$/ bytes/'"
 check "bench no overwrite" 2 "exists; pass --force" -- $BT bench --out "$TMP/bench" --quick
 # the report is written whole or not at all: an interrupt keeps the earlier one byte for byte, a
 # replaced report keeps its mode, and a link at a data file is replaced, its target untouched
