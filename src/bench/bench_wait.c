@@ -2,9 +2,9 @@
  * each time (this program itself, started from its own path), against the start of such a process
  * (a 2x2 frame of starflight.scene) and the frame drawn warm in a running process. The difference
  * is what a fresh process pays besides its frame: the GL context, shaders (compiled, or loaded from
- * Mesa's cache), the orbit table, the outcomes read back for the summary, the PNG. An interrupt
- * from the terminal reaches the child too (one process group); its image file has no name, so
- * nothing is left behind. */
+ * Mesa's cache), the orbit table (begun before the context, render/frame.c), the outcomes read back
+ * for the summary, the PNG. An interrupt from the terminal reaches the child too (one process
+ * group); its image file has no name, so nothing is left behind. */
 #include <errno.h>
 #include <fcntl.h>
 #include <spawn.h>
@@ -187,8 +187,8 @@ static int wait_on(struct bench *b, struct scene *s, struct error *e)
                    "written to standard output, a file), against the warm frame, the image alone drawn in a running process "
                    "(as the kiosk draws it, `bentray bench`'s own timing). Median of %d runs. What a fresh "
                    "process adds to its frame: the GL context, the shaders (loaded from Mesa's cache, or "
-                   "compiled where it is off), the orbit table, the rays' outcomes read back for the "
-                   "summary, the PNG.\n\n| what | seconds | PNG bytes |\n|---|---|---|\n",
+                   "compiled where it is off), the orbit table (built on a second thread while the context "
+                   "is made), the rays' outcomes read back for the summary, the PNG.\n\n| what | seconds | PNG bytes |\n|---|---|---|\n",
             s->render.width, s->render.height, b->runs);
     fprintf(b->md, "| the warm frame (%s, %ld pass%s) | %.3f | |\n", warm.path, warm.passes, warm.passes == 1 ? "" : "es",
             warm.median);

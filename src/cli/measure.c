@@ -78,6 +78,7 @@ int measure_gpu(const struct scene *s, const char *backend, int need_state, enum
     res.rgba = NULL;                /* kept; the ray state is not */
     res.color = NULL;
     m->seconds = res.seconds;
+    m->compile_seconds = res.compile_seconds;
     m->work = res.passes;
     m->nonfinite = count_nonfinite(&res);
     char samples[48];

@@ -22,6 +22,7 @@ struct measured {
     unsigned char *rgba;    /* the image (owned) */
     float *color;           /* the same unclamped, RGBA floats, when asked for (hdr); else NULL */
     double seconds;         /* GPU: the passes, glFinish included; CPU: wall time of the render */
+    double compile_seconds; /* GPU: of seconds, compiling the shaders (render_result); CPU: 0 */
     long work;              /* GPU: quads drawn; CPU: accepted integration steps */
     char engine[40];        /* "gpu fp32+mrt", "cpu dopri5 rtol 1e-10" */
     char device[160];       /* GL renderer and back-end, or the CPU thread count */

@@ -40,3 +40,17 @@ int read_float_pixels(int x, int y, int w, int h, float *rgba)
     free(half);
     return ok ? 0 : -1;
 }
+
+int rows_flip(void *pixels, size_t row_bytes, int rows)
+{
+    unsigned char *row = malloc(row_bytes ? row_bytes : 1), *p = pixels;
+    if (!row)
+        return -1;
+    for (int top = 0, bottom = rows - 1; top < bottom; top++, bottom--) {
+        memcpy(row, p + (size_t)top * row_bytes, row_bytes);
+        memcpy(p + (size_t)top * row_bytes, p + (size_t)bottom * row_bytes, row_bytes);
+        memcpy(p + (size_t)bottom * row_bytes, row, row_bytes);
+    }
+    free(row);
+    return 0;
+}

@@ -1,6 +1,7 @@
 #include "io/clock.h"
 #include "render/frame.h"
 #include "render/frame_bands.h"
+#include "render/orbit_store.h"
 #include "io/sample_average.h"
 #include "results/dump_scene.h"
 #include "results/star_light.h"
@@ -105,6 +106,7 @@ static int run_samples(struct renderer *r, const struct scene *s, const struct s
         if (rc == 0) {
             sample_average_add(&sum, sample.rgba, sample.color);
             out->seconds += sample.seconds;
+            out->compile_seconds += sample.compile_seconds;
             out->sky_seconds += sample.sky_seconds;
             out->passes += sample.passes;
         }
@@ -137,12 +139,20 @@ int render_frame(const struct scene *s, const struct frame_request *req, struct 
                  struct frame_info *info, struct error *e)
 {
     error_clear(e);
+    /* the orbit table is built on the CPU while the context is made, the GPU probed and the scene's
+     * textures loaded, which take about as long here (docs/BENCH.md, "The time a user waits") */
+    struct orbit_store *ahead = renderer_orbit_ahead(s);
     struct gl_context *ctx = gl_context_create(req->backend, e);
-    if (!ctx)
+    if (!ctx) {
+        orbit_store_destroy(ahead);
         return -1;
+    }
     int rc = -1;
     struct renderer *r = renderer_create(ctx, s, e);
+    if (!r)
+        orbit_store_destroy(ahead);
     if (r) {
+        renderer_orbit_store_give(r, ahead);
         if (info) {
             snprintf(info->backend, sizeof info->backend, "%s", ctx->backend);
             snprintf(info->path_name, sizeof info->path_name, "%s", renderer_path(r)->name);

@@ -48,6 +48,7 @@ static int run_rows(struct renderer *r, const struct scene *s, int top, int rows
         if (to[k] && from[k])
             memcpy(to[k] + at, from[k], count * sizeof(float));
     full->seconds += band.seconds;
+    full->compile_seconds += band.compile_seconds;
     full->passes += band.passes;
     render_result_free(&band);
     return 0;

@@ -1,6 +1,7 @@
 /* One pass: a viewport-filling quad drawn into the ray-state targets. */
 #include "render/stages.h"
 #include "gl/quad.h"
+#include "io/clock.h"
 #include <stdio.h>
 
 void uniform_vec3(const struct program_uniforms *program, const char *name, vec3d v)
@@ -57,6 +58,24 @@ int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GL
     return pass_run_targets(r, sp, out, inputs, n_inputs, set_uniforms, arg, e);
 }
 
+double pass_draw_begin(struct renderer *r, GLuint program)
+{
+    for (int i = 0; i < r->n_drawn; i++)
+        if (r->drawn[i] == program)
+            return -1.0;
+    if (r->n_drawn == RENDERER_DRAWN_MAX)
+        return -1.0;
+    r->drawn[r->n_drawn++] = program;
+    glFinish();
+    return clock_seconds();
+}
+
+void pass_draw_end(struct renderer *r, double began)
+{
+    if (began >= 0.0)
+        r->compile_seconds += clock_seconds() - began;
+}
+
 int pass_run_targets(struct renderer *r, const struct stage_program *sp, const GLuint out[RAYSTATE_MAX_TARGETS],
                      const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
                      struct error *e)
@@ -86,7 +105,9 @@ int pass_run_targets(struct renderer *r, const struct stage_program *sp, const G
             set_uniforms(prog, arg);
         if (r->depth_write_last)
             glDepthMask(k == sp->n_programs - 1 ? GL_TRUE : GL_FALSE);
+        double first = pass_draw_begin(r, prog->id);
         quad_draw(prog->id, r->quad_z);
+        pass_draw_end(r, first);
         if (r->depth_write_last)
             glDepthMask(GL_FALSE);
         r->passes++;

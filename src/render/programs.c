@@ -1,4 +1,5 @@
 #include "render/programs.h"
+#include "io/clock.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -175,6 +176,7 @@ const struct stage_program *program_cache_get_vertex(struct program_cache *pc, c
     }
     GLuint ids[2] = {0, 0};
     int n_programs;
+    double t0 = clock_seconds();
     struct shader_target t = pc->target;
     char full[PROGRAMS_KEY_LEN + 64];
     if (!two_targets) {
@@ -197,6 +199,7 @@ const struct stage_program *program_cache_get_vertex(struct program_cache *pc, c
         }
         n_programs = 2;
     }
+    pc->build_seconds += clock_seconds() - t0;
     struct stage_program sp;
     memset(&sp, 0, sizeof sp);
     sp.n_programs = n_programs;

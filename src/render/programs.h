@@ -39,6 +39,7 @@ struct program_cache {
     struct program_entry { uint64_t hash; char *key; struct stage_program sp; } **entries;
     int n, capacity;
     long built;                  /* programs compiled and linked into it so far */
+    double build_seconds;        /* wall time their compiles and links took */
 };
 
 void program_cache_init(struct program_cache *pc, const struct shader_target *target, int mrt);

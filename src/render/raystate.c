@@ -238,16 +238,10 @@ int raystate_read(struct raystate *rs, GLuint texture, float *out, struct error 
     if (!fbo)
         return -1;
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    float *rows = malloc((size_t)w * h * 4 * sizeof *rows);
-    if (!rows)
-        return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the ray state back");
-    if (read_float_pixels(0, 0, w, h, rows) != 0) {
-        free(rows);
+    if (read_float_pixels(0, 0, w, h, out) != 0)
         return error_set(e, ERROR_RUNTIME, NULL, "the ray state cannot be read back as floats");
-    }
     /* GL rows run bottom-up; images and dumps run top-down */
-    for (int y = 0; y < h; y++)
-        memcpy(out + (size_t)(h - 1 - y) * w * 4, rows + (size_t)y * w * 4, (size_t)w * 4 * sizeof *out);
-    free(rows);
+    if (rows_flip(out, (size_t)w * 4 * sizeof *out, h) != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the ray state back");
     return 0;
 }

@@ -294,8 +294,9 @@ int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, in
     }
     if (renderer_follow_scene(r, e) != 0)
         return -1;
-    double t0 = clock_seconds();
+    double t0 = clock_seconds(), built = r->programs->build_seconds;
     r->passes = 0;
+    r->compile_seconds = 0.0;
     r->quad_z = 0.0f;
     r->depth_write_last = 0;
     glDisable(GL_BLEND);
@@ -312,6 +313,7 @@ int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, in
         return -1;
     glFinish();
     r->seconds = clock_seconds() - t0;
+    r->compile_seconds += r->programs->build_seconds - built;
     return 0;
 }
 
@@ -365,26 +367,20 @@ int renderer_read(struct renderer *r, struct render_result *out, int with_state,
     out->height = rs->height;
     out->passes = r->passes;
     out->seconds = r->seconds;
+    out->compile_seconds = r->compile_seconds;
     out->rgba = malloc(n * 4);
-    unsigned char *rows = malloc(n * 4);
-    if (!out->rgba || !rows) {
-        free(rows);
+    if (!out->rgba)
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the image back");
-    }
     GLuint fbo = raystate_fbo(rs, rs->final_color, 0, e);
-    if (!fbo) {
-        free(rows);
+    if (!fbo)
         return -1;
-    }
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, rs->width, rs->height, GL_RGBA, GL_UNSIGNED_BYTE, rows);
-    for (int y = 0; y < rs->height; y++)
-        memcpy(out->rgba + (size_t)(rs->height - 1 - y) * rs->width * 4, rows + (size_t)y * rs->width * 4,
-               (size_t)rs->width * 4);
-    free(rows);
+    glReadPixels(0, 0, rs->width, rs->height, GL_RGBA, GL_UNSIGNED_BYTE, out->rgba);
     if (gl_check("reading the image back", e) != 0)
         return -1;
+    if (rows_flip(out->rgba, (size_t)rs->width * 4, rs->height) != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the image back");
     if (r->hdr) {
         out->color = malloc(n * 4 * sizeof(float));
         if (!out->color)

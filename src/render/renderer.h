@@ -27,6 +27,8 @@ struct render_result {
     double sky_seconds;                     /* wall time of the stars of the sky, drawn on the CPU
                                                (render/frame.h); 0 without them */
     long passes;                            /* quads drawn */
+    double compile_seconds;                 /* of seconds: compiling the shaders of programs built or
+                                               drawn for the first time (renderer_run) */
 };
 
 /* Probes the context, picks the render path the scene asks for, loads textures and sky.
@@ -123,6 +125,14 @@ void orbit_table_params_for(const struct scene *s, struct orbit_table_params *p)
  * the knobs' next detents), built by a worker thread while the GPU draws; what was still waiting
  * from an earlier call is dropped. 0, or -1 with e (no memory). */
 int renderer_orbit_prefetch(struct renderer *r, const struct orbit_table_params *p, int n, struct error *e);
+/* For a renderer not made yet: a store (orbit_store.h) whose worker has begun the orbit table that s
+ * needs now, where s is on exact orbits; NULL where it is not, or without memory. Give it to the
+ * renderer made for s (renderer_orbit_store_give), or orbit_store_destroy it. */
+struct orbit_store;
+struct orbit_store *renderer_orbit_ahead(const struct scene *s);
+/* From now on r's runs take their tables from store (kept, waited for, or built then), and r
+ * destroys it. Where r has a store already, store is destroyed; NULL changes nothing. */
+void renderer_orbit_store_give(struct renderer *r, struct orbit_store *store);
 /* Tables still waiting for the worker or being built. */
 int renderer_orbit_pending(const struct renderer *r);
 /* Tables this renderer's runs built themselves (none kept, none being built ahead). */

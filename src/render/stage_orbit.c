@@ -116,6 +116,30 @@ int renderer_orbit_prefetch(struct renderer *r, const struct orbit_table_params 
     return 0;
 }
 
+struct orbit_store *renderer_orbit_ahead(const struct scene *s)
+{
+    if (!scene_on_exact_orbits(s))
+        return NULL;
+    struct error ignored;
+    struct orbit_store *store = orbit_store_create(ORBIT_STORE_BUDGET, &ignored);
+    if (store) {
+        struct orbit_table_params p;
+        orbit_table_params_for(s, &p);
+        orbit_store_prefetch(store, &p, 1);
+    }
+    return store;
+}
+
+void renderer_orbit_store_give(struct renderer *r, struct orbit_store *store)
+{
+    if (!store)
+        return;
+    if (r->orbit_store)
+        orbit_store_destroy(store);
+    else
+        r->orbit_store = store;
+}
+
 int renderer_orbit_pending(const struct renderer *r)
 {
     return r->orbit_store ? orbit_store_pending(r->orbit_store) : 0;

@@ -99,7 +99,9 @@ static void draw_object(struct renderer *r, const struct program_uniforms *p, in
     attribute(p->id, "a_rest_position", 3, offsetof(struct mesh_vertex, rest));
     attribute(p->id, "a_rest_normal", 3, offsetof(struct mesh_vertex, normal));
     attribute(p->id, "a_uv", 2, offsetof(struct mesh_vertex, uv));
+    double first = pass_draw_begin(r, p->id);
     glDrawElements(GL_TRIANGLES, r->mesh_indices[k], GL_UNSIGNED_SHORT, 0);
+    pass_draw_end(r, first);
     r->passes++;
 }
 

@@ -8,6 +8,9 @@
 #include "physics/orbit_table.h"
 #include "render/orbit_store.h"
 
+/* The programs a renderer times the first draw of (pass_draw_begin): more than any frame uses. */
+#define RENDERER_DRAWN_MAX 64
+
 /* Texture units: ray-state inputs first, then scene textures. */
 #define UNIT_SKY 6
 /* the sky in a single-pass frame that draws its colour (FRAME_WRITES_COLOUR): that pass reads no ray
@@ -53,6 +56,9 @@ struct renderer {
     int reads;                    /* enum render_read: what the caller reads after a run */
     long passes;
     double seconds;
+    double compile_seconds;       /* of seconds: compiling shaders (pass_draw) */
+    GLuint drawn[RENDERER_DRAWN_MAX];  /* the programs drawn so far; the first RENDERER_DRAWN_MAX */
+    int n_drawn;
     struct orbit_store *orbit_store;  /* the tables built, and those built ahead (NULL before the first) */
     struct orbit_table orbit;     /* render.method = orbit_table: the table of the last run (its scalars;
                                      the texels are the store's) */
@@ -80,7 +86,13 @@ int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GL
              const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
              struct error *e);
 
-/* The same for up to RAYSTATE_MAX_TARGETS targets (the fused segment pass: four, with MRT). */
+/* Around a draw with `program`: its first draw in this renderer begins once the GPU's work so far
+ * is done, so that the draw call's own time is what the driver spends compiling the program for the
+ * draw (llvmpipe and the Mesa drivers of the exhibit's GPUs compile much of a program at its first
+ * draw, not at its link), added to r->compile_seconds. A later draw is timed not at all. */
+double pass_draw_begin(struct renderer *r, GLuint program);
+void pass_draw_end(struct renderer *r, double began);
+/* The same as pass_run for up to RAYSTATE_MAX_TARGETS targets (the fused segment pass: four, with MRT). */
 int pass_run_targets(struct renderer *r, const struct stage_program *sp, const GLuint out[RAYSTATE_MAX_TARGETS],
                      const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
                      struct error *e);

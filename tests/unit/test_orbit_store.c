@@ -1,6 +1,7 @@
 /* Orbit tables built ahead (render/orbit_store.h) and the kiosk's mass knob that uses them: a table
  * from the store is the table built directly, bit for bit; the store keeps to its budget, reports a
- * failed build at the caller, and lets go while its worker builds; a mass detent of the kiosk takes
+ * failed build at the caller, and lets go while its worker builds; a renderer given a table begun
+ * before it was made draws what one building its own draws; a mass detent of the kiosk takes
  * its table from the store and draws what a fresh render of the same state draws, over the knob's
  * whole range. */
 #include <stdarg.h>
@@ -69,6 +70,43 @@ static void test_prefetched_tables_are_built_tables(void **state)
     assert_non_null(orbit_store_get(store, &other, &e));
     assert_int_equal(orbit_store_caller_builds(store), 1);
     orbit_store_destroy(store);
+}
+
+/* A renderer given a store that began its scene's table before the renderer was made (as `bentray
+ * render` does, while it makes its GL context) builds no table itself and draws, bit for bit, what a
+ * renderer that built its own draws: ray state, outcomes and image. A scene that is not on exact
+ * orbits gets no store. */
+static void test_table_begun_before_the_renderer(void **state)
+{
+    (void)state;
+    static struct scene s;
+    hc_load(&s, "schwarzschild", 40, 30, NULL);
+    struct orbit_store *ahead = renderer_orbit_ahead(&s);
+    assert_non_null(ahead);
+    wait_idle(store_pending, ahead);
+    struct error e;
+    struct renderer *r = renderer_create(hc_context(), &s, &e);
+    if (!r)
+        fail_msg("renderer: %s", e.message);
+    renderer_orbit_store_give(r, ahead);
+    struct render_result got;
+    if (renderer_run(r, &s, 0, 0, 40, 30, NULL, NULL, &e) != 0 || renderer_read(r, &got, RENDER_READ_STATE, &e) != 0)
+        fail_msg("render: %s", e.message);
+    assert_int_equal(renderer_orbit_tables_built(r), 0);
+    renderer_destroy(r);
+    struct hc_gpu own;
+    hc_gpu_render(&s, &own);
+    size_t n = 40 * 30 * 4;
+    assert_memory_equal(got.rgba, own.res.rgba, n);
+    assert_memory_equal(got.position, own.res.position, n * sizeof(float));
+    assert_memory_equal(got.velocity, own.res.velocity, n * sizeof(float));
+    assert_memory_equal(got.hit, own.res.hit, n * sizeof(float));
+    assert_memory_equal(got.image, own.res.image, n * sizeof(float));
+    render_result_free(&got);
+    hc_gpu_free(&own);
+    static struct scene flat;
+    hc_load(&flat, "starflight", 8, 6, NULL);
+    assert_null(renderer_orbit_ahead(&flat));
 }
 
 /* A budget of three tables keeps three: the prefetch stops at it, and a table asked for beyond it
@@ -217,6 +255,7 @@ int main(void)
         cmocka_unit_test(test_failed_build_reported),
         cmocka_unit_test(test_destroy_while_building),
         cmocka_unit_test(test_mass_knob_takes_tables_built_ahead),
+        cmocka_unit_test(test_table_begun_before_the_renderer),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
