@@ -119,18 +119,34 @@ int compositor_put_preview(struct compositor *c, GLuint image, struct error *e)
     return gl_check("drawing the preview into the canvas", e);
 }
 
-int compositor_put_band(struct compositor *c, GLuint image, int band_height, int y0, int rows, struct error *e)
+/* A weight below 1: the canvas keeps 1 - weight of what it holds (GL's constant blend colour,
+ * GLES 2 core). */
+static void blend_weight(float weight)
+{
+    if (weight >= 1.0f)
+        return;
+    glEnable(GL_BLEND);
+    glBlendColor(0.0f, 0.0f, 0.0f, weight);
+    glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+}
+
+int compositor_put_band(struct compositor *c, GLuint image, int band_height, int y0, int rows, float weight,
+                        struct error *e)
 {
     to_canvas(c, 0, y0, c->width, rows);
+    blend_weight(weight);
     blit(c, image, GL_NEAREST, 0, 0, 1, (float)rows / (float)band_height);
+    glDisable(GL_BLEND);
     return gl_check("drawing a refined band into the canvas", e);
 }
 
 int compositor_put_tile(struct compositor *c, GLuint image, int tex_w, int tex_h, int x0, int y0, int w, int h,
-                        struct error *e)
+                        float weight, struct error *e)
 {
     to_canvas(c, x0, y0, w, h);
+    blend_weight(weight);
     blit(c, image, GL_NEAREST, 0, 0, (float)w / (float)tex_w, (float)h / (float)tex_h);
+    glDisable(GL_BLEND);
     return gl_check("drawing a refined tile into the canvas", e);
 }
 

@@ -32,12 +32,14 @@ void compositor_release(struct compositor *c);
 /* A whole frame rendered at lower resolution, upscaled over the whole canvas. */
 int compositor_put_preview(struct compositor *c, GLuint image, struct error *e);
 /* Rows [0, rows) of a band rendered at full width, into canvas rows [y0, y0 + rows) (GL order,
- * bottom-up); band_height: the height of the band's texture. */
-int compositor_put_band(struct compositor *c, GLuint image, int band_height, int y0, int rows, struct error *e);
-/* Rows [0, h) and columns [0, w) of a tile whose texture is tex_w x tex_h, into canvas pixels
- * [x0, x0 + w) x [y0, y0 + h) (GL order). */
-int compositor_put_tile(struct compositor *c, GLuint image, int tex_w, int tex_h, int x0, int y0, int w, int h,
+ * bottom-up); band_height: the height of the band's texture. weight: 1 replaces what the canvas
+ * holds there, w < 1 blends the band in as w x band + (1 - w) x canvas (the anti-aliasing's mean). */
+int compositor_put_band(struct compositor *c, GLuint image, int band_height, int y0, int rows, float weight,
                         struct error *e);
+/* Rows [0, h) and columns [0, w) of a tile whose texture is tex_w x tex_h, into canvas pixels
+ * [x0, x0 + w) x [y0, y0 + h) (GL order), with weight as compositor_put_band's. */
+int compositor_put_tile(struct compositor *c, GLuint image, int tex_w, int tex_h, int x0, int y0, int w, int h,
+                        float weight, struct error *e);
 /* The same into an offscreen preview of pw x ph (made or resized here), and that preview, once
  * whole, upscaled over the canvas as compositor_put_preview draws a preview of one run. */
 int compositor_put_preview_tile(struct compositor *c, GLuint image, int tex_w, int tex_h, int x0, int y0, int w,

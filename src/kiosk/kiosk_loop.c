@@ -93,10 +93,11 @@ struct kiosk {
     int draws_this_second, draws_last_second;
     double second_start;
     /* the frame times of the picture being refined (--stats, staff mode): its previews since the
-     * last refined frame, the bands' time, from the last change of state to the refined frame */
+     * last refined frame, the bands' time, from the last change of state to the refined frame; then
+     * the anti-aliasing's bands and their time */
     struct frame_times {
-        int previews, bands;
-        double preview_seconds, preview_longest, band_seconds, changed_at;
+        int previews, bands, sample_bands;
+        double preview_seconds, preview_longest, band_seconds, changed_at, sample_seconds;
     } times;
     /* headless frames */
     int frames_written;
@@ -415,21 +416,40 @@ static void count_preview(struct kiosk *k, double started)
     t->preview_longest = took > t->preview_longest ? took : t->preview_longest;
     t->bands = 0;
     t->band_seconds = 0.0;
+    t->sample_bands = 0;              /* an anti-aliasing the change stopped */
+    t->sample_seconds = 0.0;
 }
 
 /* A band of the refinement (or a tile of a preview) drawn from `started`; once the frame is
- * refined, its times go to the log where asked for, and the count starts again. */
-static void count_band(struct kiosk *k, double started)
+ * refined, its times go to the log where asked for, and the count starts again. A band of the
+ * anti-aliasing (sample: drawn after the frame was refined) is counted apart, and logged once the
+ * last sample is drawn. */
+static void count_band(struct kiosk *k, double started, int sample)
 {
     struct frame_times *t = &k->times;
     double now = clock_seconds();
+    int log = k->opt->stats || k->state.staff;
+    if (sample) {
+        t->sample_bands++;
+        t->sample_seconds += now - started;
+        if (!kiosk_view_done(&k->view))
+            return;
+        if (log) {
+            fprintf(k->log, "frame times: %s: anti-aliased with %d rays a pixel in %d bands, %.3f s of drawing, "
+                    "%.3f s after the refined frame\n", k->scenes[k->state.scene].name, k->view.samples.n,
+                    t->sample_bands, t->sample_seconds, now - t->changed_at);
+            fflush(k->log);
+        }
+        memset(t, 0, sizeof *t);
+        return;
+    }
     if (t->previews == 0 && t->bands == 0)
         t->changed_at = started;
     t->bands++;
     t->band_seconds += now - started;
     if (!kiosk_view_refined(&k->view))
         return;
-    if (k->opt->stats || k->state.staff) {
+    if (log) {
         fprintf(k->log, "frame times: %s: %d preview%s at %dx%d, %.1f ms each on average, %.1f ms the longest; "
                 "refined %dx%d in %d bands, %.3f s of drawing, %.3f s after the last change\n",
                 k->scenes[k->state.scene].name, t->previews, t->previews == 1 ? "" : "s", k->view.preview_width, k->view.preview_height,
@@ -438,6 +458,7 @@ static void count_band(struct kiosk *k, double started)
         fflush(k->log);
     }
     memset(t, 0, sizeof *t);
+    t->changed_at = now;                 /* the anti-aliasing's time counts from the refined frame */
 }
 
 /* One turn of the loop; 1 to go on, 0 to stop, -1 on failure (e). */
@@ -473,12 +494,14 @@ static int kiosk_turn(struct kiosk *k, struct error *e)
             return -1;
         drew = 1;
         count_preview(k, draw_started);
-    } else if (!kiosk_view_refined(&k->view)) {
-        did = kiosk_view_preview_pending(&k->view) ? "drawing a tile of the preview" : "refining the frame";
+    } else if (!kiosk_view_done(&k->view)) {
+        int sample = kiosk_view_refined(&k->view);
+        did = kiosk_view_preview_pending(&k->view) ? "drawing a tile of the preview"
+              : sample ? "anti-aliasing the frame" : "refining the frame";
         if (kiosk_view_refine(&k->view, e) != 0)
             return -1;
         drew = 1;
-        count_band(k, draw_started);
+        count_band(k, draw_started, sample);
     }
     k->draws_this_second += drew;
     k->drawn += drew;
@@ -519,7 +542,7 @@ static int kiosk_turn(struct kiosk *k, struct error *e)
                 k->scenes[k->state.scene].name);
     service_watchdog();
     k->turn++;
-    if (!drew && kiosk_view_refined(&k->view) && (!k->virtual_clock || !scripts_pending(k)))
+    if (!drew && kiosk_view_done(&k->view) && (!k->virtual_clock || !scripts_pending(k)))
         wait_for_input(k, KIOSK_IDLE_WAIT_SECONDS);
     return 1;
 }

@@ -34,6 +34,8 @@ int kiosk_view_init(struct kiosk_view *v, const struct kiosk_config *cfg, const 
     }
     use_preview_size(v, k->preview_width, k->preview_height);
     v->refined_rows = k->height;
+    pixel_samples_make(k->refine_samples, &v->samples);
+    v->sample = v->samples.n;
     return compositor_init(&v->comp, gl, k->width, k->height, e);
 }
 
@@ -204,8 +206,11 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, struc
     kiosk_preview_scene(&v->full, v->preview_width, v->preview_height, &v->live);
     v->pipeline_view = st->pipeline_view;
     const struct kiosk_main *k = &v->cfg->kiosk;
-    /* refinement starts over whatever the preview is */
+    /* refinement starts over whatever the preview is, and the anti-aliasing after it: with the
+     * centre among its points, the one-ray frame is its first sample */
     v->refined_rows = 0;
+    v->sample = v->samples.centre_included ? 1 : 0;
+    v->sample_rows = 0;
     kiosk_tiles_plan(&v->refine, k->width, k->height, v->band_rows, steps_per_ray(&v->full));
     kiosk_tiles_plan(&v->preview, v->preview_width, v->preview_height, v->preview_height,
                      v->pipeline_view ? 0 : steps_per_ray(&v->live));
@@ -227,12 +232,51 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, struc
                               : compositor_put_preview(&v->comp, t.image, e);
     /* the pipeline view shows the preview's own state: it is not refined */
     v->refined_rows = v->pipeline_view ? k->height : 0;
+    if (v->pipeline_view)
+        v->sample = v->samples.n;
     return rc != 0 ? rc : kiosk_view_prefetch(v, st, e);
 }
 
 int kiosk_view_preview_pending(const struct kiosk_view *v)
 {
     return v->preview.next < v->preview.count;
+}
+
+/* The next band (or tile) of a frame at full size and quality, its rays started (dx, dy) pixels off
+ * the pixels' centres, into the canvas with weight (compositor_put_band); *rows: the frame's rows
+ * done, from the bottom. */
+static int frame_step(struct kiosk_view *v, int *rows, double dx, double dy, float weight, struct error *e)
+{
+    const struct kiosk_main *k = &v->cfg->kiosk;
+    struct kiosk_tiles *t = &v->refine;
+    renderer_set_subpixel(v->renderer, dx, dy);
+    int rc;
+    if (t->tile_width == k->width) {
+        /* whole bands: every band has the same size, so the ray state is made once per refinement;
+         * the last one may trace rows above the frame, which are not shown */
+        int y0 = *rows;
+        rc = renderer_run(v->renderer, &v->live, 0, y0, k->width, t->tile_height, NULL, NULL, e);
+        if (rc == 0) {
+            struct renderer_textures tex;
+            renderer_textures(v->renderer, &tex);
+            int n = k->height - y0 < t->tile_height ? k->height - y0 : t->tile_height;
+            rc = compositor_put_band(&v->comp, tex.image, t->tile_height, y0, n, weight, e);
+            *rows += rc == 0 ? n : 0;
+        }
+    } else {
+        /* tiles narrower than the frame: a row of tiles at a time, the rows counted once it is done */
+        int x0, y0, w, h;
+        GLuint image;
+        rc = run_tile(v, t, &x0, &y0, &w, &h, &image, e) != 0 ||
+             compositor_put_tile(&v->comp, image, t->tile_width, t->tile_height, x0, y0, w, h, weight, e) != 0 ? -1 : 0;
+        if (rc == 0) {
+            t->next++;
+            if (t->next % t->columns == 0 || t->next == t->count)
+                *rows = y0 + h;
+        }
+    }
+    renderer_set_subpixel(v->renderer, 0.0, 0.0);
+    return rc;
 }
 
 int kiosk_view_refine(struct kiosk_view *v, struct error *e)
@@ -242,38 +286,41 @@ int kiosk_view_refine(struct kiosk_view *v, struct error *e)
         return 0;
     if (kiosk_view_preview_pending(v))
         return preview_tile(v, e);
-    if (v->refined_rows >= k->height)
-        return 0;
-    renderer_set_reads(v->renderer, RENDER_READ_IMAGE);
-    v->live = v->full;
-    struct kiosk_tiles *t = &v->refine;
-    if (t->tile_width == k->width) {
-        /* whole bands: every band has the same size, so the ray state is made once per refinement;
-         * the last one may trace rows above the frame, which are not shown */
-        int y0 = v->refined_rows;
-        if (renderer_run(v->renderer, &v->live, 0, y0, k->width, t->tile_height, NULL, NULL, e) != 0)
-            return -1;
-        struct renderer_textures tex;
-        renderer_textures(v->renderer, &tex);
-        int rows = k->height - y0 < t->tile_height ? k->height - y0 : t->tile_height;
-        if (compositor_put_band(&v->comp, tex.image, t->tile_height, y0, rows, e) != 0)
-            return -1;
-        v->refined_rows += rows;
-        return 0;
+    if (v->refined_rows < k->height || v->sample < v->samples.n) {
+        renderer_set_reads(v->renderer, RENDER_READ_IMAGE);
+        v->live = v->full;
     }
-    /* tiles narrower than the frame: a row of tiles at a time, the rows counted once it is done */
-    int x0, y0, w, h;
-    GLuint image;
-    if (run_tile(v, t, &x0, &y0, &w, &h, &image, e) != 0 ||
-        compositor_put_tile(&v->comp, image, t->tile_width, t->tile_height, x0, y0, w, h, e) != 0)
+    if (v->refined_rows < k->height)
+        return frame_step(v, &v->refined_rows, 0.0, 0.0, 1.0f, e);
+    if (v->sample >= v->samples.n)
+        return 0;
+    /* sample k of the anti-aliasing, the mean of those before it on the canvas: weight 1 / (k + 1)
+     * keeps it the mean (the first replaces the one-ray frame, unless that is the first) */
+    if (v->refine.next >= v->refine.count)
+        v->refine.next = 0;              /* tiles: the refinement or the sample before used them all */
+    if (frame_step(v, &v->sample_rows, v->samples.dx[v->sample], v->samples.dy[v->sample],
+                   1.0f / (float)(v->sample + 1), e) != 0)
         return -1;
-    t->next++;
-    if (t->next % t->columns == 0 || t->next == t->count)
-        v->refined_rows = y0 + h;
+    if (v->sample_rows >= k->height) {
+        v->sample++;
+        v->sample_rows = 0;
+    }
     return 0;
 }
 
 int kiosk_view_refined(const struct kiosk_view *v)
 {
     return !kiosk_view_preview_pending(v) && v->refined_rows >= v->cfg->kiosk.height;
+}
+
+int kiosk_view_done(const struct kiosk_view *v)
+{
+    return kiosk_view_refined(v) && v->sample >= v->samples.n;
+}
+
+int kiosk_view_samples_drawn(const struct kiosk_view *v)
+{
+    if (!kiosk_view_refined(v))
+        return 0;
+    return v->sample < v->samples.n ? v->sample : v->samples.n;
 }

@@ -25,6 +25,7 @@
 #include "render/programs.h"
 #include "render/renderer.h"
 #include "physics/orbit_table.h"
+#include "scene/pixel_samples.h"
 
 #define PREVIEW_STEP_FACTOR 2
 #define PREVIEW_SEGMENT_FACTOR 2
@@ -69,6 +70,13 @@ struct kiosk_view {
     int refined_rows;                /* rows of the canvas at full quality, from the bottom */
     struct kiosk_tiles preview;      /* the preview being drawn; next == count: shown */
     struct kiosk_tiles refine;       /* the refinement's tiles */
+    /* anti-aliasing, once refined: the points of pixel_samples(refine_samples) in turn, each a frame
+     * traced band by band with its rays started there and blended into the canvas with weight
+     * 1 / (k + 1), so that the canvas holds the mean of the samples drawn so far (the one-ray frame
+     * is the first where the points include the centre, odd counts) */
+    struct pixel_samples samples;
+    int sample;                      /* the next of samples to draw; samples.n: none left */
+    int sample_rows;                 /* its rows drawn, from the bottom */
     /* the programs of every scene, compiled once (kiosk_warm.c compiles them all before the first
      * frame): a renderer made for a scene takes them from here */
     struct program_cache programs;
@@ -92,12 +100,18 @@ void kiosk_view_forget_programs(struct kiosk_view *v);
  * over. 0, or -1 with e: a state the scene cannot take (where: the scene or the key), or the
  * renderer's or the compositor's failure. */
 int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, struct error *e);
-/* The next tile of a preview drawn in tiles, else the next band (or tile) of refinement; 0, or -1
- * with e. Nothing to do once refined. */
+/* The next tile of a preview drawn in tiles, else the next band (or tile) of refinement, else of
+ * the anti-aliasing's next sample; 0, or -1 with e. Nothing to do once done. */
 int kiosk_view_refine(struct kiosk_view *v, struct error *e);
 /* A preview is still being drawn, tile by tile (not yet shown). */
 int kiosk_view_preview_pending(const struct kiosk_view *v);
+/* The frame is refined: one ray a pixel at full size and quality on the canvas. */
 int kiosk_view_refined(const struct kiosk_view *v);
+/* Refined and anti-aliased: nothing left to draw until the state changes. */
+int kiosk_view_done(const struct kiosk_view *v);
+/* Samples of the anti-aliasing drawn into the canvas so far, the one-ray frame counted where it is
+ * one of them (0 while refining). */
+int kiosk_view_samples_drawn(const struct kiosk_view *v);
 /* Detents of each knob, on each side, whose orbit tables are built ahead (kiosk_view_prefetch). */
 #define KIOSK_PREFETCH_DETENTS 16
 /* The orbit tables the knobs' next KIOSK_PREFETCH_DETENTS detents on either side will ask for

@@ -12,6 +12,8 @@
 #define KIOSK_MAX_SCENES 32
 #define KIOSK_MAX_BUTTONS 16
 #define KIOSK_MAX_INPUTS 16
+/* [kiosk] refine_samples at most: each a whole frame more of the GPU's idle time */
+#define KIOSK_MAX_REFINE_SAMPLES 16
 /* [kiosk] image_memory's default, MB: every scene's textures and sky faces are decoded at start
  * and kept (io/image_cache.h); a kiosk's computer may have 1 GB in all */
 #define KIOSK_IMAGE_MEMORY_MB 256
@@ -50,6 +52,7 @@ struct kiosk_main {
     int preview_width, preview_height;   /* px, drawn while a knob moves */
     int width, height;               /* px, the refined frame */
     int refine_frames;               /* frames from preview to full quality */
+    int refine_samples;              /* rays a pixel the refined frame ends with (1: one, no anti-aliasing) */
     int preview_rate;                /* previews a second the preview size is tuned to hold; 0: kept */
     int image_memory;                /* MB the scenes' decoded images may take in all */
     int hud;                         /* 1: draw the values on screen */

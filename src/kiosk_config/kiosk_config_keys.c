@@ -166,6 +166,8 @@ const struct conf_key kiosk_keys[] = {
     {KSEC_KIOSK, "width", CONF_INTEGER, SIZE_RANGE, .offset = AT_CONFIG(kiosk.width)},
     {KSEC_KIOSK, "height", CONF_INTEGER, SIZE_RANGE, .offset = AT_CONFIG(kiosk.height)},
     {KSEC_KIOSK, "refine_frames", CONF_INTEGER, .lo = 1, .hi = 60, .offset = AT_CONFIG(kiosk.refine_frames)},
+    {KSEC_KIOSK, "refine_samples", CONF_INTEGER, .lo = 1, .hi = KIOSK_MAX_REFINE_SAMPLES,
+     .offset = AT_CONFIG(kiosk.refine_samples)},
     {KSEC_KIOSK, "preview_rate", CONF_INTEGER, .lo = 0, .hi = 240, .offset = AT_CONFIG(kiosk.preview_rate)},
     {KSEC_KIOSK, "image_memory", CONF_INTEGER, .lo = 1, .hi = 65536, .offset = AT_CONFIG(kiosk.image_memory)},
     {KSEC_KIOSK, "hud", SWITCH, .offset = AT_CONFIG(kiosk.hud)},
@@ -313,6 +315,7 @@ void kiosk_config_defaults(struct kiosk_config *c)
     c->kiosk.width = 1280;
     c->kiosk.height = 720;
     c->kiosk.refine_frames = 4;
+    c->kiosk.refine_samples = 4;
     c->kiosk.preview_rate = 30;
     c->kiosk.image_memory = KIOSK_IMAGE_MEMORY_MB;
     c->kiosk.hud = 1;

@@ -33,6 +33,16 @@ sed '/^refine_frames/a image_memory = 1' $K | sed 's|\.\./\.\./assets|'"$PWD"'/a
 check "kiosk image memory bound" 2 "k.conf:10: \[kiosk\] image_memory = 1 MB: the scenes' textures and sky faces take 2 MB decoded.*checker_grey.png, is 256x256" -- $BT kiosk --config "$TMP/images/k.conf" --out "$TMP/images"
 sed 's|^scenes = \(.*\)$|scenes = \1, '"$PWD"'/assets/scenes/schwarzschild.scene|; s|^start_scene = .*|start_scene = 0|' "$TMP/images/k.conf" > "$TMP/images/twice.conf"
 check "kiosk image memory counts a file once" 2 "take 2 MB decoded" -- $BT kiosk --config "$TMP/images/twice.conf" --out "$TMP/images"
+# the anti-aliasing after a refinement at rest ([kiosk] refine_samples, default 4): its bands and
+# time logged once the last sample is drawn, and a picture other than the one-ray frame's
+mkdir -p "$TMP/aa"
+printf '2.5 frame\n' > "$TMP/aa/rest.events"
+sed 's|\.\./\.\./assets|'"$PWD"'/assets|g; s|path = visitor.events|path = '"$TMP"'/aa/rest.events|' $K > "$TMP/aa/k.conf"
+sed '/^refine_frames/a refine_samples = 1' "$TMP/aa/k.conf" > "$TMP/aa/one.conf"
+check "kiosk anti-aliasing logged" 0 "frame times: schwarzschild: anti-aliased with 4 rays a pixel in 36 bands, [0-9.]+ s of drawing, [0-9.]+ s after the refined frame" -- $BT kiosk --config "$TMP/aa/k.conf" --out "$TMP/aa" --frames 1 --stats
+check "kiosk anti-aliasing off" 0 "^0 lines, frames differ$" -- sh -c "mkdir -p $TMP/aa/one && $BT kiosk --config $TMP/aa/one.conf \
+    --out $TMP/aa/one --frames 1 --stats 2>&1 | grep -c 'anti-aliased' | tr '\n' ' '; echo \"lines, \$(cmp -s $TMP/aa/frame_0001.png \
+    $TMP/aa/one/frame_0001.png && echo frames the same || echo frames differ)\" | sed 's/^ *//'"
 # every device missing: one log line each, and the kiosk runs on its script
 mkdir -p "$TMP/absent"
 check "kiosk without devices" 0 "^1 1 1 1 2 frames$" -- sh -c "$BT kiosk --config tests/kiosk/absent_devices.conf --out $TMP/absent --frames 2 > $TMP/absent/log 2>&1;

@@ -132,6 +132,9 @@ static void write_kiosk_files(void)
              "width = %d\nheight = %d\n"
              "preview_width = %d\npreview_height = %d\n"
              "hud = on\n"
+             /* the settled window is compared with the renderer's one-ray image: the anti-aliasing
+              * at rest has its own tests (test_kiosk_antialias.c) */
+             "refine_samples = 1\n"
              "font = %s\n"
              "[display]\n"
              "backend = headless\n"

@@ -17,9 +17,10 @@ import zlib
 HUD_BAND = 0.30
 # a pixel differs when a channel is off by more than this many levels of 255
 LEVELS = 16
-# the headless screen's clock runs a thirtieth of a second a turn: the refined frame is done
-# well before this many seconds (33 bands, one a turn)
-FRAME_AT_SECONDS = 5.0
+# the headless screen's clock runs a thirtieth of a second a turn: the refined frame and its
+# anti-aliasing are done well before this many seconds (33 bands and 4 x 33 more, one a turn), as
+# the guest's screen is once still
+FRAME_AT_SECONDS = 10.0
 
 
 def reference_config(src, dst, events, out_dir, assets, speed_start):
