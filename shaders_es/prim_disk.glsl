@@ -12,7 +12,7 @@ bool hit_disk(vec3 a, vec3 b, vec3 c, vec3 n, float r_in, float r_out, out float
     if (!(abs(denom) > DISK_PARALLEL_SINE_LIMIT * length(n) * length(d)))
         return false;
     float t_hit = dot(n, c - a) / denom;
-    if (t_hit < 0.0 || t_hit > 1.0)
+    if (!(t_hit >= 0.0 && t_hit <= 1.0))      // a NaN too: a hit lies at t in [0, 1]
         return false;
     float dist = length(a + t_hit * d - c);
     if (dist < r_in || dist > r_out)

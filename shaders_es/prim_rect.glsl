@@ -14,7 +14,7 @@ bool hit_rect(vec3 a, vec3 b, vec3 c, vec3 eu, vec3 ev, out float t, out vec2 s)
     if (!(abs(denom) > RECT_PARALLEL_SINE_LIMIT * length(n) * length(d)))
         return false;
     float t_hit = dot(n, c - a) / denom;
-    if (t_hit < 0.0 || t_hit > 1.0)
+    if (!(t_hit >= 0.0 && t_hit <= 1.0))      // a NaN too: a hit lies at t in [0, 1]
         return false;
     vec3 w = a + t_hit * d - c;
     vec2 s_hit = vec2(dot(w, eu) / dot(eu, eu), dot(w, ev) / dot(ev, ev));

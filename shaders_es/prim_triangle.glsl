@@ -26,7 +26,7 @@ bool hit_triangle(vec3 a, vec3 b, vec3 p0, vec3 p1, vec3 p2, out float t, out ve
     vec3 qvec = cross(tvec, e1);
     float v = dot(d, qvec) * inv_det;
     float t_hit = dot(e2, qvec) * inv_det;
-    if (u < 0.0 || v < 0.0 || u + v > 1.0 || t_hit < 0.0 || t_hit > 1.0)
+    if (u < 0.0 || v < 0.0 || u + v > 1.0 || !(t_hit >= 0.0 && t_hit <= 1.0))   // a NaN t too
         return false;
     t = t_hit;
     bary = vec2(u, v);

@@ -482,6 +482,34 @@ void intersect_chord(vec3 a, vec3 b, float segment, inout candidate best)
     BATCH_TESTS
 }
 
+#ifdef ORBIT_HITS
+// Whether any object of the batch meets chord a -> b: what intersect_chord's best.slot >= 0 would
+// say, without the closest hit's depth, fraction and object carried through the tests (the orbit
+// walk needs only whether to stop; its finish finds the hit again). The same tests: each finds a
+// hit only at a fraction t in [0, 1] (prim_*.glsl), whose depth key consider() always takes over
+// NO_HIT. Carrying less, the walk spills less on V3D and Bifrost (`make shader-stats`).
+bool chord_meets;
+void consider_meets(bool found, float t, vec3 normal, vec3 surface, float slot, inout candidate best)
+{
+    chord_meets = chord_meets || found;
+}
+
+bool intersect_chord_meets(vec3 a, vec3 b)
+{
+    candidate best;
+    float t;
+    vec3 normal;
+    vec3 surface;
+    chord_meets = false;
+#undef CONSIDER
+#define CONSIDER consider_meets
+    BATCH_TESTS
+#undef CONSIDER
+#define CONSIDER consider
+    return chord_meets;
+}
+#endif
+
 // The texture coordinates of candidate best: what the tests of its object's primitive found, as
 // the reference's intersect_* functions give them (src/physics/intersect.c).
 vec2 texture_coordinates(candidate best)

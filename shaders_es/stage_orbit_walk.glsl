@@ -148,9 +148,7 @@ void orbit_walk(orbit_ray ray, inout float k, out bool done, out bool leaving, o
         leaving = chord && outside_bounds(p1);
         bool tested = chord && !leaving;
         bool moves = passes || tested;
-        candidate trial = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
-        intersect_chord(a, p1, k, trial);
-        found = tested && trial.slot >= 0.0;
+        found = tested && intersect_chord_meets(a, p1);
         done = found || (tested && captured(p1));
         // a chord with a hit (or that falls in) keeps its start: the ray stands at chord k
         bool onwards = moves && !done;
