@@ -394,12 +394,23 @@ bool cull_group_clear(orbit_ray ray, vec4 ends, float phi_a, float span, float r
 // ten floats an object stayed live across the whole loop, more than the register file of an
 // exhibit's GPU holds; as uniforms, V3D's and Bifrost's compilers read them where they are used
 // (`make shader-stats`: the kiosk's lorenz frame went from 82 to 46 spills on V3D 4.2, from 24 to 7
-// on Mali-G52). They are copied once a pixel (chord_cull_prepare) and used from the copies: those
-// compilers see through the copy, while llvmpipe, which loads a uniform from memory at each use,
-// keeps the copies in its registers (read at each use, its frame took twice as long).
+// on Mali-G52). On a CPU rasteriser they are copied once a pixel (chord_cull_prepare) and used from
+// the copies: llvmpipe, which loads a uniform from memory at each use, keeps the copies in its
+// registers (read at each use, its frame took twice as long). A GPU's compiler reads the uniforms
+// themselves (CHORD_CULL_UNIFORMS): Bifrost keeps the copies in memory, which cost the kiosk's lorenz
+// frame on Mali-G52 a third of its load/store cycles (150 -> 105); V3D sees through either.
 const float CHORD_CULL_MARGIN = 1e-3;
 const float CHORD_CULL_POSITION_MARGIN = 1e-5;
 uniform vec2 u_chord_scale[BATCH_SIZE];   // 1 / radius (0: every chord is near), the centre's position margin
+#ifdef CHORD_CULL_UNIFORMS
+#define chord_ball u_object_ball
+#define chord_plane u_object_plane
+#define chord_scale u_chord_scale
+
+void chord_cull_prepare()
+{
+}
+#else
 vec4 chord_ball[BATCH_SIZE];
 vec4 chord_plane[BATCH_SIZE];
 vec2 chord_scale[BATCH_SIZE];
@@ -412,6 +423,7 @@ void chord_cull_prepare()
         chord_scale[n] = u_chord_scale[n];
     }
 }
+#endif
 
 // Whether a chord about mid, of half length half_length, comes near the object of this ball, plane
 // and scales.

@@ -455,8 +455,9 @@ int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, struct error 
     copy_string(c->vendor, sizeof c->vendor, GL_VENDOR);
     copy_string(c->glsl_version, sizeof c->glsl_version, GL_SHADING_LANGUAGE_VERSION);
     parse_version(c);
-    c->cpu_rasterizer = strstr(c->renderer, "llvmpipe") || strstr(c->renderer, "softpipe") ||
-                        strstr(c->renderer, "swrast") || strstr(c->renderer, "SwiftShader");
+    c->cpu_rasterizer = (strstr(c->renderer, "llvmpipe") || strstr(c->renderer, "softpipe") ||
+                         strstr(c->renderer, "swrast") || strstr(c->renderer, "SwiftShader")) &&
+                        !gl_fault("gpu_rasterizer");
     /* GLSL ES 3.00 (and desktop GLSL) runs loops of any length; GLSL ES 1.00's appendix A lets a
      * GLES2 device refuse or cut a long fragment loop, so the single pass is not taken there
      * unless forced (render.pipeline = single) */

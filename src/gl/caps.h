@@ -35,7 +35,10 @@ struct gl_caps {
     int mrt_works;
     char mrt_why[160];
     /* the GL draws on the CPU (Mesa's llvmpipe or softpipe, swrast): its shaders' values live in
-     * the CPU's caches and memory, no register file of the GPU's bounds what a loop may carry */
+     * the CPU's caches and memory, no register file of the GPU's bounds what a loop may carry.
+     * Where it is not, the single passes take their variants for a GPU's register file (the walk
+     * on exact orbits in a pass of its own, the chord cull read from its uniforms);
+     * BT_FAULT=gpu_rasterizer takes those on a CPU rasteriser too, for the tests. */
     int cpu_rasterizer;
     int long_loops;                  /* long fragment loops: the single-pass frame */
     /* the most turns one fragment-shader loop really runs, probed up to CAPS_LOOP_TURNS_PROBED

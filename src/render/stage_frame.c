@@ -127,9 +127,9 @@ static const struct stage_program *frame_program(struct renderer *r, const struc
                  r->model_defines, batch, s->render.max_chords, ORBIT_HIT_TRIES, written,
                  a->batch.count == 0 ? "#define ORBIT_NOTHING_TO_MEET 1\n" : "");
     else
-        snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define CHORD_CULL 1\n#define PASSES_PER_SEGMENT %d\n%s",
-                 r->model_defines, batch, r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass,
-                 written);
+        snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define CHORD_CULL 1\n%s#define PASSES_PER_SEGMENT %d\n%s",
+                 r->model_defines, batch, r->caps.cpu_rasterizer ? "" : "#define CHORD_CULL_UNIFORMS 1\n",
+                 r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass, written);
     return program_cache_get(r->programs, files, defines, !walk && output != FRAME_WRITES_COLOUR, e);
 }
 

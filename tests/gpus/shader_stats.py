@@ -174,10 +174,11 @@ def main():
     w("## On the GPUs of an exhibit")
     w("")
     w("Every shader program bentray builds for the shipped scenes (each with `render.pipeline` = auto, "
-      "multipass and fused, and multipass with one target a pass, `render.mrt = off`; on exact orbits "
-      "with the single pass's walk in a pass of its own, `render.orbit_walk = separate`, as a GPU's "
-      "auto takes it, and for comparison in the frame's own pass, \"single-inline\") and for the "
-      "shipped kiosk configuration (every variant its compile-ahead builds, the walk separate), compiled by the real compilers of the exhibit's GPUs: Mesa %s's drivers over their noop "
+      "multipass and fused, and multipass with one target a pass, `render.mrt = off`; the single passes' "
+      "variants a GPU takes, `BT_FAULT=gpu_rasterizer` (on exact orbits the walk in a pass of its own, "
+      "`render.orbit_walk = separate`, and for comparison in the frame's own pass, \"single-inline\"; the "
+      "integrated pass's chord cull read from its uniforms) and for the "
+      "shipped kiosk configuration (every variant its compile-ahead builds), compiled by the real compilers of the exhibit's GPUs: Mesa %s's drivers over their noop "
       "drm-shim, which compile for the GPU and draw nothing. Each program is linked and drawn once. "
       "`inst`: the fragment shader's instructions (each compiler counts its own kind; loops count once); "
       "`thr`: threads (V3D, VC4, Mali) or waves (Adreno) it runs with; spills:fills where the "

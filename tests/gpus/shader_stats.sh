@@ -33,15 +33,15 @@ stats=$root/build/tests/gpus/compile_stats
 rm -rf "$work"
 mkdir -p "$work/dump" "$work/programs" "$work/logs"
 
-# The programs are built on this machine's llvmpipe, a CPU rasteriser, where render.orbit_walk = auto
-# keeps the single pass's walk along exact orbits in one pass; every GPU takes it in a pass of its
-# own (docs/PIPELINE.md). So the scenes are copies that say so, their paths made absolute, and
-# the one-pass walk is built as a pipeline of its own ("single-inline") for comparison.
+# The programs are built on this machine's llvmpipe, a CPU rasteriser, whose single passes take
+# variants of their own (the walk along exact orbits inline, the chord cull from copies); every GPU
+# takes the others (docs/PIPELINE.md). BT_FAULT=gpu_rasterizer makes llvmpipe build what a GPU
+# builds, and the one-pass walk is built as a pipeline of its own ("single-inline") for comparison.
+# The scenes are copies with their paths made absolute, which the kiosk's assets_root holds.
+export BT_FAULT=gpu_rasterizer
 mkdir -p "$work/scenes"
 for scene in "$root"/assets/scenes/*.scene; do
-    copy="$work/scenes/$(basename "$scene")"
-    sed -e "s|= \.\./|= $root/assets/|" -e 's|^\[render\]$|[render]\norbit_walk = separate|' "$scene" >"$copy"
-    grep -q '^orbit_walk = separate$' "$copy" || printf '\n[render]\norbit_walk = separate\n' >>"$copy"
+    sed -e "s|= \.\./|= $root/assets/|" "$scene" >"$work/scenes/$(basename "$scene")"
 done
 
 # 1. every program, by scene and pipeline, then the kiosk's compile-ahead

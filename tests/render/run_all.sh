@@ -148,6 +148,19 @@ for walk_case in "egl" "osmesa" "egl BT_FAULT=occlusion_query"; do
         --dump $TMP/ow_i.dump >/dev/null 2>&1 && cmp $TMP/ow_s.png $TMP/ow_i.png && cmp $TMP/ow_s.dump $TMP/ow_i.dump && \
         echo same \$(grep -o '[0-9]* passes' $TMP/ow_s.txt)"
 done
+# a CPU rasteriser taken for a GPU (BT_FAULT=gpu_rasterizer): the single passes' variants for a
+# GPU's register file (the walk in a pass of its own, the integrated pass's chord cull read from its
+# uniforms) draw the same rays bit for bit
+for sc in lorenz cube_approach schwarzschild; do
+    check "gpu variants draw the cpu's rays ($sc)" 0 "^same$" -- sh -c "env BT_FAULT=gpu_rasterizer $BT render \
+        --scene assets/scenes/$sc.scene --size 48x36 --force --out $TMP/gv_g.png --dump $TMP/gv_g.dump >/dev/null 2>&1 && \
+        $BT render --scene assets/scenes/$sc.scene --size 48x36 --force --out $TMP/gv_c.png --dump $TMP/gv_c.dump \
+        >/dev/null 2>&1 && cmp $TMP/gv_g.png $TMP/gv_c.png && cmp $TMP/gv_g.dump $TMP/gv_c.dump && echo same"
+done
+check "info --shader frame for a gpu compiles" 0 "^compiled, 1 cull from uniforms$" -- sh -c "env BT_FAULT=gpu_rasterizer $BT info \
+    --shader frame --scene assets/scenes/lorenz.scene > '$TMP/gpu_frame.frag' && glslangValidator -S frag '$TMP/gpu_frame.frag' > '$TMP/glslang_gf.log' && \
+    echo compiled, \$(grep -c '^#define CHORD_CULL_UNIFORMS 1' '$TMP/gpu_frame.frag') cull from uniforms || cat '$TMP/glslang_gf.log'"
+check "info takes llvmpipe for a gpu under BT_FAULT=gpu_rasterizer" 0 "^orbit walk: +a pass of its own" -- env BT_FAULT=gpu_rasterizer $BT info --backend egl
 check "info says where the orbit walk runs" 0 "^orbit walk: +in the frame's pass \\(a CPU rasteriser" -- $BT info --backend egl
 check "info --shader orbit_walk compiles" 0 "^compiled$" -- sh -c "$BT info --shader orbit_walk --scene $B \
     --set render.orbit_walk=separate --no-mrt > '$TMP/walk.frag' && grep -q 'void main' '$TMP/walk.frag' && \
