@@ -34,12 +34,7 @@ void main()
     bool again = false;
     float code = CODE_UNFINISHED;
     float end_key = NO_HIT;
-    // A hit ends the ray: until then every chord's candidate starts with none, and the loops carry
-    // only whether the last chord tested met an object (hit); the hit itself is found again after
-    // them, on that chord, by the test that follows the loops anyway (fewer values for an exhibit's
-    // GPU to hold across the loop's turns: `make shader-stats`).
-    candidate none = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
-    bool hit = false;
+    candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
     // Segments are taken in an inner loop that integrates them and asks of each chord only whether
     // it comes near an object (chord_near, stage_intersect.glsl: a few multiplications an object);
     // a chord that does not cannot meet one, and its end is decided at once. A chord that does ends
@@ -82,7 +77,7 @@ void main()
             bool near = chord_near(a, x);
             float new_code = code;
             float new_end_key = end_key;
-            bool ended = segment_end(x, steps, k, none, new_code, new_end_key);
+            bool ended = segment_end(x, steps, k, best, new_code, new_end_key);
             bool decided = clean && !near;
             code = decided ? new_code : code;
             end_key = decided ? new_end_key : end_key;
@@ -97,13 +92,12 @@ void main()
             if (next_segment >= u_segments || stop || pending)
                 break;
         }
-        candidate tested = none;
+        candidate tested = best;
         intersect_chord(a, x, k_last, tested);
-        candidate chord_best = pending ? tested : none;
-        hit = pending && chord_best.slot >= 0.0;
+        best = pending ? tested : best;
         float new_code = code;
         float new_end_key = end_key;
-        bool ended = segment_end(x, steps, k_last, chord_best, new_code, new_end_key);
+        bool ended = segment_end(x, steps, k_last, best, new_code, new_end_key);
         code = pending ? new_code : code;
         end_key = pending ? new_end_key : end_key;
         stop = stop || (pending && ended);
@@ -137,10 +131,9 @@ void main()
     v = again ? v_checked : v;
     steps = again ? steps_checked : steps;
     h = again ? h_checked : h;
-    // the chord that met an object (hit), or the one taken again (again), tested: its best hit
-    candidate tested = none;
+    candidate tested = best;
     intersect_chord(a, x, k_last, tested);
-    candidate best = again || hit ? tested : none;
+    best = again ? tested : best;
     float new_code = code;
     float new_end_key = end_key;
     segment_end(x, steps, k_last, best, new_code, new_end_key);
