@@ -55,3 +55,26 @@ vec4 sky_final_colour(vec4 image, vec3 velocity)
     return vec4(clamp(color, 0.0, 1.0), alpha);
 #endif
 }
+
+#ifdef FRAME_CODES
+// Beside the final colour, for a summary of the frame (FRAME_WRITES_COLOUR_CODES, stage_frame.c),
+// in an 8-bit target: in r the ray's outcome code (its image texel's alpha: an object's id, 0 to
+// 63, or a code of common.glsl down to CODE_FAILED) plus 4, in g how many of the texel's four
+// values the 32-bit float image texture would carry as not finite (beyond its largest finite
+// value; NaN fails the test too). Each count is written a quarter above its byte, so that a
+// driver that rounds and one that truncates store the same byte. On 32-bit paths only
+// (renderer.c, run_single_pass).
+float not_held(float x)
+{
+    return abs(x) <= 3.4028235e38 ? 0.0 : 1.0;
+}
+
+vec4 outcome_code_bytes(vec4 image)
+{
+    float bad = not_held(image.r) + not_held(image.g) + not_held(image.b) + not_held(image.a);
+    return vec4((image.a + 4.25) / 255.0, (bad + 0.25) / 255.0, 0.0, 1.0);
+}
+#define WRITE_FRAME_COLOUR(image, direction) WRITE_TARGET0(sky_final_colour(image, direction)); WRITE_TARGET1(outcome_code_bytes(image))
+#else
+#define WRITE_FRAME_COLOUR(image, direction) WRITE_TARGET0(sky_final_colour(image, direction))
+#endif

@@ -158,7 +158,7 @@ void main()
 #endif
 #ifdef FRAME_COLOUR
     // only the image is read: the sky stage's final colour, here (stage_frame.c)
-    WRITE_TARGET0(sky_final_colour(found ? new_image : end_image, v));
+    WRITE_FRAME_COLOUR(found ? new_image : end_image, v);
 #else
     WRITE_TARGET0(found ? new_image : end_image);
     WRITE_TARGET1(vec4(v, h));

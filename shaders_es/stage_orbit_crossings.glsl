@@ -126,7 +126,7 @@ void main()
     WRITE_TARGET1(found ? vec4(new_hit.xyz, depth) : vec4(end, steps));
 #elif defined(FRAME_COLOUR)
     // only the image is read: the sky stage's final colour, here (stage_frame.c)
-    WRITE_TARGET0(sky_final_colour(found ? new_image : end_image, direction));
+    WRITE_FRAME_COLOUR(found ? new_image : end_image, direction);
 #else
     WRITE_TARGET0(found ? new_image : end_image);
     WRITE_TARGET1(vec4(found ? normalize(hit_b - hit_a) : direction, found ? hit_s : 1.0));

@@ -23,7 +23,7 @@ void main()
     vec3 direction = escapes ? escape : fallen;
 #ifdef FRAME_COLOUR
     // only the image is read: the sky stage's final colour, here (stage_frame.c)
-    WRITE_TARGET0(sky_final_colour(image, direction));
+    WRITE_FRAME_COLOUR(image, direction);
 #else
     WRITE_TARGET0(image);
     WRITE_TARGET1(vec4(direction, 1.0));
@@ -145,7 +145,7 @@ void main()
     // only the image is read: the sky stage's final colour, here (stage_frame.c); the direction
     // matters only for the sky, where the ray leaves along its direction at infinity, so the orbit
     // where the walk stopped need not stay live through the hit's refinement for it
-    WRITE_TARGET0(sky_final_colour(found ? new_image : end_image, escape));
+    WRITE_FRAME_COLOUR(found ? new_image : end_image, escape);
 #else
     float reached = leaves ? 1.0 : s;
     WRITE_TARGET0(found ? new_image : end_image);

@@ -37,16 +37,23 @@ struct wait_paths {
     int image_fd, summary_fd;
 };
 
-/* The seconds of rendering that the last `time:` line of the summary in fd says, or -1. */
+/* The seconds of rendering that the last `time:` line of the summary in fd says, or -1: read from
+ * its last 8 KB, where the summary ends, however long the progress or warnings before it. */
 static double summary_frame_seconds(int fd)
 {
     char text[8192];
-    ssize_t n = pread(fd, text, sizeof text - 1, 0);
+    struct stat st;
+    if (fstat(fd, &st) != 0)
+        return -1.0;
+    off_t from = st.st_size > (off_t)sizeof text - 1 ? st.st_size - (off_t)(sizeof text - 1) : 0;
+    ssize_t n = pread(fd, text, sizeof text - 1, from);
     if (n <= 0)
         return -1.0;
     text[n] = '\0';
     double seconds = -1.0;
-    for (char *line = text; line; line = strchr(line, '\n') ? strchr(line, '\n') + 1 : NULL) {
+    /* a line cut by the start of the window is not one */
+    char *first = from == 0 ? text : strchr(text, '\n') ? strchr(text, '\n') + 1 : NULL;
+    for (char *line = first; line; line = strchr(line, '\n') ? strchr(line, '\n') + 1 : NULL) {
         double v;
         if (strncmp(line, "time: ", 6) == 0 && sscanf(line + 6, "%lf s rendering", &v) == 1)
             seconds = v;

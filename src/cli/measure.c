@@ -18,6 +18,8 @@ static long count_nonfinite(const struct render_result *res)
     long nonfinite = 0;
     size_t n = (size_t)res->width * res->height;
     const float *arrays[4] = {res->position, res->velocity, res->hit, res->image};
+    if (res->outcome)
+        nonfinite += res->outcome_nonfinite;   /* the image's, counted on the GPU */
     for (int a = 0; a < 4; a++)
         for (size_t k = 0; arrays[a] && k < 4 * n; k++)
             nonfinite += !isfinite(arrays[a][k]);
@@ -42,7 +44,7 @@ static void count_outcomes(const struct render_result *res, struct outcome_count
     memset(c, 0, sizeof *c);
     size_t n = (size_t)res->width * res->height;
     for (size_t i = 0; i < n; i++) {
-        int32_t o = (int32_t)lrintf(res->image[4 * i + 3]);
+        int32_t o = render_result_outcome(res, i);
         count_one(c, res->position && res->position[4 * i + 3] < 0.0f ? DUMP_FAILED : o, res->rgba + 4 * i);
     }
 }
@@ -86,8 +88,9 @@ int measure_gpu(const struct scene *s, const char *backend, int need_state, enum
     char stars[64] = "";
     if (res.sky_seconds > 0.0)
         snprintf(stars, sizeof stars, ", the stars of the sky %.3f s on the CPU", res.sky_seconds);
-    snprintf(m->how, sizeof m->how, "%s on %s (%s), %.3f s%s%s, %ld passes (%s: %s)", info.path_description,
-             info.backend, info.renderer, res.seconds, samples, stars, res.passes, info.pipeline, info.pipeline_why);
+    snprintf(m->how, sizeof m->how, "%s on %s (%s), %.3f s%s%s, %ld pass%s (%s: %s)", info.path_description,
+             info.backend, info.renderer, res.seconds, samples, stars, res.passes, res.passes == 1 ? "" : "es",
+             info.pipeline, info.pipeline_why);
     render_result_free(&res);
     return 0;
 }

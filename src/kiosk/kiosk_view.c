@@ -88,6 +88,7 @@ int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *b
     v->base.render.width = v->cfg->kiosk.width;
     v->base.render.height = v->cfg->kiosk.height;
     v->live = v->base;
+    v->live_is_full = 0;
     v->renderer = renderer_create(v->gl, &v->live, e);
     if (!v->renderer)
         return -1;
@@ -204,6 +205,7 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, struc
     if (kiosk_state_apply(st, &v->base, &v->full, e) != 0)
         return -1;
     kiosk_preview_scene(&v->full, v->preview_width, v->preview_height, &v->live);
+    v->live_is_full = 0;
     v->pipeline_view = st->pipeline_view;
     const struct kiosk_main *k = &v->cfg->kiosk;
     /* refinement starts over whatever the preview is, and the anti-aliasing after it: with the
@@ -286,9 +288,10 @@ int kiosk_view_refine(struct kiosk_view *v, struct error *e)
         return 0;
     if (kiosk_view_preview_pending(v))
         return preview_tile(v, e);
-    if (v->refined_rows < k->height || v->sample < v->samples.n) {
+    if ((v->refined_rows < k->height || v->sample < v->samples.n) && !v->live_is_full) {
         renderer_set_reads(v->renderer, RENDER_READ_IMAGE);
         v->live = v->full;
+        v->live_is_full = 1;
     }
     if (v->refined_rows < k->height)
         return frame_step(v, &v->refined_rows, 0.0, 0.0, 1.0f, e);

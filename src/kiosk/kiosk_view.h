@@ -59,6 +59,8 @@ struct kiosk_view {
     struct scene base;               /* as loaded */
     struct scene full;               /* base with the visitor's state, at the refined frame's size */
     struct scene live;               /* what the renderer draws now: full, or its preview */
+    int live_is_full;                /* live is full, set for the bands of the refinement and the
+                                        anti-aliasing (copied once, not at each band) */
     struct renderer *renderer;
     struct compositor comp;
     int pipeline_view;

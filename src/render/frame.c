@@ -21,7 +21,7 @@ static int add_star_light(const struct star_sky *k, struct render_result *img, d
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory for the stars of a %dx%d image", img->width,
                          img->height);
     for (size_t i = 0; i < n; i++)
-        sky[i] = lrintf(img->image[4 * i + 3]) == DUMP_SKY;
+        sky[i] = render_result_outcome(img, i) == DUMP_SKY;
     /* the renderer's subpixel offsets run up the image, as the camera's do (scene/camera.h) */
     struct star_view v = {img->width, img->height, dx, dy, img->velocity, 4, sky};
     star_sky_add(k, &v, img->rgba, img->color, NULL);
@@ -160,6 +160,7 @@ int render_frame(const struct scene *s, const struct frame_request *req, struct 
             snprintf(info->renderer, sizeof info->renderer, "%s", renderer_caps(r)->renderer);
         }
         renderer_set_hdr(r, req->hdr);
+        renderer_time_first_draws(r, 1);
         rc = frame_run_samples(r, s, out, req->with_state, req->progress, e);
         if (info) {
             snprintf(info->pipeline, sizeof info->pipeline, "%s", renderer_pipeline(r));

@@ -4,8 +4,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The whole frame's arrays, empty: the image, and the ray state when with_state. */
-static int frame_alloc(struct render_result *out, int w, int h, int with_state, int hdr, struct error *e)
+/* The whole frame's image, empty; its ray state's arrays come with the first band
+ * (band_arrays_alloc). */
+static int frame_alloc(struct render_result *out, int w, int h, int hdr, struct error *e)
 {
     size_t n = (size_t)w * h;
     memset(out, 0, sizeof *out);
@@ -15,14 +16,28 @@ static int frame_alloc(struct render_result *out, int w, int h, int with_state, 
     int ok = out->rgba != NULL;
     if (ok && hdr)
         ok = (out->color = malloc(4 * n * sizeof(float))) != NULL;
-    float **state[4] = {&out->position, &out->velocity, &out->hit, &out->image};
-    for (int k = 0; k < 4 && ok; k++)
-        if (render_read_includes(with_state, k))
-            ok = (*state[k] = malloc(4 * n * sizeof(float))) != NULL;
     if (!ok) {
         render_result_free(out);
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory for a %dx%d frame", w, h);
     }
+    return 0;
+}
+
+/* The whole frame's arrays of what the band brought back (the ray state's floats, or the outcome
+ * codes of a frame that drew its colour itself), where full has none yet. 0, or -1 with e. */
+static int band_arrays_alloc(struct render_result *full, const struct render_result *band, struct error *e)
+{
+    size_t n = (size_t)full->width * full->height;
+    const float *from[4] = {band->position, band->velocity, band->hit, band->image};
+    float **to[4] = {&full->position, &full->velocity, &full->hit, &full->image};
+    int ok = 1;
+    for (int k = 0; k < 4 && ok; k++)
+        if (from[k] && !*to[k])
+            ok = (*to[k] = malloc(4 * n * sizeof(float))) != NULL;
+    if (ok && band->outcome && !full->outcome)
+        ok = (full->outcome = malloc(n ? n : 1)) != NULL;
+    if (!ok)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory for a %dx%d frame", full->width, full->height);
     return 0;
 }
 
@@ -34,7 +49,7 @@ static int run_rows(struct renderer *r, const struct scene *s, int top, int rows
     struct render_result band;
     memset(&band, 0, sizeof band);
     if (renderer_run(r, s, 0, h - top - rows, w, rows, NULL, NULL, e) != 0 ||
-        renderer_read(r, &band, with_state, e) != 0) {
+        renderer_read(r, &band, with_state, e) != 0 || band_arrays_alloc(full, &band, e) != 0) {
         render_result_free(&band);
         return -1;
     }
@@ -47,6 +62,9 @@ static int run_rows(struct renderer *r, const struct scene *s, int top, int rows
     for (int k = 0; k < 4; k++)
         if (to[k] && from[k])
             memcpy(to[k] + at, from[k], count * sizeof(float));
+    if (full->outcome && band.outcome)
+        memcpy(full->outcome + at / 4, band.outcome, count / 4);
+    full->outcome_nonfinite += band.outcome_nonfinite;
     full->seconds += band.seconds;
     full->compile_seconds += band.compile_seconds;
     full->passes += band.passes;
@@ -75,7 +93,7 @@ int frame_run_image(struct renderer *r, const struct scene *s, double dx, double
     if (!p || !p->banded) {
         memset(out, 0, sizeof *out);
         rc = renderer_run(r, s, 0, 0, w, h, NULL, NULL, e) == 0 && renderer_read(r, out, with_state, e) == 0 ? 0 : -1;
-    } else if ((rc = frame_alloc(out, w, h, with_state, renderer_hdr(r), e)) == 0) {
+    } else if ((rc = frame_alloc(out, w, h, renderer_hdr(r), e)) == 0) {
         /* a first band of a thirty-second of the image tells how long a row takes */
         int rows = h / 32 > 0 ? h / 32 : 1;
         for (int top = 0; top < h && rc == 0;) {
@@ -98,7 +116,7 @@ int frame_run_image(struct renderer *r, const struct scene *s, double dx, double
 int frame_run_bands(struct renderer *r, const struct scene *s, int band_rows, struct render_result *out,
                     int with_state, struct error *e)
 {
-    int h = s->render.height, rc = frame_alloc(out, s->render.width, h, with_state, renderer_hdr(r), e);
+    int h = s->render.height, rc = frame_alloc(out, s->render.width, h, renderer_hdr(r), e);
     renderer_set_reads(r, with_state);
     band_rows = band_rows < 1 ? 1 : band_rows;
     for (int top = 0; top < h && rc == 0; top += band_rows)

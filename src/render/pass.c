@@ -60,6 +60,8 @@ int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GL
 
 double pass_draw_begin(struct renderer *r, GLuint program)
 {
+    if (!r->time_first_draws)
+        return -1.0;
     for (int i = 0; i < r->n_drawn; i++)
         if (r->drawn[i] == program)
             return -1.0;

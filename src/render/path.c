@@ -30,7 +30,7 @@ GLenum render_path_framebuffer_status(const struct float_format *f, int targets)
 
 /* The ray state's framebuffer in small: one or two colour targets of format f and a 16-bit depth
  * renderbuffer, as raystate_init and raystate_fbo make them. Leaves no GL error behind. */
-static GLenum ray_state_framebuffer_status(const struct float_format *f, int mrt)
+GLenum render_path_state_status(const struct float_format *f, int mrt)
 {
     GLuint tex[2] = {0, 0}, depth, fbo;
     int n = mrt ? 2 : 1;
@@ -110,7 +110,7 @@ int render_path_choose(const struct gl_caps *c, enum precision_choice precision,
             preferred = f;
             preferred_mrt = order[i].mrt;
         }
-        GLenum status = ray_state_framebuffer_status(f, order[i].mrt);
+        GLenum status = render_path_state_status(f, order[i].mrt);
         if (status == GL_FRAMEBUFFER_COMPLETE) {
             p->format = f;
             p->mrt = order[i].mrt;

@@ -33,5 +33,9 @@ int render_path_choose(const struct gl_caps *caps, enum precision_choice precisi
  * where the test hook says so (gl/caps.h): BT_FAULT=fbo_incomplete (half_fbo_incomplete for 16-bit
  * formats), mrt_fbo_incomplete for two targets of any format. */
 GLenum render_path_framebuffer_status(const struct float_format *f, int targets);
+/* The ray state's framebuffer in small (4x4): one colour target of format f, two with mrt, and a
+ * 16-bit depth renderbuffer, as raystate_fbo makes them; its status as above. Leaves no GL error
+ * and no binding behind. */
+GLenum render_path_state_status(const struct float_format *f, int mrt);
 
 #endif

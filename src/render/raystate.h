@@ -8,8 +8,9 @@
  * are written), and marks the ray in the depth buffer that every ray-state framebuffer shares.
  *
  * A texture takes memory only once a pass writes or reads it (raystate_storage): the single pass
- * writes two of the thirteen float textures (the results it ends in, checked at the start), and
- * on exact orbits with its walk in a pass of its own the two RGBA8 walk textures, so its frames
+ * writes two of the thirteen float textures (the results it ends in), or none where it draws the
+ * final colour itself (the kiosk, a render's summary: the RGBA8 image and outcome codes), and on
+ * exact orbits with its walk in a pass of its own the two RGBA8 walk textures, so its frames
  * neither clear nor hold the others, on a board whose GPU shares 1 GB with everything else. */
 #ifndef BT_RAYSTATE_H
 #define BT_RAYSTATE_H
@@ -20,7 +21,7 @@
 
 #define RAYSTATE_MAX_FBOS 32
 #define RAYSTATE_MAX_TARGETS 4     /* colour targets of one pass: the fused segment pass writes four */
-#define RAYSTATE_TEXTURES 16       /* the float textures below, final_color and orbit_walk */
+#define RAYSTATE_TEXTURES 17       /* the float textures below, final_color, outcome_codes, orbit_walk */
 
 struct raystate {
     int width, height;
@@ -28,6 +29,9 @@ struct raystate {
     GLuint result_position, result_velocity, result_hit, result_image; /* final state of each ray */
     GLuint depth;                  /* renderbuffer: 0 where a ray has been terminated, 1 elsewhere */
     GLuint final_color;            /* RGBA8 image for presentation and PNG */
+    GLuint outcome_codes;          /* RGBA8: each ray's outcome code (image texture's alpha) + 4 in
+                                      r, how many of its image values are not finite in g, for a
+                                      summary of a frame that drew its colour itself (sky_colour.glsl) */
     GLuint orbit_walk[2];          /* RGBA8: where each ray's walk along its exact orbit stopped
                                       (shaders_es/stage_orbit_walk.glsl), ping-pong */
     GLuint hdr_color;              /* the colour unclamped (raystate_hdr_color); 0 until asked for */
@@ -41,9 +45,10 @@ struct raystate {
     int n_stored;
 };
 
-/* Names every texture, gives the result targets their memory and builds their framebuffer (with
- * the depth buffer), so that a format this GPU cannot render into fails here, named with the
- * path. On failure nothing stays allocated. */
+/* Names every texture and checks the path's framebuffer of result targets (with the depth buffer)
+ * in small (render_path_state_status), so that a format this GPU cannot render into fails here,
+ * named with the path and the size; no texture takes memory yet. On failure nothing stays
+ * allocated. */
 int raystate_init(struct raystate *rs, const struct render_path *path, int width, int height, struct error *e);
 void raystate_release(struct raystate *rs);
 /* Gives TEXTURE, one of the ray state's, its memory if it has none yet (its texels then read as

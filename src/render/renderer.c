@@ -3,6 +3,7 @@
 #include "gl/quad.h"
 #include "gl/readback.h"
 #include "render/stages.h"
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <stdint.h>
@@ -169,6 +170,7 @@ const char *renderer_pipeline(const struct renderer *r) { return r->pipeline_nam
 const char *renderer_pipeline_why(const struct renderer *r) { return r->pipeline_why; }
 
 void renderer_set_hdr(struct renderer *r, int on) { r->hdr = on; }
+void renderer_time_first_draws(struct renderer *r, int on) { r->time_first_draws = on; }
 
 void renderer_capture_shaders(struct renderer *r, const char *file, void (*sink)(const char *source, void *arg),
                               void *arg)
@@ -197,16 +199,30 @@ void renderer_set_subpixel(struct renderer *r, double dx, double dy)
 }
 
 /* The whole ray in one pass (stage_frame.c); the sky stage after it, unless the pass drew the colour
- * itself, which it does where only the image is read. */
+ * itself, which it does where only the image is read, and where the image and the outcomes are read
+ * (a render's summary) on a 32-bit path whose pass writes two targets: the outcome codes then go to
+ * an 8-bit target beside the image, and no float texture is written, cleared or read back. Not on
+ * a 16-bit path, whose sky stage reads the shaded colour rounded to a half float: the colour drawn
+ * in the pass, not rounded, would differ from it by a level or so where it is not the image alone
+ * that is asked for. */
 static int run_single_pass(struct renderer *r, struct error *e)
 {
-    int colour = r->reads == RENDER_READ_IMAGE && !r->hdr;
+    int codes = r->reads == RENDER_READ_OUTCOMES && r->path.mrt && r->path.fp32 && !r->hdr;
+    if (codes) {
+        /* two 8-bit targets where the path writes two float ones: complete on every GPU known, and
+         * where one is not, the float outcomes as before */
+        struct error unused;
+        codes = raystate_fbo(&r->rs, r->rs.final_color, r->rs.outcome_codes, &unused) != 0;
+    }
+    int colour = (r->reads == RENDER_READ_IMAGE && !r->hdr) || codes;
     if ((r->exact_orbits && orbit_prepare(r, e) != 0) ||
-        stage_frame(r, colour ? FRAME_WRITES_COLOUR : FRAME_WRITES_OUTCOMES, e) != 0 ||
+        stage_frame(r, codes ? FRAME_WRITES_COLOUR_CODES : colour ? FRAME_WRITES_COLOUR : FRAME_WRITES_OUTCOMES,
+                    e) != 0 ||
         (!colour && stage_sky(r, e) != 0))
         return -1;
     r->state_pending = 1;
     r->outcomes_pending = colour;
+    r->codes_written = codes;
     return 0;
 }
 
@@ -219,6 +235,7 @@ static int run_segments(struct renderer *r, int fused, segment_hook hook, void *
     const struct scene *s = r->scene;
     r->state_pending = 0;
     r->outcomes_pending = 0;
+    r->codes_written = 0;
     if (stage_setup(r, e) != 0)
         return -1;
     int early_z = s->render.early_z;
@@ -358,6 +375,45 @@ static int complete(struct renderer *r, int state, struct error *e)
     return stage_frame(r, FRAME_WRITES_STATE, e);
 }
 
+/* The outcome codes of a frame drawn with FRAME_WRITES_COLOUR_CODES, from the 8-bit target where
+ * sky_colour.glsl left them (r: code + 4, g: the image's values not finite), into out->outcome and
+ * out->outcome_nonfinite. */
+static int read_outcome_codes(struct raystate *rs, struct render_result *out, struct error *e)
+{
+    size_t n = (size_t)rs->width * rs->height;
+    unsigned char *codes = malloc(n * 4);
+    out->outcome = malloc(n ? n : 1);
+    if (!codes || !out->outcome) {
+        free(codes);
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the outcomes back");
+    }
+    GLuint fbo = raystate_fbo(rs, rs->outcome_codes, 0, e);
+    if (!fbo) {
+        free(codes);
+        return -1;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, rs->width, rs->height, GL_RGBA, GL_UNSIGNED_BYTE, codes);
+    if (gl_check("reading the outcomes back", e) != 0) {
+        free(codes);
+        return -1;
+    }
+    /* GL rows run bottom-up; images and dumps run top-down */
+    size_t w = (size_t)rs->width;
+    out->outcome_nonfinite = 0;
+    for (int y = 0; y < rs->height; y++) {
+        const unsigned char *row = codes + 4 * w * (size_t)(rs->height - 1 - y);
+        signed char *to = out->outcome + w * (size_t)y;
+        for (size_t x = 0; x < w; x++) {
+            to[x] = (signed char)(row[4 * x] - 4);
+            out->outcome_nonfinite += row[4 * x + 1];
+        }
+    }
+    free(codes);
+    return 0;
+}
+
 int renderer_read(struct renderer *r, struct render_result *out, int with_state, struct error *e)
 {
     struct raystate *rs = &r->rs;
@@ -390,6 +446,8 @@ int renderer_read(struct renderer *r, struct render_result *out, int with_state,
     }
     if (with_state == RENDER_READ_IMAGE)
         return 0;
+    if (with_state == RENDER_READ_OUTCOMES && r->codes_written)
+        return read_outcome_codes(rs, out, e);
     /* the image and velocity textures are written by every pipeline (a single pass that drew its
      * colour itself writes them now), position and hit on demand */
     if (complete(r, render_read_includes(with_state, 0), e) != 0)
@@ -451,8 +509,14 @@ size_t renderer_state_bytes(const struct renderer *r)
     return r->have_state ? raystate_bytes(&r->rs) : 0;
 }
 
+int render_result_outcome(const struct render_result *res, size_t i)
+{
+    return res->outcome ? res->outcome[i] : (int)lrintf(res->image[4 * i + 3]);
+}
+
 void render_result_free(struct render_result *res)
 {
+    free(res->outcome);
     free(res->rgba);
     free(res->color);
     free(res->position);

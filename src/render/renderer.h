@@ -23,6 +23,12 @@ struct render_result {
     unsigned char *rgba;                    /* final image, RGBA8, top row first */
     float *color;                           /* the same unclamped, RGBA floats (renderer_set_hdr); else NULL */
     float *position, *velocity, *hit, *image; /* ray state, RGBA floats, top row first; NULL if not read */
+    signed char *outcome;                   /* read with RENDER_READ_OUTCOMES from a frame that drew its
+                                               colour itself: each ray's outcome code (the image
+                                               texture's alpha: dump.h's outcomes), top row first, in
+                                               place of image (then NULL); NULL otherwise */
+    long outcome_nonfinite;                 /* with outcome: the values of the image texture that were
+                                               not finite (or beyond the path's float) */
     double seconds;                         /* wall time of the GPU passes (glFinish included) */
     double sky_seconds;                     /* wall time of the stars of the sky, drawn on the CPU
                                                (render/frame.h); 0 without them */
@@ -68,12 +74,21 @@ int render_read_with_sky(int with_state);
 /* With on, each run also keeps the final colour unclamped, as floats, and renderer_read returns it
  * in render_result.color (16-bit PNG and PFM output). Off until set. */
 void renderer_set_hdr(struct renderer *r, int on);
+/* With on, the first draw of each program in this renderer waits for the GPU's work before it and
+ * is timed, its time added to render_result.compile_seconds beside the programs' links (what
+ * `bentray render`'s time line says); off until set, as the kiosk keeps it, whose frames should not
+ * wait for the GPU at a scene's first draws. */
+void renderer_time_first_draws(struct renderer *r, int on);
 int renderer_hdr(const struct renderer *r);
 /* Read the final image, and what `with_state` (enum render_read) asks for. 0, or -1 with e. */
 int renderer_read(struct renderer *r, struct render_result *out, int with_state, struct error *e);
 /* Position of the ray of texel (x, y) (GL order) right now: for per-segment hooks. 0, or -1 with e. */
 int renderer_read_position(struct renderer *r, int x, int y, float xyzw[4], struct error *e);
 void render_result_free(struct render_result *res);
+/* The outcome code of pixel i (top row first) of a result read with the outcomes (or more): an
+ * object's id, or dump.h's DUMP_SKY, DUMP_CAPTURED, DUMP_UNFINISHED, DUMP_FAILED; from image or
+ * outcome, whichever the read brought back. */
+int render_result_outcome(const struct render_result *res, size_t i);
 /* The textures of the last run, on the GPU, for a display to draw from (the kiosk's compositor and
  * pipeline view): the final image (RGBA8) and each ray's final state (layout: common.glsl).
  * Valid until the next run or renderer_destroy; all 0 before the first run, and each 0 that no

@@ -6,7 +6,9 @@
  * image and velocity, which the sky stage needs, and on demand (a dump, trace or the kiosk's
  * pipeline view) hit and position in a second pass of the same loop. Where only the image is read
  * (renderer_set_reads), the pass ends with the sky stage's colour instead (sky_colour.glsl) and
- * writes the final image itself: one full-screen pass and two float targets less. On exact orbits
+ * writes the final image itself: one full-screen pass and two float targets less; where the outcomes
+ * are read too (a render's summary), with MRT, each ray's outcome code goes to an 8-bit target beside
+ * it (FRAME_WRITES_COLOUR_CODES, sky_colour.glsl's FRAME_CODES). On exact orbits
  * the walk along the chords may run in a pass of its own before the one that finishes each ray
  * (render.orbit_walk, orbit_walk_passes below, shaders_es/stage_orbit_walk.glsl). */
 #include "render/stages.h"
@@ -40,7 +42,7 @@ static void set_frame(const struct program_uniforms *p, const void *arg)
     const struct frame_args *a = arg;
     const struct renderer *r = a->r;
     object_batch_set_uniforms(p, &a->batch);
-    if (a->output == FRAME_WRITES_COLOUR)
+    if (a->output == FRAME_WRITES_COLOUR || a->output == FRAME_WRITES_COLOUR_CODES)
         sky_colour_set_uniforms(p, r, UNIT_FRAME_SKY);
     if (r->exact_orbits) {
         orbit_set_uniforms(p, r, 0);
@@ -92,13 +94,14 @@ static const struct stage_program *frame_program(struct renderer *r, const struc
 {
     const struct scene *s = r->scene;
     enum frame_output output = a->output;
+    int colour = output == FRAME_WRITES_COLOUR || output == FRAME_WRITES_COLOUR_CODES;
     char batch[4096];
     if (frame_batch_defines(r, &a->batch, batch, sizeof batch, e) != 0)
         return NULL;
     const char *files[PRIM_COUNT + 12] = {"common.glsl", "bounds.glsl", r->model_file};
     int n = object_batch_files(&a->batch, files, 3);
     files[n++] = "observer.glsl";
-    if (output == FRAME_WRITES_COLOUR && !walk)
+    if (colour && !walk)
         files[n++] = "sky_colour.glsl";
     if (r->exact_orbits)
         files[n++] = "orbit_table.glsl";
@@ -116,11 +119,12 @@ static const struct stage_program *frame_program(struct renderer *r, const struc
             files[n++] = "stage_orbit_frame.glsl";
     }
     files[n] = NULL;
-    char written[96];
-    snprintf(written, sizeof written, "%s%s%s",
+    char written[160];
+    snprintf(written, sizeof written, "%s%s%s%s",
              walk ? "#define ORBIT_WALK_PASS 1\n" : a->walked ? "#define ORBIT_WALKED 1\n" : "",
-             walk ? "" : output == FRAME_WRITES_STATE ? "#define FRAME_STATE 1\n" : output == FRAME_WRITES_COLOUR ? "#define FRAME_COLOUR 1\n" : "",
-             output == FRAME_WRITES_COLOUR && !walk ? sky_colour_defines(r) : "");
+             walk ? "" : output == FRAME_WRITES_STATE ? "#define FRAME_STATE 1\n" : colour ? "#define FRAME_COLOUR 1\n" : "",
+             colour && !walk ? sky_colour_defines(r) : "",
+             output == FRAME_WRITES_COLOUR_CODES && !walk ? "#define FRAME_CODES 1\n" : "");
     char defines[sizeof batch + sizeof r->model_defines + sizeof written + 160];
     if (r->exact_orbits)
         snprintf(defines, sizeof defines, "%s%s#define SINGLE_PASS 1\n#define MAX_SEGMENTS %d\n#define ORBIT_HIT_TRIES %d\n%s%s",
@@ -185,10 +189,13 @@ int stage_frame(struct renderer *r, enum frame_output output, struct error *e)
     if (frame_batch(r, &a.batch, e) != 0)
         return -1;
     a.walked = r->exact_orbits && !a.crossings && a.batch.count > 0 && orbit_walk_separate(r);
-    GLuint out0 = output == FRAME_WRITES_STATE ? rs->result_hit : output == FRAME_WRITES_COLOUR ? rs->final_color
-                                                                                               : rs->result_image;
-    GLuint out1 = output == FRAME_WRITES_STATE ? rs->result_position : output == FRAME_WRITES_COLOUR ? 0
-                                                                                                    : rs->result_velocity;
+    GLuint out0 = rs->result_image, out1 = rs->result_velocity;
+    switch (output) {
+    case FRAME_WRITES_STATE: out0 = rs->result_hit, out1 = rs->result_position; break;
+    case FRAME_WRITES_COLOUR: out0 = rs->final_color, out1 = 0; break;
+    case FRAME_WRITES_COLOUR_CODES: out0 = rs->final_color, out1 = rs->outcome_codes; break;
+    case FRAME_WRITES_OUTCOMES: break;
+    }
     if (a.walked) {
         if (orbit_walk_passes(r, &a, out0, out1, e) != 0)
             return -1;

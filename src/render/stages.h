@@ -53,10 +53,12 @@ struct renderer {
     char pipeline_why[200];       /* why the last run took it */
     int state_pending;            /* single pass: hit and position not yet written */
     int outcomes_pending;         /* single pass drawn as FRAME_COLOUR: image and velocity neither */
+    int codes_written;            /* ... with the outcome codes beside it (FRAME_WRITES_COLOUR_CODES) */
     int reads;                    /* enum render_read: what the caller reads after a run */
     long passes;
     double seconds;
     double compile_seconds;       /* of seconds: compiling shaders (pass_draw) */
+    int time_first_draws;         /* renderer_time_first_draws: pass_draw_begin waits and times */
     GLuint drawn[RENDERER_DRAWN_MAX];  /* the programs drawn so far; the first RENDERER_DRAWN_MAX */
     int n_drawn;
     struct orbit_store *orbit_store;  /* the tables built, and those built ahead (NULL before the first) */
@@ -86,10 +88,12 @@ int pass_run(struct renderer *r, const struct stage_program *sp, GLuint out0, GL
              const struct pass_input *inputs, int n_inputs, set_uniforms_fn set_uniforms, const void *arg,
              struct error *e);
 
-/* Around a draw with `program`: its first draw in this renderer begins once the GPU's work so far
- * is done, so that the draw call's own time is what the driver spends compiling the program for the
- * draw (llvmpipe and the Mesa drivers of the exhibit's GPUs compile much of a program at its first
- * draw, not at its link), added to r->compile_seconds. A later draw is timed not at all. */
+/* Around a draw with `program`: where the renderer times first draws (renderer_time_first_draws),
+ * its first draw in this renderer begins once the GPU's work so far is done, so that the draw call's
+ * own time is what the driver spends compiling the program for the draw (llvmpipe and the Mesa
+ * drivers of the exhibit's GPUs compile much of a program at its first draw, not at its link),
+ * added to r->compile_seconds. A later draw is timed not at all, nor any draw of a renderer that
+ * does not time them (the kiosk's: no wait for the GPU in the middle of its frames). */
 double pass_draw_begin(struct renderer *r, GLuint program);
 void pass_draw_end(struct renderer *r, double began);
 /* The same as pass_run for up to RAYSTATE_MAX_TARGETS targets (the fused segment pass: four, with MRT). */
@@ -172,8 +176,9 @@ int stage_segment(struct renderer *r, int segment, struct error *e);
 /* What a single-pass frame writes: the outcome textures (image and velocity, what the sky stage
  * reads), the state (hit and position, for a read-back of the ray state), or the final colour itself
  * (the sky stage's sky_colour.glsl in the same pass, when only the image is read: FRAME_COLOUR
- * in the shaders). */
-enum frame_output { FRAME_WRITES_OUTCOMES, FRAME_WRITES_STATE, FRAME_WRITES_COLOUR };
+ * in the shaders), or that and each ray's outcome code in a second RGBA8 target (when the image
+ * and the outcomes are read, as for a render's summary, on a path with MRT: FRAME_CODES). */
+enum frame_output { FRAME_WRITES_OUTCOMES, FRAME_WRITES_STATE, FRAME_WRITES_COLOUR, FRAME_WRITES_COLOUR_CODES };
 int stage_frame(struct renderer *r, enum frame_output output, struct error *e);
 /* Whether a single pass on exact orbits walks in a pass of its own (render.orbit_walk; the frame's
  * pass finishes each ray in a second), where it walks at all. */

@@ -98,8 +98,9 @@ static inline void hc_gpu_render_hook(const struct scene *s, struct hc_gpu *g, s
     struct renderer *r = renderer_create(hc_context(), s, &gl_err);
     if (!r)
         fail_msg("renderer: %s", gl_err.message);
+    renderer_set_reads(r, RENDER_READ_STATE);
     if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, hook, arg, &e) != 0 ||
-        renderer_read(r, &g->res, 1, &e) != 0)
+        renderer_read(r, &g->res, RENDER_READ_STATE, &e) != 0)
         fail_msg("render: %s", e.message);
     snprintf(g->path, sizeof g->path, "%s", renderer_path(r)->name);
     char engine[32];

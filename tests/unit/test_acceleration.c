@@ -295,7 +295,8 @@ static void test_single_pass_is_exact(void **state)
 
 /* A single-pass frame of which only the image is read draws its final colour in its own pass (the
  * sky stage's sky_colour.glsl, FRAME_COLOUR): the very image of the frame and sky passes, bit for
- * bit, in one pass; a read of the state afterwards traces the frame again and finds the same rays.
+ * bit, in one pass, and with the outcomes read too (FRAME_CODES) every ray's outcome code as the
+ * float image holds it; a read of the state afterwards traces the frame again and finds the same rays.
  * The cases cover hits, sky, capture, unfinished and failed rays, a cubemap and a plain sky, the
  * sky's alpha, Doppler colour and the searchlight, integrated rays and exact orbits with and without
  * objects. */
@@ -344,6 +345,27 @@ static void test_frame_colour_is_exact(void **state)
         /* one pass for the image where the path writes two targets in one (MRT): the sky stage's is gone */
         assert_true(image.passes < both.res.passes);
         render_result_free(&image);
+        /* the image and each ray's outcome (a render's summary): the outcome codes in an 8-bit target
+         * beside the colour, in the same one pass, and the count of the image's values that were
+         * not finite, as the float image holds them */
+        renderer_set_reads(r, RENDER_READ_OUTCOMES);
+        struct render_result outcomes;
+        if (renderer_run(r, &s, 0, 0, W, H, NULL, NULL, &e) != 0 ||
+            renderer_read(r, &outcomes, RENDER_READ_OUTCOMES, &e) != 0)
+            fail_msg("%s: %s", what, e.message);
+        assert_null(outcomes.image);
+        assert_non_null(outcomes.outcome);
+        assert_true(outcomes.passes < both.res.passes);
+        assert_memory_equal(outcomes.rgba, both.res.rgba, (size_t)W * H * 4);
+        long nonfinite = 0;
+        for (size_t i = 0; i < (size_t)W * H; i++) {
+            assert_int_equal(outcomes.outcome[i], render_result_outcome(&both.res, i));
+            for (int c = 0; c < 4; c++)
+                nonfinite += !isfinite(both.res.image[4 * i + c]);
+        }
+        assert_int_equal(outcomes.outcome_nonfinite, nonfinite);
+        render_result_free(&outcomes);
+        renderer_set_reads(r, RENDER_READ_IMAGE);
         /* the rays' state, read after the image alone: traced again, the same */
         if (renderer_read(r, &colour.res, RENDER_READ_STATE, &e) != 0)
             fail_msg("%s: %s", what, e.message);

@@ -89,6 +89,7 @@ static void test_table_begun_before_the_renderer(void **state)
     if (!r)
         fail_msg("renderer: %s", e.message);
     renderer_orbit_store_give(r, ahead);
+    renderer_set_reads(r, RENDER_READ_STATE);
     struct render_result got;
     if (renderer_run(r, &s, 0, 0, 40, 30, NULL, NULL, &e) != 0 || renderer_read(r, &got, RENDER_READ_STATE, &e) != 0)
         fail_msg("render: %s", e.message);
