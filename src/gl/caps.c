@@ -184,10 +184,11 @@ static void probe_mrt(struct gl_caps *c, const struct float_format *f)
 {
     static const char *const vs[] = {"quad_vertex.glsl", NULL};
     static const char *const fs[] = {"probe_fragment.glsl", NULL};
-    if (!f) {
-        snprintf(c->mrt_why, sizeof c->mrt_why, "no float format renders");
-        return;
-    }
+    /* without a float format that renders, the targets the image-only path writes: RGBA8 */
+    static const struct float_format rgba8 = {"RGBA8", GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, 0, 1, ""};
+    int bytes = f == NULL;
+    if (bytes)
+        f = &rgba8;
     if (c->max_draw_buffers < 2 || !bt_gl.DrawBuffers) {
         snprintf(c->mrt_why, sizeof c->mrt_why, "GL_MAX_DRAW_BUFFERS is %d%s", c->max_draw_buffers,
                  bt_gl.DrawBuffers ? "" : " and glDrawBuffers is missing");
@@ -213,15 +214,28 @@ static void probe_mrt(struct gl_caps *c, const struct float_format *f)
     static const GLenum bufs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     glDrawBuffers(2, bufs);
     const float v[4] = {1.5f, -2.0f, 3.0f, 0.25f}, want[4] = {3.0f, -4.0f, 6.0f, 0.5f};
+    /* in 8 bits: values in [0, 1], the second target twice the first */
+    const float v8[4] = {0.25f, 0.125f, 0.375f, 0.25f}, want8[4] = {0.5f, 0.25f, 0.75f, 0.5f};
     float got[4 * PROBE_SIZE * PROBE_SIZE];
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-        snprintf(c->mrt_why, sizeof c->mrt_why, "a framebuffer with two float attachments is incomplete");
+        snprintf(c->mrt_why, sizeof c->mrt_why, "a framebuffer with two %s attachments is incomplete",
+                 bytes ? "RGBA8" : "float");
     } else {
         glViewport(0, 0, PROBE_SIZE, PROBE_SIZE);
-        set_probe(prog, v, 0);
+        set_probe(prog, bytes ? v8 : v, 0);
         quad_draw(prog, 0.0f);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo1);
-        if (read_float_pixels(0, 0, PROBE_SIZE, PROBE_SIZE, got) != 0 || !close_to(got, want, 1e-3f))
+        int read = 0;
+        if (bytes) {
+            unsigned char b[4 * PROBE_SIZE * PROBE_SIZE];
+            glPixelStorei(GL_PACK_ALIGNMENT, 1);
+            glReadPixels(0, 0, PROBE_SIZE, PROBE_SIZE, GL_RGBA, GL_UNSIGNED_BYTE, b);
+            for (int i = 0; i < 4; i++)
+                got[i] = b[i] / 255.0f;
+        } else {
+            read = read_float_pixels(0, 0, PROBE_SIZE, PROBE_SIZE, got);
+        }
+        if (read != 0 || !close_to(got, bytes ? want8 : want, bytes ? 1.0f / 255.0f : 1e-3f))
             snprintf(c->mrt_why, sizeof c->mrt_why, "the second draw buffer is not written");
         else
             c->mrt_works = glGetError() == GL_NO_ERROR;

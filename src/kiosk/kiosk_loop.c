@@ -264,8 +264,23 @@ static void notice(struct kiosk *k, const char *what, const char *why)
  * knob stops there and the HUD says why. A new scene where the knobs' values do not fit is shown
  * with the knobs back at their start, which preflight() made sure every scene takes. Returns 1
  * when the state was taken (as proposed or so corrected). */
-static int take_state(struct kiosk *k, const struct kiosk_state *proposed)
+static int take_state(struct kiosk *k, const struct kiosk_state *asked)
 {
+    struct kiosk_state corrected = *asked;
+    const struct kiosk_state *proposed = &corrected;
+    /* the pipeline view shows every ray's final state, which the image-only path cannot read back */
+    if (corrected.pipeline_view && !k->state.pipeline_view && k->view.renderer &&
+        !renderer_state_readable(k->view.renderer)) {
+        corrected.pipeline_view = 0;
+        notice(k, "no pipeline view", "it shows the rays' state, and this GPU renders into no float texture");
+        if (k->log) {
+            fprintf(k->log, "bentray kiosk: no pipeline view: it shows the rays' state, and this GPU renders into no "
+                    "float texture (render path image only)\n");
+            fflush(k->log);
+        }
+        if (kiosk_state_same(&corrected, &k->state))
+            return 0;
+    }
     struct error serr;
     if (kiosk_state_apply(proposed, &k->scenes[proposed->scene], k->trial, &serr) == 0) {
         k->state = *proposed;

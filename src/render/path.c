@@ -74,6 +74,26 @@ static void describe(struct render_path *p, const char *fallback)
              p->fp32 ? "" : " (reduced accuracy: 16-bit floats)", fallback[0] ? " " : "", fallback);
 }
 
+/* The image-only path: the single pass's colour (and outcome codes, in a second 8-bit target where
+ * two draw buffers work) in 8-bit targets, the orbit table sampled as RGBA32F, which OpenGL ES 3
+ * and desktop OpenGL sample with NEAREST whether or not they render into it. */
+static int image_only(const struct gl_caps *c, enum mrt_choice mrt, struct render_path *p, struct error *e)
+{
+    static const struct float_format table = {"RGBA32F (sampled)", GL_RGBA32F, GL_RGBA, GL_FLOAT, 1, 1, ""};
+    if (mrt == MRT_ON && !c->mrt_works)
+        return error_set(e, ERROR_INPUT, NULL, "mrt=on: multiple render targets do not work here (%s)", c->mrt_why);
+    p->format = NULL;
+    p->image_only = 1;
+    p->fp32 = 1;
+    p->mrt = mrt != MRT_OFF && c->mrt_works;
+    p->table_format = &table;
+    p->name = "image only";
+    snprintf(p->description, sizeof p->description, "image only: no float format renders here (bentray info), so "
+             "the single pass draws each frame's image%s into 8-bit targets; the rest of the ray state cannot be read",
+             p->mrt ? " and its rays' outcomes" : "");
+    return 0;
+}
+
 int render_path_choose(const struct gl_caps *c, enum precision_choice precision, enum mrt_choice mrt,
                        struct render_path *p, struct error *e)
 {
@@ -90,9 +110,13 @@ int render_path_choose(const struct gl_caps *c, enum precision_choice precision,
                          why16);
     /* a failure of a path the scene forced is the user's request, of the automatic choice the machine's */
     enum error_status whose = precision != PRECISION_AUTO || mrt == MRT_ON ? ERROR_INPUT : ERROR_RUNTIME;
-    if (!f32 && !f16)
+    if (!f32 && !f16) {
+        if (precision == PRECISION_AUTO && c->long_loops && c->fragment_highp)
+            return image_only(c, mrt, p, e);
         return error_set(e, whose, NULL, "this GPU has no renderable float format for the ray state (%s; %s); "
-                         "bentray needs RGBA32F or RGBA16F render targets", why32, why16);
+                         "bentray needs RGBA32F or RGBA16F render targets%s", why32, why16,
+                         c->long_loops ? "" : ", or long fragment-shader loops (OpenGL ES 3) for the image alone");
+    }
     if (mrt == MRT_ON && !c->mrt_works)
         return error_set(e, ERROR_INPUT, NULL, "mrt=on: multiple render targets do not work here (%s)", c->mrt_why);
     /* the paths in order of preference: the first that the scene allows (a forced precision or MRT
@@ -130,6 +154,7 @@ int render_path_choose(const struct gl_caps *c, enum precision_choice precision,
         fallback[0] = '\0';
     }
     p->fp32 = p->format->is_fp32;
+    p->table_format = p->fp32 ? p->format : NULL;
     p->name = path_name(p->fp32, p->mrt);
     describe(p, fallback);
     return 0;

@@ -6,10 +6,16 @@
 #include "scene/scene.h"
 
 struct render_path {
-    const struct float_format *format;
+    const struct float_format *format;  /* of the ray state's textures; NULL on the image-only path */
     int fp32;                 /* 0: fp16, reduced accuracy */
     int mrt;                  /* 1: x and v (and hit, image) written by one pass */
-    const char *name;         /* "fp32+mrt", "fp32", "fp16+mrt", "fp16" */
+    /* 1: no float format renders here, but the GPU runs long loops: the single pass draws each
+     * frame's image (and its rays' outcome codes, with mrt) into 8-bit targets, and no other part
+     * of the ray state can be read (renderer_run refuses what needs it) */
+    int image_only;
+    const struct float_format *table_format;  /* the 32-bit float format the orbit table is sampled
+                                                 from; NULL where there is none (the fp16 paths) */
+    const char *name;         /* "fp32+mrt", "fp32", "fp16+mrt", "fp16", "image only" */
     char description[256];
 };
 
@@ -19,7 +25,9 @@ struct render_path {
 int render_path_can_fuse(const struct gl_caps *caps, int mrt);
 
 /* Pick the best path the context supports, or the one forced; -1 with e naming what is missing
- * (ERROR_INPUT where the path was forced, ERROR_RUNTIME where none works).
+ * (ERROR_INPUT where the path was forced, ERROR_RUNTIME where none works). Where no float format
+ * renders, the image-only path, on a GPU that runs long loops and computes in 32 bits, with the
+ * precision not forced.
  * The chosen path's ray-state framebuffer (its colour targets and the depth buffer, as
  * raystate_init makes them) is built once: where it is incomplete, the next path the scene allows
  * is taken (precision auto: fp32 -> fp16; mrt auto: MRT -> separate passes) and the description

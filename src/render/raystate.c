@@ -103,7 +103,7 @@ int raystate_init(struct raystate *rs, const struct render_path *path, int width
      * fails here, in a framebuffer of the same formats in small, which takes no memory a frame that
      * draws its colour itself never needs (on llvmpipe, 15 MB cleared at 800x600) */
     const GLuint setup[RAYSTATE_MAX_TARGETS] = {rs->result_image, path->mrt ? rs->result_velocity : 0, 0, 0};
-    GLenum status = render_path_state_status(f, path->mrt);
+    GLenum status = f ? render_path_state_status(f, path->mrt) : GL_FRAMEBUFFER_COMPLETE;  /* image only: none */
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         incomplete_message(rs, setup, status, e);
         raystate_release(rs);
@@ -144,6 +144,9 @@ int raystate_storage(struct raystate *rs, GLuint texture, struct error *e)
     GLint bound = 0;
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
     const struct float_format *f = rs->format;
+    if (!f && !byte_texture(rs, texture))
+        return error_set(e, ERROR_RUNTIME, NULL, "render path %s: the ray state's float textures are needed, and no "
+                         "float format renders on this GPU", rs->path_name);
     if (byte_texture(rs, texture))
         texture_define(texture, GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, rs->width, rs->height);
     else

@@ -293,6 +293,31 @@ static int run_segments(struct renderer *r, int fused, segment_hook hook, void *
     return stage_sky(r, e);
 }
 
+/* On the image-only path, what the caller asked for that needs the ray state in float textures,
+ * refused before any pass: -1 with e, else 0. */
+static int image_only_refuses(const struct renderer *r, int per_segment_hook, struct error *e)
+{
+    if (!r->path.image_only)
+        return 0;
+    const char *needs = per_segment_hook                ? "reading the rays after every segment (trace)"
+                        : r->hdr                        ? "writing a float image (a 16-bit PNG or PFM)"
+                        : r->reads == RENDER_READ_STATE ? "reading the rays' state back (--dump, the pipeline view)"
+                        : r->reads == RENDER_READ_SKY   ? "drawing the stars of the sky from the rays' exit directions"
+                                                        : NULL;
+    if (needs)
+        return error_set(e, ERROR_RUNTIME, NULL, "render path image only: %s needs float render targets, and no "
+                         "float format renders on this GPU (bentray info lists them)", needs);
+    if (r->reads == RENDER_READ_OUTCOMES && !r->path.mrt)
+        return error_set(e, r->caps.mrt_works ? ERROR_INPUT : ERROR_RUNTIME, NULL, "render path image only: each "
+                         "ray's outcome (the summary) is drawn beside the image in a second target, and %s%s",
+                         r->caps.mrt_works ? "render.mrt = off (--no-mrt) asks for one target a pass"
+                                           : "multiple render targets do not work here: ",
+                         r->caps.mrt_works ? "" : r->caps.mrt_why);
+    return 0;
+}
+
+int renderer_state_readable(const struct renderer *r) { return !r->path.image_only; }
+
 int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, int origin_y, int width, int height,
                  segment_hook hook, void *hook_arg, struct error *e)
 {
@@ -321,8 +346,12 @@ int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, in
     r->origin_x = origin_x;
     r->origin_y = origin_y;
     struct pipeline_choice_made run;
-    if (pipeline_choose(r, hook != NULL, &run, e) != 0)
+    if (image_only_refuses(r, hook != NULL, e) != 0 || pipeline_choose(r, hook != NULL, &run, e) != 0)
         return -1;
+    if (r->path.image_only && run.kind != PIPELINE_RUN_SINGLE)
+        return error_set(e, ERROR_RUNTIME, NULL, "render path image only (no float format renders on this GPU): "
+                         "the frame cannot run in the single pass (%s), and the other pipelines keep the ray state "
+                         "in float textures", run.why);
     r->pipeline_name = pipeline_name(run.kind);
     snprintf(r->pipeline_why, sizeof r->pipeline_why, "%s", run.why);
     if ((run.kind == PIPELINE_RUN_SINGLE ? run_single_pass(r, e)

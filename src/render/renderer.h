@@ -42,6 +42,10 @@ struct render_result {
  * a size beyond its limits, a texture that cannot be decoded), ERROR_RUNTIME otherwise. */
 struct renderer *renderer_create(const struct gl_context *ctx, const struct scene *scene, struct error *e);
 const struct render_path *renderer_path(const struct renderer *r);
+/* Whether the ray state can be read back here (renderer_read with more than the outcomes, the
+ * stars of the sky, a float image): not on the image-only path (render/path.h), whose runs refuse
+ * to be asked for it. */
+int renderer_state_readable(const struct renderer *r);
 const struct gl_caps *renderer_caps(const struct renderer *r);
 
 /* Trace the rays of scene through a width x height block of image pixels whose lower-left pixel

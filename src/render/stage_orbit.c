@@ -99,7 +99,7 @@ int orbit_prepare(struct renderer *r, struct error *e)
     if (t->width > r->caps.max_texture_size || t->height > r->caps.max_texture_size)
         return error_set(e, ERROR_INPUT, NULL, "the orbit table (%dx%d) exceeds this GPU's texture limit %d: lower "
                          "render.orbit_rows or render.orbit_columns", t->width, t->height, r->caps.max_texture_size);
-    const struct float_format *f = r->path.format;
+    const struct float_format *f = r->path.table_format;
     r->orbit_texture = texture_create_nearest(f->internal_format, f->format, GL_FLOAT, t->width, t->height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, t->width, t->height, f->format, GL_FLOAT, t->texels);

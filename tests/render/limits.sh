@@ -109,8 +109,34 @@ check "fbo fault in info" 0 "render path: +fp16\+mrt: .*fell back from fp32\+mrt
 check "float format does not render" 0 "fp16\+mrt: RGBA16F ray state" -- \
     env BT_FAULT=float_render $BT render --scene $S --size 32x24 --out "$TMP/j.png"
 check "float fault in info" 0 "RGBA32F +no: not a render target \(BT_FAULT=float_render\)" -- env BT_FAULT=float_render $BT info --backend egl
-check "no float format renders" 1 "no renderable float format for the ray state" -- \
-    env BT_FAULT=float_render,half_float_render $BT render --scene $S --size 32x24 --out "$TMP/k.png"
+check "no float format renders (gles2)" 1 "no renderable float format for the ray state.*or long fragment-shader loops \(OpenGL ES 3\) for the image alone" -- \
+    env MESA_GLES_VERSION_OVERRIDE=2.0 BT_FAULT=float_render,half_float_render $BT render --scene $S --size 32x24 --backend egl --out "$TMP/k.png"
+# no float format renders, but the GPU runs long loops: the image-only path, the single pass's image
+# and outcome codes in 8-bit targets, the very picture and summary of the float path; what needs
+# the rest of the ray state is refused before any pass, with what needs it
+NOFLOAT="env BT_FAULT=float_render,half_float_render"
+for sc in schwarzschild lorenz demo; do
+    check "image only draws the float path's picture ($sc)" 0 "^same$" -- sh -c "$NOFLOAT $BT render --scene assets/scenes/$sc.scene \
+        --size 48x36 --force --out $TMP/io_n.png 2>$TMP/io_n.log && $BT render --scene assets/scenes/$sc.scene --size 48x36 \
+        --force --out $TMP/io_f.png 2>$TMP/io_f.log && grep -qE 'image only: .* [0-9]+ pass(es)? \\(single pass' $TMP/io_n.log && \
+        cmp $TMP/io_n.png $TMP/io_f.png && [ \"\$(grep '^rays:' $TMP/io_n.log)\" = \"\$(grep '^rays:' $TMP/io_f.log)\" ] && echo same"
+done
+check "image only in info" 0 "render path: +image only: no float format renders here" -- $NOFLOAT $BT info --backend egl
+check "image only refuses a dump" 1 "render path image only: reading the rays' state back \(--dump" -- \
+    $NOFLOAT $BT render --scene $S --size 32x24 --out "$TMP/io1.png" --dump "$TMP/io1.dump"
+check "image only refuses a float image" 1 "render path image only: writing a float image" -- \
+    $NOFLOAT $BT render --scene $S --size 32x24 --out "$TMP/io2.pfm"
+check "image only refuses the stars' exit directions" 1 "render path image only: drawing the stars of the sky" -- \
+    $NOFLOAT $BT render --scene assets/scenes/star_sky.scene --size 32x24 --out "$TMP/io3.png"
+check "image only refuses trace" 1 "render path image only: reading the rays after every segment" -- \
+    $NOFLOAT $BT trace --scene $S --size 32x24 --pixel 3 3
+check "image only refuses the multipass scheme" 1 "render path image only .*cannot run in the single pass \(render.pipeline = multipass\)" -- \
+    $NOFLOAT $BT render --scene $S --size 32x24 --set render.pipeline=multipass --out "$TMP/io4.png"
+check "image only without mrt has no summary" 2 "render path image only: each ray's outcome .*render.mrt = off" -- \
+    $NOFLOAT $BT render --scene $S --size 32x24 --no-mrt --out "$TMP/io5.png"
+for f in io1.png io1.dump io2.pfm io3.png io4.png io5.png; do
+    check "image only refusal wrote nothing ($f)" 0 "^absent$" -- sh -c "test -e '$TMP/$f' && echo exists || echo absent"
+done
 # a GPU whose fragment shaders compute in 16-bit floats draws no picture rather than a wrong one:
 # the probe finds it out by arithmetic, whatever precision the GPU reports
 for fault in no_highp fp16_alu; do
