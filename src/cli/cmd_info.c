@@ -25,6 +25,40 @@ static void usage(FILE *out)
                  "                       (multipass), fill\n");
 }
 
+/* Every render path of the ladder (render/path.c), each "yes" or the reason this GPU cannot take
+ * it, in the order the automatic choice tries them. */
+static void print_paths(const struct gl_caps *c)
+{
+    static const struct { int fp32, mrt; const char *name; } ladder[4] = {
+        {1, 1, "fp32+mrt"}, {1, 0, "fp32"}, {0, 1, "fp16+mrt"}, {0, 0, "fp16"}};
+    int any = 0;
+    printf("render paths (the first that works and that the scene allows is taken):\n");
+    for (int i = 0; i < 4; i++) {
+        const struct float_format *f = caps_format(c, ladder[i].fp32);
+        char why[240];
+        if (!f)
+            snprintf(why, sizeof why, "no: no %s float format renders", ladder[i].fp32 ? "32-bit" : "16-bit");
+        else if (ladder[i].mrt && !c->mrt_works)
+            snprintf(why, sizeof why, "no: MRT does not work (%.200s)", c->mrt_why);
+        else if (render_path_state_status(f, ladder[i].mrt) != GL_FRAMEBUFFER_COMPLETE)
+            snprintf(why, sizeof why, "no: its ray-state framebuffer (%s) is incomplete", f->name);
+        else
+            snprintf(why, sizeof why, "yes (%s%s)", f->name, ladder[i].fp32 ? "" : "; reduced accuracy");
+        any += why[0] == 'y';
+        printf("  %-14s %s\n", ladder[i].name, why);
+    }
+    if (any)
+        printf("  %-14s not taken: a float format renders\n", "image only");
+    else if (!c->long_loops)
+        printf("  %-14s no: %s\n", "image only", c->long_loops_why);
+    else if (!c->fragment_highp)
+        printf("  %-14s no: the fragment shaders have no highp\n", "image only");
+    else
+        printf("  %-14s yes (the image%s; the rest of the ray state cannot be read)\n", "image only",
+               c->mrt_works ? " and the rays' outcomes in 8-bit targets" : " alone: no MRT for the outcomes");
+    printf("  %-14s no: not built (docs/HARDWARE.md)\n", "packed 8-bit");
+}
+
 static void print_caps(const struct gl_caps *c)
 {
     printf("back-end:        %s (%s)\n", c->backend, c->platform_version);
@@ -57,19 +91,29 @@ static void print_caps(const struct gl_caps *c)
         printf("framebuffer blit: no: the kiosk draws its canvas on the screen (%s)\n", c->blit_why);
     struct render_path path;
     struct error e;
-    if (render_path_choose(c, PRECISION_AUTO, MRT_AUTO, &path, &e) == 0)
+    int have_path = render_path_choose(c, PRECISION_AUTO, MRT_AUTO, &path, &e) == 0;
+    if (have_path)
         printf("render path:     %s\n", path.description);
     else
         printf("render path:     none: %.511s\n", e.message);   /* cut at 511 characters, as before */
+    print_paths(c);
     int fused = render_path_can_fuse(c, c->mrt_works);
     char else_path[128];
     snprintf(else_path, sizeof else_path, "%s", fused ? "one fused pass a segment (4 draw buffers) where the scene's objects "
                                                         "fit one pass, else multipass" : "multipass");
-    if (c->long_loops)
+    if (have_path && path.image_only)
+        printf("pipeline:        single pass only, where the scene's objects fit one pass (the image-only path: the "
+               "fused pass and the multipass scheme keep the ray state in float textures)\n");
+    else if (c->long_loops)
         printf("pipeline:        single pass where the scene's objects fit one pass, else %s (%s)\n", else_path,
                c->long_loops_why);
     else
         printf("pipeline:        %s; the single pass only when forced (%s)\n", else_path, c->long_loops_why);
+    if (have_path && path.table_format)
+        printf("exact orbits:    yes: render.method = orbit_table's table sampled as %s\n", path.table_format->name);
+    else
+        printf("exact orbits:    no: render.method = orbit_table integrates its rays with rk4 here (the table needs "
+               "32-bit float textures beside a 32-bit ray state)\n");
     /* render.orbit_walk = auto (stage_frame.c: orbit_walk_separate) */
     if (c->cpu_rasterizer)
         printf("orbit walk:      in the frame's pass (a CPU rasteriser: render.orbit_walk = auto takes inline)\n");

@@ -79,7 +79,7 @@ static void describe(struct render_path *p, const char *fallback)
  * and desktop OpenGL sample with NEAREST whether or not they render into it. */
 static int image_only(const struct gl_caps *c, enum mrt_choice mrt, struct render_path *p, struct error *e)
 {
-    static const struct float_format table = {"RGBA32F (sampled)", GL_RGBA32F, GL_RGBA, GL_FLOAT, 1, 1, ""};
+    static const struct float_format table = {"RGBA32F", GL_RGBA32F, GL_RGBA, GL_FLOAT, 1, 1, ""};
     if (mrt == MRT_ON && !c->mrt_works)
         return error_set(e, ERROR_INPUT, NULL, "mrt=on: multiple render targets do not work here (%s)", c->mrt_why);
     p->format = NULL;
