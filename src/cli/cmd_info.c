@@ -110,7 +110,8 @@ static void print_caps(const struct gl_caps *c)
     else
         printf("pipeline:        %s; the single pass only when forced (%s)\n", else_path, c->long_loops_why);
     if (have_path && path.table_format)
-        printf("exact orbits:    yes: render.method = orbit_table's table sampled as %s\n", path.table_format->name);
+        printf("exact orbits:    yes: render.method = orbit_table's table sampled as %s%s\n", path.table_format->name,
+               path.fp32 ? "" : ", in the single pass (rk4 where a frame takes another pipeline)");
     else
         printf("exact orbits:    no: render.method = orbit_table integrates its rays with rk4 here (the table needs "
                "32-bit float textures beside a 32-bit ray state)\n");

@@ -74,19 +74,22 @@ static void describe(struct render_path *p, const char *fallback)
              p->fp32 ? "" : " (reduced accuracy: 16-bit floats)", fallback[0] ? " " : "", fallback);
 }
 
+/* The orbit table's format where the ray state's is not 32-bit: RGBA32F, which OpenGL ES 3 and desktop
+ * OpenGL sample with NEAREST whether or not they render into it. */
+static const struct float_format sampled_rgba32f = {"RGBA32F", GL_RGBA32F, GL_RGBA, GL_FLOAT, 1, 1, ""};
+
 /* The image-only path: the single pass's colour (and outcome codes, in a second 8-bit target where
  * two draw buffers work) in 8-bit targets, the orbit table sampled as RGBA32F, which OpenGL ES 3
  * and desktop OpenGL sample with NEAREST whether or not they render into it. */
 static int image_only(const struct gl_caps *c, enum mrt_choice mrt, struct render_path *p, struct error *e)
 {
-    static const struct float_format table = {"RGBA32F", GL_RGBA32F, GL_RGBA, GL_FLOAT, 1, 1, ""};
     if (mrt == MRT_ON && !c->mrt_works)
         return error_set(e, ERROR_INPUT, NULL, "mrt=on: multiple render targets do not work here (%s)", c->mrt_why);
     p->format = NULL;
     p->image_only = 1;
     p->fp32 = 1;
     p->mrt = mrt != MRT_OFF && c->mrt_works;
-    p->table_format = &table;
+    p->table_format = &sampled_rgba32f;
     p->name = "image only";
     snprintf(p->description, sizeof p->description, "image only: no float format renders here (bentray info), so "
              "the single pass draws each frame's image%s into 8-bit targets; the rest of the ray state cannot be read",
@@ -154,7 +157,7 @@ int render_path_choose(const struct gl_caps *c, enum precision_choice precision,
         fallback[0] = '\0';
     }
     p->fp32 = p->format->is_fp32;
-    p->table_format = p->fp32 ? p->format : NULL;
+    p->table_format = p->fp32 ? p->format : c->long_loops ? &sampled_rgba32f : NULL;
     p->name = path_name(p->fp32, p->mrt);
     describe(p, fallback);
     return 0;

@@ -14,7 +14,9 @@ struct render_path {
      * of the ray state can be read (renderer_run refuses what needs it) */
     int image_only;
     const struct float_format *table_format;  /* the 32-bit float format the orbit table is sampled
-                                                 from; NULL where there is none (the fp16 paths) */
+                                                 from: the ray state's where it is 32-bit, else
+                                                 RGBA32F on GLES 3 and desktop GL (the single pass
+                                                 only, renderer.c), NULL on GLES 2's fp16 paths */
     const char *name;         /* "fp32+mrt", "fp32", "fp16+mrt", "fp16", "image only" */
     char description[256];
 };

@@ -50,8 +50,13 @@ int scene_on_exact_orbits(const struct scene *s)
 static int renderer_follow_scene(struct renderer *r, struct error *e)
 {
     const struct scene *scene = r->scene;
-    /* exact orbits need fp32 textures; without them the rays are integrated (the path says so) */
-    r->method = scene->render.method == METHOD_ORBIT_TABLE && !r->path.fp32 ? METHOD_RK4 : scene->render.method;
+    /* exact orbits need their table sampled as 32-bit floats; without it the rays are integrated (the
+     * path says so). On a 16-bit ray state only the single pass keeps an orbit's values in 32 bits
+     * (its loop stores nothing between chords): a run read segment by segment (trace), or one whose
+     * scene asks for another pipeline, integrates with rk4 there */
+    int table = r->path.table_format && (r->path.fp32 || (!r->run_hooked && scene->render.pipeline != PIPELINE_MULTIPASS &&
+                                                         scene->render.pipeline != PIPELINE_FUSED));
+    r->method = scene->render.method == METHOD_ORBIT_TABLE && !table ? METHOD_RK4 : scene->render.method;
     /* a model with its fields off is flat space: nothing is integrated (model_is_straight); so is
      * a mass too small for an orbit table, on exact orbits */
     r->straight = model_is_straight(&scene->model) || (r->method == METHOD_ORBIT_TABLE && mass_unresolved(scene));
@@ -111,7 +116,7 @@ static int renderer_open(struct renderer *r, const struct gl_context *ctx, const
         quad_release();
         return -1;
     }
-    if (scene->render.method == METHOD_ORBIT_TABLE && !r->path.fp32) {
+    if (scene->render.method == METHOD_ORBIT_TABLE && !r->path.table_format) {
         if (scene->render.precision == PRECISION_FP16) {
             error_set(e, ERROR_INPUT, NULL, "render.method = orbit_table needs 32-bit float textures, and "
                       "render.precision = fp16 asks for 16-bit ones: use render.method = rk4 or precision auto");
@@ -122,9 +127,14 @@ static int renderer_open(struct renderer *r, const struct gl_context *ctx, const
         size_t used = strlen(r->path.description);
         snprintf(r->path.description + used, sizeof r->path.description - used,
                  "; render.method = orbit_table needs 32-bit float textures: rays integrated with rk4 instead");
+    } else if (scene->render.method == METHOD_ORBIT_TABLE && !r->path.fp32) {
+        size_t used = strlen(r->path.description);
+        snprintf(r->path.description + used, sizeof r->path.description - used,
+                 "; exact orbits in the single pass, their table sampled as %s (rk4 where a frame takes another "
+                 "pipeline)", r->path.table_format->name);
     }
     int table_width = scene->render.orbit_columns + 1 + ORBIT_WARP_SAMPLES, table_height = 2 * scene->render.orbit_rows;
-    if (scene->render.method == METHOD_ORBIT_TABLE && r->path.fp32 &&
+    if (scene->render.method == METHOD_ORBIT_TABLE && r->path.table_format &&
         (table_width > r->caps.max_texture_size || table_height > r->caps.max_texture_size)) {
         error_set(e, ERROR_INPUT, NULL, "the orbit table (%dx%d texels for render.orbit_columns = %d, "
                   "render.orbit_rows = %d) exceeds this GPU's texture limit %d", table_width, table_height,
@@ -326,6 +336,7 @@ int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, in
                          "objects, textures or sky it loaded: make a renderer for the new scene", scene->name,
                          r->scene->name);
     r->scene = scene;
+    r->run_hooked = hook != NULL;
     if (!r->have_state || r->rs.width != width || r->rs.height != height) {
         if (r->have_state)
             raystate_release(&r->rs);
@@ -348,6 +359,10 @@ int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, in
     struct pipeline_choice_made run;
     if (image_only_refuses(r, hook != NULL, e) != 0 || pipeline_choose(r, hook != NULL, &run, e) != 0)
         return -1;
+    if (r->exact_orbits && !r->path.fp32 && run.kind != PIPELINE_RUN_SINGLE)
+        return error_set(e, ERROR_RUNTIME, NULL, "render.method = orbit_table on a 16-bit ray state (render path %s) "
+                         "runs in the single pass only, and this frame cannot (%s): use render.method = rk4",
+                         r->path.name, run.why);
     if (r->path.image_only && run.kind != PIPELINE_RUN_SINGLE)
         return error_set(e, ERROR_RUNTIME, NULL, "render path image only (no float format renders on this GPU): "
                          "the frame cannot run in the single pass (%s), and the other pipelines keep the ray state "

@@ -54,6 +54,7 @@ struct renderer {
     int state_pending;            /* single pass: hit and position not yet written */
     int outcomes_pending;         /* single pass drawn as FRAME_COLOUR: image and velocity neither */
     int codes_written;            /* ... with the outcome codes beside it (FRAME_WRITES_COLOUR_CODES) */
+    int run_hooked;               /* the run going on is read segment by segment (renderer_run's hook) */
     int reads;                    /* enum render_read: what the caller reads after a run */
     long passes;
     double seconds;

@@ -127,8 +127,10 @@ check "info lists the paths" 0 "^  fp32\+mrt +yes \(RGBA32F\) \|.*   fp16 +yes \
     sh -c "$BT info --backend egl | grep '^  [a-z]' | tr '\n' '|' | sed 's/|/ | /g'"
 check "info lists the paths, none renders" 0 "^  fp32\+mrt +no: no 32-bit float format renders \|.*   image only +yes \(the image and the rays' outcomes in 8-bit targets.*pipeline: +single pass only.*exact orbits: +yes: .* sampled as RGBA32F" -- \
     sh -c "$NOFLOAT $BT info --backend egl | grep '^  [a-z]\|^pipeline\|^exact' | tr '\n' '|' | sed 's/|/ | /g'"
-check "info: no exact orbits on a 16-bit ray state" 0 "^exact orbits: +no: render.method = orbit_table integrates its rays with rk4 here" -- \
+check "info: exact orbits on a 16-bit ray state in the single pass" 0 "^exact orbits: +yes: .* sampled as RGBA32F, in the single pass" -- \
     env BT_FAULT=float_render $BT info --backend egl
+check "info: no exact orbits on gles2's 16-bit ray state" 0 "^exact orbits: +no: render.method = orbit_table integrates its rays with rk4 here" -- \
+    env MESA_GLES_VERSION_OVERRIDE=2.0 $BT info --backend egl
 check "image only refuses a dump" 1 "render path image only: reading the rays' state back \(--dump" -- \
     $NOFLOAT $BT render --scene $S --size 32x24 --out "$TMP/io1.png" --dump "$TMP/io1.dump"
 check "image only refuses a float image" 1 "render path image only: writing a float image" -- \
