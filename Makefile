@@ -228,6 +228,10 @@ test-sanitize:
 FUZZ_PACKAGES := clang libclang-rt-14-dev
 FUZZ_CC       ?= clang
 FUZZ_SECONDS  ?= 60
+# Seconds one input may run before libFuzzer calls it a hang. Every input of the corpus runs in well
+# under a second alone; a run niced beside builds and tests on two cores can stall an input for
+# longer than that on the wall clock, so such a run passes a larger value (FUZZ_TIMEOUT=60).
+FUZZ_TIMEOUT  ?= 10
 FUZZ_TARGETS  := conf scene kiosk_config dump hid gpio script
 FUZZ_DIR      := $(BUILD)/fuzz
 # -fno-sanitize-recover: undefined behaviour stops the run, so that libFuzzer keeps the input
@@ -289,7 +293,7 @@ fuzz-run: $(FUZZ_BINS)
 	  for s in tests/fuzz/seeds/$$t/*; do [ -f "$$s" ] && cp -n "$$s" $$corpus/; done; \
 	  echo "== fuzz_$$t: $(FUZZ_SECONDS) s, corpus $$corpus ($$(ls $$corpus | wc -l) inputs)"; \
 	  BT_FUZZ_TMPDIR=$$tmp UBSAN_OPTIONS=print_stacktrace=1 \
-	    $(FUZZ_DIR)/fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -timeout=10 -print_final_stats=1 \
+	    $(FUZZ_DIR)/fuzz_$$t -max_total_time=$(FUZZ_SECONDS) -timeout=$(FUZZ_TIMEOUT) -print_final_stats=1 \
 	    -artifact_prefix=$$crashes/ $$corpus > $$log 2>&1; \
 	  rc=$$?; echo $$rc > $(FUZZ_DIR)/logs/$$t.rc; \
 	  rm -f $$tmp/bt_fuzz_*; \
