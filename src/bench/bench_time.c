@@ -40,7 +40,7 @@ int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_ti
         rc = renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, e);
         struct render_result res;
         if (rc == 0 && k > 0)
-            rc = renderer_read(r, &res, d && k == runs, e);
+            rc = renderer_read(r, &res, d && k == runs ? RENDER_READ_STATE : RENDER_READ_IMAGE, e);
         if (rc == 0 && k > 0) {
             times[k - 1] = res.seconds;
             t->passes = res.passes;

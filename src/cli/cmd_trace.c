@@ -188,7 +188,7 @@ static int trace_gpu(const struct common_options *o, const struct scene *s, long
                 "multipass scheme (render.pipeline = single applies to render)\n");
     int gl_row = s->render.height - 1 - (int)py;
     if (r && renderer_run(r, s, (int)px, gl_row, 1, 1, record_point, pl, &e) == 0 &&
-        renderer_read(r, &res, 1, &e) == 0) {
+        renderer_read(r, &res, RENDER_READ_STATE, &e) == 0) {
         struct dump d;
         if (result_to_dump(&res, s, "gpu", &d) == 0) {
             char engine[40];

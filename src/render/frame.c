@@ -32,11 +32,11 @@ static int add_star_light(const struct star_sky *k, struct render_result *img, d
 /* One image of the frame, its rays started (dx, dy) off the pixels' centres, with the stars when
  * stars is not NULL. */
 static int run_image(struct renderer *r, const struct scene *s, const struct star_sky *stars, double dx, double dy,
-                     struct render_result *out, int with_state, struct frame_progress *p, struct error *e)
+                     struct render_result *out, enum render_read reads, struct frame_progress *p, struct error *e)
 {
     if (!stars)
-        return frame_run_image(r, s, dx, dy, out, with_state, p, e);
-    if (frame_run_image(r, s, dx, dy, out, render_read_with_sky(with_state), p, e) != 0)
+        return frame_run_image(r, s, dx, dy, out, reads, p, e);
+    if (frame_run_image(r, s, dx, dy, out, render_read_with_sky(reads), p, e) != 0)
         return -1;
     double t0 = clock_seconds();
     if (add_star_light(stars, out, dx, dy, e) != 0) {
@@ -65,19 +65,19 @@ int frame_bands_wanted(const struct scene *s, long pixel_samples)
 }
 
 static int run_samples(struct renderer *r, const struct scene *s, const struct star_sky *stars,
-                       struct render_result *out, int with_state, enum progress_mode progress, struct error *e)
+                       struct render_result *out, enum render_read reads, enum progress_mode progress, struct error *e)
 {
     struct pixel_samples pattern;
     pixel_samples_make(s->render.samples, &pattern);
     /* the dump's rays are the pixels' centres; a summary's outcomes (RENDER_READ_OUTCOMES) may come
      * from the first sample */
-    int extra_centre = pattern.n > 1 && with_state == RENDER_READ_STATE && !pattern.centre_included;
+    int extra_centre = pattern.n > 1 && reads == RENDER_READ_STATE && !pattern.centre_included;
     struct frame_progress p = {.runs = pattern.n + extra_centre, .samples = pattern.n};
     progress_begin(&p.line, progress);
     long pixel_samples = (long)s->render.width * s->render.height * p.runs;
     p.banded = progress == PROGRESS_ALWAYS || (progress == PROGRESS_AUTO && frame_bands_wanted(s, pixel_samples));
     if (pattern.n == 1) {
-        int rc = run_image(r, s, stars, 0.0, 0.0, out, with_state, &p, e);
+        int rc = run_image(r, s, stars, 0.0, 0.0, out, reads, &p, e);
         progress_end(&p.line);
         return rc;
     }
@@ -92,7 +92,7 @@ static int run_samples(struct renderer *r, const struct scene *s, const struct s
         rc = frame_run_image(r, s, 0.0, 0.0, out, RENDER_READ_STATE, &p, e);
         p.run++;
     } else {
-        rc = run_image(r, s, stars, pattern.dx[0], pattern.dy[0], out, with_state, &p, e);
+        rc = run_image(r, s, stars, pattern.dx[0], pattern.dy[0], out, reads, &p, e);
         if (rc == 0)
             sample_average_add(&sum, out->rgba, out->color);
         first = 1;
@@ -121,15 +121,15 @@ static int run_samples(struct renderer *r, const struct scene *s, const struct s
     return rc;
 }
 
-int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, int with_state,
+int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, enum render_read reads,
                       enum progress_mode progress, struct error *e)
 {
     if (!star_sky_wanted(s))
-        return run_samples(r, s, NULL, out, with_state, progress, e);
+        return run_samples(r, s, NULL, out, reads, progress, e);
     struct star_sky *stars = malloc(sizeof *stars);
     if (!stars)
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory for the stars of the sky");
-    int rc = star_sky_init(stars, s, e) == 0 ? run_samples(r, s, stars, out, with_state, progress, e) : -1;
+    int rc = star_sky_init(stars, s, e) == 0 ? run_samples(r, s, stars, out, reads, progress, e) : -1;
     star_sky_free(stars);
     free(stars);
     return rc;
@@ -161,7 +161,7 @@ int render_frame(const struct scene *s, const struct frame_request *req, struct 
         }
         renderer_set_hdr(r, req->hdr);
         renderer_time_first_draws(r, 1);
-        rc = frame_run_samples(r, s, out, req->with_state, req->progress, e);
+        rc = frame_run_samples(r, s, out, req->reads, req->progress, e);
         if (info) {
             snprintf(info->pipeline, sizeof info->pipeline, "%s", renderer_pipeline(r));
             snprintf(info->pipeline_why, sizeof info->pipeline_why, "%s", renderer_pipeline_why(r));

@@ -17,7 +17,7 @@ struct frame_info {
 /* What a frame should bring back. */
 struct frame_request {
     const char *backend;          /* egl, osmesa or auto */
-    int with_state;               /* enum render_read */
+    enum render_read reads;       /* what the caller reads (renderer.h) */
     enum progress_mode progress;  /* a long render reports its rows and samples on stderr (io/progress.h;
                                      it then runs in bands of rows, render/frame_bands.h) */
     int hdr;                      /* also the unclamped colour (render_result.color) */
@@ -30,7 +30,7 @@ int render_frame(const struct scene *s, const struct frame_request *req, struct 
  * scene/pixel_samples.h), each a whole frame, averaged in linear light into out->rgba; seconds and
  * passes summed over them. The ray state, when asked for, is the pixels' centres': sample 0 where
  * the pattern holds the centre, else one more run that only the state comes from. 0, or -1 with e. */
-int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, int with_state,
+int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, enum render_read reads,
                       enum progress_mode progress, struct error *e);
 /* Per-pixel records (and colours) from a result read with its state, or with its outcomes only
  * (RENDER_READ_OUTCOMES: hit, position, direction, depth and steps are then 0). */

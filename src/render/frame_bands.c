@@ -43,13 +43,13 @@ static int band_arrays_alloc(struct render_result *full, const struct render_res
 
 /* Image rows [top, top + rows), top row first, in one run, copied into the whole frame. */
 static int run_rows(struct renderer *r, const struct scene *s, int top, int rows, struct render_result *full,
-                    int with_state, struct error *e)
+                    enum render_read reads, struct error *e)
 {
     int w = s->render.width, h = s->render.height;
     struct render_result band;
     memset(&band, 0, sizeof band);
     if (renderer_run(r, s, 0, h - top - rows, w, rows, NULL, NULL, e) != 0 ||
-        renderer_read(r, &band, with_state, e) != 0 || band_arrays_alloc(full, &band, e) != 0) {
+        renderer_read(r, &band, reads, e) != 0 || band_arrays_alloc(full, &band, e) != 0) {
         render_result_free(&band);
         return -1;
     }
@@ -85,21 +85,21 @@ static void report(struct frame_progress *p, int rows_done, int rows)
 }
 
 int frame_run_image(struct renderer *r, const struct scene *s, double dx, double dy, struct render_result *out,
-                    int with_state, struct frame_progress *p, struct error *e)
+                    enum render_read reads, struct frame_progress *p, struct error *e)
 {
     int w = s->render.width, h = s->render.height, rc = 0;
     renderer_set_subpixel(r, dx, dy);
-    renderer_set_reads(r, with_state);
+    renderer_set_reads(r, reads);
     if (!p || !p->banded) {
         memset(out, 0, sizeof *out);
-        rc = renderer_run(r, s, 0, 0, w, h, NULL, NULL, e) == 0 && renderer_read(r, out, with_state, e) == 0 ? 0 : -1;
+        rc = renderer_run(r, s, 0, 0, w, h, NULL, NULL, e) == 0 && renderer_read(r, out, reads, e) == 0 ? 0 : -1;
     } else if ((rc = frame_alloc(out, w, h, renderer_hdr(r), e)) == 0) {
         /* a first band of a thirty-second of the image tells how long a row takes */
         int rows = h / 32 > 0 ? h / 32 : 1;
         for (int top = 0; top < h && rc == 0;) {
             rows = rows < h - top ? rows : h - top;
             double t0 = clock_seconds();
-            rc = run_rows(r, s, top, rows, out, with_state, e);
+            rc = run_rows(r, s, top, rows, out, reads, e);
             double per_row = (clock_seconds() - t0) / rows;
             top += rows;
             report(p, top, h);
@@ -114,13 +114,13 @@ int frame_run_image(struct renderer *r, const struct scene *s, double dx, double
 }
 
 int frame_run_bands(struct renderer *r, const struct scene *s, int band_rows, struct render_result *out,
-                    int with_state, struct error *e)
+                    enum render_read reads, struct error *e)
 {
     int h = s->render.height, rc = frame_alloc(out, s->render.width, h, renderer_hdr(r), e);
-    renderer_set_reads(r, with_state);
+    renderer_set_reads(r, reads);
     band_rows = band_rows < 1 ? 1 : band_rows;
     for (int top = 0; top < h && rc == 0; top += band_rows)
-        rc = run_rows(r, s, top, band_rows < h - top ? band_rows : h - top, out, with_state, e);
+        rc = run_rows(r, s, top, band_rows < h - top ? band_rows : h - top, out, reads, e);
     if (rc != 0)
         render_result_free(out);
     return rc;

@@ -28,12 +28,12 @@ struct frame_progress {
 };
 
 /* The image of s (its render.width x height, rays started (dx, dy) pixels off their centres) into
- * out, with the ray state when with_state: in one run (p NULL or not banded), else in bands sized
+ * out, with the ray state when reads: in one run (p NULL or not banded), else in bands sized
  * to FRAME_BAND_SECONDS, reporting each. 0, or -1 with e. */
 int frame_run_image(struct renderer *r, const struct scene *s, double dx, double dy, struct render_result *out,
-                    int with_state, struct frame_progress *p, struct error *e);
+                    enum render_read reads, struct frame_progress *p, struct error *e);
 /* The same in bands of band_rows rows, top first (the last may be shorter), no progress. */
 int frame_run_bands(struct renderer *r, const struct scene *s, int band_rows, struct render_result *out,
-                    int with_state, struct error *e);
+                    enum render_read reads, struct error *e);
 
 #endif

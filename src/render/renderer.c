@@ -391,9 +391,9 @@ int renderer_read_position(struct renderer *r, int x, int y, float xyzw[4], stru
     return 0;
 }
 
-int render_read_includes(int with_state, int k)
+int render_read_includes(enum render_read reads, int k)
 {
-    switch (with_state) {
+    switch (reads) {
     case RENDER_READ_STATE: return 1;
     case RENDER_READ_OUTCOMES: return k == 3;
     case RENDER_READ_SKY: return k == 1 || k == 3;
@@ -401,7 +401,7 @@ int render_read_includes(int with_state, int k)
     }
 }
 
-int render_read_with_sky(int with_state) { return with_state == RENDER_READ_STATE ? RENDER_READ_STATE : RENDER_READ_SKY; }
+enum render_read render_read_with_sky(enum render_read reads) { return reads == RENDER_READ_STATE ? RENDER_READ_STATE : RENDER_READ_SKY; }
 
 /* The single-pass frame's deferred outcome textures (image and velocity), traced again when the
  * frame drew its colour itself; then, with state, its hit and position. */
@@ -458,7 +458,7 @@ static int read_outcome_codes(struct raystate *rs, struct render_result *out, st
     return 0;
 }
 
-int renderer_read(struct renderer *r, struct render_result *out, int with_state, struct error *e)
+int renderer_read(struct renderer *r, struct render_result *out, enum render_read reads, struct error *e)
 {
     struct raystate *rs = &r->rs;
     size_t n = (size_t)rs->width * rs->height;
@@ -488,18 +488,18 @@ int renderer_read(struct renderer *r, struct render_result *out, int with_state,
         if (raystate_read(rs, raystate_hdr_color(rs), out->color, e) != 0)
             return -1;
     }
-    if (with_state == RENDER_READ_IMAGE)
+    if (reads == RENDER_READ_IMAGE)
         return 0;
-    if (with_state == RENDER_READ_OUTCOMES && r->codes_written)
+    if (reads == RENDER_READ_OUTCOMES && r->codes_written)
         return read_outcome_codes(rs, out, e);
     /* the image and velocity textures are written by every pipeline (a single pass that drew its
      * colour itself writes them now), position and hit on demand */
-    if (complete(r, render_read_includes(with_state, 0), e) != 0)
+    if (complete(r, render_read_includes(reads, 0), e) != 0)
         return -1;
     float **dst[4] = {&out->position, &out->velocity, &out->hit, &out->image};
     GLuint src[4] = {rs->result_position, rs->result_velocity, rs->result_hit, rs->result_image};
     for (int k = 0; k < 4; k++) {
-        if (!render_read_includes(with_state, k))
+        if (!render_read_includes(reads, k))
             continue;
         *dst[k] = malloc(n * 4 * sizeof(float));
         if (!*dst[k])
@@ -515,9 +515,9 @@ int renderer_complete_state(struct renderer *r, struct error *e)
     return complete(r, 1, e);
 }
 
-void renderer_set_reads(struct renderer *r, int with_state)
+void renderer_set_reads(struct renderer *r, enum render_read reads)
 {
-    r->reads = with_state;
+    r->reads = reads;
 }
 
 /* A texture of the ray state that the last run wrote (it has its memory), else 0. */

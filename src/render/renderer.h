@@ -69,12 +69,12 @@ enum render_read { RENDER_READ_IMAGE = 0, RENDER_READ_STATE = 1, RENDER_READ_OUT
  * set). It changes no result, only the passes: with RENDER_READ_IMAGE a single-pass frame draws
  * its final image in its own pass (the sky stage's colour in it, one full-screen pass and two float
  * targets less), and a later read of more traces the frame again for its outcomes. */
-void renderer_set_reads(struct renderer *r, int with_state);
-/* Whether a read of kind with_state brings back part k of the ray state: 0 position, 1 velocity,
+void renderer_set_reads(struct renderer *r, enum render_read reads);
+/* Whether a read of kind reads brings back part k of the ray state: 0 position, 1 velocity,
  * 2 hit, 3 image (render_result's order). */
-int render_read_includes(int with_state, int k);
-/* The read that brings back what both with_state and RENDER_READ_SKY ask for. */
-int render_read_with_sky(int with_state);
+int render_read_includes(enum render_read reads, int k);
+/* The read that brings back what both reads and RENDER_READ_SKY ask for. */
+enum render_read render_read_with_sky(enum render_read reads);
 /* With on, each run also keeps the final colour unclamped, as floats, and renderer_read returns it
  * in render_result.color (16-bit PNG and PFM output). Off until set. */
 void renderer_set_hdr(struct renderer *r, int on);
@@ -84,8 +84,8 @@ void renderer_set_hdr(struct renderer *r, int on);
  * wait for the GPU at a scene's first draws. */
 void renderer_time_first_draws(struct renderer *r, int on);
 int renderer_hdr(const struct renderer *r);
-/* Read the final image, and what `with_state` (enum render_read) asks for. 0, or -1 with e. */
-int renderer_read(struct renderer *r, struct render_result *out, int with_state, struct error *e);
+/* Read the final image, and what `reads` (enum render_read) asks for. 0, or -1 with e. */
+int renderer_read(struct renderer *r, struct render_result *out, enum render_read reads, struct error *e);
 /* Position of the ray of texel (x, y) (GL order) right now: for per-segment hooks. 0, or -1 with e. */
 int renderer_read_position(struct renderer *r, int x, int y, float xyzw[4], struct error *e);
 void render_result_free(struct render_result *res);

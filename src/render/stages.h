@@ -55,7 +55,7 @@ struct renderer {
     int outcomes_pending;         /* single pass drawn as FRAME_COLOUR: image and velocity neither */
     int codes_written;            /* ... with the outcome codes beside it (FRAME_WRITES_COLOUR_CODES) */
     int run_hooked;               /* the run going on is read segment by segment (renderer_run's hook) */
-    int reads;                    /* enum render_read: what the caller reads after a run */
+    enum render_read reads;       /* what the caller reads after a run (renderer_set_reads) */
     long passes;
     double seconds;
     double compile_seconds;       /* of seconds: compiling shaders (pass_draw) */

@@ -155,9 +155,9 @@ static void test_dump_follows_centre(void **state)
     hc_load(&s, "schwarzschild", 48, 36, NULL);
     struct render_result one, four;
     struct error gl_err;
-    assert_int_equal(render_frame(&s, &(struct frame_request){.backend = "egl", .with_state = RENDER_READ_STATE}, &one, NULL, &gl_err), 0);
+    assert_int_equal(render_frame(&s, &(struct frame_request){.backend = "egl", .reads = RENDER_READ_STATE}, &one, NULL, &gl_err), 0);
     s.render.samples = 4;
-    assert_int_equal(render_frame(&s, &(struct frame_request){.backend = "egl", .with_state = RENDER_READ_STATE}, &four, NULL, &gl_err), 0);
+    assert_int_equal(render_frame(&s, &(struct frame_request){.backend = "egl", .reads = RENDER_READ_STATE}, &four, NULL, &gl_err), 0);
     size_t n = (size_t)48 * 36 * 4;
     assert_memory_equal(one.position, four.position, n * sizeof(float));
     assert_memory_equal(one.velocity, four.velocity, n * sizeof(float));
@@ -177,7 +177,7 @@ static unsigned char *shifted_image(const struct scene *s, double dx, double dy)
     renderer_set_subpixel(r, dx, dy);
     struct render_result res;
     if (renderer_run(r, s, 0, 0, s->render.width, s->render.height, NULL, NULL, &e) != 0 ||
-        renderer_read(r, &res, 0, &e) != 0)
+        renderer_read(r, &res, RENDER_READ_IMAGE, &e) != 0)
         fail_msg("render: %s", e.message);
     renderer_destroy(r);
     unsigned char *rgba = res.rgba;

@@ -288,7 +288,7 @@ static void test_renderer_follows_the_scene(void **state)
             assert_non_null(r);
         }
         struct render_result a;
-        if (renderer_run(r, &live, 0, 0, W, H, NULL, NULL, &e) != 0 || renderer_read(r, &a, 0, &e))
+        if (renderer_run(r, &live, 0, 0, W, H, NULL, NULL, &e) != 0 || renderer_read(r, &a, RENDER_READ_IMAGE, &e))
             fail_msg("%s", e.message);
         fresh = live;
         struct hc_gpu g;

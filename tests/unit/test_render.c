@@ -33,7 +33,7 @@ static void render(const struct scene *s, const char *backend, struct render_res
 {
     struct error gl_err;
     struct frame_info info;
-    if (render_frame(s, &(struct frame_request){.backend = backend, .with_state = RENDER_READ_STATE}, res, &info, &gl_err) != 0)
+    if (render_frame(s, &(struct frame_request){.backend = backend, .reads = RENDER_READ_STATE}, res, &info, &gl_err) != 0)
         fail_msg("%s on %s: %s", s->name, backend, gl_err.message);
     assert_int_equal(result_to_dump(res, s, info.path_name, d), 0);
     if (path_name)
