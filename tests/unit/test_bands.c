@@ -29,13 +29,18 @@ static void whole_frame(const struct scene *s, int what, struct render_result *o
     renderer_destroy(r);
 }
 
-static void banded_frame(const struct scene *s, int rows, struct render_result *out)
+static void banded_frame_reading(const struct scene *s, int rows, enum render_read reads, struct render_result *out)
 {
     struct error e;
     struct renderer *r = make_renderer(s);
-    if (frame_run_bands(r, s, rows, out, RENDER_READ_STATE, &e) != 0)
+    if (frame_run_bands(r, s, rows, out, reads, &e) != 0)
         fail_msg("bands: %s", e.message);
     renderer_destroy(r);
+}
+
+static void banded_frame(const struct scene *s, int rows, struct render_result *out)
+{
+    banded_frame_reading(s, rows, RENDER_READ_STATE, out);
 }
 
 /* Pixels whose colour differs by more than 2 of 255 in some channel. */
@@ -111,7 +116,8 @@ static void test_polygon_bands(void **state)
 }
 
 /* The outcome codes read alone are the whole state's, and the image is the same; read from a frame
- * that drew its colour itself (the single pass), they come as bytes, without the float image. */
+ * that drew its colour itself (the single pass), they come as bytes, without the float image, and
+ * in bands of 7 rows (the last shorter) they are the whole frame's too. */
 static void test_outcomes_alone(void **state)
 {
     (void)state;
@@ -133,6 +139,14 @@ static void test_outcomes_alone(void **state)
             assert_int_equal(render_result_outcome(&outcomes, i), render_result_outcome(&all, i));
         if (outcomes.image)
             assert_memory_equal(all.image, outcomes.image, n * sizeof(float));
+        struct render_result banded;
+        banded_frame_reading(&s, 7, RENDER_READ_OUTCOMES, &banded);
+        assert_true((banded.outcome != NULL) == (outcomes.outcome != NULL));
+        assert_memory_equal(banded.rgba, outcomes.rgba, n);
+        for (size_t i = 0; i < n / 4; i++)
+            assert_int_equal(render_result_outcome(&banded, i), render_result_outcome(&all, i));
+        assert_int_equal(banded.outcome_nonfinite, outcomes.outcome_nonfinite);
+        render_result_free(&banded);
         render_result_free(&all);
         render_result_free(&outcomes);
     }
