@@ -134,6 +134,15 @@ int pipeline_choose(const struct renderer *r, int per_segment_hook, struct pipel
         }
         return 0;
     }
+    /* the render paths whose ray state the other pipelines cannot keep */
+    if (r->exact_orbits && !r->path.fp32)
+        return error_set(e, ERROR_RUNTIME, NULL, "render.method = orbit_table on a 16-bit ray state (render path %s) "
+                         "runs in the single pass only, and this frame cannot (%s): use render.method = rk4",
+                         r->path.name, out->why);
+    if (r->path.image_only)
+        return error_set(e, ERROR_RUNTIME, NULL, "render path image only (no float format renders on this GPU): "
+                         "the frame cannot run in the single pass (%s), and the other pipelines keep the ray state "
+                         "in float textures", out->why);
     char fused_why[200];
     int fused = fused_fits(r, fused_why, sizeof fused_why, e);
     if (fused < 0)

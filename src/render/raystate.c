@@ -245,3 +245,15 @@ int raystate_read(struct raystate *rs, GLuint texture, float *out, struct error 
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the ray state back");
     return 0;
 }
+
+int raystate_read_bytes(struct raystate *rs, GLuint texture, unsigned char *rgba_bottom_up, const char *what,
+                        struct error *e)
+{
+    GLuint fbo = raystate_fbo(rs, texture, 0, e);
+    if (!fbo)
+        return -1;
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, rs->width, rs->height, GL_RGBA, GL_UNSIGNED_BYTE, rgba_bottom_up);
+    return gl_check(what, e);
+}

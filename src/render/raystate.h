@@ -67,6 +67,10 @@ GLuint raystate_fbo(struct raystate *rs, GLuint target0, GLuint target1, struct 
 GLuint raystate_fbo_targets(struct raystate *rs, const GLuint target[RAYSTATE_MAX_TARGETS], struct error *e);
 /* Read one texture back as floats, top row first (image order): w*h*4 floats. */
 int raystate_read(struct raystate *rs, GLuint texture, float *rgba_top_down, struct error *e);
+/* Read one of the RGBA8 textures back (final_color, outcome_codes): w*h*4 bytes, GL order (bottom
+ * row first); `what` names it in a GL error. 0, or -1 with e. */
+int raystate_read_bytes(struct raystate *rs, GLuint texture, unsigned char *rgba_bottom_up, const char *what,
+                        struct error *e);
 /* The float texture (the path's format) the sky stage writes the unclamped colour into
  * (renderer_set_hdr), made on first use. */
 GLuint raystate_hdr_color(struct raystate *rs);

@@ -359,14 +359,6 @@ int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, in
     struct pipeline_choice_made run;
     if (image_only_refuses(r, hook != NULL, e) != 0 || pipeline_choose(r, hook != NULL, &run, e) != 0)
         return -1;
-    if (r->exact_orbits && !r->path.fp32 && run.kind != PIPELINE_RUN_SINGLE)
-        return error_set(e, ERROR_RUNTIME, NULL, "render.method = orbit_table on a 16-bit ray state (render path %s) "
-                         "runs in the single pass only, and this frame cannot (%s): use render.method = rk4",
-                         r->path.name, run.why);
-    if (r->path.image_only && run.kind != PIPELINE_RUN_SINGLE)
-        return error_set(e, ERROR_RUNTIME, NULL, "render path image only (no float format renders on this GPU): "
-                         "the frame cannot run in the single pass (%s), and the other pipelines keep the ray state "
-                         "in float textures", run.why);
     r->pipeline_name = pipeline_name(run.kind);
     snprintf(r->pipeline_why, sizeof r->pipeline_why, "%s", run.why);
     if ((run.kind == PIPELINE_RUN_SINGLE ? run_single_pass(r, e)
@@ -431,15 +423,7 @@ static int read_outcome_codes(struct raystate *rs, struct render_result *out, st
         free(codes);
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the outcomes back");
     }
-    GLuint fbo = raystate_fbo(rs, rs->outcome_codes, 0, e);
-    if (!fbo) {
-        free(codes);
-        return -1;
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, rs->width, rs->height, GL_RGBA, GL_UNSIGNED_BYTE, codes);
-    if (gl_check("reading the outcomes back", e) != 0) {
+    if (raystate_read_bytes(rs, rs->outcome_codes, codes, "reading the outcomes back", e) != 0) {
         free(codes);
         return -1;
     }
@@ -471,13 +455,7 @@ int renderer_read(struct renderer *r, struct render_result *out, enum render_rea
     out->rgba = malloc(n * 4);
     if (!out->rgba)
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the image back");
-    GLuint fbo = raystate_fbo(rs, rs->final_color, 0, e);
-    if (!fbo)
-        return -1;
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, rs->width, rs->height, GL_RGBA, GL_UNSIGNED_BYTE, out->rgba);
-    if (gl_check("reading the image back", e) != 0)
+    if (raystate_read_bytes(rs, rs->final_color, out->rgba, "reading the image back", e) != 0)
         return -1;
     if (rows_flip(out->rgba, (size_t)rs->width * 4, rs->height) != 0)
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the image back");
