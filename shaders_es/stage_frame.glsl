@@ -24,17 +24,29 @@ void main()
     vec3 x = u_camera_position;
     vec3 v = model_initial_velocity(u_camera_position, view);
     float steps = 0.0;
-    bool stop = false;
     float h = u_step_size;
     vec3 a = x;
+    float code = CODE_UNFINISHED;
+    float end_key = NO_HIT;
+    candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
+#ifdef MODEL_FLAT
+    // Flat space: the ray is one straight chord, from the camera to where it leaves the bounding
+    // sphere (integrate_pass), tested against the objects once if it comes near one, and ended.
+    // What the loops below do with one segment of one pass, with no loop to carry values through
+    // (a GPU's registers hold far less): the same rays bit for bit (tests/unit/test_acceleration.c).
+    bool running = steps >= 0.0 && travelling(x);
+    integrate_pass(x, v, steps, h, running);
+    chord_cull_prepare();
+    if (chord_near(a, x))
+        intersect_chord(a, x, 0.0, best);
+    segment_end(x, steps, 0.0, best, code, end_key);
+#else
+    bool stop = false;
     vec3 v_a = v;
     float steps_a = steps;
     float h_a = h;
     float k_last = 0.0;
     bool again = false;
-    float code = CODE_UNFINISHED;
-    float end_key = NO_HIT;
-    candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
     // Segments are taken in an inner loop that integrates them and asks of each chord only whether
     // it comes near an object (chord_near, stage_intersect.glsl: a few multiplications an object);
     // a chord that does not cannot meet one, and its end is decided at once. A chord that does ends
@@ -60,7 +72,7 @@ void main()
             h_a = h;
             k_last = k;
             bool clean = true;
-#if defined(MODEL_FLAT) || defined(CHECK_EVERY_STEP)
+#ifdef CHECK_EVERY_STEP
             for (int p = 0; p < PASSES_PER_SEGMENT; p++) {
                 bool running = steps >= 0.0 && travelling(x);
                 integrate_pass(x, v, steps, h, running);
@@ -139,6 +151,7 @@ void main()
     segment_end(x, steps, k_last, best, new_code, new_end_key);
     code = again ? new_code : code;
     end_key = again ? new_end_key : end_key;
+#endif
     vec4 new_hit, new_image;
     intersect_shade(best, a, x, new_hit, new_image);
     bool found = best.slot >= 0.0;
