@@ -3,7 +3,11 @@
  * one of Mesa's drivers for the exhibit's GPUs over its noop drm-shim, which compiles real code for
  * that GPU and draws nothing. Each program is linked, then drawn once into RGBA8 targets (one per
  * gl_FragData it writes), so that the driver compiles the variant a draw needs as well as the one
- * it may compile at link time.
+ * it may compile at link time. A driver compiles that variant for the textures bound: V3D, for one,
+ * returns an 8-bit texture's texels as packed 16-bit pairs and a 32-bit float texture's as four
+ * registers. So each sampler gets a texture of the format bentray binds to it (sampler_format):
+ * the ray state and the orbit table in the best float format the GPU samples (bentray's own path
+ * ladder takes 32-bit floats first, docs/HARDWARE.md), everything else RGBA8.
  *
  *   compile_stats STEM...      (STEM.vert and STEM.frag; none: the driver's capabilities only)
  *
@@ -111,12 +115,49 @@ static int targets_written(const char *fragment)
     return most;
 }
 
-/* A complete 1x1 texture of the sampler's type on the active unit: an incomplete one would make
- * the GL build a fallback texture, and wait for the GPU there, which a noop shim never answers. */
-static GLuint bind_texture(GLenum type)
+/* The texture bentray binds to sampler NAME of a program: 1 for float data (the ray state's
+ * textures, src/render/raystate.c, and the orbit table, src/render/orbit_store.c), 0 for 8-bit
+ * colour (objects' textures, the sky, the black-body table, the orbit walk's bytes, the kiosk's
+ * canvas). u_image is the ray state's image everywhere but in the kiosk's blit, which copies its
+ * 8-bit canvas. */
+static int sampler_holds_floats(const char *name, const char *fragment)
+{
+    static const char *const floats[] = {"u_orbit_table", "u_hit", "u_image", "u_position", "u_velocity",
+                                         "u_ray_position", "u_ray_velocity", "u_segment_start", "u_segment_end",
+                                         "u_state0", "u_state1", "u_outcome", NULL};
+    if (strcmp(name, "u_image") == 0 && strstr(fragment, "// shaders_es/kiosk_blit.glsl"))
+        return 0;
+    for (int i = 0; floats[i]; i++)
+        if (strcmp(name, floats[i]) == 0)
+            return 1;
+    return 0;
+}
+
+/* The best float format this GPU samples, as bentray's probe would find it: 32-bit floats in
+ * OpenGL ES 3 or with OES_texture_float, else 16-bit with OES_texture_half_float, else none
+ * (0: RGBA8 then, the draw compiles whatever it can). */
+static GLenum float_texel_type(void)
+{
+    const char *version = (const char *)glGetString(GL_VERSION);
+    const char *ext = (const char *)glGetString(GL_EXTENSIONS);
+    int es3 = version && strstr(version, "OpenGL ES 3") != NULL;
+    if (es3 || (ext && strstr(ext, "GL_OES_texture_float")))
+        return GL_FLOAT;
+    if (ext && strstr(ext, "GL_OES_texture_half_float"))
+        return 0x8D61; /* GL_HALF_FLOAT_OES */
+    return 0;
+}
+
+/* A complete 1x1 texture of the sampler's type on the active unit (floats: see sampler_holds_floats):
+ * an incomplete one would make the GL build a fallback texture, and wait for the GPU there, which a
+ * noop shim never answers. */
+static GLuint bind_texture(GLenum type, int floats)
 {
     static const unsigned char texel[4] = {128, 128, 128, 255};
+    static const float float_texel[4] = {0.5f, 0.5f, 0.5f, 1.0f};
+    static const unsigned short half_texel[4] = {0x3800, 0x3800, 0x3800, 0x3c00};
     GLenum target = type == GL_SAMPLER_CUBE ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+    GLenum float_type = floats && target == GL_TEXTURE_2D ? float_texel_type() : 0;
     GLuint tex;
     glGenTextures(1, &tex);
     glBindTexture(target, tex);
@@ -124,7 +165,14 @@ static GLuint bind_texture(GLenum type)
     glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    if (target == GL_TEXTURE_2D)
+    const char *version = (const char *)glGetString(GL_VERSION);
+    int es3 = version && strstr(version, "OpenGL ES 3") != NULL;
+    if (float_type == GL_FLOAT)
+        /* ES 3: the sized RGBA32F, as bentray allocates it; ES 2: the unsized OES form */
+        glTexImage2D(GL_TEXTURE_2D, 0, es3 ? 0x8814 /* GL_RGBA32F */ : GL_RGBA, 1, 1, 0, GL_RGBA, GL_FLOAT, float_texel);
+    else if (float_type)
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, float_type, half_texel);
+    else if (target == GL_TEXTURE_2D)
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
     else
         for (int face = 0; face < 6; face++)
@@ -134,7 +182,7 @@ static GLuint bind_texture(GLenum type)
 
 /* Each sampler its own texture unit (samplers of two types on one unit, both on unit 0 as they
  * start, make the draw an error, and the driver then compiles nothing for it), with a texture. */
-static void spread_samplers(GLuint prog)
+static void spread_samplers(GLuint prog, const char *fragment)
 {
     GLint count = 0, unit = 0, units = 8;
     glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
@@ -150,7 +198,7 @@ static void spread_samplers(GLuint prog)
         GLint location = glGetUniformLocation(prog, name);
         for (GLint k = 0; k < size && unit < units; k++) {
             glActiveTexture(GL_TEXTURE0 + unit);
-            bind_texture(type);
+            bind_texture(type, sampler_holds_floats(name, fragment));
             glUniform1i(location + k, unit++);
         }
     }
@@ -158,7 +206,7 @@ static void spread_samplers(GLuint prog)
 }
 
 /* Draws the program once; returns the first GL error of the draw (GL_NO_ERROR where it drew). */
-static GLenum draw_once(GLuint prog, int targets)
+static GLenum draw_once(GLuint prog, int targets, const char *fragment)
 {
     GLint most = 1;
     if (targets > 1)
@@ -188,7 +236,7 @@ static GLenum draw_once(GLuint prog, int targets)
     glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, NULL);
     glEnableVertexAttribArray(0);
     glViewport(0, 0, 8, 8);
-    spread_samplers(prog);
+    spread_samplers(prog, fragment);
     while (glGetError() != GL_NO_ERROR) {
     }
     glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
@@ -237,7 +285,7 @@ static int one_program(const char *stem)
             first_line(prog, 1, why, sizeof why);
             result = "link";
         } else {
-            GLenum error = draw_once(prog, targets_written(fragment));
+            GLenum error = draw_once(prog, targets_written(fragment), fragment);
             if (error != GL_NO_ERROR) {
                 snprintf(why, sizeof why, "GL error 0x%04x at the draw", error);
                 result = "draw";
