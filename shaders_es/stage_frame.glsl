@@ -97,6 +97,14 @@ void main()
             // A segment that changed nothing (an adaptive ray that has spent its path takes steps
             // of length 0) leaves every later one the same: the ray stops there, the same bit for bit.
             bool still = x == a && v == v_a && steps == steps_a && h == h_a;
+            // a ray that left, fell in or failed within the segment's unchecked steps stands at
+            // the segment's start again, which it takes again after the loops, each step checked:
+            // restored here, the segment's start need not be kept through the rest of the walk
+            // (a GPU's registers: `make shader-stats`)
+            x = again ? a : x;
+            v = again ? v_a : v;
+            steps = again ? steps_a : steps;
+            h = again ? h_a : h;
             pending = clean && near;
             stop = again || (decided && ended) || still;
             next_segment = k + 1.0;
@@ -118,13 +126,9 @@ void main()
         if (stop || next_segment >= u_segments)
             break;
     }
-    // The segment in which a ray left, fell into the horizon or failed, from its start, as the
-    // multipass scheme integrates, intersects and ends it: the same rays bit for bit
-    // (tests/unit/test_acceleration.c). Once per ray, not once per segment.
-    x = again ? a : x;
-    v = again ? v_a : v;
-    steps = again ? steps_a : steps;
-    h = again ? h_a : h;
+    // The segment in which a ray left, fell into the horizon or failed, from its start (where the
+    // loop left it), as the multipass scheme integrates, intersects and ends it: the same rays bit
+    // for bit (tests/unit/test_acceleration.c). Once per ray, not once per segment.
     vec3 x_checked = x;
     vec3 v_checked = v;
     float steps_checked = steps;
