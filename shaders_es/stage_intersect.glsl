@@ -148,41 +148,29 @@ void consider(bool found, float t, vec3 normal, vec3 surface, float slot, inout 
 // best's normal and surface: the chosen object's test again on chord a -> b, the chord on which
 // best was found, on its geometry (and, for an object that moves, its motion), selected first as
 // its material is: one test of each kind of primitive in the batch, each on the geometry selected
-// among the slots of its kind, not one test for every object (a GPU's registers: cube_approach's
-// frame on V3D 4.2 spilled 23 values with six tests here, none with one). The same arithmetic on
-// the same values as the test that found it, so they are the ones that test computed.
-#define SELECT_GEOMETRY(n) { bool chosen = best.slot == float(n); \
-                             g0 = chosen ? GEOMETRY(n, 0) : g0; g1 = chosen ? GEOMETRY(n, 1) : g1; \
-                             g2 = chosen ? GEOMETRY(n, 2) : g2; g3 = chosen ? GEOMETRY(n, 3) : g3; \
-                             g4 = chosen ? GEOMETRY(n, 4) : g4; }
+// among the slots of its kind (BATCH_SLOTS_<KIND>, src/render/stage_intersect.c), not one test for
+// every object (a GPU's registers: cube_approach's frame on V3D 4.2 spilled 23 values with six
+// tests here, none with one). The same arithmetic on the same values as the test that found it,
+// so they are the ones that test computed.
+#define SELECT_SLOT(n) { bool chosen = best.slot == float(n); \
+                         g0 = chosen ? GEOMETRY(n, 0) : g0; g1 = chosen ? GEOMETRY(n, 1) : g1; \
+                         g2 = chosen ? GEOMETRY(n, 2) : g2; g3 = chosen ? GEOMETRY(n, 3) : g3; \
+                         g4 = chosen ? GEOMETRY(n, 4) : g4; chosen_kind = chosen_kind || chosen; }
+#define SELECT_MOVING(n) { bool chosen = best.slot == float(n); \
+                           motion = chosen ? MOTION(n, 0) : motion; origin = chosen ? MOTION(n, 1) : origin; \
+                           moves = moves || chosen; }
+#define SURFACE_OF(kind_slots, test) g0 = g1 = g2 = g3 = g4 = vec4(0.0); chosen_kind = false; kind_slots \
+    test; best.normal = chosen_kind ? normal : best.normal; best.surface = chosen_kind ? surface : best.surface;
 void candidate_surface(vec3 a, vec3 b, inout candidate best)
 {
-    // whether the chosen slot moves, and its motion: BATCH_TESTS with each test replaced by a note
-    bool moves = false;
-#undef TEST_SPHERE
-#undef TEST_DISK
-#undef TEST_RECT
-#undef TEST_TRIANGLE
-#undef MOVING_TEST
-#define TEST_SPHERE(n)
-#define TEST_DISK(n)
-#define TEST_RECT(n)
-#define TEST_TRIANGLE(n)
-#define MOVING_TEST(n, test) moves = moves || best.slot == float(n);
-    BATCH_TESTS
-#undef MOVING_TEST
-#define MOVING_TEST(n, test) test
     vec3 from = a;
     vec3 to = b;
 #ifdef MOVING_OBJECTS
-    vec4 motion = MOTION(0, 0);
-    vec4 origin = MOTION(0, 1);
-    for (int i = 1; i < BATCH_SIZE; i++) {
-        bool chosen = best.slot == float(i);
-        motion = chosen ? MOTION(i, 0) : motion;
-        origin = chosen ? MOTION(i, 1) : origin;
-    }
-    // as MOVING_TEST_FULL: the chord's ends in the object's rest frame
+    // as MOVING_TEST_FULL: the chord's ends in the moving object's rest frame
+    vec4 motion = vec4(0.0);
+    vec4 origin = vec4(0.0);
+    bool moves = false;
+    BATCH_SLOTS_MOVING
     vec3 rest_from = rest_position(a, motion, origin);
     vec3 rest_to = rest_position(b, motion, origin);
     from = moves ? rest_from : a;
@@ -192,65 +180,18 @@ void candidate_surface(vec3 a, vec3 b, inout candidate best)
     vec3 normal;
     vec3 surface;
     vec4 g0, g1, g2, g3, g4;
-    // each kind in turn: the geometry of the chosen slot if it is of that kind (chosen_kind), its test
     bool chosen_kind;
-#undef TEST_SPHERE
-#define TEST_SPHERE(n) SELECT_GEOMETRY(n) chosen_kind = chosen_kind || best.slot == float(n);
 #ifdef HAS_PRIM_SPHERE
-    g0 = g1 = g2 = g3 = g4 = vec4(0.0);
-    chosen_kind = false;
-    BATCH_TESTS
-    object_sphere(from, to, g0, t, normal, surface);
-    best.normal = chosen_kind ? normal : best.normal;
-    best.surface = chosen_kind ? surface : best.surface;
+    SURFACE_OF(BATCH_SLOTS_SPHERE, object_sphere(from, to, g0, t, normal, surface))
 #endif
-#undef TEST_SPHERE
-#define TEST_SPHERE(n)
-#undef TEST_DISK
-#define TEST_DISK(n) SELECT_GEOMETRY(n) chosen_kind = chosen_kind || best.slot == float(n);
 #ifdef HAS_PRIM_DISK
-    g0 = g1 = g2 = g3 = g4 = vec4(0.0);
-    chosen_kind = false;
-    BATCH_TESTS
-    object_disk(from, to, g0, g1, t, normal, surface);
-    best.normal = chosen_kind ? normal : best.normal;
-    best.surface = chosen_kind ? surface : best.surface;
+    SURFACE_OF(BATCH_SLOTS_DISK, object_disk(from, to, g0, g1, t, normal, surface))
 #endif
-#undef TEST_DISK
-#define TEST_DISK(n)
-#undef TEST_RECT
-#define TEST_RECT(n) SELECT_GEOMETRY(n) chosen_kind = chosen_kind || best.slot == float(n);
 #ifdef HAS_PRIM_RECT
-    g0 = g1 = g2 = g3 = g4 = vec4(0.0);
-    chosen_kind = false;
-    BATCH_TESTS
-    object_rect(from, to, g0, g1, g2, t, normal, surface);
-    best.normal = chosen_kind ? normal : best.normal;
-    best.surface = chosen_kind ? surface : best.surface;
+    SURFACE_OF(BATCH_SLOTS_RECT, object_rect(from, to, g0, g1, g2, t, normal, surface))
 #endif
-#undef TEST_RECT
-#define TEST_RECT(n)
-#undef TEST_TRIANGLE
-#define TEST_TRIANGLE(n) SELECT_GEOMETRY(n) chosen_kind = chosen_kind || best.slot == float(n);
 #ifdef HAS_PRIM_TRIANGLE
-    g0 = g1 = g2 = g3 = g4 = vec4(0.0);
-    chosen_kind = false;
-    BATCH_TESTS
-    object_triangle(from, to, g0, g1, g2, g3, g4, t, normal, surface);
-    best.normal = chosen_kind ? normal : best.normal;
-    best.surface = chosen_kind ? surface : best.surface;
-#endif
-#undef TEST_SPHERE
-#undef TEST_DISK
-#undef TEST_RECT
-#undef TEST_TRIANGLE
-#undef MOVING_TEST
-#define TEST_SPHERE(slot) TEST_SPHERE_FULL(slot)
-#define TEST_DISK(slot) TEST_DISK_FULL(slot)
-#define TEST_RECT(slot) TEST_RECT_FULL(slot)
-#define TEST_TRIANGLE(slot) TEST_TRIANGLE_FULL(slot)
-#ifdef MOVING_OBJECTS
-#define MOVING_TEST(slot, test) MOVING_TEST_FULL(slot, test)
+    SURFACE_OF(BATCH_SLOTS_TRIANGLE, object_triangle(from, to, g0, g1, g2, g3, g4, t, normal, surface))
 #endif
 }
 

@@ -7,7 +7,7 @@
 #include "gl/shader.h"
 #include <stdint.h>
 
-#define PROGRAMS_KEY_LEN 6144   /* defines of a single pass over 64 objects included */
+#define PROGRAMS_KEY_LEN 12288  /* defines of a single pass over 64 moving, textured objects included */
 
 /* A linked program and where its active uniforms are, read from GL once when it is built
  * (glGetActiveUniform): the stages set uniforms by name every pass without asking GL. */

@@ -260,9 +260,23 @@ int object_batch_defines(const struct object_batch *b, char *out, size_t len)
             if (s->objects[b->object[i]].material.texture >= 0)
                 used += (size_t)snprintf(out + used, len - used, " SAMPLE_TEXTURE(%d)", i);
     }
-    for (int t = 0; t < PRIM_COUNT && used < len; t++)
-        if (has[t])
-            used += (size_t)snprintf(out + used, len - used, "\n#define HAS_PRIM_%s 1", prim_defines[t]);
+    /* each kind of primitive's slots, and the moving ones: the lists candidate_surface selects the
+     * shaded object's geometry and motion from (SELECT_SLOT, SELECT_MOVING in stage_intersect.glsl) */
+    for (int t = 0; t < PRIM_COUNT && used < len; t++) {
+        if (!has[t])
+            continue;
+        used += (size_t)snprintf(out + used, len - used, "\n#define HAS_PRIM_%s 1\n#define BATCH_SLOTS_%s",
+                                 prim_defines[t], prim_defines[t]);
+        for (int i = 0; i < b->count && used < len; i++)
+            if (s->objects[b->object[i]].type == (enum primitive_type)t)
+                used += (size_t)snprintf(out + used, len - used, " SELECT_SLOT(%d)", i);
+    }
+    if (batch_moves(b) && used < len) {
+        used += (size_t)snprintf(out + used, len - used, "\n#define BATCH_SLOTS_MOVING");
+        for (int i = 0; i < b->count && used < len; i++)
+            if (object_motion(&s->objects[b->object[i]], &m))
+                used += (size_t)snprintf(out + used, len - used, " SELECT_MOVING(%d)", i);
+    }
     if (b->r->exact_orbits && used < len)
         used += (size_t)snprintf(out + used, len - used, "\n#define ORBIT_HITS 1");
     if (used < len)
@@ -336,7 +350,7 @@ int frame_object_limit(const struct renderer *r)
 static int intersect_batch(struct renderer *r, const struct object_batch *b, int segment_start, struct error *e)
 {
     struct raystate *rs = &r->rs;
-    char defines[4096];
+    char defines[8192];
     if (object_batch_defines(b, defines, sizeof defines) != 0)
         return error_set(e, ERROR_RUNTIME, NULL, "internal: the defines of an object batch do not fit");
     const char *files[PRIM_COUNT + 9] = {"common.glsl"};

@@ -518,6 +518,44 @@ static void test_single_pass_many_objects(void **state)
     hc_gpu_free(&single);
 }
 
+/* The most objects a scene holds, every one moving and of the primitive with the longest test:
+ * the single pass's defines (every object's test, its kind's slot list and its motion's) fit its
+ * buffers and the program cache's key, and its rays are the multipass scheme's. cube_approach
+ * (moving faces in flat space) with its faces replaced by a ring of small moving triangles. */
+static void test_single_pass_most_objects(void **state)
+{
+    (void)state;
+    static struct scene s;
+    hc_load(&s, "cube_approach", W, H, NULL);
+    s.n_objects = 0;
+    for (int i = 0; i < SCENE_MAX_OBJECTS; i++) {
+        char name[32];
+        snprintf(name, sizeof name, "shard%d", i);
+        struct object *o = hc_add_object(&s, PRIM_TRIANGLE, name);
+        double a = 2.0 * 3.14159265358979 * i / SCENE_MAX_OBJECTS;
+        vec3d c = v3(3.0 * cos(a), 0.8 * sin(5.0 * a), 3.0 * sin(a) - 2.0);
+        o->vertex[0] = v3_add(c, v3(-0.3, -0.3, 0.0));
+        o->vertex[1] = v3_add(c, v3(0.3, -0.3, 0.0));
+        o->vertex[2] = v3_add(c, v3(0.0, 0.4, 0.0));
+        o->velocity = v3(0.3 * sin(a), 0.0, 0.3 * cos(a));
+    }
+    hc_validate(&s);
+    struct hc_gpu multi, single;
+    s.render.pipeline = PIPELINE_MULTIPASS;
+    hc_gpu_render(&s, &multi);
+    s.render.pipeline = PIPELINE_SINGLE;
+    hc_gpu_render(&s, &single);
+    long seen[5] = {0};
+    count_outcomes(&multi, seen);
+    print_message("%d moving triangles: %ld hit one, %ld sky; multipass %ld passes, single pass %ld\n", s.n_objects,
+                  seen[0], seen[1], multi.res.passes, single.res.passes);
+    assert_true(seen[0] > 0 && seen[1] > 0);
+    assert_same_rays(&single, &multi, "the most objects, all moving");
+    assert_true(single.res.passes <= 5);
+    hc_gpu_free(&multi);
+    hc_gpu_free(&single);
+}
+
 /* Every object of s shrunk by f about its centre (a triangle about its centroid). */
 static void shrink_objects(struct scene *s, double f)
 {
@@ -760,6 +798,7 @@ int main(void)
         cmocka_unit_test(test_unrolling_is_exact),
         cmocka_unit_test(test_single_pass_is_exact),
         cmocka_unit_test(test_single_pass_many_objects),
+        cmocka_unit_test(test_single_pass_most_objects),
         cmocka_unit_test(test_chord_cull_is_exact),
         cmocka_unit_test(test_frame_colour_is_exact),
         cmocka_unit_test(test_unchecked_steps_are_exact),
