@@ -553,36 +553,18 @@ bool intersect_chord_meets(vec3 a, vec3 b)
 // the reference's intersect_* functions give them (src/physics/intersect.c).
 vec2 texture_coordinates(candidate best)
 {
-    vec4 g0 = GEOMETRY(0, 0), g1 = GEOMETRY(0, 1), g2 = GEOMETRY(0, 2);
-    for (int i = 1; i < BATCH_SIZE; i++) {
-        bool chosen = best.slot == float(i);
-        g0 = chosen ? GEOMETRY(i, 0) : g0;
-        g1 = chosen ? GEOMETRY(i, 1) : g1;
-        g2 = chosen ? GEOMETRY(i, 2) : g2;
-    }
-    // the chosen slot's primitive: BATCH_TESTS with each test replaced by a note of its kind
-    float kind = 0.0;
-#undef TEST_SPHERE
-#undef TEST_DISK
-#undef TEST_RECT
-#undef TEST_TRIANGLE
-#undef MOVING_TEST
-#define TEST_SPHERE(n) kind = best.slot == float(n) ? 1.0 : kind;
-#define TEST_DISK(n) kind = best.slot == float(n) ? 2.0 : kind;
-#define TEST_RECT(slot)
-#define TEST_TRIANGLE(slot)
-#define MOVING_TEST(slot, test) test
-    BATCH_TESTS
-#undef TEST_SPHERE
-#undef TEST_DISK
-#undef TEST_RECT
-#undef TEST_TRIANGLE
-#undef MOVING_TEST
-#define TEST_SPHERE(slot) TEST_SPHERE_FULL(slot)
-#define TEST_DISK(slot) TEST_DISK_FULL(slot)
-#define TEST_RECT(slot) TEST_RECT_FULL(slot)
-#define TEST_TRIANGLE(slot) TEST_TRIANGLE_FULL(slot)
-#define MOVING_TEST(slot, test) MOVING_TEST_FULL(slot, test)
+    // the chosen slot's geometry where it is a sphere or a disk, whose coordinates take it (a flat
+    // object's are its surface's): selected from their kinds' slot lists, as candidate_surface does
+    vec4 g0 = vec4(0.0), g1 = vec4(0.0), g2 = vec4(0.0), g3 = vec4(0.0), g4 = vec4(0.0);
+    bool chosen_kind = false;
+#ifdef HAS_PRIM_SPHERE
+    BATCH_SLOTS_SPHERE
+#endif
+    float kind = chosen_kind ? 1.0 : 0.0;
+#ifdef HAS_PRIM_DISK
+    BATCH_SLOTS_DISK
+#endif
+    kind = chosen_kind && kind == 0.0 ? 2.0 : kind;
     // sphere: g1 = texture reference axis, g2 = pole; surface = the normal
     vec3 normal = best.surface;
     vec3 sphere_third = cross(g2.xyz, g1.xyz);
