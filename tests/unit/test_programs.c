@@ -17,8 +17,9 @@ static void expect_same_as_gl(const struct program_uniforms *p, const char *name
         fail_msg("%s: cached location %d, GL says %d", name, cached, gl);
 }
 
-/* The intersection stage's program of a batch of three lit objects: plain uniforms, vec4 arrays
- * set by their bare name, light arrays set element by element. */
+/* The intersection stage's program of a batch of three lit objects (its defines as
+ * object_batch_defines writes them): plain uniforms, vec4 arrays set by their bare name, light
+ * arrays set element by element. */
 static void test_locations_match_gl(void **state)
 {
     (void)state;
@@ -32,7 +33,8 @@ static void test_locations_match_gl(void **state)
     static const char *const files[] = {"common.glsl", "prim_sphere.glsl", "observer.glsl", "shade.glsl",
                                         "stage_intersect.glsl", NULL};
     const char *defines = "#define BATCH_SIZE 3\n#define LIGHT_COUNT 2\n#define HAS_PRIM_SPHERE 1\n"
-                          "#define BATCH_TESTS TEST_SPHERE(0) TEST_SPHERE(1) TEST_SPHERE(2)\n";
+                          "#define BATCH_TESTS TEST_SPHERE(0) TEST_SPHERE(1) TEST_SPHERE(2)\n"
+                          "#define BATCH_SLOTS_SPHERE SELECT_SLOT(0) SELECT_SLOT(1) SELECT_SLOT(2)\n";
     const struct stage_program *sp = program_cache_get(&pc, files, defines, 1, &ge);
     if (!sp)
         fail_msg("%s", ge.message);
