@@ -486,6 +486,25 @@ static void test_unchecked_steps_are_exact(void **state)
         assert_true(seen[o] > 0);
 }
 
+/* s drawn by the multipass scheme and by the single pass (pipeline `single`: single or auto): the
+ * same rays, in at most five passes; seen counts the outcomes. */
+static void single_pass_against_multipass(struct scene *s, enum pipeline_choice single_pipeline, const char *what,
+                                          long seen[5])
+{
+    struct hc_gpu multi, single;
+    s->render.pipeline = PIPELINE_MULTIPASS;
+    hc_gpu_render(s, &multi);
+    s->render.pipeline = single_pipeline;
+    hc_gpu_render(s, &single);
+    count_outcomes(&multi, seen);
+    print_message("%s, %d objects: %ld hit one, %ld sky; multipass %ld passes, single pass %ld\n", what,
+                  s->n_objects, seen[0], seen[1], multi.res.passes, single.res.passes);
+    assert_same_rays(&single, &multi, what);
+    assert_true(single.res.passes <= 5);
+    hc_gpu_free(&multi);
+    hc_gpu_free(&single);
+}
+
 /* More objects than one intersection pass holds (SCENE_MAX_BATCH): the multipass scheme needs two
  * batches, the single pass tests them all in its loop; the same rays. */
 static void test_single_pass_many_objects(void **state)
@@ -505,17 +524,8 @@ static void test_single_pass_many_objects(void **state)
         added++;
     }
     hc_validate(&s);
-    struct hc_gpu multi, single;
-    s.render.pipeline = PIPELINE_MULTIPASS;
-    hc_gpu_render(&s, &multi);
-    s.render.pipeline = PIPELINE_AUTO;
-    hc_gpu_render(&s, &single);
-    print_message("%d objects: multipass %ld passes, single pass %ld\n", s.n_objects, multi.res.passes,
-                  single.res.passes);
-    assert_same_rays(&single, &multi, "more objects than a batch");
-    assert_true(single.res.passes <= 5);
-    hc_gpu_free(&multi);
-    hc_gpu_free(&single);
+    long seen[5] = {0};
+    single_pass_against_multipass(&s, PIPELINE_AUTO, "more objects than a batch", seen);
 }
 
 /* The most objects a scene holds, every one moving and of the primitive with the longest test:
@@ -540,20 +550,9 @@ static void test_single_pass_most_objects(void **state)
         o->velocity = v3(0.3 * sin(a), 0.0, 0.3 * cos(a));
     }
     hc_validate(&s);
-    struct hc_gpu multi, single;
-    s.render.pipeline = PIPELINE_MULTIPASS;
-    hc_gpu_render(&s, &multi);
-    s.render.pipeline = PIPELINE_SINGLE;
-    hc_gpu_render(&s, &single);
     long seen[5] = {0};
-    count_outcomes(&multi, seen);
-    print_message("%d moving triangles: %ld hit one, %ld sky; multipass %ld passes, single pass %ld\n", s.n_objects,
-                  seen[0], seen[1], multi.res.passes, single.res.passes);
+    single_pass_against_multipass(&s, PIPELINE_SINGLE, "the most objects, all moving triangles", seen);
     assert_true(seen[0] > 0 && seen[1] > 0);
-    assert_same_rays(&single, &multi, "the most objects, all moving");
-    assert_true(single.res.passes <= 5);
-    hc_gpu_free(&multi);
-    hc_gpu_free(&single);
 }
 
 /* Every object of s shrunk by f about its centre (a triangle about its centroid). */
