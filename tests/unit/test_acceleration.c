@@ -543,11 +543,12 @@ static void test_single_pass_most_objects(void **state)
         snprintf(name, sizeof name, "shard%d", i);
         struct object *o = hc_add_object(&s, PRIM_TRIANGLE, name);
         double a = 2.0 * 3.14159265358979 * i / SCENE_MAX_OBJECTS;
-        vec3d c = v3(3.0 * cos(a), 0.8 * sin(5.0 * a), 3.0 * sin(a) - 2.0);
-        o->vertex[0] = v3_add(c, v3(-0.3, -0.3, 0.0));
-        o->vertex[1] = v3_add(c, v3(0.3, -0.3, 0.0));
-        o->vertex[2] = v3_add(c, v3(0.0, 0.4, 0.0));
-        o->velocity = v3(0.3 * sin(a), 0.0, 0.3 * cos(a));
+        /* a ring across the camera's view (it looks down -y from y = 4.46), each facing it */
+        vec3d c = v3(1.1 * cos(a), 0.5 * sin(3.0 * a), 1.1 * sin(a));
+        o->vertex[0] = v3_add(c, v3(-0.09, 0.0, -0.09));
+        o->vertex[1] = v3_add(c, v3(0.09, 0.0, -0.09));
+        o->vertex[2] = v3_add(c, v3(0.0, 0.0, 0.11));
+        o->velocity = v3(-0.3 * sin(a), 0.0, 0.3 * cos(a));
     }
     hc_validate(&s);
     long seen[5] = {0};
