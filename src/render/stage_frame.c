@@ -95,7 +95,7 @@ static const struct stage_program *frame_program(struct renderer *r, const struc
     const struct scene *s = r->scene;
     enum frame_output output = a->output;
     int colour = output == FRAME_WRITES_COLOUR || output == FRAME_WRITES_COLOUR_CODES;
-    char batch[8192];
+    char batch[BATCH_DEFINES_LEN];
     if (frame_batch_defines(r, &a->batch, batch, sizeof batch, e) != 0)
         return NULL;
     const char *files[PRIM_COUNT + 12] = {"common.glsl", "bounds.glsl", r->model_file};

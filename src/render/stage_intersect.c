@@ -234,7 +234,7 @@ void object_batch_set_uniforms(const struct program_uniforms *p, const void *arg
 int object_batch_defines(const struct object_batch *b, char *out, size_t len)
 {
     const struct scene *s = b->r->scene;
-    int has[PRIM_COUNT] = {0}, textured = 0;
+    int has[PRIM_COUNT] = {0}, textured = 0, moving[OBJECT_BATCH_MAX] = {0};
     size_t used = (size_t)snprintf(out, len, "#define BATCH_SIZE %d\n#define LIGHT_COUNT %d\n#define BATCH_TESTS",
                                    b->count, s->n_lights);
     struct object_motion m;
@@ -242,7 +242,8 @@ int object_batch_defines(const struct object_batch *b, char *out, size_t len)
         const struct object *o = &s->objects[b->object[i]];
         has[o->type] = 1;
         textured |= o->material.texture >= 0;
-        if (object_motion(o, &m))
+        moving[i] = object_motion(o, &m);
+        if (moving[i])
             used += (size_t)snprintf(out + used, len - used, " MOVING_TEST(%d, TEST_%s(%d))", i,
                                      prim_defines[o->type], i);
         else
@@ -274,7 +275,7 @@ int object_batch_defines(const struct object_batch *b, char *out, size_t len)
     if (batch_moves(b) && used < len) {
         used += (size_t)snprintf(out + used, len - used, "\n#define BATCH_SLOTS_MOVING");
         for (int i = 0; i < b->count && used < len; i++)
-            if (object_motion(&s->objects[b->object[i]], &m))
+            if (moving[i])
                 used += (size_t)snprintf(out + used, len - used, " SELECT_MOVING(%d)", i);
     }
     if (b->r->exact_orbits && used < len)
@@ -350,7 +351,7 @@ int frame_object_limit(const struct renderer *r)
 static int intersect_batch(struct renderer *r, const struct object_batch *b, int segment_start, struct error *e)
 {
     struct raystate *rs = &r->rs;
-    char defines[8192];
+    char defines[BATCH_DEFINES_LEN];
     if (object_batch_defines(b, defines, sizeof defines) != 0)
         return error_set(e, ERROR_RUNTIME, NULL, "internal: the defines of an object batch do not fit");
     const char *files[PRIM_COUNT + 9] = {"common.glsl"};

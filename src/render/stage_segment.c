@@ -25,7 +25,7 @@ int stage_segment(struct renderer *r, int segment, struct error *e)
     struct raystate *rs = &r->rs;
     const struct scene *s = r->scene;
     struct segment_args a = {.r = r};
-    char batch[8192];
+    char batch[BATCH_DEFINES_LEN];
     if (frame_batch(r, &a.batch, e) != 0 || frame_batch_defines(r, &a.batch, batch, sizeof batch, e) != 0)
         return -1;
     a.batch.segment = segment;

@@ -152,6 +152,9 @@ struct object_batch {
     int count;
     int segment;
 };
+/* Room for a batch's defines: every object's test, its kind's slot list and its motion's, 64
+ * moving, textured objects included (test_single_pass_most_objects). */
+#define BATCH_DEFINES_LEN 8192
 int object_batch_defines(const struct object_batch *b, char *out, size_t len);
 int object_batch_files(const struct object_batch *b, const char **files, int n);
 void object_batch_set_uniforms(const struct program_uniforms *p, const void *batch);
