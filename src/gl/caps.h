@@ -78,7 +78,8 @@ int gl_has_extension(const char *name);
  *                        which llvmpipe then really computes in 16-bit floats
  *   fp16_alu             the arithmetic probe finds 16-bit floats although highp is reported (lima)
  *   loop_limit           the loop probe finds loops ended after 4096 turns (llvmpipe: 65535)
- *   slow_previews        the kiosk measures its previews 100 times slower, as on a slow GPU
+ *   slow_previews        the kiosk measures its previews 100 times slower, and at least 20 us a
+ *                        pixel, as on a slow GPU
  *                        (kiosk_tune.h) */
 int gl_fault(const char *name);
 /* "GL_FRAMEBUFFER_UNSUPPORTED" and the like, for messages. */

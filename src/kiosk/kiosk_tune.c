@@ -22,7 +22,10 @@ static int preview_seconds(struct kiosk_view *v, const struct kiosk_state *st, d
         while (kiosk_view_preview_pending(v))
             if (kiosk_view_refine(v, e) != 0)
                 return -1;
-        t[k] = (clock_seconds() - t0) * (gl_fault("slow_previews") ? KIOSK_TUNE_SLOW_FACTOR : 1.0);
+        t[k] = clock_seconds() - t0;
+        if (gl_fault("slow_previews"))
+            t[k] = fmax(t[k] * KIOSK_TUNE_SLOW_FACTOR,
+                        KIOSK_TUNE_SLOW_PIXEL * v->preview_width * v->preview_height);
     }
     qsort(t, KIOSK_TUNE_FRAMES, sizeof t[0], by_value);
     *out = t[KIOSK_TUNE_FRAMES / 2];

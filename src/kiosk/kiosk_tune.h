@@ -20,8 +20,11 @@
 #define KIOSK_TUNE_MIN_SIDE 16
 /* The share of the budget a tuned preview aims at: the time of one preview varies with the state. */
 #define KIOSK_TUNE_MARGIN 0.8
-/* BT_FAULT=slow_previews: previews measured this many times slower, as on a slow GPU. */
+/* BT_FAULT=slow_previews: previews measured this many times slower, as on a slow GPU, and at least
+ * KIOSK_TUNE_SLOW_PIXEL seconds a pixel (50 thousand preview rays a second), so that a preview that
+ * is fast even a hundred times over on a fast machine (a flat sky) is still slow there. */
 #define KIOSK_TUNE_SLOW_FACTOR 100.0
+#define KIOSK_TUNE_SLOW_PIXEL 20e-6
 
 /* Tunes every scene's preview size in v (v: the screen's view; left with no scene loaded) for c's
  * preview_rate, logging each scene's choice to log. `between` (if any) is called with arg before
