@@ -642,10 +642,12 @@ void intersect_shade(candidate best, vec3 a, vec3 b, out vec4 new_hit, out vec4 
 // halves at every level and its distance from the orbit falls fourfold. Every object is tested
 // again on the first half, so a hit that the orbit reaches first is the one kept; where the first
 // half meets nothing, the hit lies on the second, which the next level splits in turn, untested:
-// one half tested a level, not two. The last chord is tested after the last level where no level
-// tested it. Where it meets nothing (a chord that crossed an object, or an edge of one, that the
-// orbit passes by), the hit is lost: its caller keeps no hit there and the ray goes on from the
-// chord's end. The split is never at the hit itself: the orbit there lies within the chord's
+// one half tested a level, not two. A level asks only whether the half meets anything
+// (intersect_chord_meets), carrying no depth, fraction or object through the loop; the closest hit
+// is found once, on the last chord, after the last level: the hit a level's full test would have
+// kept there (V3D 4.2 spilled 29 values with a full test a level, 14 with this). Where the last
+// chord meets nothing (a chord that crossed an object, or an edge of one, that the orbit passes
+// by), the hit is lost: its caller keeps no hit there and the ray goes on from the chord's end. The split is never at the hit itself: the orbit there lies within the chord's
 // error of the object's surface, often closer than a float rounding, where both halves could miss
 // a surface that the orbit does cross. Used by the intersection stage and by the single pass
 // alike, with the same arithmetic, so both find the same hits.
@@ -659,22 +661,16 @@ void orbit_refine_hit(orbit_ray ray, float s_a, float s_b, float segment, inout 
 {
     float lo = s_a;
     float hi = s_b;
-    float none = NO_HIT;
-    float no_slot = -1.0;
     float key = best.key;
-    bool tested = true;    // whether best is chord a -> b's own hit
     for (int level = 0; level < ORBIT_HIT_LEVELS; level++) {
         float s_m = lo + 0.5 * (hi - lo);
         vec2 q = orbit_at(ray, s_m);
         vec3 m = orbit_point(ray, q, s_m);
-        candidate first = candidate(none, 0.0, no_slot, vec3(0.0), vec3(0.0));
-        intersect_chord(a, m, segment, first);
-        tested = first.slot >= 0.0;
-        best = tested ? first : best;
-        float new_lo = tested ? lo : s_m;
-        float new_hi = tested ? s_m : hi;
-        vec3 new_a = tested ? a : m;
-        vec3 new_b = tested ? m : b;
+        bool first_half = intersect_chord_meets(a, m);
+        float new_lo = first_half ? lo : s_m;
+        float new_hi = first_half ? s_m : hi;
+        vec3 new_a = first_half ? a : m;
+        vec3 new_b = first_half ? m : b;
         lo = new_lo;
         hi = new_hi;
         a = new_a;
@@ -683,12 +679,11 @@ void orbit_refine_hit(orbit_ray ray, float s_a, float s_b, float segment, inout 
         if (level == ORBIT_HIT_LEVELS - 1)
             break;
     }
-    // the last chord, where its own level did not test it: where it meets nothing, the hit is lost
-    candidate last = candidate(none, 0.0, no_slot, vec3(0.0), vec3(0.0));
-    if (!tested)
-        intersect_chord(a, b, segment, last);
-    lost = !tested && last.slot < 0.0;
-    best = tested ? best : last;
+    // the closest hit on the last chord: where it meets nothing, the hit is lost
+    candidate last = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
+    intersect_chord(a, b, segment, last);
+    lost = last.slot < 0.0;
+    best = last;
     best.key = key;
 }
 #endif
