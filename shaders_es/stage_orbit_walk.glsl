@@ -148,14 +148,16 @@ void orbit_walk(orbit_ray ray, inout float k, out bool done, out bool leaving, o
         leaving = chord && outside_bounds(p1);
         bool tested = chord && !leaving;
         bool moves = passes || tested;
+        // the orbit's values at the new end are taken before the chord's test, so that the old
+        // ones are not live through it: where the chord meets an object (or falls in) the walk
+        // ends here, and only k, which stays, says where (its values are found again from k)
+        q = moves ? q1 : q;
+        s = moves ? s1 : s;
+        cs_group = moves ? cs1 : cs_group;
         found = tested && intersect_chord_meets(a, p1);
         done = found || (tested && captured(p1));
         // a chord with a hit (or that falls in) keeps its start: the ray stands at chord k
-        bool onwards = moves && !done;
-        q = onwards ? q1 : q;
-        s = onwards ? s1 : s;
-        cs_group = onwards ? cs1 : cs_group;
-        k = onwards ? k1 : k;
+        k = moves && !done ? k1 : k;
         // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
         if (k >= ray.segments || leaving || done)
             break;
