@@ -133,11 +133,12 @@ void main()
     vec3 v_checked = v;
     float steps_checked = steps;
     float h_checked = h;
+    exit_step left_at = no_exit();
     for (int p = 0; p < PASSES_PER_SEGMENT; p++) {
         if (!again)
             break;
         bool running = steps_checked >= 0.0 && travelling(x_checked);
-        integrate_pass_checked(x_checked, v_checked, steps_checked, h_checked, running);
+        integrate_pass_checked(x_checked, v_checked, steps_checked, h_checked, running, left_at);
         // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
         if (p == PASSES_PER_SEGMENT - 1)
             break;
@@ -155,6 +156,9 @@ void main()
     segment_end(x, steps, k_last, best, new_code, new_end_key);
     code = again ? new_code : code;
     end_key = again ? new_end_key : end_key;
+    // a ray that left for the sky in that segment: its velocity where it crossed the bounding
+    // sphere (stage_integrate.glsl), found here, where the segment's tests no longer hold registers
+    v = exit_taken(left_at, x, v);
 #endif
     vec4 new_hit, new_image;
     intersect_shade(best, a, x, new_hit, new_image);

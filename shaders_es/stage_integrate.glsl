@@ -169,20 +169,19 @@ void controlled_step(vec3 x, vec3 v, float h, out vec3 x1, out vec3 v1, out bool
 #endif
 
 #ifndef MODEL_FLAT
-// The velocity where a step of length h from (x0, v0) to (x1, v1) crossed the bounding sphere: the
-// sky's direction, as the CPU reference takes it (src/ref/reference.c). The step's end lies beyond
-// the sphere, and a field that still pulls there (Lorenz's grows with the distance) would turn the
-// end's velocity by the pull over the rest of the step: an error in proportion to the step, which
-// held the scenes' steps small. The crossing is found on the step's cubic Hermite curve (its dense
+// The velocity where a step of length h from (x0, v0) to x0 + chord (v1 there) crossed the
+// bounding sphere: the sky's direction, as the CPU reference takes it (src/ref/reference.c). The
+// step's end lies beyond the sphere, and a field that still pulls there (Lorenz's grows with the
+// distance) would turn the end's velocity by the pull over the rest of the step: an error in
+// proportion to the step, which held the scenes' steps small. The crossing is found on the step's cubic Hermite curve (its dense
 // output from both ends' positions and velocities, third order in h for the velocity), from the
 // chord's crossing by Newton's steps. Models whose sky lies along the orbit's direction at infinity
 // (SKY_AT_INFINITY) take it from the step's end, a point of the same orbit.
 const int EXIT_NEWTON_STEPS = 3;
 
-vec3 exit_velocity(vec3 x0, vec3 v0, vec3 x1, vec3 v1, float h)
+vec3 exit_velocity(vec3 x0, vec3 v0, vec3 chord, vec3 v1, float h)
 {
     vec3 o0 = x0 - u_bound_center;
-    vec3 chord = x1 - x0;
     // the chord's crossing: |o0 + t chord|^2 = R^2 with |o0| < R, the root in [0, 1]
     float a = max(dot(chord, chord), 1.0e-30);
     float b = dot(o0, chord);
@@ -204,11 +203,35 @@ vec3 exit_velocity(vec3 x0, vec3 v0, vec3 x1, vec3 v1, float h)
     return (6.0 * t2 - 6.0 * t) * (-chord) / h + (3.0 * t2 - 4.0 * t + 1.0) * v0 + (3.0 * t2 - 2.0 * t) * v1;
 }
 
+// The step in which a ray left for the sky: its start (x, v) and length h. The velocity where it
+// crossed the bounding sphere (exit_velocity) is found from these and the step's end once the
+// checked steps are done (exit_taken), not inside their loop: a ray that left takes no more steps,
+// so the step that left is the last one taken, and its end is where the loop leaves the ray. The
+// same arithmetic on the same values (the chord x1 - x taken where the step computes x1, as
+// exit_velocity took it, so that the compiler simplifies it as it did). Why: Newton's steps on the
+// Hermite curve, live beside a light model's step in every turn, made the kiosk's lorenz frame
+// spill 19 values on V3D 4.2 (`make shader-stats`); found after the single pass's last tests, 3
+// (rossler's 0). The stored step costs the heaviest steps (potential's and refraction's step
+// doubling) about ten more.
+struct exit_step {
+    vec3 x, v;
+    vec3 chord;      // from x to the step's end
+    float h;
+    bool left;
+};
+
+exit_step no_exit()
+{
+    return exit_step(vec3(0.0), vec3(0.0), vec3(0.0), 1.0, false);   // h: no division by 0 in exit_taken
+}
+
 // One step as the scheme defines it: a ray stops moving once it left the bounding sphere, fell
 // into the horizon or its state stopped being finite (the last finite state is kept, and the
 // step count turns negative: failed); the ray state is updated with selects (see the precision
-// note in common.glsl).
-void step_checked(inout vec3 x, inout vec3 v, inout float steps, inout float h, inout bool running)
+// note in common.glsl). A step that leaves for the sky is kept in `left_at` (the velocity at the
+// crossing comes after the steps: exit_taken).
+void step_checked(inout vec3 x, inout vec3 v, inout float steps, inout float h, inout bool running,
+                  inout exit_step left_at)
 {
     vec3 x1, v1;
     bool accept;
@@ -220,15 +243,31 @@ void step_checked(inout vec3 x, inout vec3 v, inout float steps, inout float h, 
     float next_steps = travelled_after(steps, h_try);
     float failed_steps = -1.0 - steps;
 #ifndef SKY_AT_INFINITY
-    // a ray that left for the sky: its velocity where it crossed the bounding sphere
+    // a ray that left for the sky: its step, for the velocity where it crossed the bounding sphere
     bool left = take && outside_bounds(x1) && !captured(x1);
-    v1 = left ? exit_velocity(x, v, x1, v1, h_try) : v1;
+    left_at.x = left ? x : left_at.x;
+    left_at.v = left ? v : left_at.v;
+    left_at.chord = left ? x1 - x : left_at.chord;
+    left_at.h = left ? h_try : left_at.h;
+    left_at.left = left_at.left || left;
 #endif
     x = take ? x1 : x;
     v = take ? v1 : v;
     steps = take ? next_steps : (running && !ok ? failed_steps : steps);
     h = running && ok ? h_next : h;
     running = running && ok && travelling(x);
+}
+
+// The velocity of a ray that the checked steps left at (x, v): where `left_at` says it left in the
+// last of them, the velocity where it crossed the bounding sphere.
+vec3 exit_taken(exit_step left_at, vec3 x, vec3 v)
+{
+#ifdef SKY_AT_INFINITY
+    return v;
+#else
+    vec3 crossing = exit_velocity(left_at.x, left_at.v, left_at.chord, v, left_at.h);
+    return left_at.left ? crossing : v;
+#endif
 }
 
 // The same step for a ray assumed to keep travelling: the same arithmetic without the selects
@@ -326,14 +365,16 @@ void integrate_pass(inout vec3 x, inout vec3 v, inout float steps, inout float h
     float steps_checked = steps_start;
     float h_checked = h_start;
     bool running_checked = running;
+    exit_step left_at = no_exit();
     for (int i = 0; i < STEPS_PER_PASS; i++) {
         if (!again)
             break;
-        step_checked(x_checked, v_checked, steps_checked, h_checked, running_checked);
+        step_checked(x_checked, v_checked, steps_checked, h_checked, running_checked, left_at);
         // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
         if (i == STEPS_PER_PASS - 1)
             break;
     }
+    v_checked = exit_taken(left_at, x_checked, v_checked);
     // the checked state kept apart until here: selected, not assigned in the loop that may break
     // (see the precision note in common.glsl); a ray that was not travelling keeps its state
     vec3 x_moved = again ? x_checked : x;
@@ -347,13 +388,15 @@ void integrate_pass(inout vec3 x, inout vec3 v, inout float steps, inout float h
 #endif
 }
 
+#ifndef MODEL_FLAT
 // integrate_pass where its steps are known not to all hold unchecked (the single pass's segment in
-// which a ray left, fell in or failed): the checked steps alone, the same state bit for bit.
-void integrate_pass_checked(inout vec3 x, inout vec3 v, inout float steps, inout float h, bool running)
+// which a ray left, fell in or failed): the checked steps alone, the same state bit for bit, but
+// for a ray that left for the sky, whose velocity where it crossed the bounding sphere the caller
+// takes from left_at (exit_taken) once the rest of its tests are done: fewer values live beside
+// Newton's steps (the kiosk's lorenz frame on V3D 4.2: 19 values spilled with it here, 3 there).
+void integrate_pass_checked(inout vec3 x, inout vec3 v, inout float steps, inout float h, bool running,
+                            inout exit_step left_at)
 {
-#ifdef MODEL_FLAT
-    integrate_pass(x, v, steps, h, running);
-#else
     vec3 x_checked = x;
     vec3 v_checked = v;
     float steps_checked = steps;
@@ -362,7 +405,7 @@ void integrate_pass_checked(inout vec3 x, inout vec3 v, inout float steps, inout
     for (int i = 0; i < STEPS_PER_PASS; i++) {
         if (!running_checked)
             break;
-        step_checked(x_checked, v_checked, steps_checked, h_checked, running_checked);
+        step_checked(x_checked, v_checked, steps_checked, h_checked, running_checked, left_at);
         // at the turn's end (docs/PIPELINE.md, "Loops that end at a turn's end")
         if (!running_checked || i == STEPS_PER_PASS - 1)
             break;
@@ -372,8 +415,8 @@ void integrate_pass_checked(inout vec3 x, inout vec3 v, inout float steps, inout
     v = running ? v_checked : v;
     steps = running ? steps_checked : steps;
     h = running ? h_checked : h;
-#endif
 }
+#endif
 
 #ifndef SINGLE_PASS
 void main()
