@@ -121,7 +121,7 @@ bool object_rect(vec3 a, vec3 b, vec4 g0, vec4 g1, vec4 g2, out float t, out vec
 #endif
 
 // The closest hit of the batch so far: fraction t, normal, surface (what its texture coordinates
-// come from: texture_coordinates); key = depth key; slot < 0: none. The coordinates of a sphere or
+// come from: candidate_surface); key = depth key; slot < 0: none. The coordinates of a sphere or
 // a disk take an arctangent: found once for the hit that is kept, not for every test.
 struct candidate {
     float key, t, slot;
@@ -145,13 +145,31 @@ void consider(bool found, float t, vec3 normal, vec3 surface, float slot, inout 
 }
 #define CONSIDER consider
 
+// The texture coordinates of a hit, as the reference's intersect_* functions give them
+// (src/physics/intersect.c): on a sphere (g1: its texture's reference axis, g2: its pole) from the
+// unit normal; on a disk (g0.w: outer radius; g1: normal, inner radius; g2: reference axis) from
+// the hit relative to its centre, p; a flat object's are its test's own (surface.xy).
+vec2 sphere_uv(vec3 normal, vec4 g1, vec4 g2)
+{
+    vec3 third = cross(g2.xyz, g1.xyz);
+    return vec2(atan(dot(normal, third), dot(normal, g1.xyz)) / (2.0 * PI) + 0.5,
+                acos(clamp(dot(normal, g2.xyz), -1.0, 1.0)) / PI);
+}
+
+vec2 disk_uv(vec3 p, vec4 g0, vec4 g1, vec4 g2)
+{
+    vec3 third = cross(g1.xyz, g2.xyz);
+    return vec2((length(p) - g1.w) / max(g0.w - g1.w, 1e-6), atan(dot(p, third), dot(p, g2.xyz)) / (2.0 * PI) + 0.5);
+}
+
 // best's normal and surface: the chosen object's test again on chord a -> b, the chord on which
 // best was found, on its geometry (and, for an object that moves, its motion), selected first as
 // its material is: one test of each kind of primitive in the batch, each on the geometry selected
 // among the slots of its kind (BATCH_SLOTS_<KIND>, src/render/stage_intersect.c), not one test for
 // every object (a GPU's registers: cube_approach's frame on V3D 4.2 spilled 23 values with six
 // tests here, none with one). The same arithmetic on the same values as the test that found it,
-// so they are the ones that test computed.
+// so they are the ones that test computed. uv: its texture coordinates, from that test's surface
+// and the geometry selected for it (sphere_uv, disk_uv): arctangents found once, for the hit shaded.
 #define SELECT_SLOT(n) { bool chosen = best.slot == float(n); \
                          g0 = chosen ? GEOMETRY(n, 0) : g0; g1 = chosen ? GEOMETRY(n, 1) : g1; \
                          g2 = chosen ? GEOMETRY(n, 2) : g2; g3 = chosen ? GEOMETRY(n, 3) : g3; \
@@ -159,10 +177,13 @@ void consider(bool found, float t, vec3 normal, vec3 surface, float slot, inout 
 #define SELECT_MOVING(n) { bool chosen = best.slot == float(n); \
                            motion = chosen ? MOTION(n, 0) : motion; origin = chosen ? MOTION(n, 1) : origin; \
                            moves = moves || chosen; }
-#define SURFACE_OF(kind_slots, test) g0 = g1 = g2 = g3 = g4 = vec4(0.0); chosen_kind = false; kind_slots \
-    test; best.normal = chosen_kind ? normal : best.normal; best.surface = chosen_kind ? surface : best.surface;
-void candidate_surface(vec3 a, vec3 b, inout candidate best)
+#define SURFACE_OF(kind_slots, test, kind_uv) g0 = g1 = g2 = g3 = g4 = vec4(0.0); chosen_kind = false; kind_slots \
+    test; best.normal = chosen_kind ? normal : best.normal; best.surface = chosen_kind ? surface : best.surface; \
+    { vec2 uv_of_kind = kind_uv; uv = chosen_kind ? uv_of_kind : uv; }
+
+void candidate_surface(vec3 a, vec3 b, inout candidate best, out vec2 uv)
 {
+    uv = vec2(0.0);
     vec3 from = a;
     vec3 to = b;
 #ifdef MOVING_OBJECTS
@@ -182,16 +203,16 @@ void candidate_surface(vec3 a, vec3 b, inout candidate best)
     vec4 g0, g1, g2, g3, g4;
     bool chosen_kind;
 #ifdef HAS_PRIM_SPHERE
-    SURFACE_OF(BATCH_SLOTS_SPHERE, object_sphere(from, to, g0, t, normal, surface))
+    SURFACE_OF(BATCH_SLOTS_SPHERE, object_sphere(from, to, g0, t, normal, surface), sphere_uv(surface, g1, g2))
 #endif
 #ifdef HAS_PRIM_DISK
-    SURFACE_OF(BATCH_SLOTS_DISK, object_disk(from, to, g0, g1, t, normal, surface))
+    SURFACE_OF(BATCH_SLOTS_DISK, object_disk(from, to, g0, g1, t, normal, surface), disk_uv(surface, g0, g1, g2))
 #endif
 #ifdef HAS_PRIM_RECT
-    SURFACE_OF(BATCH_SLOTS_RECT, object_rect(from, to, g0, g1, g2, t, normal, surface))
+    SURFACE_OF(BATCH_SLOTS_RECT, object_rect(from, to, g0, g1, g2, t, normal, surface), surface.xy)
 #endif
 #ifdef HAS_PRIM_TRIANGLE
-    SURFACE_OF(BATCH_SLOTS_TRIANGLE, object_triangle(from, to, g0, g1, g2, g3, g4, t, normal, surface))
+    SURFACE_OF(BATCH_SLOTS_TRIANGLE, object_triangle(from, to, g0, g1, g2, g3, g4, t, normal, surface), surface.xy)
 #endif
 }
 
@@ -549,42 +570,11 @@ bool intersect_chord_meets(vec3 a, vec3 b)
 }
 #endif
 
-// The texture coordinates of candidate best: what the tests of its object's primitive found, as
-// the reference's intersect_* functions give them (src/physics/intersect.c).
-vec2 texture_coordinates(candidate best)
-{
-    // the chosen slot's geometry where it is a sphere or a disk, whose coordinates take it (a flat
-    // object's are its surface's): selected from their kinds' slot lists, as candidate_surface does
-    vec4 g0 = vec4(0.0), g1 = vec4(0.0), g2 = vec4(0.0), g3 = vec4(0.0), g4 = vec4(0.0);
-    bool chosen_kind = false;
-#ifdef HAS_PRIM_SPHERE
-    BATCH_SLOTS_SPHERE
-#endif
-    float kind = chosen_kind ? 1.0 : 0.0;
-#ifdef HAS_PRIM_DISK
-    BATCH_SLOTS_DISK
-#endif
-    kind = chosen_kind && kind == 0.0 ? 2.0 : kind;
-    // sphere: g1 = texture reference axis, g2 = pole; surface = the normal
-    vec3 normal = best.surface;
-    vec3 sphere_third = cross(g2.xyz, g1.xyz);
-    vec2 sphere_uv = vec2(atan(dot(normal, sphere_third), dot(normal, g1.xyz)) / (2.0 * PI) + 0.5,
-                          acos(clamp(dot(normal, g2.xyz), -1.0, 1.0)) / PI);
-    // disk: g0.w = outer radius, g1 = normal, inner radius, g2 = reference axis; surface = p - centre
-    vec3 p = best.surface;
-    vec3 disk_third = cross(g1.xyz, g2.xyz);
-    vec2 disk_uv = vec2((length(p) - g1.w) / max(g0.w - g1.w, 1e-6),
-                        atan(dot(p, disk_third), dot(p, g2.xyz)) / (2.0 * PI) + 0.5);
-    vec2 flat_uv = best.surface.xy;
-    vec2 round_uv = kind == 1.0 ? sphere_uv : disk_uv;
-    return kind > 0.0 ? round_uv : flat_uv;
-}
-
 // The hit record and the shaded colour (object id in alpha) of candidate best on chord a -> b.
 void intersect_shade(candidate best, vec3 a, vec3 b, out vec4 new_hit, out vec4 new_image)
 {
-    candidate_surface(a, b, best);
-    vec2 uv = texture_coordinates(best);
+    vec2 uv;
+    candidate_surface(a, b, best, uv);
     // the chosen object's material
     vec4 color_checker = MATERIAL(0, 0), emission_id = MATERIAL(0, 1), factors = MATERIAL(0, 2),
          checker_color = MATERIAL(0, 3), emitter = MATERIAL(0, 4);
