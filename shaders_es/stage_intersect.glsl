@@ -436,7 +436,7 @@ bool cull_group_clear(orbit_ray ray, vec4 ends, float phi_a, float span, float r
 // sphere's square root can move it by about |a - c|^2 / r times a rounding): the balls are taken
 // CHORD_CULL_MARGIN of their reach (relative to the object's radius) and CHORD_CULL_POSITION_MARGIN
 // of the points' coordinates larger, hundreds of times what those roundings can move a point. An
-// object that moves (MOVING_TEST) comes near every chord.
+// object that moves comes near every chord: a batch with one (MOVING_OBJECTS) culls none.
 // The balls and planes are the frame's, the same for every pixel: computed once on the CPU
 // (chord_cull_pack, src/render/stage_intersect.c), not in every pixel. Why: computed in the shader,
 // ten floats an object stayed live across the whole loop, more than the register file of an
@@ -449,7 +449,7 @@ bool cull_group_clear(orbit_ray ray, vec4 ends, float phi_a, float span, float r
 // frame on Mali-G52 a third of its load/store cycles (150 -> 105); V3D sees through either.
 const float CHORD_CULL_MARGIN = 1e-3;
 const float CHORD_CULL_POSITION_MARGIN = 1e-5;
-uniform vec2 u_chord_scale[BATCH_SIZE];   // 1 / radius (0: every chord is near), the centre's position margin
+uniform vec2 u_chord_scale[BATCH_SIZE];   // 1 / radius, the centre's position margin
 #ifdef CHORD_CULL_UNIFORMS
 #define chord_ball u_object_ball
 #define chord_plane u_object_plane
@@ -493,29 +493,11 @@ bool chord_near(vec3 a, vec3 b)
     float half_length = 0.5 * length(b - a);
     float mid_margin = CHORD_CULL_POSITION_MARGIN * (abs(mid.x) + abs(mid.y) + abs(mid.z));
     bool near = false;
-#undef TEST_SPHERE
-#undef TEST_DISK
-#undef TEST_RECT
-#undef TEST_TRIANGLE
-#undef MOVING_TEST
-#define TEST_SPHERE(n) near = near || chord_near_object(chord_ball[n], chord_plane[n], chord_scale[n], \
-                                                      mid, half_length, mid_margin);
-#define TEST_DISK(n) TEST_SPHERE(n)
-#define TEST_RECT(n) TEST_SPHERE(n)
-#define TEST_TRIANGLE(n) TEST_SPHERE(n)
-#define MOVING_TEST(n, test) near = true;
-    BATCH_TESTS
-#undef TEST_SPHERE
-#undef TEST_DISK
-#undef TEST_RECT
-#undef TEST_TRIANGLE
-#undef MOVING_TEST
-#define TEST_SPHERE(slot) TEST_SPHERE_FULL(slot)
-#define TEST_DISK(slot) TEST_DISK_FULL(slot)
-#define TEST_RECT(slot) TEST_RECT_FULL(slot)
-#define TEST_TRIANGLE(slot) TEST_TRIANGLE_FULL(slot)
 #ifdef MOVING_OBJECTS
-#define MOVING_TEST(slot, test) MOVING_TEST_FULL(slot, test)
+    near = true;
+#else
+    for (int n = 0; n < BATCH_SIZE; n++)
+        near = near || chord_near_object(chord_ball[n], chord_plane[n], chord_scale[n], mid, half_length, mid_margin);
 #endif
     return near;
 }
