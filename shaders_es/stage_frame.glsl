@@ -50,14 +50,17 @@ void main()
     // Segments are taken in an inner loop that integrates them and asks of each chord only whether
     // it comes near an object (chord_near, stage_intersect.glsl: a few multiplications an object);
     // a chord that does not cannot meet one, and its end is decided at once. A chord that does ends
-    // the inner loop, and the outer loop's turn tests it against every object (intersect_chord) and
-    // decides its end with that. The same tests on the same chords as the multipass scheme where it
+    // the inner loop, and the outer loop's turn tests it against every object and decides its end
+    // with that: whether it meets one (intersect_chord_meets), the closest hit found once, after
+    // the loops (intersect_chord; V3D 4.2 spilled 14 values of the kiosk's lorenz frame with the hit
+    // carried through the loop, none without). The same tests on the same chords as the multipass scheme where it
     // matters, in the same order: the same rays bit for bit (tests/unit/test_acceleration.c). Why:
     // a GPU that runs fragments in groups (llvmpipe: 8) pays for an object's test on every chord
     // whatever the test's `if`s say; a loop's turns it pays only while one of the group needs them.
     // The inner loop's turns cost a segment's steps, the outer's the objects' tests.
     float next_segment = 0.0;
     bool pending = false;   // chord a -> x, segment k_last, comes near an object: its tests are due
+    bool hit_chord = false; // chord a -> x, segment k_last, meets an object: the ray stopped on it
     chord_cull_prepare();
     for (highp int i = 0; i < FRAME_MAX_SEGMENTS; i++) {
         if (stop || next_segment >= u_segments)
@@ -112,14 +115,15 @@ void main()
             if (next_segment >= u_segments || stop || pending)
                 break;
         }
-        candidate tested = best;
-        intersect_chord(a, x, k_last, tested);
-        best = pending ? tested : best;
+        // whether the chord meets an object: the ray stops on it, and its closest hit is found
+        // after the loops, where the checked segment's is (the loop carries no hit)
+        bool meets = intersect_chord_meets(a, x);
         float new_code = code;
         float new_end_key = end_key;
-        bool ended = segment_end(x, steps, k_last, best, new_code, new_end_key);
+        bool ended = segment_end_found(x, steps, k_last, meets, new_code, new_end_key);
         code = pending ? new_code : code;
         end_key = pending ? new_end_key : end_key;
+        hit_chord = pending && meets;
         stop = stop || (pending && ended);
         pending = false;
         // at the turn's end, as every loop here (docs/PIPELINE.md, "Loops that end at a turn's end")
@@ -148,9 +152,10 @@ void main()
     v = again ? v_checked : v;
     steps = again ? steps_checked : steps;
     h = again ? h_checked : h;
+    // the closest hit on the last chord: the one the ray stopped on, or the checked segment's
     candidate tested = best;
     intersect_chord(a, x, k_last, tested);
-    best = again ? tested : best;
+    best = again || hit_chord ? tested : best;
     float new_code = code;
     float new_end_key = end_key;
     segment_end(x, steps, k_last, best, new_code, new_end_key);

@@ -524,12 +524,13 @@ void intersect_chord(vec3 a, vec3 b, float segment, inout candidate best)
     BATCH_TESTS
 }
 
-#ifdef ORBIT_HITS
+#if defined(ORBIT_HITS) || defined(SINGLE_PASS)
 // Whether any object of the batch meets chord a -> b: what intersect_chord's best.slot >= 0 would
 // say, without the closest hit's depth, fraction and object carried through the tests (the orbit
-// walk needs only whether to stop; its finish finds the hit again). The same tests: each finds a
-// hit only at a fraction t in [0, 1] (prim_*.glsl), whose depth key consider() always takes over
-// NO_HIT. Carrying less, the walk spills less on V3D and Bifrost (`make shader-stats`).
+// walk and the integrated single pass's loop need only whether to stop; the hit is found after
+// the loop). The same tests: each finds a hit only at a fraction t in [0, 1] (prim_*.glsl), whose
+// depth key consider() always takes over NO_HIT. Carrying less, the loops spill less on V3D and
+// Bifrost (`make shader-stats`).
 bool chord_meets;
 void consider_meets(bool found, float t, vec3 normal, vec3 surface, float slot, inout candidate best)
 {
