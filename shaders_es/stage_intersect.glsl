@@ -325,33 +325,22 @@ void cull_wedge(orbit_ray ray, vec3 centre, float radius)
     cull_wedge_rho_hi = rho + in_plane;
 }
 
-// Each object's wedge for this ray: its bounding ball's (BATCH_TESTS, each test replaced by it).
-void cull_prepare(orbit_ray ray)
-{
-#undef TEST_SPHERE
-#undef TEST_DISK
-#undef TEST_RECT
-#undef TEST_TRIANGLE
+// Each object's wedge for this ray: its bounding ball's, found from its geometry by its kind of
+// primitive (as object_bound.h bounds it). BATCH_WEDGES lists WEDGE_OF_<PRIMITIVE>(slot) for every
+// object of the batch (stage_intersect.c).
 #define CULL_KEEP(n) cull_start[n] = cull_wedge_start; cull_width[n] = cull_wedge_width; \
                      cull_rho_lo[n] = cull_wedge_rho_lo; cull_rho_hi[n] = cull_wedge_rho_hi;
-#define TEST_SPHERE(n) { vec4 g0 = GEOMETRY(n, 0); cull_wedge(ray, g0.xyz, g0.w); CULL_KEEP(n) }
-#define TEST_DISK(n) TEST_SPHERE(n)
-#define TEST_RECT(n) { vec4 g0 = GEOMETRY(n, 0); vec3 g1 = GEOMETRY(n, 1).xyz, g2 = GEOMETRY(n, 2).xyz; \
-                       cull_wedge(ray, g0.xyz, max(length(g1 + g2), length(g1 - g2))); CULL_KEEP(n) }
-#define TEST_TRIANGLE(n) { vec3 v0 = GEOMETRY(n, 0).xyz, v1 = GEOMETRY(n, 1).xyz, v2 = GEOMETRY(n, 2).xyz; \
-                           vec3 c = (v0 + v1 + v2) / 3.0; \
-                           cull_wedge(ray, c, max(length(v0 - c), max(length(v1 - c), length(v2 - c)))); \
-                           CULL_KEEP(n) }
-    BATCH_TESTS
-#undef TEST_SPHERE
-#undef TEST_DISK
-#undef TEST_RECT
-#undef TEST_TRIANGLE
-#undef CULL_KEEP
-#define TEST_SPHERE(slot) TEST_SPHERE_FULL(slot)
-#define TEST_DISK(slot) TEST_DISK_FULL(slot)
-#define TEST_RECT(slot) TEST_RECT_FULL(slot)
-#define TEST_TRIANGLE(slot) TEST_TRIANGLE_FULL(slot)
+#define WEDGE_OF_SPHERE(n) { vec4 g0 = GEOMETRY(n, 0); cull_wedge(ray, g0.xyz, g0.w); CULL_KEEP(n) }
+#define WEDGE_OF_DISK(n) WEDGE_OF_SPHERE(n)
+#define WEDGE_OF_RECT(n) { vec4 g0 = GEOMETRY(n, 0); vec3 g1 = GEOMETRY(n, 1).xyz, g2 = GEOMETRY(n, 2).xyz; \
+                           cull_wedge(ray, g0.xyz, max(length(g1 + g2), length(g1 - g2))); CULL_KEEP(n) }
+#define WEDGE_OF_TRIANGLE(n) { vec3 v0 = GEOMETRY(n, 0).xyz, v1 = GEOMETRY(n, 1).xyz, v2 = GEOMETRY(n, 2).xyz; \
+                               vec3 c = (v0 + v1 + v2) / 3.0; \
+                               cull_wedge(ray, c, max(length(v0 - c), max(length(v1 - c), length(v2 - c)))); \
+                               CULL_KEEP(n) }
+void cull_prepare(orbit_ray ray)
+{
+    BATCH_WEDGES
 }
 
 bool cull_disc_meets(orbit_ray ray, int slot, vec4 ends, float phi_a, float span, float r_in, float r_hi)
@@ -400,30 +389,17 @@ bool cull_group_meets(orbit_ray ray, int slot, bool flat_object, vec4 ends, floa
 
 // Whether a group of chords with ends as cull_group_meets takes them can meet no object of the
 // batch.
+// BATCH_GROUP_CULLS lists GROUP_MEETS(slot, flat) for every object of the batch (stage_intersect.c).
+#define GROUP_MEETS(n, flat_object) meets = meets || cull_group_meets(ray, n, flat_object, ends, phi_a, span, r_lo, \
+                                                                      r_in, r_hi);
 bool cull_group_clear(orbit_ray ray, vec4 ends, float phi_a, float span, float r_lo, float r_hi)
 {
     bool meets = false;
     // the nearest a chord of the group comes to the mass: the same for every object
     float r_in = span < 0.5 * CULL_TURN ? r_lo * cos(0.5 * span) : 0.0;
-#undef TEST_SPHERE
-#undef TEST_DISK
-#undef TEST_RECT
-#undef TEST_TRIANGLE
-#define TEST_SPHERE(n) meets = meets || cull_group_meets(ray, n, false, ends, phi_a, span, r_lo, r_in, r_hi);
-#define TEST_DISK(n) meets = meets || cull_group_meets(ray, n, true, ends, phi_a, span, r_lo, r_in, r_hi);
-#define TEST_RECT(n) TEST_DISK(n)
-#define TEST_TRIANGLE(n) TEST_DISK(n)
-    BATCH_TESTS
-#undef TEST_SPHERE
-#undef TEST_DISK
-#undef TEST_RECT
-#undef TEST_TRIANGLE
+    BATCH_GROUP_CULLS
     return !meets;
 }
-#define TEST_SPHERE(slot) TEST_SPHERE_FULL(slot)
-#define TEST_DISK(slot) TEST_DISK_FULL(slot)
-#define TEST_RECT(slot) TEST_RECT_FULL(slot)
-#define TEST_TRIANGLE(slot) TEST_TRIANGLE_FULL(slot)
 #endif
 
 #ifdef CHORD_CULL

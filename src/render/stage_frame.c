@@ -70,7 +70,8 @@ int frame_batch_defines(const struct renderer *r, const struct object_batch *b, 
     }
     /* nothing to meet: an empty batch of one slot keeps the shading code well-formed */
     snprintf(out, len, "#define BATCH_SIZE 1\n#define LIGHT_COUNT %d\n#define BATCH_TESTS\n%s%s\n", r->scene->n_lights,
-             r->exact_orbits ? "#define ORBIT_HITS 1\n" : "", r->observer_defines);
+             r->exact_orbits ? "#define ORBIT_HITS 1\n#define BATCH_WEDGES\n#define BATCH_GROUP_CULLS\n" : "",
+             r->observer_defines);
     return 0;
 }
 

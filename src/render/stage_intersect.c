@@ -278,8 +278,21 @@ int object_batch_defines(const struct object_batch *b, char *out, size_t len)
             if (moving[i])
                 used += (size_t)snprintf(out + used, len - used, " SELECT_MOVING(%d)", i);
     }
-    if (b->r->exact_orbits && used < len)
-        used += (size_t)snprintf(out + used, len - used, "\n#define ORBIT_HITS 1");
+    if (b->r->exact_orbits && used < len) {
+        /* the orbit walk's culls, object by object (stage_intersect.glsl): each object's wedge about
+         * the mass from its bounding ball (WEDGE_OF_<PRIMITIVE>), and whether a group of chords can
+         * meet it (GROUP_MEETS), a flat object's plane included */
+        used += (size_t)snprintf(out + used, len - used, "\n#define ORBIT_HITS 1\n#define BATCH_WEDGES");
+        for (int i = 0; i < b->count && used < len; i++)
+            used += (size_t)snprintf(out + used, len - used, " WEDGE_OF_%s(%d)",
+                                     prim_defines[s->objects[b->object[i]].type], i);
+        used += used < len ? (size_t)snprintf(out + used, len - used, "\n#define BATCH_GROUP_CULLS") : 0;
+        for (int i = 0; i < b->count && used < len; i++) {
+            struct object_bound bound;
+            object_bound(&s->objects[b->object[i]], &bound);
+            used += (size_t)snprintf(out + used, len - used, " GROUP_MEETS(%d, %s)", i, bound.flat ? "true" : "false");
+        }
+    }
     if (used < len)
         used += (size_t)snprintf(out + used, len - used, "\n%s", b->r->observer_defines);
     if (used + 2 >= len)
