@@ -64,7 +64,7 @@ bool object_sphere(vec3 a, vec3 b, vec4 g0, out float t, out vec3 normal, out ve
     surface = normal;
     return found;
 }
-#define TEST_SPHERE_FULL(slot) CONSIDER(object_sphere(a, b, GEOMETRY(slot, 0), t, normal, surface), \
+#define TEST_SPHERE_FULL(slot) consider(object_sphere(a, b, GEOMETRY(slot, 0), t, normal, surface), \
                                         t, normal, surface, float(slot), best);
 #define TEST_SPHERE(slot) TEST_SPHERE_FULL(slot)
 #endif
@@ -82,7 +82,7 @@ bool object_triangle(vec3 a, vec3 b, vec4 g0, vec4 g1, vec4 g2, vec4 g3, vec4 g4
     surface = vec3(uv, 0.0);
     return found;
 }
-#define TEST_TRIANGLE_FULL(slot) CONSIDER(object_triangle(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), \
+#define TEST_TRIANGLE_FULL(slot) consider(object_triangle(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), \
                                                           GEOMETRY(slot, 2), GEOMETRY(slot, 3), GEOMETRY(slot, 4), \
                                                           t, normal, surface), t, normal, surface, float(slot), best);
 #define TEST_TRIANGLE(slot) TEST_TRIANGLE_FULL(slot)
@@ -98,7 +98,7 @@ bool object_disk(vec3 a, vec3 b, vec4 g0, vec4 g1, out float t, out vec3 normal,
     normal = g1.xyz;
     return found;
 }
-#define TEST_DISK_FULL(slot) CONSIDER(object_disk(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), t, normal, surface), \
+#define TEST_DISK_FULL(slot) consider(object_disk(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), t, normal, surface), \
                                       t, normal, surface, float(slot), best);
 #define TEST_DISK(slot) TEST_DISK_FULL(slot)
 #endif
@@ -115,7 +115,7 @@ bool object_rect(vec3 a, vec3 b, vec4 g0, vec4 g1, vec4 g2, out float t, out vec
     surface = vec3(uv, 0.0);
     return found;
 }
-#define TEST_RECT_FULL(slot) CONSIDER(object_rect(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), GEOMETRY(slot, 2), \
+#define TEST_RECT_FULL(slot) consider(object_rect(a, b, GEOMETRY(slot, 0), GEOMETRY(slot, 1), GEOMETRY(slot, 2), \
                                               t, normal, surface), t, normal, surface, float(slot), best);
 #define TEST_RECT(slot) TEST_RECT_FULL(slot)
 #endif
@@ -132,18 +132,21 @@ struct candidate {
 // the segment index of the chord being tested (u_segment_index, or the single pass's loop)
 float intersect_segment_index;
 
+// Whether any test since chord_meets was last cleared found a hit (intersect_chord_meets).
+bool chord_meets;
+
 // Computed for every object, then selected: see the precision note in common.glsl. A test keeps
 // the hit's depth key, fraction and object only; its normal and surface are found once, for the
 // hit that is shaded (candidate_surface), not carried through every chord's tests.
 void consider(bool found, float t, vec3 normal, vec3 surface, float slot, inout candidate best)
 {
+    chord_meets = chord_meets || found;
     float key = intersect_segment_index + t;
     bool closer = found && key < best.key;
     best.key = closer ? key : best.key;
     best.t = closer ? t : best.t;
     best.slot = closer ? slot : best.slot;
 }
-#define CONSIDER consider
 
 // The texture coordinates of a hit, as the reference's intersect_* functions give them
 // (src/physics/intersect.c): on a sphere (g1: its texture's reference axis, g2: its pole) from the
@@ -502,29 +505,19 @@ void intersect_chord(vec3 a, vec3 b, float segment, inout candidate best)
 
 #if defined(ORBIT_HITS) || defined(SINGLE_PASS)
 // Whether any object of the batch meets chord a -> b: what intersect_chord's best.slot >= 0 would
-// say, without the closest hit's depth, fraction and object carried through the tests (the orbit
-// walk and the integrated single pass's loop need only whether to stop; the hit is found after
-// the loop). The same tests: each finds a hit only at a fraction t in [0, 1] (prim_*.glsl), whose
-// depth key consider() always takes over NO_HIT. Carrying less, the loops spill less on V3D and
-// Bifrost (`make shader-stats`).
-bool chord_meets;
-void consider_meets(bool found, float t, vec3 normal, vec3 surface, float slot, inout candidate best)
-{
-    chord_meets = chord_meets || found;
-}
-
+// say (consider() notes it in chord_meets), the closest hit's depth, fraction and object left unread
+// for the compiler to drop (the orbit walk and the integrated single pass's loop need only whether
+// to stop; the hit is found after the loop). The same tests: each finds a hit only at a fraction t
+// in [0, 1] (prim_*.glsl), whose depth key consider() always takes over NO_HIT. Carrying less, the
+// loops spill less on V3D and Bifrost (`make shader-stats`).
 bool intersect_chord_meets(vec3 a, vec3 b)
 {
-    candidate best;
+    candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
     float t;
     vec3 normal;
     vec3 surface;
     chord_meets = false;
-#undef CONSIDER
-#define CONSIDER consider_meets
     BATCH_TESTS
-#undef CONSIDER
-#define CONSIDER consider
     return chord_meets;
 }
 #endif
