@@ -429,7 +429,7 @@ void main()
     float h = velocity.w;
     bool running = fetch(u_hit).w >= NO_HIT && steps >= 0.0 && travelling(x);
     integrate_pass(x, v, steps, h, running);
-    WRITE_TARGET0(vec4(x, steps));
-    WRITE_TARGET1(vec4(v, h));
+    WRITE_TARGET0(state_rounded(vec4(x, steps)));
+    WRITE_TARGET1(state_rounded(vec4(v, h)));
 }
 #endif

@@ -53,8 +53,8 @@ void main()
     vec4 hit_out = found ? new_hit : ended_hit;
     vec4 image_out = found ? new_image : ended_image;
     // a ray that was not waiting: its state as it came (integrate_pass kept x, v, steps and h)
-    WRITE_TARGET0(vec4(x, steps));
-    WRITE_TARGET1(vec4(v, h));
+    WRITE_TARGET0(state_rounded(vec4(x, steps)));
+    WRITE_TARGET1(state_rounded(vec4(v, h)));
     WRITE_TARGET2(waiting ? hit_out : hit);
     WRITE_TARGET3(waiting ? image_out : image);
 }

@@ -69,14 +69,18 @@ static int renderer_follow_scene(struct renderer *r, struct error *e)
              r->straight ? "flat" : model_name(scene->model.type));
     static const char *const method_defines[] = {"EULER", "RK4", "DOPRI5", "ORBIT_TABLE"};
     static const char *const control_defines[] = {"FIXED", "DOUBLING", "EMBEDDED"};
-    snprintf(r->model_defines, sizeof r->model_defines,
-             "#define MODEL_%s 1\n%s%s#define METHOD_%s 1\n#define STEP_%s 1\n#define STEPS_PER_PASS %d\n%s",
+    int written = snprintf(r->model_defines, sizeof r->model_defines,
+             "#define MODEL_%s 1\n%s%s%s#define METHOD_%s 1\n#define STEP_%s 1\n#define STEPS_PER_PASS %d\n%s",
              r->straight ? "FLAT" : "CURVED",
+             /* a 16-bit ray state: each value rounded to a 16-bit float before it is written (common.glsl) */
+             r->path.format && !r->path.fp32 ? "#define STATE_HALF 1\n" : "",
              !r->straight && model_capture_radius(&scene->model) > 0.0 ? "#define MODEL_HORIZON 1\n" : "",
              r->sky_at_infinity ? "#define SKY_AT_INFINITY 1\n" : "",
              method_defines[r->method],
              control_defines[scene->render.step_control], scene->render.steps_per_pass,
              !r->straight && ops->shader_defines ? ops->shader_defines(&scene->model) : "");
+    if (written < 0 || (size_t)written >= sizeof r->model_defines)
+        return error_set(e, ERROR_RUNTIME, NULL, "internal: the model's defines do not fit");
     if (observer_defines(scene, r->observer_defines, sizeof r->observer_defines) != 0)
         return error_set(e, ERROR_RUNTIME, NULL, "internal: the observer's defines do not fit");
     return observer_lut_load(r, e);
