@@ -52,12 +52,13 @@ void main()
     // a chord that does not cannot meet one, and its end is decided at once. A chord that does ends
     // the inner loop, and the outer loop's turn tests it against every object and decides its end
     // with that: whether it meets one (intersect_chord_meets), the closest hit found once, after
-    // the loops (intersect_chord; V3D 4.2 spilled 14 values of the kiosk's lorenz frame with the hit
-    // carried through the loop, none without). The same tests on the same chords as the multipass scheme where it
-    // matters, in the same order: the same rays bit for bit (tests/unit/test_acceleration.c). Why:
-    // a GPU that runs fragments in groups (llvmpipe: 8) pays for an object's test on every chord
-    // whatever the test's `if`s say; a loop's turns it pays only while one of the group needs them.
-    // The inner loop's turns cost a segment's steps, the outer's the objects' tests.
+    // the loops (intersect_chord; V3D 4.2 spilled 14 values of the kiosk's lorenz frame with the
+    // hit carried through the loop, none without). The same tests on the same chords as the
+    // multipass scheme where it matters, in the same order: the same rays bit for bit
+    // (tests/unit/test_acceleration.c). Why: a GPU that runs fragments in groups (llvmpipe: 8) pays
+    // for an object's test on every chord whatever the test's `if`s say; a loop's turns it pays
+    // only while one of the group needs them. The inner loop's turns cost a segment's steps, the
+    // outer's the objects' tests.
     float next_segment = 0.0;
     bool pending = false;   // chord a -> x, segment k_last, comes near an object: its tests are due
     bool hit_chord = false; // chord a -> x, segment k_last, meets an object: the ray stopped on it

@@ -169,14 +169,14 @@ void controlled_step(vec3 x, vec3 v, float h, out vec3 x1, out vec3 v1, out bool
 #endif
 
 #ifndef MODEL_FLAT
-// The velocity where a step of length h from (x0, v0) to x0 + chord (v1 there) crossed the
-// bounding sphere: the sky's direction, as the CPU reference takes it (src/ref/reference.c). The
-// step's end lies beyond the sphere, and a field that still pulls there (Lorenz's grows with the
-// distance) would turn the end's velocity by the pull over the rest of the step: an error in
-// proportion to the step, which held the scenes' steps small. The crossing is found on the step's cubic Hermite curve (its dense
-// output from both ends' positions and velocities, third order in h for the velocity), from the
-// chord's crossing by Newton's steps. Models whose sky lies along the orbit's direction at infinity
-// (SKY_AT_INFINITY) take it from the step's end, a point of the same orbit.
+// The velocity where a step of length h from (x0, v0) to x0 + chord (v1 there) crossed the bounding
+// sphere: the sky's direction, as the CPU reference takes it (src/ref/reference.c). The step's end
+// lies beyond the sphere, and a field that still pulls there (Lorenz's grows with the distance)
+// would turn the end's velocity by the pull over the rest of the step: an error in proportion to
+// the step, which held the scenes' steps small. The crossing is found on the step's cubic Hermite
+// curve (its dense output from both ends' positions and velocities, third order in h for the
+// velocity), from the chord's crossing by Newton's steps. Models whose sky lies along the orbit's
+// direction at infinity (SKY_AT_INFINITY) take it from the step's end, a point of the same orbit.
 const int EXIT_NEWTON_STEPS = 3;
 
 vec3 exit_velocity(vec3 x0, vec3 v0, vec3 chord, vec3 v1, float h)

@@ -162,7 +162,8 @@ vec2 sphere_uv(vec3 normal, vec4 g1, vec4 g2)
 vec2 disk_uv(vec3 p, vec4 g0, vec4 g1, vec4 g2)
 {
     vec3 third = cross(g1.xyz, g2.xyz);
-    return vec2((length(p) - g1.w) / max(g0.w - g1.w, 1e-6), atan(dot(p, third), dot(p, g2.xyz)) / (2.0 * PI) + 0.5);
+    return vec2((length(p) - g1.w) / max(g0.w - g1.w, 1e-6),
+                atan(dot(p, third), dot(p, g2.xyz)) / (2.0 * PI) + 0.5);
 }
 
 // best's normal and surface: the chosen object's test again on chord a -> b, the chord on which
@@ -578,21 +579,22 @@ void intersect_shade(candidate best, vec3 a, vec3 b, out vec4 new_hit, out vec4 
 }
 
 #ifdef ORBIT_HITS
-// Hits on the orbit, not on its chord (render.method = orbit_table; orbit_table.glsl comes first): a hit found on chord a -> b,
-// which runs from fraction s_a to s_b of the ray's orbit, is found again on the two halves of that
-// stretch of orbit, split in its middle, ORBIT_HIT_LEVELS times: the chord that carries the hit
-// halves at every level and its distance from the orbit falls fourfold. Every object is tested
-// again on the first half, so a hit that the orbit reaches first is the one kept; where the first
-// half meets nothing, the hit lies on the second, which the next level splits in turn, untested:
-// one half tested a level, not two. A level asks only whether the half meets anything
-// (intersect_chord_meets), carrying no depth, fraction or object through the loop; the closest hit
-// is found once, on the last chord, after the last level: the hit a level's full test would have
-// kept there (V3D 4.2 spilled 29 values with a full test a level, 14 with this). Where the last
-// chord meets nothing (a chord that crossed an object, or an edge of one, that the orbit passes
-// by), the hit is lost: its caller keeps no hit there and the ray goes on from the chord's end. The split is never at the hit itself: the orbit there lies within the chord's
-// error of the object's surface, often closer than a float rounding, where both halves could miss
-// a surface that the orbit does cross. Used by the intersection stage and by the single pass
-// alike, with the same arithmetic, so both find the same hits.
+// Hits on the orbit, not on its chord (render.method = orbit_table; orbit_table.glsl comes first):
+// a hit found on chord a -> b, which runs from fraction s_a to s_b of the ray's orbit, is found
+// again on the two halves of that stretch of orbit, split in its middle, ORBIT_HIT_LEVELS times:
+// the chord that carries the hit halves at every level and its distance from the orbit falls
+// fourfold. Every object is tested again on the first half, so a hit that the orbit reaches first
+// is the one kept; where the first half meets nothing, the hit lies on the second, which the next
+// level splits in turn, untested: one half tested a level, not two. A level asks only whether the
+// half meets anything (intersect_chord_meets), carrying no depth, fraction or object through the
+// loop; the closest hit is found once, on the last chord, after the last level: the hit a level's
+// full test would have kept there (V3D 4.2 spilled 29 values with a full test a level, 14 with
+// this). Where the last chord meets nothing (a chord that crossed an object, or an edge of one,
+// that the orbit passes by), the hit is lost: its caller keeps no hit there and the ray goes on
+// from the chord's end. The split is never at the hit itself: the orbit there lies within the
+// chord's error of the object's surface, often closer than a float rounding, where both halves
+// could miss a surface that the orbit does cross. Used by the intersection stage and by the single
+// pass alike, with the same arithmetic, so both find the same hits.
 const int ORBIT_HIT_LEVELS = 4;
 
 // best: the hit on chord a -> b (segment `segment`); a and b become the ends of the short chord
