@@ -92,7 +92,12 @@ void main()
             leaves = true;
             b = orbit_chord_point(ray, q, s, leaves);
             steps = k + 1.0;
+#ifdef FRAME_STATE
             intersect_chord(a, b, k, best);
+#else
+            // whether it meets an object: the hit itself is found on the orbit below
+            best.slot = intersect_chord_meets(a, b) ? 0.0 : -1.0;
+#endif
             found = best.slot >= 0.0;
             code = found ? code : CODE_SKY;
             end_key = found ? end_key : steps;

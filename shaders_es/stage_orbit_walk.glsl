@@ -63,8 +63,15 @@ void orbit_walk_found(orbit_ray ray, float k, bool done, bool found, out vec3 a,
     s = orbit_chord_end(ray, k_moved);
     q = orbit_at(ray, s);
     best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
+#ifdef FRAME_STATE
+    // the hit's depth key, which the ray's state keeps
     if (found)
         intersect_chord(a, orbit_point(ray, q, s), k, best);
+#else
+    // only that the chord meets an object: orbit_refine_hit finds the hit itself on the orbit, and
+    // nothing read here keeps the chord's own hit (the walk's test, on the same chord, said so)
+    best.slot = found ? 0.0 : -1.0;
+#endif
 }
 
 #ifndef ORBIT_WALKED
