@@ -33,7 +33,7 @@ DEB_PACKAGES := make gcc pkg-config libegl-dev libgles-dev libegl-mesa0 libgl1-m
                 libosmesa6-dev libinih-dev libpng-dev libcmocka-dev libgsl-dev \
                 libhidapi-dev libgpiod-dev libsystemd-dev libfreetype-dev fonts-dejavu-core \
                 libgbm-dev libdrm-dev libx11-dev xvfb xauth valgrind groff-base \
-                glslang-tools
+                glslang-tools xplanet marble-qt-data
 
 LIB_SRCS  := $(shell find src -name '*.c' ! -path 'src/tools/*' ! -name main.c | sort)
 LIB_OBJS  := $(LIB_SRCS:%.c=$(BUILD)/%.o) $(BUILD)/gen/shaders_embedded.o

@@ -87,10 +87,10 @@ void star_catalogue_frame(struct star_catalogue *c, vec3d pole, vec3d centre)
     c->y_axis = v3_cross(c->pole, c->x_axis);
 }
 
-int star_catalogue_make(struct star_catalogue *c, int n, uint64_t seed, vec3d pole, vec3d centre)
+int star_catalogue_index(struct star_catalogue *c, struct star *stars, int n, vec3d pole, vec3d centre)
 {
     memset(c, 0, sizeof *c);
-    n = n < 0 ? 0 : n > STAR_CATALOGUE_MAX ? STAR_CATALOGUE_MAX : n;
+    n = n < 0 ? 0 : n;
     star_catalogue_frame(c, pole, centre);
     /* about one star a cell: a pixel's reach is far smaller than a cell, so that most lookups visit
      * one cell, and the fewer stars it holds the fewer are tested */
@@ -100,38 +100,50 @@ int star_catalogue_make(struct star_catalogue *c, int n, uint64_t seed, vec3d po
     c->row_step = PI_D / c->rows;
     c->column_step = 2.0 * PI_D / c->columns;
     size_t cells = (size_t)c->rows * c->columns;
-    struct star *drawn = malloc((n > 0 ? n : 1) * sizeof *drawn);
     int *cell = malloc((n > 0 ? n : 1) * sizeof *cell);
     c->stars = malloc((n > 0 ? n : 1) * sizeof *c->stars);
     c->cell_start = calloc(cells + 1, sizeof *c->cell_start);
     int32_t *fill = malloc(cells * sizeof *fill);
-    if (!drawn || !cell || !c->stars || !c->cell_start || !fill) {
-        free(drawn);
+    if (!cell || !c->stars || !c->cell_start || !fill) {
         free(cell);
         free(fill);
+        free(stars);
         star_catalogue_free(c);
         return -1;
     }
+    for (int i = 0; i < n; i++) {
+        cell[i] = cell_of(c, stars[i].direction);
+        c->cell_start[cell[i] + 1]++;
+    }
+    /* counting sort by cell, stable: the order within a cell is the order given */
+    for (size_t k = 0; k < cells; k++)
+        c->cell_start[k + 1] += c->cell_start[k];
+    memcpy(fill, c->cell_start, cells * sizeof *fill);
+    for (int i = 0; i < n; i++)
+        c->stars[fill[cell[i]]++] = stars[i];
+    free(fill);
+    free(cell);
+    free(stars);
+    c->n = n;
+    return 0;
+}
+
+int star_catalogue_make(struct star_catalogue *c, int n, uint64_t seed, vec3d pole, vec3d centre)
+{
+    memset(c, 0, sizeof *c);
+    n = n < 0 ? 0 : n > STAR_CATALOGUE_MAX ? STAR_CATALOGUE_MAX : n;
+    star_catalogue_frame(c, pole, centre);   /* the directions are drawn in it */
+    struct star *drawn = malloc((n > 0 ? n : 1) * sizeof *drawn);
+    if (!drawn)
+        return -1;
     uint64_t state = seed;
     double faintest = star_faintest_magnitude(n);
     for (int i = 0; i < n; i++) {
         drawn[i].direction = draw_direction(c, &state);
         drawn[i].magnitude = faintest + 2.0 * log10(uniform(&state));
         drawn[i].temperature = draw_temperature(&state);
-        cell[i] = cell_of(c, drawn[i].direction);
-        c->cell_start[cell[i] + 1]++;
     }
-    /* counting sort by cell, stable: the order within a cell is the order drawn */
-    for (size_t k = 0; k < cells; k++)
-        c->cell_start[k + 1] += c->cell_start[k];
-    memcpy(fill, c->cell_start, cells * sizeof *fill);
-    for (int i = 0; i < n; i++)
-        c->stars[fill[cell[i]]++] = drawn[i];
-    free(fill);
-    free(drawn);
-    free(cell);
-    c->n = n;
-    return 0;
+    return star_catalogue_index(c, drawn, n, pole, centre);
 }
 
 void star_catalogue_free(struct star_catalogue *c)

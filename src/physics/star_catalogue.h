@@ -43,6 +43,9 @@ struct star_catalogue {
 /* Generate n stars (0..STAR_CATALOGUE_MAX) from seed in the galactic frame of pole and centre
  * (star_catalogue_frame). 0, or -1 when out of memory (the catalogue is then empty). */
 int star_catalogue_make(struct star_catalogue *c, int n, uint64_t seed, vec3d pole, vec3d centre);
+/* A catalogue of the n stars given (taken over: freed here, also on failure), indexed by cell in the
+ * galactic frame of pole and centre. 0, or -1 when out of memory (the catalogue is then empty). */
+int star_catalogue_index(struct star_catalogue *c, struct star *stars, int n, vec3d pole, vec3d centre);
 /* The galactic frame alone: pole (need not be unit; not zero), and longitude 0 toward centre's part
  * in the galactic plane (a direction of the plane's own choosing when centre lies along the pole). */
 void star_catalogue_frame(struct star_catalogue *c, vec3d pole, vec3d centre);

@@ -1,6 +1,7 @@
 #include "results/star_light.h"
 #include "io/sample_average.h"
 #include "physics/blackbody.h"
+#include "physics/bright_stars.h"
 #include "scene/camera.h"
 #include <pthread.h>
 #include <stdio.h>
@@ -41,7 +42,10 @@ static void chroma(const struct star_sky *k, double temperature_k, double rgb[3]
         rgb[c] = k->chroma[i][c] + f * (k->chroma[i + 1][c] - k->chroma[i][c]);
 }
 
-int star_sky_wanted(const struct scene *s) { return s->sky.stars > 0 || s->sky.milky_way > 0.0; }
+int star_sky_wanted(const struct scene *s)
+{
+    return s->sky.stars > 0 || s->sky.catalogue[0] || s->sky.milky_way > 0.0;
+}
 
 static double star_flux(const struct scene *s, double magnitude)
 {
@@ -58,7 +62,16 @@ int star_sky_init(struct star_sky *k, const struct scene *s, struct error *e)
         double t = BLACKBODY_T_MIN_K * pow(BLACKBODY_T_MAX_K / BLACKBODY_T_MIN_K, (double)i / (STAR_CHROMA_SIZE - 1));
         star_chromaticity(t, k->chroma[i]);
     }
-    if (s->sky.stars > 0 &&
+    if (s->sky.catalogue[0]) {
+        /* the real sky's stars (the files were read once when the scene was loaded) */
+        struct star *stars;
+        int n;
+        if (bright_stars_read(s->sky.catalogue, s->sky.catalogue_colours[0] ? s->sky.catalogue_colours : NULL,
+                              s->sky.galactic_pole, s->sky.galactic_center, &stars, &n, e) != 0)
+            return -1;
+        if (star_catalogue_index(&k->catalogue, stars, n, s->sky.galactic_pole, s->sky.galactic_center) != 0)
+            return error_set(e, ERROR_RUNTIME, NULL, "out of memory for the star catalogue %s", s->sky.catalogue);
+    } else if (s->sky.stars > 0 &&
         star_catalogue_make(&k->catalogue, s->sky.stars, (uint64_t)s->sky.star_seed, s->sky.galactic_pole,
                             s->sky.galactic_center) != 0)
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory for a catalogue of %d stars ([sky] stars)",

@@ -119,6 +119,8 @@ struct sky {
     double temperature;      /* K; > 0: every texel a black body, its luminance from the texel */
     /* Point stars and the Milky Way over the sky above (results/star_light.h) */
     int stars;               /* stars of a generated catalogue (physics/star_catalogue.h); 0: none */
+    char catalogue[SCENE_PATH_LEN];  /* "": none; the real sky's stars (physics/bright_stars.h) */
+    char catalogue_colours[SCENE_PATH_LEN];  /* "": none; their colours, by HR number */
     int star_seed;           /* the catalogue's seed: the same stars for the same seed */
     double star_brightness;  /* light of a 6th-magnitude star at rest, linear, summed over its pixels */
     double star_size;        /* standard deviation of a star's Gaussian image, pixels */

@@ -185,7 +185,7 @@ void object_rest_geometry(const struct object *o, struct object *rest)
 
 int scene_has_black_body(const struct scene *s)
 {
-    int found = s->sky.temperature > 0.0 || s->sky.stars > 0 || s->sky.milky_way > 0.0;
+    int found = s->sky.temperature > 0.0 || s->sky.stars > 0 || s->sky.catalogue[0] || s->sky.milky_way > 0.0;
     for (int i = 0; i < s->n_lights; i++)
         found |= s->lights[i].temperature > 0.0;
     for (int i = 0; i < s->n_objects; i++)

@@ -16,6 +16,12 @@ int scene_input_named(const struct scene *s, const char *path, char *which, size
             snprintf(which, len, "the scene's texture %s", s->textures[i]);
             return 1;
         }
+    const char *catalogues[] = {s->sky.catalogue, s->sky.catalogue_colours};
+    for (int i = 0; i < 2; i++)
+        if (catalogues[i][0] && output_same(path, catalogues[i])) {
+            snprintf(which, len, "the sky's star catalogue %s", catalogues[i]);
+            return 1;
+        }
     if (s->sky.type == SKY_CUBEMAP)
         for (int f = 0; f < SCENE_CUBEMAP_FACES; f++) {
             char face[SCENE_PATH_LEN + 8];

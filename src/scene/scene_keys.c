@@ -13,6 +13,7 @@
 #include "conf/conf_path.h"
 #include "io/png_header.h"
 #include "io/text_file.h"
+#include "physics/bright_stars.h"
 #include "physics/star_catalogue.h"
 
 /* ---- names of enumerations, in enum order ------------------------------------------------- */
@@ -206,6 +207,52 @@ static int set_frame_origin(void *owner, void *t, const union conf_parsed *v, st
 }
 
 /* Several objects often wear the same image: each file is kept once so it is uploaded once. */
+/* [sky] catalogue and catalogue_colours: files of the real sky (physics/bright_stars.h), read when
+ * the scene is checked (scene_validate.c) */
+static int set_star_file(struct scene *s, const char *what, char field[SCENE_PATH_LEN], const char *value,
+                         struct error *e)
+{
+    char path[SCENE_PATH_LEN];
+    if (scene_resolve_path(s, value, path, sizeof path) != 0) {
+        error_set(e, ERROR_INPUT, NULL, "the path is longer than %d characters", SCENE_PATH_LEN - 1);
+        return -1;
+    }
+    if (check_readable(what, path, e) != 0)
+        return -1;
+    /* read once here, so that a malformed line is refused with the scene, before any work; its
+     * place (the catalogue's FILE:LINE) goes into the message, the scene's own line around it */
+    struct error why;
+    int n;
+    int is_catalogue = field == s->sky.catalogue;
+    if (bright_stars_read(is_catalogue ? path : NULL, is_catalogue ? NULL : path, v3(0.0, 0.0, 1.0), v3(1.0, 0.0, 0.0),
+                          NULL, &n, &why) != 0) {
+        char message[sizeof why.message];
+        error_format(&why, message, sizeof message);
+        error_set(e, why.status, NULL, "%s", message);
+        return -1;
+    }
+    if (is_catalogue && n == 0) {
+        error_set(e, ERROR_INPUT, NULL, "the star catalogue \"%s\" lists no star", path);
+        return -1;
+    }
+    memcpy(field, path, SCENE_PATH_LEN);
+    return 0;
+}
+
+static int set_catalogue(void *owner, void *t, const union conf_parsed *v, struct error *e)
+{
+    struct scene *s = owner;
+    (void)t;
+    return set_star_file(s, "star catalogue", s->sky.catalogue, v->text, e);
+}
+
+static int set_catalogue_colours(void *owner, void *t, const union conf_parsed *v, struct error *e)
+{
+    struct scene *s = owner;
+    (void)t;
+    return set_star_file(s, "star colour file", s->sky.catalogue_colours, v->text, e);
+}
+
 static int set_texture(void *owner, void *t, const union conf_parsed *v, struct error *e)
 {
     struct scene *s = owner;
@@ -419,6 +466,8 @@ const struct conf_key scene_keys[] = {
     {SECTION_SKY, "cubemap", CONF_PATH, .set = set_cubemap},
     {SECTION_SKY, "temperature", CONF_NUMBER, TEMPERATURE_RANGE, .offset = AT_SCENE(sky.temperature)},
     {SECTION_SKY, "stars", CONF_INTEGER, .lo = 0, .hi = STAR_CATALOGUE_MAX, .offset = AT_SCENE(sky.stars)},
+    {SECTION_SKY, "catalogue", CONF_PATH, .set = set_catalogue},
+    {SECTION_SKY, "catalogue_colours", CONF_PATH, .set = set_catalogue_colours},
     {SECTION_SKY, "star_seed", CONF_INTEGER, .lo = 0, .hi = 2147483647, .offset = AT_SCENE(sky.star_seed)},
     {SECTION_SKY, "star_brightness", CONF_NUMBER, .lo = 0.0, .hi = 1e6, .offset = AT_SCENE(sky.star_brightness)},
     {SECTION_SKY, "star_size", CONF_NUMBER, .lo = 0.3, .hi = 8.0, .offset = AT_SCENE(sky.star_size)},

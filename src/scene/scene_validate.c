@@ -326,6 +326,11 @@ int scene_validate(const struct scene *s, struct error *err)
     if (s->sky.type == SKY_CUBEMAP && s->sky.cubemap[0] == '\0')
         return invalid(s, err, "[sky] type is cubemap but no cubemap is given: add cubemap = PREFIX "
                        "(faces PREFIX_px.png ... PREFIX_nz.png)");
+    if (s->sky.catalogue[0] && s->sky.stars > 0)
+        return invalid(s, err, "[sky] stars = %d and catalogue = %s: the sky takes its stars from one of them, "
+                       "the generated ones or the catalogue's", s->sky.stars, s->sky.catalogue);
+    if (s->sky.catalogue_colours[0] && !s->sky.catalogue[0])
+        return invalid(s, err, "[sky] catalogue_colours colours the stars of [sky] catalogue, which is not given");
     vec3d pole = v3_normalize(s->sky.galactic_pole), centre = v3_normalize(s->sky.galactic_center);
     if (v3_len(v3_cross(pole, centre)) < 1e-6)
         return invalid(s, err, "[sky] galactic_center lies along galactic_pole: it must point away from the pole, "

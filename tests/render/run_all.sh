@@ -325,6 +325,20 @@ check "stars backends agree" 0 "image: (identical|PSNR ([6-9][0-9]|[1-9][0-9][0-
 check "stars negative" 2 "key 'stars' in \\[sky\\]: expected an integer from 0 to 1000000" -- $BT render --scene $S --set sky.stars=-1 --out "$TMP/st.png"
 check "star size zero" 2 "key 'star_size' in \\[sky\\]: expected a number from 0.3 to 8" -- $BT render --scene $S --set sky.star_size=0 --out "$TMP/st.png"
 check "galactic center along pole" 2 "galactic_center lies along galactic_pole" -- $BT render --scene $S --set "sky.galactic_pole=0 1 0" --set "sky.galactic_center=0 -2 0" --out "$TMP/st.png"
+# the real sky (docs/STARS.md, "The real sky"): both back-ends draw the same stars; a malformed
+# catalogue line is refused at its FILE:LINE, a catalogue beside generated stars, colours without a
+# catalogue and the catalogue as the output are refused
+check "real sky egl" 0 "the stars of the sky [0-9.]+ s on the CPU" -- $BT render --scene assets/scenes/orion.scene --size 96x54 --backend egl --out "$TMP/or_egl.png" --dump "$TMP/or_egl.dump" --force
+check "real sky osmesa" 0 "the stars of the sky [0-9.]+ s on the CPU" -- $BT render --scene assets/scenes/orion.scene --size 96x54 --backend osmesa --out "$TMP/or_osm.png" --dump "$TMP/or_osm.dump" --force
+check "real sky backends agree" 0 "image: (identical|PSNR ([6-9][0-9]|[1-9][0-9][0-9])[0-9.]* dB)" -- $BT compare "$TMP/or_egl.dump" "$TMP/or_osm.dump"
+printf '# Dec RA Mag\n 7.4 5.9 0.5 "Betelgeuse" 2061\n 95 5 1\n' > "$TMP/bad.bsc"
+check "catalogue bad line" 2 "key 'catalogue' in \\[sky\\]: $TMP/bad.bsc:3: declination 95 is outside -90..90 degrees" -- $BT render --scene $S --set sky.catalogue="$TMP/bad.bsc" --out "$TMP/st.png"
+check "catalogue and stars" 2 "the sky takes its stars from one of them" -- $BT render --scene assets/scenes/star_sky.scene --set sky.catalogue=/usr/share/xplanet/stars/BSC --out "$TMP/st.png"
+check "catalogue colours alone" 2 "catalogue_colours colours the stars of \\[sky\\] catalogue, which is not given" -- $BT render --scene $S --set sky.catalogue_colours=/usr/share/marble/data/stars/stars.dat --out "$TMP/st.png"
+check "catalogue colours not Marble's" 2 "not a star file of Marble's" -- $BT render --scene $S --set sky.catalogue=/usr/share/xplanet/stars/BSC --set sky.catalogue_colours=/usr/share/xplanet/stars/BSC --out "$TMP/st.png"
+cp /usr/share/xplanet/stars/BSC "$TMP/catalogue.png"
+check "catalogue is no output" 2 "is the sky's star catalogue" -- $BT render --scene $S --set sky.catalogue="$TMP/catalogue.png" --out "$TMP/catalogue.png" --force
+check "catalogue kept" 0 "^same$" -- sh -c "cmp '$TMP/catalogue.png' /usr/share/xplanet/stars/BSC && echo same"
 check "starflight egl" 0 "76800 sky" -- $BT render --scene assets/scenes/starflight.scene --backend egl --out "$TMP/sf_egl.png"
 check "starflight osmesa" 0 "76800 sky" -- $BT render --scene assets/scenes/starflight.scene --backend osmesa --out "$TMP/sf_osm.png"
 check "starflight backends agree" 0 "outcome differs: 0 of" -- sh -c "$BT render --scene assets/scenes/starflight.scene --size 64x48 --backend egl --out $TMP/a1.png --dump $TMP/a1.dump >/dev/null && $BT render --scene assets/scenes/starflight.scene --size 64x48 --backend osmesa --out $TMP/a2.png --dump $TMP/a2.dump >/dev/null && $BT compare $TMP/a1.dump $TMP/a2.dump"

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include "hard_cases.h"
 #include "io/sample_average.h"
+#include "physics/bright_stars.h"
 #include "physics/relativity.h"
 #include "physics/star_catalogue.h"
 #include "render/frame.h"
@@ -355,6 +356,87 @@ static void test_lensed_star(void **state)
     cpu_image_free(&cpu);
 }
 
+/* J2000 right ascension (hours) and declination (degrees) as a unit vector of the equatorial frame */
+static vec3d equatorial(double ra_hours, double dec_deg)
+{
+    double a = ra_hours * 15.0 * PI_D / 180.0, d = dec_deg * PI_D / 180.0;
+    return v3(cos(d) * cos(a), cos(d) * sin(a), sin(d));
+}
+
+/* The real sky ([sky] catalogue: the Yale Bright Star Catalogue with Marble's colours,
+ * physics/bright_stars.h) toward Orion, on both engines: Betelgeuse and Rigel at the pixels their
+ * directions predict, each the brightest pixel about it, with its flux within 1%, Betelgeuse red and
+ * Rigel blue. The galactic frame (assets/scenes/orion.scene's) puts Orion's belt (Alnilam) straight
+ * ahead and the celestial north up; the test predicts the stars' directions from their RA and Dec
+ * by that rotation alone, not through the galactic frame the renderer takes. */
+static void test_real_sky_orion(void **state)
+{
+    (void)state;
+    static struct scene s;
+    star_scene(&s, 320, 240, v3(0.0, 0.0, 0.0));
+    const char *const sets[] = {"sky.stars=0", "sky.catalogue=" BRIGHT_STARS_XPLANET_PATH,
+                                "sky.catalogue_colours=" BRIGHT_STARS_MARBLE_PATH, "sky.star_brightness=1e-4",
+                                "camera.fov=44", "sky.galactic_pole=-0.842479 0.449866 0.296395",
+                                "sky.galactic_center=0.035900 -0.502070 0.864082", NULL};
+    struct error err;
+    for (int i = 0; sets[i]; i++)
+        if (scene_set(&s, sets[i], &err) != 0)
+            fail_msg("%s: %s", err.where, err.message);
+    hc_validate(&s);
+    /* the frame: forward along Alnilam, up toward the celestial pole, right = forward x up */
+    vec3d forward = equatorial(5.6036, -1.2019), north = v3(0.0, 0.0, 1.0);
+    vec3d up = v3_normalize(v3_sub(north, v3_scale(forward, v3_dot(north, forward)))), right = v3_cross(forward, up);
+    static const struct {
+        const char *name;
+        double ra, dec, magnitude, bv;
+        int red;
+    } known[] = {{"Betelgeuse", 5.9195, 7.4069, 0.50, 1.85, 1}, {"Rigel", 5.2423, -8.2017, 0.12, 0.00, 0}};
+    struct render_result g;
+    if (render_frame(&s, &(struct frame_request){.backend = "egl", .hdr = 1}, &g, NULL, &err) != 0)
+        fail_msg("render: %s", err.message);
+    struct cpu_image cpu;
+    struct cpu_render_options o = {.threads = 0, .hdr = 1};
+    ref_options_default(&o.ref, &s);
+    if (cpu_render(&s, &o, &cpu, &err) != 0)
+        fail_msg("cpu render: %s", err.message);
+    const float *images[2] = {g.color, cpu.color};
+    for (size_t k = 0; k < sizeof known / sizeof known[0]; k++) {
+        vec3d eq = equatorial(known[k].ra, known[k].dec);
+        vec3d d = v3(v3_dot(eq, right), v3_dot(eq, up), -v3_dot(eq, forward));
+        double x, y;
+        assert_true(project(&s, d, &x, &y));
+        int px = (int)lrint(x), py = (int)lrint(y), w = s.render.width;
+        double chroma[3];
+        star_chromaticity(star_temperature_of_bv(known[k].bv), chroma);
+        double flux = s.sky.star_brightness * pow(10.0, -0.4 * (known[k].magnitude - 6.0)) * luminance(chroma);
+        for (int e = 0; e < 2; e++) {
+            double best = -1.0, sum = 0.0, rgb[3] = {0.0, 0.0, 0.0};
+            int best_x = -1, best_y = -1;
+            for (int v = py - 4; v <= py + 4; v++)
+                for (int u = px - 4; u <= px + 4; u++) {
+                    const float *p = images[e] + 4 * ((size_t)v * w + u);
+                    double lin[3] = {srgb_to_linear(p[0]), srgb_to_linear(p[1]), srgb_to_linear(p[2])};
+                    sum += luminance(lin);
+                    for (int c = 0; c < 3; c++)
+                        rgb[c] += lin[c];
+                    if (luminance(lin) > best) {
+                        best = luminance(lin);
+                        best_x = u;
+                        best_y = v;
+                    }
+                }
+            print_message("%s %s: predicted (%.2f, %.2f), brightest (%d, %d), light %.4g of %.4g, rgb %.3g %.3g %.3g\n",
+                          e ? "cpu" : "gpu", known[k].name, x, y, best_x, best_y, sum, flux, rgb[0], rgb[1], rgb[2]);
+            assert_int_equal(best_x, px);
+            assert_int_equal(best_y, py);
+            assert_true(fabs(sum / flux - 1.0) < 0.01);
+            assert_true(known[k].red ? rgb[0] > 2.0 * rgb[2] : rgb[2] > 1.2 * rgb[0]);
+        }
+    }
+    render_result_free(&g);
+    cpu_image_free(&cpu);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -365,6 +447,7 @@ int main(void)
         cmocka_unit_test(test_flat_stars_at_rest),
         cmocka_unit_test(test_flat_stars_aberrated),
         cmocka_unit_test(test_lensed_star),
+        cmocka_unit_test(test_real_sky_orion),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
