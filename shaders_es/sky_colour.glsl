@@ -25,11 +25,185 @@ vec3 sky(vec3 direction)
 #endif
 }
 
+#ifdef GPU_STARS
+// Point stars and the Milky Way in the frame's own pass (`[render] star_pass = gpu`, the kiosk):
+// what the CPU's pass adds after the rays (src/results/star_light.c), from the star map
+// (src/results/star_map.h) and the derivatives of the pixels' exit directions, in the same formulas.
+uniform sampler2D u_star_map;
+uniform vec2 u_star_map_size;           // texels: width, height
+uniform float u_star_map_cells;         // cells a side at level 0
+uniform float u_star_map_levels;
+uniform float u_star_map_chroma_row;    // the texel row of the colours per unit luminance
+uniform vec2 u_star_magnitudes;         // the faintest, and brightest minus faintest
+uniform float u_star_brightness;        // the light of a 6th-magnitude star at rest
+uniform float u_star_brightest_flux;    // the brightest star's, at rest
+uniform float u_star_sigma;             // a star's Gaussian, pixels
+uniform float u_milky_way;              // the band's radiance at its brightest; 0: none
+uniform vec3 u_galactic_pole;
+uniform vec3 u_galactic_x;              // longitude 0
+uniform vec3 u_galactic_y;              // longitude 90 degrees
+
+const float STAR_LIGHT_EPSILON = 2e-5;       // results/star_light.h
+const float STAR_RADIUS_MAX_PX = 24.0;
+const float STAR_FOOTPRINT_MAX_RAD = 0.2;
+const float STAR_MAGNIFICATION_MAX = 1e4;
+const int STAR_MAP_SLOTS_I = STAR_MAP_SLOTS_N;   // stars a cell (results/star_map.h, from C)
+const float STAR_MAP_SLOTS = float(STAR_MAP_SLOTS_N);
+const float STAR_T_MIN_K = 500.0;            // physics/blackbody.h, BLACKBODY_T_MIN_K .. MAX_K
+const float STAR_T_RANGE = 4.78749174;       // ln(60000 / 500)
+const float MILKY_WAY_TEMPERATURE_K = 4300.0;
+// a level's cells count as this fraction of their width about the pixel's direction, so that the 3x3
+// about it hold every star within the reach, also where the octahedral map skews its cells
+const float STAR_CELL_MARGIN = 0.8;
+
+float star_srgb_to_linear(float x)
+{
+    return x <= 0.04045 ? x / 12.92 : pow((x + 0.055) / 1.055, 2.4);
+}
+
+float star_linear_to_srgb(float x)
+{
+    return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
+}
+
+vec3 star_sign(vec2 p)
+{
+    return vec3(p.x >= 0.0 ? 1.0 : -1.0, p.y >= 0.0 ? 1.0 : -1.0, 0.0);
+}
+
+vec2 octahedral_encode(vec3 d)
+{
+    vec3 p = d / (abs(d.x) + abs(d.y) + abs(d.z));
+    vec2 folded = (1.0 - abs(p.yx)) * star_sign(p.xy).xy;
+    return (p.z < 0.0 ? folded : p.xy) * 0.5 + 0.5;
+}
+
+vec3 octahedral_decode(vec2 e)
+{
+    vec2 p = e * 2.0 - 1.0;
+    float z = 1.0 - abs(p.x) - abs(p.y);
+    vec2 folded = (1.0 - abs(p.yx)) * star_sign(p).xy;
+    return normalize(vec3(z < 0.0 ? folded : p, z));
+}
+
+// linear colour of a black body of temperature t per unit luminance (the map's last row)
+vec3 star_chroma(float t)
+{
+    float k = clamp(floor(log(t / STAR_T_MIN_K) / STAR_T_RANGE * 255.0 + 0.5), 0.0, 255.0);
+    vec3 c = texture2D(u_star_map, vec2(k + 0.5, u_star_map_chroma_row + 0.5) / u_star_map_size).rgb;
+    return c / dot(c, vec3(0.2126, 0.7152, 0.0722));
+}
+
+// The band of the Milky Way along d relative to its brightest (star_light.c, milky_way_shape).
+float milky_way_shape(vec3 d)
+{
+    float z = dot(d, u_galactic_pole);
+    if (abs(z) > 0.8134)
+        return 0.0;
+    float b = asin(clamp(z, -1.0, 1.0));
+    float l = atan(dot(d, u_galactic_y), dot(d, u_galactic_x));
+    float towards_centre = 0.5 + 0.5 * cos(l);
+    float disk = exp(-0.5 * (b / 0.10) * (b / 0.10)) * (0.35 + 0.65 * towards_centre * towards_centre);
+    float bulge = 0.8 * exp(-0.5 * ((b / 0.18) * (b / 0.18) + (l / 0.35) * (l / 0.35)));
+    float dust = 1.0 - 0.55 * exp(-0.5 * (b / 0.025) * (b / 0.025)) * towards_centre;
+    float clouds = 1.0 + 0.2 * cos(5.0 * l + 0.7) + 0.15 * cos(11.0 * l + 2.1);
+    return (disk + bulge) * dust * clouds / 1.8;
+}
+
+// The light of the stars and the band along exit direction d, linear: jx, jy the change of d per
+// pixel step (the footprint J), fx, fy the same of the camera's straight rays; doppler the view
+// direction's Doppler factor (1 without the colour effects), searchlight whether the light scales
+// with it. A star at angular offset t from d lies J+ t pixels from the pixel's centre (J+ the
+// least-squares inverse), its flux times the magnification |det J_flat| / |det J|.
+vec3 sky_stars(vec3 d, vec3 jx, vec3 jy, vec3 fx, vec3 fy, float doppler, bool searchlight)
+{
+    vec3 light = vec3(0.0);
+    float band = u_milky_way > 0.0 ? milky_way_shape(d) : 0.0;
+    float d4 = doppler * doppler * doppler * doppler;
+    light += u_milky_way * band * (searchlight ? d4 : 1.0) * star_chroma(MILKY_WAY_TEMPERATURE_K * doppler);
+    float xx = dot(jx, jx);
+    float xy = dot(jx, jy);
+    float yy = dot(jy, jy);
+    float det = xx * yy - xy * xy;
+    if (!(det > 0.0))
+        return light;
+    float magnification = min(length(cross(fx, fy)) / sqrt(det), STAR_MAGNIFICATION_MAX);
+    float gain = magnification * (searchlight ? doppler * doppler : 1.0);
+    float sigma = u_star_sigma;
+    float spread = 1.0 / (6.28318531 * sigma * sigma);
+    float peak = u_star_brightest_flux * gain * spread;
+    if (!(peak >= STAR_LIGHT_EPSILON))
+        return light;
+    float reach_px = min(sigma * sqrt(2.0 * log(peak / STAR_LIGHT_EPSILON)), STAR_RADIUS_MAX_PX);
+    float trace = xx + yy;
+    float widest = sqrt(0.5 * (trace + sqrt(max(trace * trace - 4.0 * det, 0.0))));
+    float reach = reach_px * widest;
+    if (!(reach <= STAR_FOOTPRINT_MAX_RAD))
+        return light;
+    // the width of the map's level-0 cells about d (the octahedral map's cells differ in size and
+    // shape, fourfold from its centre to its folds): the least of the three sides of the triangle
+    // of cell centres, chords as angles
+    vec2 corner = clamp(floor(octahedral_encode(d) * u_star_map_cells), 0.0, u_star_map_cells - 2.0) + 0.5;
+    vec3 c0 = octahedral_decode(corner / u_star_map_cells);
+    vec3 c1 = octahedral_decode((corner + vec2(1.0, 0.0)) / u_star_map_cells);
+    vec3 c2 = octahedral_decode((corner + vec2(0.0, 1.0)) / u_star_map_cells);
+    float width = min(min(length(c1 - c0), length(c2 - c0)), length(c2 - c1));
+    // the level whose cells are as wide as the reach, and the 3x3 of its cells about d
+    float level = max(ceil(log2(reach / (width * STAR_CELL_MARGIN))), 0.0);
+    if (level >= u_star_map_levels)
+        return light;
+    float n = floor(u_star_map_cells / exp2(level) + 0.5);
+    vec2 origin = level < 0.5 ? vec2(0.0) : vec2(2.0 * STAR_MAP_SLOTS * (u_star_map_cells - 2.0 * n), u_star_map_cells);
+    vec2 base = clamp(floor(octahedral_encode(d) * n), 0.0, n - 1.0);
+    vec3 inverse = vec3(yy, -xy, xx) / det;
+    float reach_cos = cos(reach);
+    for (int j = -1; j <= 1; j++) {
+        for (int k = -STAR_MAP_SLOTS_I; k < 2 * STAR_MAP_SLOTS_I; k++) {
+            // cell i = k / slots - 1 (its slot k mod slots): one loop, as few turns as it needs
+            float i = floor(float(k) / STAR_MAP_SLOTS);
+            float slot = float(k) - i * STAR_MAP_SLOTS;
+            vec2 cell = base + vec2(i, float(j));
+            // across the square's border, the map folds back onto itself mirrored
+            cell = cell.x < 0.0 ? vec2(0.0, n - 1.0 - cell.y) : cell.x > n - 1.0 ? vec2(n - 1.0, n - 1.0 - cell.y) : cell;
+            cell = cell.y < 0.0 ? vec2(n - 1.0 - cell.x, 0.0) : cell.y > n - 1.0 ? vec2(n - 1.0 - cell.x, n - 1.0) : cell;
+            vec2 texel = origin + vec2(2.0 * (STAR_MAP_SLOTS * cell.x + slot), cell.y) + 0.5;
+            vec4 place = floor(texture2D(u_star_map, texel / u_star_map_size) * 255.0 + 0.5);
+            vec4 data = floor(texture2D(u_star_map, (texel + vec2(1.0, 0.0)) / u_star_map_size) * 255.0 + 0.5);
+            vec2 within = (vec2(place.x * 256.0 + place.y, place.z * 256.0 + place.w) + 0.5) / 65536.0;
+            vec3 s = octahedral_decode((cell + within) / n);
+            float along = dot(s, d);
+            vec3 t = s / along - d;
+            float rx = dot(jx, t);
+            float ry = dot(jy, t);
+            float px = inverse.x * rx + inverse.y * ry;
+            float py = inverse.y * rx + inverse.z * ry;
+            float magnitude = u_star_magnitudes.x + (data.x * 256.0 + data.y) / 65535.0 * u_star_magnitudes.y;
+            float flux = u_star_brightness * pow(10.0, -0.4 * (magnitude - 6.0));
+            float value = flux * gain * exp(-(px * px + py * py) / (2.0 * sigma * sigma)) * spread;
+            float temperature = STAR_T_MIN_K * exp(data.z / 255.0 * STAR_T_RANGE);
+            bool shown = data.w > 127.0 && along > 0.0 && along >= reach_cos && value >= STAR_LIGHT_EPSILON;
+            light += shown ? value * star_chroma(temperature * doppler) : vec3(0.0);
+        }
+    }
+    return light;
+}
+#endif
+
 // image: colour and outcome code (common.glsl); velocity: the final direction, any length.
 vec4 sky_final_colour(vec4 image, vec3 velocity)
 {
     vec3 color = image.rgb;
     float alpha = image.a == CODE_SKY ? u_sky_alpha : 1.0;
+#ifdef GPU_STARS
+    // the footprints, before any branch: the derivatives are differences across the 2x2 group of
+    // fragments, which all take them here
+    vec3 exit_direction = normalize(velocity);
+    vec3 footprint_x = dFdx(exit_direction);
+    vec3 footprint_y = dFdy(exit_direction);
+    vec3 straight = observer_scene_direction(observer_view_direction());
+    vec3 straight_x = dFdx(straight);
+    vec3 straight_y = dFdy(straight);
+#endif
     if (image.a == CODE_SKY) {
         color = sky(normalize(velocity));
 #ifdef DOPPLER_COLOUR
@@ -42,6 +216,25 @@ vec4 sky_final_colour(vec4 image, vec3 velocity)
         vec3 rgb = color;
 #endif
         color = u_sky_temperature > 0.0 ? black_body : rgb;
+#endif
+#ifdef GPU_STARS
+        // added to the sky's colour in linear light, as the CPU's pass adds them to the image
+#ifdef DOPPLER_COLOUR
+        float star_doppler = observer_doppler(observer_view_direction()) / u_observer_lapse;
+#else
+        float star_doppler = 1.0;
+#endif
+#ifdef SEARCHLIGHT
+        bool searchlight = true;
+#else
+        bool searchlight = false;
+#endif
+        vec3 stars = sky_stars(exit_direction, footprint_x, footprint_y, straight_x, straight_y, star_doppler,
+                               searchlight);
+        vec3 sum = vec3(star_srgb_to_linear(color.r), star_srgb_to_linear(color.g), star_srgb_to_linear(color.b)) +
+                   stars;
+        vec3 lit = vec3(star_linear_to_srgb(sum.r), star_linear_to_srgb(sum.g), star_linear_to_srgb(sum.b));
+        color = stars.r + stars.g + stars.b > 0.0 ? lit : color;
 #endif
     }
     else if (image.a == CODE_UNFINISHED)

@@ -507,6 +507,9 @@ int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, struct error 
     c->shader.dialect = ctx->dialect;
     c->shader.fragment_highp = c->fragment_highp;
     c->shader.draw_buffers_ext = 0;
+    /* dFdx and dFdy: core in desktop GLSL 1.30, OES_standard_derivatives for GLSL ES 1.00 */
+    c->derivatives = (!c->is_es || gl_has_extension("GL_OES_standard_derivatives")) && !gl_fault("no_derivatives");
+    c->shader.derivatives_ext = c->is_es && c->derivatives;
 
     if (quad_init() != 0)
         return error_set(e, ERROR_RUNTIME, NULL, "cannot create the vertex buffer of the full-screen quad");

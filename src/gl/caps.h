@@ -31,6 +31,7 @@ struct gl_caps {
     int fragment_fp32;
     char fragment_fp32_why[160];
     int max_texture_size, max_draw_buffers;
+    int derivatives;                 /* dFdx, dFdy in fragment shaders (the GPU's star pass) */
     int max_fragment_uniform_vectors, max_texture_units;
     int mrt_works;
     char mrt_why[160];

@@ -197,8 +197,9 @@ static void preamble(const struct shader_target *t, GLenum stage, char *out, siz
         snprintf(out, n, "#version 100\nprecision highp float;\n");
         return;
     }
-    snprintf(out, n, "#version 100\n%s%s",
+    snprintf(out, n, "#version 100\n%s%s%s",
              t->draw_buffers_ext ? "#extension GL_EXT_draw_buffers : require\n" : "",
+             t->derivatives_ext ? "#extension GL_OES_standard_derivatives : enable\n" : "",
              t->fragment_highp ? "precision highp float;\nprecision highp sampler2D;\n"
                                : "precision mediump float;\n");
 }

@@ -124,7 +124,8 @@ static int run_samples(struct renderer *r, const struct scene *s, const struct s
 int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, enum render_read reads,
                       enum progress_mode progress, struct error *e)
 {
-    if (!star_sky_wanted(s))
+    /* the GPU's star pass draws them in the frame's own pass (render.star_pass = gpu) */
+    if (!star_sky_wanted(s) || s->render.star_pass == STAR_PASS_GPU)
         return run_samples(r, s, NULL, out, reads, progress, e);
     struct star_sky *stars = malloc(sizeof *stars);
     if (!stars)

@@ -178,6 +178,8 @@ const struct stage_program *program_cache_get_vertex(struct program_cache *pc, c
     int n_programs;
     double t0 = clock_seconds();
     struct shader_target t = pc->target;
+    /* the extension only where a program takes derivatives: the GPU's star pass (sky_colour.glsl) */
+    t.derivatives_ext = t.derivatives_ext && strstr(defines, "#define GPU_STARS 1\n") != NULL;
     char full[PROGRAMS_KEY_LEN + 64];
     if (!two_targets) {
         snprintf(full, sizeof full, "#define BT_TARGET 0\n%s", defines);

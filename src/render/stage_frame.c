@@ -120,7 +120,7 @@ static const struct stage_program *frame_program(struct renderer *r, const struc
             files[n++] = "stage_orbit_frame.glsl";
     }
     files[n] = NULL;
-    char written[160];
+    char written[224];
     snprintf(written, sizeof written, "%s%s%s%s",
              walk ? "#define ORBIT_WALK_PASS 1\n" : a->walked ? "#define ORBIT_WALKED 1\n" : "",
              walk ? "" : output == FRAME_WRITES_STATE ? "#define FRAME_STATE 1\n" : colour ? "#define FRAME_COLOUR 1\n" : "",

@@ -2,14 +2,17 @@
  * colour itself is shaders_es/sky_colour.glsl, which a single-pass frame also calls in its own pass
  * (stage_frame.c) when only the image is read. */
 #include "render/stages.h"
+#include <math.h>
 #include <stdio.h>
 
 void sky_colour_set_uniforms(const struct program_uniforms *p, const struct renderer *r, int sky_unit)
 {
-    if (doppler_colour(r->scene)) {
+    /* the camera's rays: the Doppler factor of a view direction, and the GPU's stars' straight
+     * footprint */
+    if (doppler_colour(r->scene) || r->star_map)
         observer_set_uniforms(p, r);
+    if (doppler_colour(r->scene))
         uniform_float(p, "u_sky_temperature", r->scene->sky.temperature);
-    }
     if (r->sky_cubemap) {
         glActiveTexture(GL_TEXTURE0 + sky_unit);
         glBindTexture(GL_TEXTURE_CUBE_MAP, r->sky_cubemap);
@@ -17,13 +20,37 @@ void sky_colour_set_uniforms(const struct program_uniforms *p, const struct rend
     } else {
         uniform_vec3(p, "u_sky_color", r->scene->sky.color);
     }
+    if (r->star_map) {
+        const struct star_map *m = &r->star_layout;
+        const struct sky *sky = &r->scene->sky;
+        glActiveTexture(GL_TEXTURE0 + UNIT_STARS);
+        glBindTexture(GL_TEXTURE_2D, r->star_map);
+        glUniform1i(program_uniform(p, "u_star_map"), UNIT_STARS);
+        glUniform2f(program_uniform(p, "u_star_map_size"), (float)m->width, (float)m->height);
+        uniform_float(p, "u_star_map_cells", m->cells);
+        uniform_float(p, "u_star_map_levels", m->levels);
+        uniform_float(p, "u_star_map_chroma_row", m->chroma_y);
+        glUniform2f(program_uniform(p, "u_star_magnitudes"), (float)m->faintest, (float)(m->brightest - m->faintest));
+        uniform_float(p, "u_star_brightness", sky->star_brightness);
+        /* the brightest star's flux at rest (star_light.c's), from this run's brightness */
+        double brightest = m->stars > 0 ? sky->star_brightness * pow(10.0, -0.4 * (m->brightest - 6.0)) : 0.0;
+        uniform_float(p, "u_star_brightest_flux", brightest);
+        uniform_float(p, "u_star_sigma", sky->star_size);
+        uniform_float(p, "u_milky_way", sky->milky_way);
+        uniform_vec3(p, "u_galactic_pole", r->galactic_pole);
+        uniform_vec3(p, "u_galactic_x", r->galactic_x);
+        uniform_vec3(p, "u_galactic_y", r->galactic_y);
+    }
     uniform_vec3(p, "u_unfinished_color", r->scene->render.unfinished_color);
     uniform_float(p, "u_sky_alpha", r->scene->render.sky_alpha);
 }
 
 const char *sky_colour_defines(const struct renderer *r)
 {
-    return r->sky_cubemap ? "#define SKY_CUBEMAP 1\n" : "";
+#define STAR_DEFINES_(n) "#define GPU_STARS 1\n#define STAR_MAP_SLOTS_N " #n "\n"
+#define STAR_DEFINES(n) STAR_DEFINES_(n)
+    return r->sky_cubemap ? (r->star_map ? "#define SKY_CUBEMAP 1\n" STAR_DEFINES(STAR_MAP_SLOTS) : "#define SKY_CUBEMAP 1\n")
+                          : r->star_map ? STAR_DEFINES(STAR_MAP_SLOTS) : "";
 }
 
 static void set_sky(const struct program_uniforms *p, const void *arg)
@@ -35,7 +62,7 @@ int stage_sky(struct renderer *r, struct error *e)
 {
     static const char *const files[] = {"common.glsl", "observer.glsl", "sky_colour.glsl", "stage_sky.glsl", NULL};
     struct raystate *rs = &r->rs;
-    char defines[sizeof r->observer_defines + 32];
+    char defines[sizeof r->observer_defines + 96];
     snprintf(defines, sizeof defines, "%s%s", sky_colour_defines(r), r->observer_defines);
     const struct stage_program *sp = program_cache_get(r->programs, files, defines, 0, e);
     if (!sp)

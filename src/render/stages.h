@@ -7,6 +7,7 @@
 #include "render/renderer.h"
 #include "physics/orbit_table.h"
 #include "render/orbit_store.h"
+#include "results/star_map.h"
 
 /* The programs a renderer times the first draw of (pass_draw_begin): more than any frame uses. */
 #define RENDERER_DRAWN_MAX 64
@@ -16,6 +17,10 @@
 /* the sky in a single-pass frame that draws its colour (FRAME_WRITES_COLOUR): that pass reads no ray
  * state, so a unit of the inputs is free, while UNIT_SKY may hold an object's texture there */
 #define UNIT_FRAME_SKY 3
+/* the star map of the GPU's star pass (sky_colour.glsl, GPU_STARS): free in both passes that draw
+ * the final colour, the sky stage (two inputs, units 0 and 1) and a single-pass frame's colour (at
+ * most one, unit 0) */
+#define UNIT_STARS 2
 /* the black-body table: below the object textures, which start at FIRST_OBJECT_UNIT (intersect) */
 #define UNIT_BLACKBODY 4
 /* the orbit table: the GPU's last texture unit (object textures stay below it) */
@@ -34,6 +39,9 @@ struct renderer {
     GLuint textures[SCENE_MAX_TEXTURES];
     int texture_size[SCENE_MAX_TEXTURES][2];   /* as uploaded (image_read may scale one down) */
     GLuint sky_cubemap;
+    GLuint star_map;              /* the GPU's star pass (render.star_pass = gpu): results/star_map.h */
+    struct star_map star_layout;  /* its layout and ranges (texels freed once uploaded) */
+    vec3d galactic_pole, galactic_x, galactic_y;
     GLuint blackbody_lut;         /* Doppler colour effects only */
     int blackbody_tone;           /* the table's enum blackbody_tone */
     double blackbody_reference;   /* and its reference temperature (TONE_SCENE) */

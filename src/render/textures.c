@@ -1,6 +1,7 @@
 /* Scene textures and the sky cube map, uploaded once per renderer. */
 #include "io/image_cache.h"
 #include "render/stages.h"
+#include "results/star_light.h"
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -24,6 +25,49 @@ static int upload(GLenum target, const struct scene *s, const char *key, int lin
     if (owned)
         free((void *)rgba);
     return 0;
+}
+
+/* The GPU's star pass (render.star_pass = gpu): the star map of the sky's catalogue, one texture
+ * (results/star_map.h), read with NEAREST from texel centres. */
+static int star_map_load(struct renderer *r, struct error *e)
+{
+    const struct scene *s = r->scene;
+    if (s->render.star_pass != STAR_PASS_GPU || !star_sky_wanted(s))
+        return 0;
+    int cells = STAR_MAP_CELLS;
+    while (cells > STAR_CHROMA_TEXELS / (2 * STAR_MAP_SLOTS) && 2 * STAR_MAP_SLOTS * cells > r->caps.max_texture_size)
+        cells /= 2;
+    if (!r->caps.derivatives || !r->caps.fragment_fp32 || 2 * STAR_MAP_SLOTS * cells > r->caps.max_texture_size)
+        return error_set(e, ERROR_RUNTIME, NULL, "render.star_pass = gpu: this GPU %s; draw the stars with "
+                         "render.star_pass = cpu", !r->caps.derivatives ? "takes no derivatives in its fragment shaders "
+                         "(GL_OES_standard_derivatives)" : !r->caps.fragment_fp32 ? "computes its fragment shaders in less "
+                         "than 32-bit floats" : "holds no texture large enough for the star map");
+    struct star_sky *sky = malloc(sizeof *sky);
+    if (!sky)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory for the stars of the sky");
+    if (star_sky_init(sky, s, e) != 0) {
+        free(sky);
+        return -1;
+    }
+    int rc = star_map_build(&r->star_layout, &sky->catalogue, cells);
+    r->galactic_pole = sky->catalogue.pole;
+    r->galactic_x = sky->catalogue.x_axis;
+    r->galactic_y = sky->catalogue.y_axis;
+    star_sky_free(sky);
+    free(sky);
+    if (rc != 0)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory for the star map");
+    glGenTextures(1, &r->star_map);
+    glBindTexture(GL_TEXTURE_2D, r->star_map);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, r->star_layout.width, r->star_layout.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 r->star_layout.texels);
+    star_map_free(&r->star_layout);
+    return gl_check("uploading the star map", e);
 }
 
 int textures_load(struct renderer *r, struct error *e)
@@ -58,11 +102,15 @@ int textures_load(struct renderer *r, struct error *e)
                 return -1;
         }
     }
-    return gl_check("uploading textures", e);
+    if (gl_check("uploading textures", e) != 0)
+        return -1;
+    return star_map_load(r, e);
 }
 
 void textures_release(struct renderer *r)
 {
+    if (r->star_map)
+        glDeleteTextures(1, &r->star_map);
     for (int i = 0; i < r->scene->n_textures; i++)
         if (r->textures[i])
             glDeleteTextures(1, &r->textures[i]);

@@ -148,6 +148,8 @@ struct observer {
     double time;             /* scene time of the observation, length units (c = 1) */
 };
 
+enum star_pass_choice { STAR_PASS_CPU, STAR_PASS_GPU };
+
 struct render_settings {
     int width, height;
     enum integration_method method;  /* unnamed: scene_default_method */
@@ -190,6 +192,10 @@ struct render_settings {
      * dump and trace follow the first, the pixel's centre */
     int samples;
     double sky_alpha;         /* the image's alpha where rays reached the sky (1: opaque) */
+    /* where the stars and the Milky Way of [sky] are drawn: after the rays on the CPU's cores
+     * (results/star_light.h, the reference), or in the frame's own pass on the GPU (results/star_map.h;
+     * the kiosk always) */
+    enum star_pass_choice star_pass;
 };
 
 /* The six faces of a cube map sky, in GL's order (+x, -x, +y, -y, +z, -z), and the file of face f

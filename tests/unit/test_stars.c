@@ -254,9 +254,41 @@ static void stars_on_both_engines(vec3d velocity)
     if (cpu_render(&s, &o, &cpu, &err) != 0)
         fail_msg("cpu render: %s", err.message);
     int on_cpu = check_stars(&s, cpu.color, "cpu");
-    print_message("beta %.2f: %d stars at their pixels with their flux on the GPU, %d on the CPU\n",
-                  v3_len(velocity), on_gpu, on_cpu);
-    assert_true(on_gpu >= 5 && on_gpu == on_cpu);
+    /* the GPU's own star pass, in the frame's pass (results/star_map.h) */
+    s.render.star_pass = STAR_PASS_GPU;
+    struct render_result gp;
+    if (render_frame(&s, &(struct frame_request){.backend = "egl", .hdr = 1}, &gp, NULL, &err) != 0)
+        fail_msg("render: %s", err.message);
+    int on_gpu_pass = check_stars(&s, gp.color, "gpu star pass");
+    /* the same pass where the whole ray state is read: the sky stage's pass draws them instead of
+     * the frame's own (stage_sky.c) */
+    struct render_result gs;
+    if (render_frame(&s, &(struct frame_request){.backend = "egl", .hdr = 1, .reads = RENDER_READ_STATE}, &gs, NULL,
+                     &err) != 0)
+        fail_msg("render: %s", err.message);
+    int on_sky_stage = check_stars(&s, gs.color, "gpu star pass, sky stage");
+    /* and where only the 8-bit image is read, the frame's own pass draws them (FRAME_COLOUR, as the
+     * kiosk): the same colours, within a level of 255 */
+    struct render_result g8;
+    if (render_frame(&s, &(struct frame_request){.backend = "egl"}, &g8, NULL, &err) != 0)
+        fail_msg("render: %s", err.message);
+    int worst = 0;
+    for (size_t i = 0; i < (size_t)s.render.width * s.render.height * 4; i++) {
+        if (i % 4 == 3)
+            continue;
+        double c = gp.color[i] < 0.0 ? 0.0 : gp.color[i] > 1.0 ? 1.0 : gp.color[i];
+        int d = abs((int)g8.rgba[i] - (int)lrint(c * 255.0));
+        worst = d > worst ? d : worst;
+    }
+    print_message("the frame's own pass against the sky stage's: %d levels at most\n", worst);
+    assert_true(worst <= 1);
+    render_result_free(&g8);
+    s.render.star_pass = STAR_PASS_CPU;
+    print_message("beta %.2f: %d stars at their pixels with their flux on the GPU, %d on the CPU, %d by the GPU's "
+                  "star pass (%d in the sky stage)\n", v3_len(velocity), on_gpu, on_cpu, on_gpu_pass, on_sky_stage);
+    assert_true(on_gpu >= 5 && on_gpu == on_cpu && on_gpu_pass == on_cpu && on_sky_stage == on_cpu);
+    render_result_free(&gs);
+    render_result_free(&gp);
     render_result_free(&g);
     cpu_image_free(&cpu);
 }
@@ -344,14 +376,22 @@ static void test_lensed_star(void **state)
     ref_options_default(&o.ref, &s);
     if (cpu_render(&s, &o, &cpu, &err) != 0)
         fail_msg("cpu render: %s", err.message);
-    const float *images[2] = {g.color, cpu.color};
-    for (int e = 0; e < 2; e++) {
+    /* the GPU's own star pass: its magnification from the derivatives of the exit directions */
+    s.render.star_pass = STAR_PASS_GPU;
+    struct render_result gp;
+    if (render_frame(&s, &(struct frame_request){.backend = "egl", .hdr = 1}, &gp, NULL, &err) != 0)
+        fail_msg("render: %s", err.message);
+    s.render.star_pass = STAR_PASS_CPU;
+    const float *images[3] = {g.color, cpu.color, gp.color};
+    const char *names[3] = {"gpu", "cpu", "gpu star pass"};
+    for (int e = 0; e < 3; e++) {
         double plus = light_about(&s, images[e], image_plus) / flux, minus = light_about(&s, images[e], image_minus) / flux;
-        print_message("%s: magnifications %.4f and %.4f (point lens: %.4f and %.4f)\n", e ? "cpu" : "gpu", plus, minus,
+        print_message("%s: magnifications %.4f and %.4f (point lens: %.4f and %.4f)\n", names[e], plus, minus,
                       mu_plus, mu_minus);
         assert_true(fabs(plus / mu_plus - 1.0) < 0.02);
         assert_true(fabs(minus / mu_minus - 1.0) < 0.02);
     }
+    render_result_free(&gp);
     render_result_free(&g);
     cpu_image_free(&cpu);
 }
@@ -399,7 +439,13 @@ static void test_real_sky_orion(void **state)
     ref_options_default(&o.ref, &s);
     if (cpu_render(&s, &o, &cpu, &err) != 0)
         fail_msg("cpu render: %s", err.message);
-    const float *images[2] = {g.color, cpu.color};
+    s.render.star_pass = STAR_PASS_GPU;
+    struct render_result gp;
+    if (render_frame(&s, &(struct frame_request){.backend = "egl", .hdr = 1}, &gp, NULL, &err) != 0)
+        fail_msg("render: %s", err.message);
+    s.render.star_pass = STAR_PASS_CPU;
+    const float *images[3] = {g.color, cpu.color, gp.color};
+    const char *names[3] = {"gpu", "cpu", "gpu star pass"};
     for (size_t k = 0; k < sizeof known / sizeof known[0]; k++) {
         vec3d eq = equatorial(known[k].ra, known[k].dec);
         vec3d d = v3(v3_dot(eq, right), v3_dot(eq, up), -v3_dot(eq, forward));
@@ -409,7 +455,7 @@ static void test_real_sky_orion(void **state)
         double chroma[3];
         star_chromaticity(star_temperature_of_bv(known[k].bv), chroma);
         double flux = s.sky.star_brightness * pow(10.0, -0.4 * (known[k].magnitude - 6.0)) * luminance(chroma);
-        for (int e = 0; e < 2; e++) {
+        for (int e = 0; e < 3; e++) {
             double best = -1.0, sum = 0.0, rgb[3] = {0.0, 0.0, 0.0};
             int best_x = -1, best_y = -1;
             for (int v = py - 4; v <= py + 4; v++)
@@ -426,13 +472,14 @@ static void test_real_sky_orion(void **state)
                     }
                 }
             print_message("%s %s: predicted (%.2f, %.2f), brightest (%d, %d), light %.4g of %.4g, rgb %.3g %.3g %.3g\n",
-                          e ? "cpu" : "gpu", known[k].name, x, y, best_x, best_y, sum, flux, rgb[0], rgb[1], rgb[2]);
+                          names[e], known[k].name, x, y, best_x, best_y, sum, flux, rgb[0], rgb[1], rgb[2]);
             assert_int_equal(best_x, px);
             assert_int_equal(best_y, py);
             assert_true(fabs(sum / flux - 1.0) < 0.01);
             assert_true(known[k].red ? rgb[0] > 2.0 * rgb[2] : rgb[2] > 1.2 * rgb[0]);
         }
     }
+    render_result_free(&gp);
     render_result_free(&g);
     cpu_image_free(&cpu);
 }
