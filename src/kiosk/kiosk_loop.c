@@ -626,10 +626,6 @@ static int preflight(struct kiosk *k, struct error *e)
             fprintf(k->log, "%s: render.samples = %d is for bentray render's images; the kiosk traces one ray a "
                             "pixel, its refined frame at the screen's own resolution\n", c->kiosk.scenes[i],
                     k->scenes[i].render.samples);
-        if ((k->scenes[i].sky.stars > 0 || k->scenes[i].sky.catalogue[0] || k->scenes[i].sky.milky_way > 0.0) &&
-            k->log)
-            fprintf(k->log, "%s: [sky] stars, catalogue and milky_way are drawn into bentray render's images; the kiosk shows "
-                            "the sky without them\n", c->kiosk.scenes[i]);
         /* a scene on exact orbits builds its table again at each mass detent, on the render thread
          * where no table was built ahead: a table too large to build ahead would hold the loop (and
          * the watchdog) for seconds at every detent */

@@ -87,6 +87,8 @@ int kiosk_view_load(struct kiosk_view *v, int scene_index, const struct scene *b
         return -1;
     v->base.render.width = v->cfg->kiosk.width;
     v->base.render.height = v->cfg->kiosk.height;
+    /* the kiosk's frames never leave the GPU: its stars are drawn in the frame's own pass */
+    v->base.render.star_pass = STAR_PASS_GPU;
     v->live = v->base;
     v->live_is_full = 0;
     v->renderer = renderer_create(v->gl, &v->live, e);
@@ -109,6 +111,15 @@ void kiosk_preview_scene(const struct scene *full, int width, int height, struct
     *out = *full;
     out->render.width = width;
     out->render.height = height;
+    /* the stars as the screen shows them once the preview is scaled up to it: a star's light,
+     * summed over the preview's pixels, is spread over scale^2 times as many of the screen's, so
+     * it is that much fainter here; its Gaussian as narrow on screen as the preview's pixels can
+     * sample it (PREVIEW_STAR_SIZE_MIN pixels of the preview at least) */
+    double scale = width > 0 ? (double)full->render.width / width : 1.0;
+    if (scale > 1.0) {
+        out->sky.star_brightness = full->sky.star_brightness / (scale * scale);
+        out->sky.star_size = fmax(full->sky.star_size / scale, PREVIEW_STAR_SIZE_MIN);
+    }
     const int fewer = PREVIEW_STEP_FACTOR * PREVIEW_SEGMENT_FACTOR;
     int segments = render_segments(&full->render);
     if (full->render.step_control == STEP_FIXED && segments >= fewer &&
@@ -145,6 +156,18 @@ void kiosk_tiles_plan(struct kiosk_tiles *t, int width, int height, int max_rows
         t->tile_width = (int)rays;
         t->tile_height = 1;
     }
+    /* Tiles start on even rows and columns, so that the GPU's 2x2 groups of fragments, whose
+     * differences the star pass takes (dFdx, dFdy; sky_colour.glsl), are the whole frame's: sizes
+     * rounded down to even, one-row tiles made two rows of half the width (no more rays a tile);
+     * tiles of fewer than 4 rays (a budget of millions of steps a ray) stay as they are. */
+    if (t->tile_height == 1 && t->tile_width < width && t->tile_width >= 4) {
+        t->tile_width /= 2;
+        t->tile_height = 2;
+    }
+    if (t->tile_height < height && t->tile_height >= 2)
+        t->tile_height &= ~1;
+    if (t->tile_width < width && t->tile_width >= 2)
+        t->tile_width &= ~1;
     t->columns = (width + t->tile_width - 1) / t->tile_width;
     t->count = t->columns * ((height + t->tile_height - 1) / t->tile_height);
     t->next = 0;

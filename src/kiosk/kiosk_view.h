@@ -32,6 +32,9 @@
 #define PREVIEW_ORBIT_ROWS 128
 #define PREVIEW_ORBIT_COLUMNS 32
 #define PREVIEW_CHORD_FACTOR 4.0
+/* the narrowest Gaussian of a star in a preview, its pixels: a narrower one sampled at the pixels'
+ * centres loses its light between them */
+#define PREVIEW_STAR_SIZE_MIN 0.5
 /* The most bands a refinement takes (where the preview is small, bands of more rays than one
  * preview; src/kiosk/kiosk_tune.h) */
 #define KIOSK_MAX_BANDS 64

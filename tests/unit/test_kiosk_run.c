@@ -95,6 +95,7 @@ static unsigned char *expected_image(const struct kiosk_state *st, int preview)
         fail_msg("%s: %s", e.where, e.message);
     base.render.width = config.kiosk.width;
     base.render.height = config.kiosk.height;
+    base.render.star_pass = STAR_PASS_GPU;   /* as the kiosk draws its stars */
     if (kiosk_state_apply(st, &base, &s, &e) != 0)
         fail_msg("%s: %s", e.where, e.message);
     if (preview) {
@@ -427,6 +428,42 @@ static void test_screen_copied_or_drawn(void **state)
  * visitor's script (two scenes, both knobs, the effects, reset, the pipeline view) then compiles
  * none, and the frames are those of the run that compiled as it went: programs shared between the
  * scenes carry nothing of one scene into the other. */
+/* A scene with point stars and the Milky Way (star_sky.scene): the kiosk's frame is the renderer's
+ * image with its stars drawn in the frame's own pass (render.star_pass = gpu, whose stars
+ * test_stars.c checks against the CPU's pass), and those stars are there: hundreds of pixels
+ * brighter than the same frame without them. */
+static void test_stars_in_the_kiosk(void **state)
+{
+    (void)state;
+    unsigned char *shown[2];
+    run_config("tests/kiosk/stars.conf", 2, shown);
+    struct kiosk_state st;
+    kiosk_state_reset(&st, &config);
+    check_image(shown[0], 0, &st, "stars");
+    static struct scene base, s;
+    struct error e;
+    if (scene_load(&base, config.kiosk.scenes[0], &e) != 0)
+        fail_msg("%s: %s", e.where, e.message);
+    base.render.width = config.kiosk.width;
+    base.render.height = config.kiosk.height;
+    base.sky.stars = 0;
+    base.sky.milky_way = 0.0;
+    if (kiosk_state_apply(&st, &base, &s, &e) != 0)
+        fail_msg("%s: %s", e.where, e.message);
+    struct render_result dark;
+    if (render_frame(&s, &(struct frame_request){.backend = "egl"}, &dark, NULL, &e) != 0)
+        fail_msg("%s", e.message);
+    int brighter = 0;
+    for (int i = 0; i < width * height; i++)
+        brighter += shown[0][4 * i] + shown[0][4 * i + 1] + shown[0][4 * i + 2] >
+                    dark.rgba[4 * i] + dark.rgba[4 * i + 1] + dark.rgba[4 * i + 2] + 90;
+    print_message("%d pixels lit by the stars\n", brighter);
+    assert_true(brighter >= 200);
+    render_result_free(&dark);
+    free(shown[0]);
+    free(shown[1]);
+}
+
 static void test_programs_compiled_ahead(void **state)
 {
     (void)state;
@@ -466,6 +503,7 @@ int main(void)
         cmocka_unit_test(test_pipeline_steps_taken),
         cmocka_unit_test(test_attract_mode),
         cmocka_unit_test(test_screen_copied_or_drawn),
+        cmocka_unit_test(test_stars_in_the_kiosk),
         cmocka_unit_test(test_programs_compiled_ahead),
     };
     return cmocka_run_group_tests(tests, run_kiosk, free_frames);
