@@ -158,31 +158,38 @@ vec3 sky_stars(vec3 d, vec3 jx, vec3 jy, vec3 fx, vec3 fy, float doppler, bool s
     vec3 inverse = vec3(yy, -xy, xx) / det;
     float reach_cos = cos(reach);
     for (int j = -1; j <= 1; j++) {
-        for (int k = -STAR_MAP_SLOTS_I; k < 2 * STAR_MAP_SLOTS_I; k++) {
-            // cell i = k / slots - 1 (its slot k mod slots): one loop, as few turns as it needs
-            float i = floor(float(k) / STAR_MAP_SLOTS);
-            float slot = float(k) - i * STAR_MAP_SLOTS;
-            vec2 cell = base + vec2(i, float(j));
+        for (int i = -1; i <= 1; i++) {
+            vec2 cell = base + vec2(float(i), float(j));
             // across the square's border, the map folds back onto itself mirrored
             cell = cell.x < 0.0 ? vec2(0.0, n - 1.0 - cell.y) : cell.x > n - 1.0 ? vec2(n - 1.0, n - 1.0 - cell.y) : cell;
             cell = cell.y < 0.0 ? vec2(n - 1.0 - cell.x, 0.0) : cell.y > n - 1.0 ? vec2(n - 1.0 - cell.x, n - 1.0) : cell;
-            vec2 texel = origin + vec2(2.0 * (STAR_MAP_SLOTS * cell.x + slot), cell.y) + 0.5;
-            vec4 place = floor(texture2D(u_star_map, texel / u_star_map_size) * 255.0 + 0.5);
-            vec4 data = floor(texture2D(u_star_map, (texel + vec2(1.0, 0.0)) / u_star_map_size) * 255.0 + 0.5);
-            vec2 within = (vec2(place.x * 256.0 + place.y, place.z * 256.0 + place.w) + 0.5) / 65536.0;
-            vec3 s = octahedral_decode((cell + within) / n);
-            float along = dot(s, d);
-            vec3 t = s / along - d;
-            float rx = dot(jx, t);
-            float ry = dot(jy, t);
-            float px = inverse.x * rx + inverse.y * ry;
-            float py = inverse.y * rx + inverse.z * ry;
-            float magnitude = u_star_magnitudes.x + (data.x * 256.0 + data.y) / 65535.0 * u_star_magnitudes.y;
-            float flux = u_star_brightness * pow(10.0, -0.4 * (magnitude - 6.0));
-            float value = flux * gain * exp(-(px * px + py * py) / (2.0 * sigma * sigma)) * spread;
-            float temperature = STAR_T_MIN_K * exp(data.z / 255.0 * STAR_T_RANGE);
-            bool shown = data.w > 127.0 && along > 0.0 && along >= reach_cos && value >= STAR_LIGHT_EPSILON;
-            light += shown ? value * star_chroma(temperature * doppler) : vec3(0.0);
+            vec2 first = origin + vec2(2.0 * STAR_MAP_SLOTS * cell.x, cell.y) + 0.5;
+            for (int slot = 0; slot < STAR_MAP_SLOTS_I; slot++) {
+                vec2 texel = first + vec2(2.0 * float(slot), 0.0);
+                vec4 data = floor(texture2D(u_star_map, (texel + vec2(1.0, 0.0)) / u_star_map_size) * 255.0 + 0.5);
+                // the slots fill in order, brightest first: an empty one ends the cell (most cells
+                // hold no star, and nothing more is read or computed for them)
+                if (data.w < 127.0)
+                    break;
+                vec4 place = floor(texture2D(u_star_map, texel / u_star_map_size) * 255.0 + 0.5);
+                vec2 within = (vec2(place.x * 256.0 + place.y, place.z * 256.0 + place.w) + 0.5) / 65536.0;
+                vec3 s = octahedral_decode((cell + within) / n);
+                float along = dot(s, d);
+                if (along <= 0.0 || along < reach_cos)
+                    continue;
+                vec3 t = s / along - d;
+                float rx = dot(jx, t);
+                float ry = dot(jy, t);
+                float px = inverse.x * rx + inverse.y * ry;
+                float py = inverse.y * rx + inverse.z * ry;
+                float magnitude = u_star_magnitudes.x + (data.x * 256.0 + data.y) / 65535.0 * u_star_magnitudes.y;
+                float flux = u_star_brightness * pow(10.0, -0.4 * (magnitude - 6.0));
+                float value = flux * gain * exp(-(px * px + py * py) / (2.0 * sigma * sigma)) * spread;
+                if (!(value >= STAR_LIGHT_EPSILON))
+                    continue;
+                float temperature = STAR_T_MIN_K * exp(data.z / 255.0 * STAR_T_RANGE);
+                light += value * star_chroma(temperature * doppler);
+            }
         }
     }
     return light;

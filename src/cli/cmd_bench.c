@@ -23,7 +23,7 @@ static int (*const sections[N_SECTIONS])(struct bench *, struct error *) = {
     bench_table1, bench_figure5, bench_unrolling, bench_batching, bench_early_z, bench_pareto, bench_pipelines,
     bench_limit, bench_relativity, bench_antialias, bench_stars, bench_wait, bench_kiosk};
 /* configurations each section times (for the progress count) */
-static int section_steps[N_SECTIONS] = {20, 20, 5, 4, 6, 0 /* bench_pareto_count */, 22, 2, 9, 6, 4, 5, 5};
+static int section_steps[N_SECTIONS] = {20, 20, 5, 4, 6, 0 /* bench_pareto_count */, 22, 2, 9, 6, 8, 5, 5};
 static const int section_steps_quick[N_SECTIONS] = {20, 10, 5, 4, 6, 3, 22, 2, 4, 3, 1, 5};
 
 static void usage(FILE *out)

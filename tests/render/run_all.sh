@@ -325,6 +325,12 @@ check "stars backends agree" 0 "image: (identical|PSNR ([6-9][0-9]|[1-9][0-9][0-
 check "stars negative" 2 "key 'stars' in \\[sky\\]: expected an integer from 0 to 1000000" -- $BT render --scene $S --set sky.stars=-1 --out "$TMP/st.png"
 check "star size zero" 2 "key 'star_size' in \\[sky\\]: expected a number from 0.3 to 8" -- $BT render --scene $S --set sky.star_size=0 --out "$TMP/st.png"
 check "galactic center along pole" 2 "galactic_center lies along galactic_pole" -- $BT render --scene $S --set "sky.galactic_pole=0 1 0" --set "sky.galactic_center=0 -2 0" --out "$TMP/st.png"
+# the GPU's star pass (docs/STARS.md, "Stars on the GPU"): its sky colour, with derivatives, compiles as
+# GLSL ES 1.00 under glslang too, the extension declared
+check "info --shader GPU stars compiles" 0 "^compiled$" -- sh -c "$BT info --shader orbit_frame --scene assets/scenes/star_sky.scene \
+    --set render.star_pass=gpu --no-mrt > '$TMP/stars.frag' && sed -n 2p '$TMP/stars.frag' | grep -q '^#extension GL_OES_standard_derivatives : enable$' \
+    && grep -q 'define GPU_STARS 1' '$TMP/stars.frag' && glslangValidator -S frag '$TMP/stars.frag' > '$TMP/glslang.log' && echo compiled || cat '$TMP/glslang.log'"
+check "GPU stars refused without derivatives" 1 "render.star_pass = gpu: this GPU takes no derivatives in its fragment shaders" -- env BT_FAULT=no_derivatives $BT render --scene assets/scenes/star_sky.scene --set render.star_pass=gpu --size 32x24 --out "$TMP/nd.png"
 # the real sky (docs/STARS.md, "The real sky"): both back-ends draw the same stars; a malformed
 # catalogue line is refused at its FILE:LINE, a catalogue beside generated stars, colours without a
 # catalogue and the catalogue as the output are refused
