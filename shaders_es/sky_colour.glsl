@@ -25,6 +25,42 @@ vec3 sky(vec3 direction)
 #endif
 }
 
+#if defined(GPU_STARS) || defined(TONE_MAP)
+// the sRGB transfer function and its inverse (io/sample_average.c), for values beyond 1 too
+float srgb_decode(float x)
+{
+    return x <= 0.04045 ? x / 12.92 : pow((x + 0.055) / 1.055, 2.4);
+}
+
+float srgb_encode(float x)
+{
+    return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
+}
+#endif
+
+#ifdef TONE_MAP
+// The light of an 8-bit image (src/results/tone.h, the CPU's tone_map): linear light times the
+// gain, then each channel clipped at white, or (TONE_FILMIC) Narkowicz's fit of the ACES filmic
+// curve on the luminance, the colour scaled with it (hue and saturation kept) and mixed toward the
+// grey of its luminance only as far as brings its largest channel to white.
+uniform float u_gain;
+
+vec3 tone_map(vec3 encoded)
+{
+    vec3 lin = max(vec3(srgb_decode(encoded.r), srgb_decode(encoded.g), srgb_decode(encoded.b)), 0.0) * u_gain;
+#ifdef TONE_FILMIC
+    float l = dot(lin, vec3(0.2126, 0.7152, 0.0722));
+    float mapped = l > 0.0 ? min(l * (2.51 * l + 0.03) / (l * (2.43 * l + 0.59) + 0.14), 1.0) : 0.0;
+    lin = l > 0.0 ? lin * (mapped / l) : vec3(0.0);
+    float top = max(lin.r, max(lin.g, lin.b));
+    float toward = top > 1.0 ? (top - 1.0) / (top - mapped) : 0.0;
+    lin += toward * (vec3(mapped) - lin);
+#endif
+    lin = clamp(lin, 0.0, 1.0);
+    return vec3(srgb_encode(lin.r), srgb_encode(lin.g), srgb_encode(lin.b));
+}
+#endif
+
 #ifdef GPU_STARS
 // Point stars and the Milky Way in the frame's own pass (`[render] star_pass = gpu`, the kiosk):
 // what the CPU's pass adds after the rays (src/results/star_light.c), from the star map
@@ -55,16 +91,6 @@ const float MILKY_WAY_TEMPERATURE_K = 4300.0;
 // a level's cells count as this fraction of their width about the pixel's direction, so that the 3x3
 // about it hold every star within the reach, also where the octahedral map skews its cells
 const float STAR_CELL_MARGIN = 0.8;
-
-float star_srgb_to_linear(float x)
-{
-    return x <= 0.04045 ? x / 12.92 : pow((x + 0.055) / 1.055, 2.4);
-}
-
-float star_linear_to_srgb(float x)
-{
-    return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
-}
 
 vec3 star_sign(vec2 p)
 {
@@ -238,9 +264,9 @@ vec4 sky_final_colour(vec4 image, vec3 velocity)
 #endif
         vec3 stars = sky_stars(exit_direction, footprint_x, footprint_y, straight_x, straight_y, star_doppler,
                                searchlight);
-        vec3 sum = vec3(star_srgb_to_linear(color.r), star_srgb_to_linear(color.g), star_srgb_to_linear(color.b)) +
+        vec3 sum = vec3(srgb_decode(color.r), srgb_decode(color.g), srgb_decode(color.b)) +
                    stars;
-        vec3 lit = vec3(star_linear_to_srgb(sum.r), star_linear_to_srgb(sum.g), star_linear_to_srgb(sum.b));
+        vec3 lit = vec3(srgb_encode(sum.r), srgb_encode(sum.g), srgb_encode(sum.b));
         color = stars.r + stars.g + stars.b > 0.0 ? lit : color;
 #endif
     }
@@ -252,6 +278,9 @@ vec4 sky_final_colour(vec4 image, vec3 velocity)
     // a float target (16-bit PNG, PFM): the colour as shaded, brighter than white where it is
     return vec4(max(color, 0.0), alpha);
 #else
+#ifdef TONE_MAP
+    color = tone_map(color);
+#endif
     return vec4(clamp(color, 0.0, 1.0), alpha);
 #endif
 }

@@ -6,6 +6,7 @@
 #include "io/sample_average.h"
 #include "scene/pixel_samples.h"
 #include "results/star_light.h"
+#include "results/tone.h"
 #include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
@@ -74,6 +75,8 @@ int ref_pixel_colour(const struct scene *s, const struct ref_ray *ray, int i, in
         return -1;
     double color[4];
     cpu_shade_color(&materials, ray, camera_view_direction_at(s, i, j, 0.0, 0.0), color);
+    if (tone_active(&s->render))
+        tone_map(&s->render, color);
     for (int c = 0; c < 4; c++)
         rgba[c] = unorm8(color[c]);
     cpu_materials_free(&materials);
@@ -107,6 +110,11 @@ static void render_row(struct job *job, int j)
         steps += ray.steps;
         rejected += ray.rejected;
         struct ref_ray centre = ray;
+        /* the gain and the tone curve on each sample's colour before its 8-bit code, as the
+         * GPU's shader does (results/tone.h); a float image keeps the light as traced */
+        int tone = tone_active(&s->render);
+        if (tone && !hdr)
+            tone_map(&s->render, color);
         if (pattern->n > 1) {
             /* every sample, averaged in linear light as the GPU's frames are (io/sample_average.h) */
             struct pixel_average sum = {{0.0, 0.0, 0.0}, 0.0, {0.0, 0.0, 0.0}};
@@ -116,14 +124,19 @@ static void render_row(struct job *job, int j)
             for (int n = first; n < pattern->n; n++) {
                 double other[4];
                 trace_at(job, i, j, pattern->dx[n], pattern->dy[n], &ray, other);
+                if (tone && !hdr)
+                    tone_map(&s->render, other);
                 add_sample(&sum, other, hdr);
                 steps += ray.steps;
                 rejected += ray.rejected;
             }
             pixel_average_mean(&sum, pattern->n, color, &color[3]);
         }
+        double display[4] = {color[0], color[1], color[2], color[3]};
+        if (tone && hdr)
+            tone_map(&s->render, display);
         for (int c = 0; c < 4; c++) {
-            rgba[c] = unorm8(color[c]);
+            rgba[c] = unorm8(display[c]);
             if (hdr)
                 img->color[4 * k + c] = (float)color[c];
         }
@@ -254,6 +267,8 @@ static int render_with_stars(struct job *job, int threads, struct progress *p, s
             continue;
         struct star_view v = {s->render.width, s->render.height, img.dx, img.dy, img.direction, 3, img.sky};
         star_sky_add(stars, &v, NULL, NULL, img.color);
+        for (size_t i = 0; i < n && !hdr && tone_active(&s->render); i++)
+            tone_map(&s->render, img.color + 4 * i);   /* after the stars, as the GPU's pass */
         for (size_t i = 0; i < n && sum; i++)
             add_sample(&sum[i], img.color + 4 * i, hdr);
     }
@@ -263,8 +278,11 @@ static int render_with_stars(struct job *job, int threads, struct progress *p, s
             pixel_average_mean(&sum[i], pattern->n, color, &color[3]);
         else
             memcpy(color, img.color + 4 * i, sizeof color);
+        double display[4] = {color[0], color[1], color[2], color[3]};
+        if (hdr && tone_active(&s->render))
+            tone_map(&s->render, display);
         for (int c = 0; c < 4; c++) {
-            out->rgba[4 * i + c] = unorm8(color[c]);
+            out->rgba[4 * i + c] = unorm8(display[c]);
             if (hdr)
                 out->color[4 * i + c] = (float)color[c];
         }

@@ -120,11 +120,13 @@ static const struct stage_program *frame_program(struct renderer *r, const struc
             files[n++] = "stage_orbit_frame.glsl";
     }
     files[n] = NULL;
-    char written[224];
+    char written[SKY_COLOUR_DEFINES_LEN + 96], sky_defines[SKY_COLOUR_DEFINES_LEN] = "";
+    if (colour && !walk)
+        sky_colour_defines(r, sky_defines, sizeof sky_defines);
     snprintf(written, sizeof written, "%s%s%s%s",
              walk ? "#define ORBIT_WALK_PASS 1\n" : a->walked ? "#define ORBIT_WALKED 1\n" : "",
              walk ? "" : output == FRAME_WRITES_STATE ? "#define FRAME_STATE 1\n" : colour ? "#define FRAME_COLOUR 1\n" : "",
-             colour && !walk ? sky_colour_defines(r) : "",
+             sky_defines,
              output == FRAME_WRITES_COLOUR_CODES && !walk ? "#define FRAME_CODES 1\n" : "");
     char defines[sizeof batch + sizeof r->model_defines + sizeof written + 160];
     if (r->exact_orbits)

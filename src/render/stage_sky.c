@@ -4,6 +4,7 @@
 #include "render/stages.h"
 #include <math.h>
 #include <stdio.h>
+#include "results/tone.h"
 
 void sky_colour_set_uniforms(const struct program_uniforms *p, const struct renderer *r, int sky_unit)
 {
@@ -41,16 +42,21 @@ void sky_colour_set_uniforms(const struct program_uniforms *p, const struct rend
         uniform_vec3(p, "u_galactic_x", r->galactic_x);
         uniform_vec3(p, "u_galactic_y", r->galactic_y);
     }
+    if (tone_active(&r->scene->render))
+        uniform_float(p, "u_gain", r->scene->render.gain);
     uniform_vec3(p, "u_unfinished_color", r->scene->render.unfinished_color);
     uniform_float(p, "u_sky_alpha", r->scene->render.sky_alpha);
 }
 
-const char *sky_colour_defines(const struct renderer *r)
-{
 #define STAR_DEFINES_(n) "#define GPU_STARS 1\n#define STAR_MAP_SLOTS_N " #n "\n"
 #define STAR_DEFINES(n) STAR_DEFINES_(n)
-    return r->sky_cubemap ? (r->star_map ? "#define SKY_CUBEMAP 1\n" STAR_DEFINES(STAR_MAP_SLOTS) : "#define SKY_CUBEMAP 1\n")
-                          : r->star_map ? STAR_DEFINES(STAR_MAP_SLOTS) : "";
+
+void sky_colour_defines(const struct renderer *r, char *out, size_t len)
+{
+    const struct render_settings *rs = &r->scene->render;
+    snprintf(out, len, "%s%s%s%s", r->sky_cubemap ? "#define SKY_CUBEMAP 1\n" : "",
+             r->star_map ? STAR_DEFINES(STAR_MAP_SLOTS) : "", tone_active(rs) ? "#define TONE_MAP 1\n" : "",
+             tone_active(rs) && rs->tone_curve == TONE_CURVE_FILMIC ? "#define TONE_FILMIC 1\n" : "");
 }
 
 static void set_sky(const struct program_uniforms *p, const void *arg)
@@ -62,8 +68,9 @@ int stage_sky(struct renderer *r, struct error *e)
 {
     static const char *const files[] = {"common.glsl", "observer.glsl", "sky_colour.glsl", "stage_sky.glsl", NULL};
     struct raystate *rs = &r->rs;
-    char defines[sizeof r->observer_defines + 96];
-    snprintf(defines, sizeof defines, "%s%s", sky_colour_defines(r), r->observer_defines);
+    char sky_defines[SKY_COLOUR_DEFINES_LEN], defines[sizeof r->observer_defines + SKY_COLOUR_DEFINES_LEN];
+    sky_colour_defines(r, sky_defines, sizeof sky_defines);
+    snprintf(defines, sizeof defines, "%s%s", sky_defines, r->observer_defines);
     const struct stage_program *sp = program_cache_get(r->programs, files, defines, 0, e);
     if (!sp)
         return -1;

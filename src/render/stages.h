@@ -210,7 +210,8 @@ int stage_retire(struct renderer *r, int all, struct error *e);
 int stage_sky(struct renderer *r, struct error *e);
 /* The final colour's uniforms and defines (sky_colour.glsl), for the sky stage and FRAME_WRITES_COLOUR. */
 void sky_colour_set_uniforms(const struct program_uniforms *p, const struct renderer *r, int sky_unit);
-const char *sky_colour_defines(const struct renderer *r);
+#define SKY_COLOUR_DEFINES_LEN 160
+void sky_colour_defines(const struct renderer *r, char *out, size_t len);
 /* The polygon method for moving objects (stage_polygons.c): which objects it draws, their meshes,
  * and the stage that rasterises them into the results. */
 int polygons_draw_object(const struct renderer *r, int k);

@@ -149,6 +149,7 @@ struct observer {
 };
 
 enum star_pass_choice { STAR_PASS_CPU, STAR_PASS_GPU };
+enum tone_curve_choice { TONE_CURVE_CLIP, TONE_CURVE_FILMIC };
 
 struct render_settings {
     int width, height;
@@ -196,6 +197,10 @@ struct render_settings {
      * (results/star_light.h, the reference), or in the frame's own pass on the GPU (results/star_map.h;
      * the kiosk always) */
     enum star_pass_choice star_pass;
+    /* the light of an 8-bit image (results/tone.h): linear light times gain, then each channel
+     * clipped at white, or the filmic curve on the luminance */
+    double gain;
+    enum tone_curve_choice tone_curve;
 };
 
 /* The six faces of a cube map sky, in GL's order (+x, -x, +y, -y, +z, -z), and the file of face f

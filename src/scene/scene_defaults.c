@@ -40,6 +40,7 @@ static void render_defaults(struct render_settings *r)
     r->orbit_walk = ORBIT_WALK_AUTO;
     r->samples = 1;
     r->sky_alpha = 1.0;
+    r->gain = 1.0;
 }
 
 void scene_default_method(struct scene *s)

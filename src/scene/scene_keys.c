@@ -31,6 +31,7 @@ static const struct conf_choice effects_names[] = {{"geometry", 0}, {"doppler", 
 static const struct conf_choice exposure_names[] = {{"scene", 0}, {"paper", 1}, {NULL, 0}};
 static const struct conf_choice moving_names[] = {{"rays", 0}, {"polygons", 1}, {NULL, 0}};
 static const struct conf_choice pipeline_names[] = {{"auto", 0}, {"multipass", 1}, {"single", 2}, {"fused", 3}, {NULL, 0}};
+static const struct conf_choice tone_curve_names[] = {{"clip", 0}, {"filmic", 1}, {NULL, 0}};
 static const struct conf_choice star_pass_names[] = {{"cpu", 0}, {"gpu", 1}, {NULL, 0}};
 static const struct conf_choice orbit_walk_names[] = {{"auto", 0}, {"separate", 1}, {"inline", 2}, {NULL, 0}};
 
@@ -412,6 +413,8 @@ const struct conf_key scene_keys[] = {
     {SECTION_RENDER, "pipeline", CHOICE(pipeline_names, AT_SCENE(render.pipeline))},
     {SECTION_RENDER, "orbit_walk", CHOICE(orbit_walk_names, AT_SCENE(render.orbit_walk))},
     {SECTION_RENDER, "star_pass", CHOICE(star_pass_names, AT_SCENE(render.star_pass))},
+    {SECTION_RENDER, "gain", CONF_NUMBER, .lo = 0.0, .hi = 1e6, .flags = CONF_ABOVE_LO, .offset = AT_SCENE(render.gain)},
+    {SECTION_RENDER, "tone_curve", CHOICE(tone_curve_names, AT_SCENE(render.tone_curve))},
     {SECTION_RENDER, "orbit_columns", CONF_INTEGER, .lo = 4, .hi = SCENE_MAX_ORBIT_COLUMNS,
      .offset = AT_SCENE(render.orbit_columns)},
 

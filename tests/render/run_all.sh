@@ -331,6 +331,11 @@ check "info --shader GPU stars compiles" 0 "^compiled$" -- sh -c "$BT info --sha
     --set render.star_pass=gpu --no-mrt > '$TMP/stars.frag' && sed -n 2p '$TMP/stars.frag' | grep -q '^#extension GL_OES_standard_derivatives : enable$' \
     && grep -q 'define GPU_STARS 1' '$TMP/stars.frag' && glslangValidator -S frag '$TMP/stars.frag' > '$TMP/glslang.log' && echo compiled || cat '$TMP/glslang.log'"
 check "GPU stars refused without derivatives" 1 "render.star_pass = gpu: this GPU takes no derivatives in its fragment shaders" -- env BT_FAULT=no_derivatives $BT render --scene assets/scenes/star_sky.scene --set render.star_pass=gpu --size 32x24 --out "$TMP/nd.png"
+# the image's gain and tone curve (results/tone.h): refused where the CPU's star pass would add stars
+# after them
+check "tone curve with CPU stars refused" 2 "render.gain and render.tone_curve apply to the stars of \\[sky\\] too" -- $BT render --scene assets/scenes/star_sky.scene --set render.tone_curve=filmic --size 32x24 --out "$TMP/tc.png"
+check "tone curve with GPU stars" 0 "star_sky: 32x24" -- $BT render --scene assets/scenes/star_sky.scene --set render.tone_curve=filmic --set render.gain=2 --set render.star_pass=gpu --size 32x24 --out "$TMP/tc.png"
+check "gain zero refused" 2 "key 'gain' in \\[render\\]" -- $BT render --scene $S --set render.gain=0 --out "$TMP/tc.png"
 # the real sky (docs/STARS.md, "The real sky"): both back-ends draw the same stars; a malformed
 # catalogue line is refused at its FILE:LINE, a catalogue beside generated stars, colours without a
 # catalogue and the catalogue as the output are refused
