@@ -19,7 +19,6 @@ static int upload(GLenum target, const struct scene *s, const char *key, int lin
             return error_set(e, ERROR_INPUT, NULL, "%s:%d: %s: %s", s->path, line, key, fe.message);
         return error_set(e, ERROR_INPUT, NULL, "%s: %s: %s", s->path, key, fe.message);
     }
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(target, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
     size[0] = w;
     size[1] = h;
@@ -67,7 +66,6 @@ static int star_map_load(struct renderer *r, struct error *e)
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, r->star_layout.width, r->star_layout.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                  r->star_layout.texels);
     star_map_free(&r->star_layout);
