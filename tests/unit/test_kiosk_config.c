@@ -96,13 +96,14 @@ static void test_example_loads(void **state)
     if (kiosk_config_check(&c, &err) != 0)
         fail_msg("%s: %s", err.where, err.message);
 
-    assert_int_equal(c.kiosk.n_scenes, 6);
+    assert_int_equal(c.kiosk.n_scenes, 7);
     assert_string_equal(c.kiosk.scenes[0], "kiosk/../assets/scenes/schwarzschild.scene");
     assert_string_equal(c.kiosk.scenes[1], "kiosk/../assets/scenes/demo.scene");
     assert_string_equal(c.kiosk.scenes[2], "kiosk/../assets/scenes/starflight.scene");
     assert_string_equal(c.kiosk.scenes[3], "kiosk/../assets/scenes/blackhole_flight.scene");
     assert_string_equal(c.kiosk.scenes[4], "kiosk/../assets/scenes/cube_approach.scene");
     assert_string_equal(c.kiosk.scenes[5], "kiosk/../assets/scenes/lorenz.scene");
+    assert_string_equal(c.kiosk.scenes[6], "kiosk/../assets/scenes/star_sky.scene");
     assert_int_equal(c.kiosk.start_scene, 0);
     assert_int_equal(c.kiosk.idle_seconds, 120);
     assert_int_equal(c.kiosk.preview_width, 320);
