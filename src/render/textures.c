@@ -1,5 +1,6 @@
 /* Scene textures and the sky cube map, uploaded once per renderer. */
 #include "io/image_cache.h"
+#include "gl/texture.h"
 #include "render/stages.h"
 #include "results/star_light.h"
 #include "results/tone.h"
@@ -60,12 +61,7 @@ static int star_map_load(struct renderer *r, struct error *e)
     free(sky);
     if (rc != 0)
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory for the star map");
-    glGenTextures(1, &r->star_map);
-    glBindTexture(GL_TEXTURE_2D, r->star_map);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    r->star_map = texture_name_nearest();   /* bound, clamped at its edges */
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, r->star_layout.width, r->star_layout.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                  r->star_layout.texels);
     star_map_free(&r->star_layout);

@@ -239,6 +239,30 @@ static int check_stars(const struct scene *s, const float *color, const char *en
     return checked;
 }
 
+/* s's float image with its stars drawn by the GPU's own pass (render.star_pass = gpu), reads as asked */
+static void render_star_pass(struct scene *s, enum render_read reads, struct render_result *out)
+{
+    struct error err;
+    s->render.star_pass = STAR_PASS_GPU;
+    if (render_frame(s, &(struct frame_request){.backend = "egl", .hdr = 1, .reads = reads}, out, NULL, &err) != 0)
+        fail_msg("render: %s", err.message);
+    s->render.star_pass = STAR_PASS_CPU;
+}
+
+/* s's float images: the GPU's rays with the CPU's star pass, the CPU engine's, and the GPU's rays
+ * with its own star pass */
+static void render_three(struct scene *s, struct render_result *g, struct cpu_image *cpu, struct render_result *gp)
+{
+    struct error err;
+    if (render_frame(s, &(struct frame_request){.backend = "egl", .hdr = 1}, g, NULL, &err) != 0)
+        fail_msg("render: %s", err.message);
+    struct cpu_render_options o = {.threads = 0, .hdr = 1};
+    ref_options_default(&o.ref, s);
+    if (cpu_render(s, &o, cpu, &err) != 0)
+        fail_msg("cpu render: %s", err.message);
+    render_star_pass(s, RENDER_READ_IMAGE, gp);
+}
+
 static void stars_on_both_engines(vec3d velocity)
 {
     static struct scene s;
@@ -255,21 +279,18 @@ static void stars_on_both_engines(vec3d velocity)
         fail_msg("cpu render: %s", err.message);
     int on_cpu = check_stars(&s, cpu.color, "cpu");
     /* the GPU's own star pass, in the frame's pass (results/star_map.h) */
-    s.render.star_pass = STAR_PASS_GPU;
     struct render_result gp;
-    if (render_frame(&s, &(struct frame_request){.backend = "egl", .hdr = 1}, &gp, NULL, &err) != 0)
-        fail_msg("render: %s", err.message);
+    render_star_pass(&s, RENDER_READ_IMAGE, &gp);
     int on_gpu_pass = check_stars(&s, gp.color, "gpu star pass");
     /* the same pass where the whole ray state is read: the sky stage's pass draws them instead of
      * the frame's own (stage_sky.c) */
     struct render_result gs;
-    if (render_frame(&s, &(struct frame_request){.backend = "egl", .hdr = 1, .reads = RENDER_READ_STATE}, &gs, NULL,
-                     &err) != 0)
-        fail_msg("render: %s", err.message);
+    render_star_pass(&s, RENDER_READ_STATE, &gs);
     int on_sky_stage = check_stars(&s, gs.color, "gpu star pass, sky stage");
     /* and where only the 8-bit image is read, the frame's own pass draws them (FRAME_COLOUR, as the
      * kiosk): the same colours, within a level of 255 */
     struct render_result g8;
+    s.render.star_pass = STAR_PASS_GPU;
     if (render_frame(&s, &(struct frame_request){.backend = "egl"}, &g8, NULL, &err) != 0)
         fail_msg("render: %s", err.message);
     int worst = 0;
@@ -368,20 +389,11 @@ static void test_lensed_star(void **state)
     vec3d image_plus = v3_add(v3_scale(axis, cos(theta_plus)), v3_scale(toward, sin(theta_plus)));
     vec3d image_minus = v3_add(v3_scale(axis, cos(theta_minus)), v3_scale(toward, -sin(theta_minus)));
 
-    struct render_result g;
-    if (render_frame(&s, &(struct frame_request){.backend = "egl", .hdr = 1}, &g, NULL, &err) != 0)
-        fail_msg("render: %s", err.message);
+    /* the GPU's own star pass among them: its magnification from the derivatives of the exit
+     * directions */
+    struct render_result g, gp;
     struct cpu_image cpu;
-    struct cpu_render_options o = {.threads = 0, .hdr = 1};
-    ref_options_default(&o.ref, &s);
-    if (cpu_render(&s, &o, &cpu, &err) != 0)
-        fail_msg("cpu render: %s", err.message);
-    /* the GPU's own star pass: its magnification from the derivatives of the exit directions */
-    s.render.star_pass = STAR_PASS_GPU;
-    struct render_result gp;
-    if (render_frame(&s, &(struct frame_request){.backend = "egl", .hdr = 1}, &gp, NULL, &err) != 0)
-        fail_msg("render: %s", err.message);
-    s.render.star_pass = STAR_PASS_CPU;
+    render_three(&s, &g, &cpu, &gp);
     const float *images[3] = {g.color, cpu.color, gp.color};
     const char *names[3] = {"gpu", "cpu", "gpu star pass"};
     for (int e = 0; e < 3; e++) {
@@ -431,19 +443,9 @@ static void test_real_sky_orion(void **state)
         double ra, dec, magnitude, bv;
         int red;
     } known[] = {{"Betelgeuse", 5.9195, 7.4069, 0.50, 1.85, 1}, {"Rigel", 5.2423, -8.2017, 0.12, 0.00, 0}};
-    struct render_result g;
-    if (render_frame(&s, &(struct frame_request){.backend = "egl", .hdr = 1}, &g, NULL, &err) != 0)
-        fail_msg("render: %s", err.message);
+    struct render_result g, gp;
     struct cpu_image cpu;
-    struct cpu_render_options o = {.threads = 0, .hdr = 1};
-    ref_options_default(&o.ref, &s);
-    if (cpu_render(&s, &o, &cpu, &err) != 0)
-        fail_msg("cpu render: %s", err.message);
-    s.render.star_pass = STAR_PASS_GPU;
-    struct render_result gp;
-    if (render_frame(&s, &(struct frame_request){.backend = "egl", .hdr = 1}, &gp, NULL, &err) != 0)
-        fail_msg("render: %s", err.message);
-    s.render.star_pass = STAR_PASS_CPU;
+    render_three(&s, &g, &cpu, &gp);
     const float *images[3] = {g.color, cpu.color, gp.color};
     const char *names[3] = {"gpu", "cpu", "gpu star pass"};
     for (size_t k = 0; k < sizeof known / sizeof known[0]; k++) {
