@@ -35,6 +35,23 @@ vec3 observer_scene_direction(vec3 d)
 #endif
 }
 
+#if defined(GPU_STARS) || defined(TONE_MAP) || defined(BLACKBODY_LINEAR)
+// the sRGB transfer function and its inverse (io/sample_average.c), for values beyond 1 too
+float srgb_decode(float x)
+{
+    return x <= 0.04045 ? x / 12.92 : pow((x + 0.055) / 1.055, 2.4);
+}
+
+float srgb_encode(float x)
+{
+    return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
+}
+#endif
+
+#ifdef BLACKBODY_LINEAR
+const float BLACKBODY_LOG2_SPAN = 24.0;   // physics/blackbody.h
+#endif
+
 #ifdef DOPPLER_COLOUR
 uniform sampler2D u_blackbody;        // sRGB of black bodies, temperatures log-spaced
 uniform float u_blackbody_log_min;    // ln(T) of the first texel
@@ -100,12 +117,21 @@ float thin_disk_temperature(float peak, float r_in, float r)
 #endif
 
 // The display colour of a black body at its apparent temperature: texel centres at
-// (0.5 + u_blackbody_texels * (ln T - ln T_min)) / size, clamped to the table's ends.
+// (0.5 + u_blackbody_texels * (ln T - ln T_min)) / size, clamped to the table's ends. With the
+// image's filmic curve (BLACKBODY_LINEAR, physics/blackbody.h TONE_SCENE_LINEAR) the table holds
+// the chromaticity and log2 of the brightness: the colour may pass white, for the curve to bring
+// it to the screen.
 vec3 blackbody_colour(float temperature)
 {
     float texel = u_blackbody_texels * (log(max(temperature, 1.0)) - u_blackbody_log_min);
     float s = (clamp(texel, 0.0, u_blackbody_size - 1.0) + 0.5) / u_blackbody_size;
+#ifdef BLACKBODY_LINEAR
+    vec4 t = texture2D(u_blackbody, vec2(s, 0.5));
+    vec3 lin = vec3(srgb_decode(t.r), srgb_decode(t.g), srgb_decode(t.b)) * exp2((t.a - 0.5) * BLACKBODY_LOG2_SPAN);
+    return vec3(srgb_encode(lin.r), srgb_encode(lin.g), srgb_encode(lin.b));
+#else
     return texture2D(u_blackbody, vec2(s, 0.5)).rgb;
+#endif
 }
 
 // 0.2126 R + 0.7152 G + 0.0722 B: the luminance an RGB texel lends a black-body emitter.

@@ -25,19 +25,6 @@ vec3 sky(vec3 direction)
 #endif
 }
 
-#if defined(GPU_STARS) || defined(TONE_MAP)
-// the sRGB transfer function and its inverse (io/sample_average.c), for values beyond 1 too
-float srgb_decode(float x)
-{
-    return x <= 0.04045 ? x / 12.92 : pow((x + 0.055) / 1.055, 2.4);
-}
-
-float srgb_encode(float x)
-{
-    return x <= 0.0031308 ? 12.92 * x : 1.055 * pow(x, 1.0 / 2.4) - 0.055;
-}
-#endif
-
 #ifdef TONE_MAP
 // The light of an 8-bit image (src/results/tone.h, the CPU's tone_map): linear light times the
 // gain, then each channel clipped at white, or (TONE_FILMIC) Narkowicz's fit of the ACES filmic

@@ -217,9 +217,38 @@ void blackbody_lut_fill(enum blackbody_tone tone, unsigned char rgba[4 * BLACKBO
     blackbody_lut_fill_exposed(tone, FIXED_EXPOSURE_T_K, rgba);
 }
 
+/* TONE_SCENE_LINEAR's linear BT.709 colour of a black body: XYZ / Y(T_ref) times the grey */
+static void blackbody_linear(double temperature_k, double reference_k, double rgb[3])
+{
+    double xyz[3], ref[3];
+    blackbody_xyz(temperature_k, xyz);
+    blackbody_xyz(reference_k > 0.0 ? reference_k : FIXED_EXPOSURE_T_K, ref);
+    for (int j = 0; j < 3; j++)
+        xyz[j] = ref[1] > 0.0 && xyz[1] > 0.0 ? xyz[j] / ref[1] * BLACKBODY_LINEAR_GREY : 0.0;
+    xyz_to_linear_bt709(xyz, rgb);
+    for (int j = 0; j < 3; j++)
+        rgb[j] = fmax(rgb[j], 0.0);   /* outside the gamut below about 1900 K, as above */
+}
+
+void blackbody_lut_decode(const double rgba[4], double linear[3])
+{
+    double scale = exp2((rgba[3] - 0.5) * BLACKBODY_LOG2_SPAN);
+    for (int j = 0; j < 3; j++)
+        linear[j] = srgb_decode(rgba[j]) * scale;
+}
+
 void blackbody_lut_fill_exposed(enum blackbody_tone tone, double reference_k, unsigned char rgba[4 * BLACKBODY_LUT_SIZE])
 {
-    for (int i = 0; i < BLACKBODY_LUT_SIZE; i++) {
+    for (int i = 0; i < BLACKBODY_LUT_SIZE && tone == TONE_SCENE_LINEAR; i++) {
+        double rgb[3];
+        blackbody_linear(blackbody_lut_temperature(i), reference_k, rgb);
+        double top = fmax(rgb[0], fmax(rgb[1], rgb[2]));
+        for (int j = 0; j < 3; j++)
+            rgba[4 * i + j] = (unsigned char)lround(255.0 * srgb_encode(top > 0.0 ? rgb[j] / top : 0.0));
+        double stops = top > 0.0 ? log2(top) / BLACKBODY_LOG2_SPAN + 0.5 : 0.0;
+        rgba[4 * i + 3] = (unsigned char)lround(255.0 * (stops < 0.0 ? 0.0 : stops > 1.0 ? 1.0 : stops));
+    }
+    for (int i = 0; i < BLACKBODY_LUT_SIZE && tone != TONE_SCENE_LINEAR; i++) {
         double srgb[3];
         blackbody_srgb_exposed(blackbody_lut_temperature(i), tone, reference_k, srgb);
         for (int j = 0; j < 3; j++)

@@ -22,7 +22,18 @@ enum blackbody_tone {
      * reference temperature T_ref (its sky's, or its lights') shows mid-grey at rest, so that both
      * the searchlight's brightening ahead and its dimming behind stay visible before the clip. */
     TONE_SCENE,
+    /* XYZ / Y(T_ref) times BLACKBODY_LINEAR_GREY, linear light with no curve: the image's filmic
+     * curve (render.tone_curve, results/tone.h) brings it to the screen, so that a body brighter
+     * than white stays brighter, and its hue. The table holds each colour's chromaticity
+     * (sRGB-encoded over its largest primary) and, in alpha, log2 of that largest primary over
+     * BLACKBODY_LOG2_SPAN stops about 0 (blackbody_lut_decode). */
+    TONE_SCENE_LINEAR,
 };
+
+/* TONE_SCENE_LINEAR: the linear luminance of a body at the reference temperature (photography's
+ * mid-grey), and the stops of log2 luminance the table's alpha spans, half each side of 1. */
+#define BLACKBODY_LINEAR_GREY 0.18
+#define BLACKBODY_LOG2_SPAN 24.0
 
 /* TONE_SCENE: the display value (after the log curve) of a body at the reference temperature. */
 #define BLACKBODY_SCENE_GREY 0.45
@@ -62,7 +73,12 @@ double blackbody_lut_temperature(int i);
  * temperatures outside the table take its end colours. */
 double blackbody_lut_coordinate(double temperature_k);
 
-/* The table: 8-bit sRGB of blackbody_srgb at each texel temperature, rounded, alpha 255. */
+/* A texel of the TONE_SCENE_LINEAR table (bytes over 255, or their linear interpolation) as linear
+ * RGB, which may pass 1. */
+void blackbody_lut_decode(const double rgba[4], double linear[3]);
+
+/* The table: 8-bit sRGB of blackbody_srgb at each texel temperature, rounded, alpha 255 (for
+ * TONE_SCENE_LINEAR the chromaticity and log2 of the brightness, as said above). */
 void blackbody_lut_fill(enum blackbody_tone tone, unsigned char rgba[4 * BLACKBODY_LUT_SIZE]);
 void blackbody_lut_fill_exposed(enum blackbody_tone tone, double reference_k, unsigned char rgba[4 * BLACKBODY_LUT_SIZE]);
 

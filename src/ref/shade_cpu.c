@@ -2,6 +2,7 @@
 #include "scene/texture_wrap.h"
 #include "scene/camera.h"
 #include "io/png_io.h"
+#include "io/sample_average.h"
 #include "physics/accretion.h"
 #include "physics/blackbody.h"
 #include "physics/relativity.h"
@@ -35,6 +36,7 @@ int cpu_materials_load(struct cpu_materials *mat, const struct scene *s, struct 
         if (!t->rgba)
             return error_set(e, ERROR_RUNTIME, NULL, "out of memory");
         blackbody_lut_fill_exposed((enum blackbody_tone)scene_blackbody_tone(s), scene_reference_temperature(s), t->rgba);
+        mat->blackbody_linear = scene_blackbody_tone(s) == TONE_SCENE_LINEAR;
     }
     return 0;
 }
@@ -118,7 +120,15 @@ static vec3d blackbody_colour(const struct cpu_materials *mat, double temperatur
     double texel = (BLACKBODY_LUT_SIZE - 1) / log(BLACKBODY_T_MAX_K / BLACKBODY_T_MIN_K) *
                    (log(fmax(temperature, 1.0)) - log(BLACKBODY_T_MIN_K));
     texel = texel < 0.0 ? 0.0 : texel > BLACKBODY_LUT_SIZE - 1 ? BLACKBODY_LUT_SIZE - 1 : texel;
-    return sample_bilinear(&mat->blackbody, (texel + 0.5) / BLACKBODY_LUT_SIZE, 0.5);
+    if (!mat->blackbody_linear)
+        return sample_bilinear(&mat->blackbody, (texel + 0.5) / BLACKBODY_LUT_SIZE, 0.5);
+    /* the linear table: its four bytes interpolated as GL_LINEAR does, then decoded */
+    int i = (int)floor(texel), j = i + 1 < BLACKBODY_LUT_SIZE ? i + 1 : i;
+    double f = texel - i, rgba[4], lin[3];
+    for (int c = 0; c < 4; c++)
+        rgba[c] = ((1.0 - f) * mat->blackbody.rgba[4 * i + c] + f * mat->blackbody.rgba[4 * j + c]) / 255.0;
+    blackbody_lut_decode(rgba, lin);
+    return v3(linear_to_srgb_unclamped(lin[0]), linear_to_srgb_unclamped(lin[1]), linear_to_srgb_unclamped(lin[2]));
 }
 
 /* The frequency ratios of observer.glsl: static emitters at p, the observer moving and at rest

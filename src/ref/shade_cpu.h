@@ -18,6 +18,7 @@ struct cpu_materials {
     struct cpu_texture sky[6];    /* +x, -x, +y, -y, +z, -z */
     int has_sky_cubemap;
     struct cpu_texture blackbody; /* the GPU's black-body table (Doppler colour effects only) */
+    int blackbody_linear;         /* the table is TONE_SCENE_LINEAR's (blackbody_lut_decode) */
 };
 
 /* Load the scene's textures and sky faces. 0, or -1 with e: the PNG reader's error, naming the file

@@ -8,9 +8,10 @@
 
 int observer_defines(const struct scene *s, char *out, size_t len)
 {
-    int n = snprintf(out, len, "%s%s%s", observer_moving(s) ? "#define OBSERVER_MOVING 1\n" : "",
+    int n = snprintf(out, len, "%s%s%s%s", observer_moving(s) ? "#define OBSERVER_MOVING 1\n" : "",
                      doppler_colour(s) ? "#define DOPPLER_COLOUR 1\n" : "",
-                     s->observer.effects == EFFECTS_SEARCHLIGHT ? "#define SEARCHLIGHT 1\n" : "");
+                     s->observer.effects == EFFECTS_SEARCHLIGHT ? "#define SEARCHLIGHT 1\n" : "",
+                     doppler_colour(s) && scene_blackbody_tone(s) == TONE_SCENE_LINEAR ? "#define BLACKBODY_LINEAR 1\n" : "");
     return n < 0 || (size_t)n >= len ? -1 : 0;
 }
 

@@ -140,7 +140,10 @@ int scene_blackbody_tone(const struct scene *s)
 {
     if (s->observer.effects != EFFECTS_SEARCHLIGHT)
         return TONE_LUMINANCE;
-    return s->observer.exposure == EXPOSURE_PAPER ? TONE_FIXED_1500K : TONE_SCENE;
+    if (s->observer.exposure == EXPOSURE_PAPER)
+        return TONE_FIXED_1500K;
+    /* the image's filmic curve takes the light as it is (results/tone.h) */
+    return s->render.tone_curve == TONE_CURVE_FILMIC ? TONE_SCENE_LINEAR : TONE_SCENE;
 }
 
 double scene_reference_temperature(const struct scene *s)

@@ -8,6 +8,7 @@
 #include <cmocka.h>
 #include "hard_cases.h"
 #include "io/sample_average.h"
+#include "physics/blackbody.h"
 #include "results/tone.h"
 
 /* hue angle of a linear colour, degrees (HSV's) */
@@ -77,6 +78,38 @@ static void test_hue_and_gain(void **state)
     assert_true(fabs(srgb_to_linear(dim[0]) - 0.2) < 1e-9 && fabs(srgb_to_linear(dim[2]) - 0.6) < 1e-9);
 }
 
+/* The black-body table for the filmic curve (TONE_SCENE_LINEAR, with observer.effects = searchlight):
+ * each texel decodes to the black body's linear colour, its luminance Y(T) / Y(T_ref) times the
+ * grey within 4.5% (an 8-bit log2 over 24 stops: an eighth of a stop a step), wherever that is
+ * above 2^-11; the reference temperature at the grey. */
+static void test_linear_table(void **state)
+{
+    (void)state;
+    const double reference = 6500.0;
+    unsigned char rgba[4 * BLACKBODY_LUT_SIZE];
+    blackbody_lut_fill_exposed(TONE_SCENE_LINEAR, reference, rgba);
+    double ref_xyz[3];
+    blackbody_xyz(reference, ref_xyz);
+    int checked = 0;
+    double worst = 0.0;
+    for (int i = 0; i < BLACKBODY_LUT_SIZE; i++) {
+        double t = blackbody_lut_temperature(i), xyz[3];
+        blackbody_xyz(t, xyz);
+        double want = xyz[1] / ref_xyz[1] * BLACKBODY_LINEAR_GREY;
+        double texel[4] = {rgba[4 * i] / 255.0, rgba[4 * i + 1] / 255.0, rgba[4 * i + 2] / 255.0, rgba[4 * i + 3] / 255.0};
+        double lin[3];
+        blackbody_lut_decode(texel, lin);
+        double got = 0.2126 * lin[0] + 0.7152 * lin[1] + 0.0722 * lin[2];
+        /* below about 1900 K the colour leaves the gamut and loses luminance with its negative primary */
+        if (want < exp2(-11.0) || t < 2000.0)
+            continue;
+        worst = fmax(worst, fabs(got / want - 1.0));
+        checked++;
+    }
+    print_message("%d texels from 2000 K: luminance within %.1f%% of Y(T) / Y(T_ref) x the grey\n", checked, 100.0 * worst);
+    assert_true(checked > 150 && worst < 0.045);
+}
+
 /* demo.scene's disk at the searchlight (colours brighter than white where the disk is hot) with
  * gain 1.7 and the filmic curve: the GPU's image against the reference's, the same outcomes and
  * the colours within the 8-bit levels of the black-body table's neighbouring texels; and different
@@ -117,6 +150,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_filmic_curve),
         cmocka_unit_test(test_hue_and_gain),
+        cmocka_unit_test(test_linear_table),
         cmocka_unit_test(test_gpu_against_reference),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
