@@ -8,6 +8,7 @@
 #include "results/compare.h"
 #include "ref/engine_cpu.h"
 #include "results/quality.h"
+#include "results/tone.h"
 
 struct pareto_config {
     const char *name;
@@ -446,6 +447,22 @@ static int disk_target(struct bench *b, struct scene *s, struct error *e)
                    "alone on a warm renderer (%s, %ld pass%s), in at most %.0f ms: **%s** (%.0f ms).\n\n",
             b->width, b->height, t.path, t.passes, t.passes == 1 ? "" : "es", 1e3 * DISK_TARGET_SECONDS,
             t.median <= DISK_TARGET_SECONDS ? "met" : "missed", 1e3 * t.median);
+    /* what the image's curve costs: the same view with each channel clipped at white, gain 1 (the
+     * black-body table then its own log curve: docs/RELATIVITY.md) */
+    if (tone_active(&s->render)) {
+        struct render_settings kept = s->render;
+        s->render.tone_curve = TONE_CURVE_CLIP;
+        s->render.gain = 1.0;
+        bench_progress(b, "pareto: demo's view without the filmic curve");
+        struct bench_timing clipped;
+        int rc = bench_time(b, s, b->runs, &clipped, NULL, e);
+        s->render = kept;
+        if (rc != 0)
+            return -1;
+        fprintf(b->md, "The image's filmic curve and gain (`render.tone_curve`, `render.gain`: docs/SCENES.md) cost "
+                       "%+.1f ms of that: %.1f ms with each channel clipped at white.\n\n",
+                1e3 * (t.median - clipped.median), 1e3 * clipped.median);
+    }
     /* what the accretion disk's light costs: the same view with its disks' matter at rest, one
      * temperature (docs/RELATIVITY.md, "An accretion disk") */
     int accreting = 0;

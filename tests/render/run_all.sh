@@ -403,6 +403,8 @@ check "bench disk target" 0 "^Target: demo.scene's view \(the disk around the ho
     grep "^Target: demo.scene's view" "$TMP/bench/BENCH.md"
 check "bench accretion cost" 0 "^The accretion disk's light \(each point's orbit and temperature, docs/RELATIVITY.md\) costs [-+][0-9.]+ ms of that: [0-9.]+ ms with the disk's matter at rest at one temperature\.$" -- \
     grep "^The accretion disk's light" "$TMP/bench/BENCH.md"
+check "bench tone cost" 0 "^The image's filmic curve and gain \(\`render.tone_curve\`, \`render.gain\`: docs/SCENES.md\) cost [-+][0-9.]+ ms of that: [0-9.]+ ms with each channel clipped at white\.$" -- \
+    grep "^The image's filmic curve" "$TMP/bench/BENCH.md"
 # the time a user waits: fresh render processes timed against the warm frame and their own frame
 # (read from their summaries), the three targets said
 check "bench wait targets" 0 "^Targets for the fresh render: .* \*\*(met|MISSED)\*\*; .* its own frame \([0-9.]+ s\): \*\*(met|MISSED)\*\*; .* \*\*(met|MISSED)\*\*" -- \
