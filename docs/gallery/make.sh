@@ -11,6 +11,7 @@ md=docs/GALLERY.md
 ANIMATE="bentray animate --scene assets/scenes/demo.scene --frames 48 --size 320x180 --set-range model.mass=0:1.4 --fps 12 --out FRAMES --video docs/gallery/demo_mass.gif"
 CUBEMAP_SKY="bentray render --scene assets/scenes/star_sky.scene --size 1920x1080 --set sky.stars=0 --set sky.milky_way=0 --set sky.type=cubemap --set sky.cubemap=../sky/stars"
 POINT_SKY="bentray render --scene assets/scenes/star_sky.scene --size 1920x1080"
+BLOOM="bentray render --scene assets/scenes/demo.scene --size 960x540 --set render.bloom=0.2"
 PIPELINE_VIEW="bentray kiosk --config docs/gallery/pipeline_view.conf --display headless --out DIR --frames 1"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -44,6 +45,16 @@ trap 'rm -rf "$tmp"' EXIT
     echo
     echo "![star_sky with point stars and the Milky Way](gallery/star_sky_1080p.png)"
     echo
+    echo "## Bloom"
+    echo
+    echo "demo.scene at 960x540 with \`render.bloom = 0.2\` (docs/SCENES.md): a fifth of every pixel's light"
+    echo "spread by a glare's point-spread, so the disk's hot side, brighter than white, glows into the"
+    echo "shadow and the sky beside it. Compare demo.scene's own image below."
+    echo
+    echo "\`$BLOOM\`"
+    echo
+    echo "![demo with bloom](gallery/demo_bloom.png)"
+    echo
     echo "## The kiosk's pipeline view"
     echo
     echo "The black hole's rays as the renderer leaves them (key \`v\` at the kiosk; docs/KIOSK.md, docs/PIPELINE.md):"
@@ -64,6 +75,7 @@ mv "$tmp/pipeline_view/frame_0001.png" "$OUT/pipeline_view.png"
 $BT render --scene assets/scenes/star_sky.scene --size 1920x1080 --set sky.stars=0 --set sky.milky_way=0 \
     --set sky.type=cubemap --set sky.cubemap=../sky/stars --out "$OUT/star_sky_cubemap_1080p.png" --force --quiet > /dev/null
 $BT render --scene assets/scenes/star_sky.scene --size 1920x1080 --out "$OUT/star_sky_1080p.png" --force --quiet > /dev/null
+$BT render --scene assets/scenes/demo.scene --size 960x540 --set render.bloom=0.2 --out "$OUT/demo_bloom.png" --force --quiet > /dev/null
 $BT animate --scene assets/scenes/demo.scene --frames 48 --size 320x180 --set-range model.mass=0:1.4 --fps 12 \
     --out "$tmp/frames" --video "$OUT/demo_mass.gif" --force --quiet > /dev/null
 for f in assets/scenes/*.scene; do

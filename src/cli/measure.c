@@ -85,9 +85,11 @@ int measure_gpu(const struct scene *s, const char *backend, int need_state, enum
     m->nonfinite = count_nonfinite(&res);
     char samples[48];
     samples_text(s, samples, sizeof samples);
-    char stars[64] = "";
+    char stars[112] = "";
     if (res.sky_seconds > 0.0)
         snprintf(stars, sizeof stars, ", the stars of the sky %.3f s on the CPU", res.sky_seconds);
+    if (res.bloom_seconds > 0.0)
+        snprintf(stars + strlen(stars), sizeof stars - strlen(stars), ", the bloom %.3f s on the CPU", res.bloom_seconds);
     snprintf(m->how, sizeof m->how, "%s on %s (%s), %.3f s%s%s, %ld pass%s (%s: %s)", info.path_description,
              info.backend, info.renderer, res.seconds, samples, stars, res.passes, res.passes == 1 ? "" : "es",
              info.pipeline, info.pipeline_why);

@@ -626,6 +626,9 @@ static int preflight(struct kiosk *k, struct error *e)
             fprintf(k->log, "%s: render.samples = %d is for bentray render's images; the kiosk traces one ray a "
                             "pixel, its refined frame at the screen's own resolution\n", c->kiosk.scenes[i],
                     k->scenes[i].render.samples);
+        if (k->scenes[i].render.bloom > 0.0 && k->log)
+            fprintf(k->log, "%s: render.bloom = %g is for bentray render's images; the kiosk draws its frames "
+                            "without it\n", c->kiosk.scenes[i], k->scenes[i].render.bloom);
         /* a scene on exact orbits builds its table again at each mass detent, on the render thread
          * where no table was built ahead: a table too large to build ahead would hold the loop (and
          * the watchdog) for seconds at every detent */

@@ -6,6 +6,7 @@
 #include "io/sample_average.h"
 #include "scene/pixel_samples.h"
 #include "results/star_light.h"
+#include "results/bloom.h"
 #include "results/tone.h"
 #include <math.h>
 #include <pthread.h>
@@ -301,6 +302,22 @@ done:
     return rc;
 }
 
+/* The 8-bit image with its bloom (results/bloom.h), from the float colour, as the GPU's frame
+ * (render/frame.c), and the records' colours with it; the colour kept where a float image was
+ * asked for. 0, or -1 when out of memory. */
+static int apply_bloom(const struct scene *s, struct cpu_image *out, int keep_color)
+{
+    if (bloom_image(&s->render, out->width, out->height, out->color, out->rgba) != 0)
+        return -1;
+    for (size_t i = 0; i < (size_t)out->width * out->height; i++)
+        memcpy(out->dump.records[i].rgba, out->rgba + 4 * i, 4);
+    if (!keep_color) {
+        free(out->color);
+        out->color = NULL;
+    }
+    return 0;
+}
+
 int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct cpu_image *out, struct error *e)
 {
     memset(out, 0, sizeof *out);
@@ -314,9 +331,11 @@ int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct
     out->height = h;
     out->rgba = malloc((size_t)w * h * 4);
     out->dump.records = calloc((size_t)w * h, sizeof *out->dump.records);
-    if (o->hdr)
+    /* bloom spreads the light beyond white: the colour is kept as floats for it, as the GPU's */
+    int bloom = bloom_active(&s->render), hdr = o->hdr || bloom;
+    if (hdr)
         out->color = malloc((size_t)w * h * 4 * sizeof(float));
-    if (!out->rgba || !out->dump.records || (o->hdr && !out->color)) {
+    if (!out->rgba || !out->dump.records || (hdr && !out->color)) {
         cpu_materials_free(&materials);
         cpu_image_free(out);
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory for a %dx%d image", w, h);
@@ -346,6 +365,11 @@ int cpu_render(const struct scene *s, const struct cpu_render_options *o, struct
         cpu_materials_free(&materials);
         cpu_image_free(out);
         return -1;
+    }
+    if (bloom && apply_bloom(s, out, o->hdr) != 0) {
+        cpu_materials_free(&materials);
+        cpu_image_free(out);
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory for the bloom of a %dx%d image", w, h);
     }
     out->seconds = clock_seconds() - start;
     out->threads = job.threads_started;

@@ -3,8 +3,10 @@
 #include "render/frame_bands.h"
 #include "render/orbit_store.h"
 #include "io/sample_average.h"
+#include "results/bloom.h"
 #include "results/dump_scene.h"
 #include "results/star_light.h"
+#include "results/tone.h"
 #include "scene/pixel_samples.h"
 #include <math.h>
 #include <stdio.h>
@@ -121,8 +123,35 @@ static int run_samples(struct renderer *r, const struct scene *s, const struct s
     return rc;
 }
 
-int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, enum render_read reads,
-                      enum progress_mode progress, struct error *e)
+/* Whether the frame's 8-bit image is made on the CPU from its colour read as floats: for its bloom,
+ * and for a gain or tone curve that must come after the stars the CPU's pass adds (results/tone.h). */
+static int light_on_cpu(const struct scene *s)
+{
+    return bloom_active(&s->render) ||
+           (tone_active(&s->render) && star_sky_wanted(s) && s->render.star_pass != STAR_PASS_GPU);
+}
+
+/* The 8-bit image of a frame read as floats, with its bloom, gain and curve (results/bloom.h); the
+ * float colour kept only where the caller asked for it. 0, or -1 with e (out is then freed). */
+static int frame_bloom(const struct scene *s, struct render_result *out, int keep_color, struct error *e)
+{
+    double t0 = clock_seconds();
+    if (bloom_image(&s->render, out->width, out->height, out->color, out->rgba) != 0) {
+        render_result_free(out);
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory for the bloom of a %dx%d image", out->width,
+                         out->height);
+    }
+    out->bloom_seconds = bloom_active(&s->render) ? clock_seconds() - t0 : 0.0;
+    if (!keep_color) {
+        free(out->color);
+        out->color = NULL;
+    }
+    return 0;
+}
+
+/* The samples of the frame, with the CPU's stars where they are drawn there. */
+static int run_with_stars(struct renderer *r, const struct scene *s, struct render_result *out, enum render_read reads,
+                          enum progress_mode progress, struct error *e)
 {
     /* the GPU's star pass draws them in the frame's own pass (render.star_pass = gpu) */
     if (!star_sky_wanted(s) || s->render.star_pass == STAR_PASS_GPU)
@@ -133,6 +162,18 @@ int frame_run_samples(struct renderer *r, const struct scene *s, struct render_r
     int rc = star_sky_init(stars, s, e) == 0 ? run_samples(r, s, stars, out, reads, progress, e) : -1;
     star_sky_free(stars);
     free(stars);
+    return rc;
+}
+
+int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, enum render_read reads,
+                      enum progress_mode progress, struct error *e)
+{
+    int on_cpu = light_on_cpu(s), asked = renderer_hdr(r);
+    renderer_set_hdr(r, asked || on_cpu);
+    int rc = run_with_stars(r, s, out, reads, progress, e);
+    renderer_set_hdr(r, asked);
+    if (rc == 0 && on_cpu)
+        rc = frame_bloom(s, out, asked, e);
     return rc;
 }
 

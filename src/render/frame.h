@@ -28,7 +28,9 @@ int render_frame(const struct scene *s, const struct frame_request *req, struct 
                  struct frame_info *info, struct error *e);
 /* The whole image of s on renderer r with every sample of every pixel (render.samples,
  * scene/pixel_samples.h), each a whole frame, averaged in linear light into out->rgba; seconds and
- * passes summed over them. The ray state, when asked for, is the pixels' centres': sample 0 where
+ * passes summed over them. Where the scene asks for bloom, or for a gain or tone curve with stars
+ * the CPU's pass draws, the frame is read as floats and out->rgba made from them on the CPU
+ * (results/bloom.h; out->color kept only where renderer_set_hdr asked for it). The ray state, when asked for, is the pixels' centres': sample 0 where
  * the pattern holds the centre, else one more run that only the state comes from. 0, or -1 with e. */
 int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, enum render_read reads,
                       enum progress_mode progress, struct error *e);

@@ -32,6 +32,8 @@ struct render_result {
     double seconds;                         /* wall time of the GPU passes (glFinish included) */
     double sky_seconds;                     /* wall time of the stars of the sky, drawn on the CPU
                                                (render/frame.h); 0 without them */
+    double bloom_seconds;                   /* wall time of the bloom, on the CPU (render/frame.h);
+                                               0 without it */
     long passes;                            /* quads drawn */
     double compile_seconds;                 /* of seconds: compiling the shaders of programs built or
                                                drawn for the first time (renderer_run) */

@@ -33,9 +33,6 @@ static int upload(GLenum target, const struct scene *s, const char *key, int lin
 static int star_map_load(struct renderer *r, struct error *e)
 {
     const struct scene *s = r->scene;
-    if (s->render.star_pass != STAR_PASS_GPU && star_sky_wanted(s) && tone_active(&s->render))
-        return error_set(e, ERROR_INPUT, NULL, "render.gain and render.tone_curve apply to the stars of [sky] "
-                         "too, which the CPU's pass would add after them: draw the stars with render.star_pass = gpu");
     if (s->render.star_pass != STAR_PASS_GPU || !star_sky_wanted(s))
         return 0;
     int cells = STAR_MAP_CELLS;

@@ -13,11 +13,10 @@ double tone_filmic(double l)
     return fmin(l * (2.51 * l + 0.03) / (l * (2.43 * l + 0.59) + 0.14), 1.0);
 }
 
-void tone_map(const struct render_settings *r, double rgb[3])
+void tone_map_linear(const struct render_settings *r, double lin[3])
 {
-    double lin[3];
     for (int c = 0; c < 3; c++)
-        lin[c] = fmax(srgb_to_linear(rgb[c]), 0.0) * r->gain;
+        lin[c] = fmax(lin[c], 0.0) * r->gain;
     if (r->tone_curve == TONE_CURVE_FILMIC) {
         double l = 0.2126 * lin[0] + 0.7152 * lin[1] + 0.0722 * lin[2];
         double mapped = l > 0.0 ? tone_filmic(l) : 0.0;
@@ -31,6 +30,16 @@ void tone_map(const struct render_settings *r, double rgb[3])
         for (int c = 0; c < 3; c++)
             lin[c] += toward * (mapped - lin[c]);
     }
+    for (int c = 0; c < 3; c++)
+        lin[c] = fmin(fmax(lin[c], 0.0), 1.0);
+}
+
+void tone_map(const struct render_settings *r, double rgb[3])
+{
+    double lin[3];
+    for (int c = 0; c < 3; c++)
+        lin[c] = srgb_to_linear(rgb[c]);
+    tone_map_linear(r, lin);
     for (int c = 0; c < 3; c++)
         rgb[c] = linear_to_srgb(lin[c]);
 }

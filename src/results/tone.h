@@ -25,5 +25,7 @@ int tone_active(const struct render_settings *r);
 double tone_filmic(double luminance);
 /* rgb (sRGB-encoded, any value) through the gain and the curve, sRGB-encoded in [0, 1]. */
 void tone_map(const struct render_settings *r, double rgb[3]);
+/* The same on linear light (any value; below 0 taken as 0), linear in [0, 1]. */
+void tone_map_linear(const struct render_settings *r, double lin[3]);
 
 #endif

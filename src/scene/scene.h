@@ -201,6 +201,10 @@ struct render_settings {
      * clipped at white, or the filmic curve on the luminance */
     double gain;
     enum tone_curve_choice tone_curve;
+    /* the glare about bright light (results/bloom.h): the fraction of each pixel's light spread,
+     * 0 for none, and the narrowest Gaussian's sigma as a fraction of the image's height */
+    double bloom;
+    double bloom_radius;
 };
 
 /* The six faces of a cube map sky, in GL's order (+x, -x, +y, -y, +z, -z), and the file of face f

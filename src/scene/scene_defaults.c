@@ -41,6 +41,7 @@ static void render_defaults(struct render_settings *r)
     r->samples = 1;
     r->sky_alpha = 1.0;
     r->gain = 1.0;
+    r->bloom_radius = 0.004;
 }
 
 void scene_default_method(struct scene *s)

@@ -415,6 +415,9 @@ const struct conf_key scene_keys[] = {
     {SECTION_RENDER, "star_pass", CHOICE(star_pass_names, AT_SCENE(render.star_pass))},
     {SECTION_RENDER, "gain", CONF_NUMBER, .lo = 0.0, .hi = 1e6, .flags = CONF_ABOVE_LO, .offset = AT_SCENE(render.gain)},
     {SECTION_RENDER, "tone_curve", CHOICE(tone_curve_names, AT_SCENE(render.tone_curve))},
+    {SECTION_RENDER, "bloom", CONF_NUMBER, .lo = 0.0, .hi = 1.0, .offset = AT_SCENE(render.bloom)},
+    {SECTION_RENDER, "bloom_radius", CONF_NUMBER, .lo = 0.0, .hi = 0.25, .flags = CONF_ABOVE_LO,
+     .offset = AT_SCENE(render.bloom_radius)},
     {SECTION_RENDER, "orbit_columns", CONF_INTEGER, .lo = 4, .hi = SCENE_MAX_ORBIT_COLUMNS,
      .offset = AT_SCENE(render.orbit_columns)},
 

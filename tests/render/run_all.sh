@@ -331,11 +331,26 @@ check "info --shader GPU stars compiles" 0 "^compiled$" -- sh -c "$BT info --sha
     --set render.star_pass=gpu --no-mrt > '$TMP/stars.frag' && sed -n 2p '$TMP/stars.frag' | grep -q '^#extension GL_OES_standard_derivatives : enable$' \
     && grep -q 'define GPU_STARS 1' '$TMP/stars.frag' && glslangValidator -S frag '$TMP/stars.frag' > '$TMP/glslang.log' && echo compiled || cat '$TMP/glslang.log'"
 check "GPU stars refused without derivatives" 1 "render.star_pass = gpu: this GPU takes no derivatives in its fragment shaders" -- env BT_FAULT=no_derivatives $BT render --scene assets/scenes/star_sky.scene --set render.star_pass=gpu --size 32x24 --out "$TMP/nd.png"
-# the image's gain and tone curve (results/tone.h): refused where the CPU's star pass would add stars
-# after them
-check "tone curve with CPU stars refused" 2 "render.gain and render.tone_curve apply to the stars of \\[sky\\] too" -- $BT render --scene assets/scenes/star_sky.scene --set render.tone_curve=filmic --size 32x24 --out "$TMP/tc.png"
+# the image's gain and tone curve (results/tone.h) with the stars the CPU's pass adds: the frame read as
+# floats, the curve applied after the stars on the CPU, as the reference engine applies it
+check "tone curve with CPU stars" 0 "outcome differs: 0 of 3072.*PSNR (4[5-9]|[5-9][0-9])\\.[0-9]+ dB" -- sh -c "$BT render --scene assets/scenes/star_sky.scene --set render.tone_curve=filmic --set render.gain=2 --size 64x48 --dump '$TMP/tc_gpu.dump' --quiet --out '$TMP/tc_gpu.png' > /dev/null && \
+    $BT render --scene assets/scenes/star_sky.scene --set render.tone_curve=filmic --set render.gain=2 --engine cpu --size 64x48 --dump '$TMP/tc_cpu.dump' --quiet --out '$TMP/tc_cpu.png' > /dev/null && $BT compare '$TMP/tc_gpu.dump' '$TMP/tc_cpu.dump' | tr '\\n' ' '"
 check "tone curve with GPU stars" 0 "star_sky: 32x24" -- $BT render --scene assets/scenes/star_sky.scene --set render.tone_curve=filmic --set render.gain=2 --set render.star_pass=gpu --size 32x24 --out "$TMP/tc.png"
 check "gain zero refused" 2 "key 'gain' in \\[render\\]" -- $BT render --scene $S --set render.gain=0 --out "$TMP/tc.png"
+# bloom (results/bloom.h): both back-ends the same image, the CPU engine's within a few levels, the
+# float image without it (the light as traced), the render line timing it; out-of-range values refused
+D=assets/scenes/demo.scene
+check "bloom both back-ends" 0 "outcome differs: 0 of 2304.*PSNR (4[5-9]|[5-9][0-9])\\.[0-9]+ dB" -- sh -c "$BT render --scene $D --size 64x36 --samples 1 --set render.gain=8 --set render.bloom=0.3 --backend egl --dump '$TMP/bl_egl.dump' --quiet --out '$TMP/bl_egl.png' > /dev/null && \
+    $BT render --scene $D --size 64x36 --samples 1 --set render.gain=8 --set render.bloom=0.3 --backend osmesa --dump '$TMP/bl_osm.dump' --quiet --out '$TMP/bl_osm.png' > /dev/null && $BT compare '$TMP/bl_egl.dump' '$TMP/bl_osm.dump' | tr '\\n' ' '"
+check "bloom timed" 0 "the bloom [0-9.]+ s on the CPU" -- $BT render --scene $D --size 64x36 --samples 1 --set render.bloom=0.3 --out "$TMP/bl.png"
+check "bloom against the reference" 0 "PSNR (4[5-9]|[5-9][0-9])\\.[0-9]+ dB" -- sh -c "$BT render --scene $D --size 64x36 --samples 1 --set render.gain=8 --set render.bloom=0.3 --dump '$TMP/bl_gpu.dump' --quiet --out '$TMP/bl_g.png' > /dev/null && \
+    $BT render --scene $D --size 64x36 --samples 1 --set render.gain=8 --set render.bloom=0.3 --engine cpu --dump '$TMP/bl_cpu.dump' --quiet --out '$TMP/bl_c.png' > /dev/null && $BT compare '$TMP/bl_gpu.dump' '$TMP/bl_cpu.dump'"
+check "bloom keeps float images as traced" 0 "^same$" -- sh -c "$BT render --scene $D --size 32x18 --samples 1 --set render.bloom=0.5 --quiet --out '$TMP/bl1.pfm' > /dev/null && \
+    $BT render --scene $D --size 32x18 --samples 1 --quiet --out '$TMP/bl0.pfm' > /dev/null && cmp -s '$TMP/bl0.pfm' '$TMP/bl1.pfm' && echo same"
+check "bloom changes the 8-bit image" 0 "^differ$" -- sh -c "$BT render --scene $D --size 64x36 --samples 1 --set render.gain=8 --quiet --out '$TMP/bl_none.png' > /dev/null && \
+    { cmp -s '$TMP/bl_egl.png' '$TMP/bl_none.png' && echo same || echo differ; }"
+check "bloom above 1 refused" 2 "key 'bloom' in \\[render\\]: expected a number from 0 to 1" -- $BT render --scene $S --set render.bloom=1.5 --out "$TMP/bl.png"
+check "bloom radius zero refused" 2 "key 'bloom_radius' in \\[render\\]" -- $BT render --scene $S --set render.bloom_radius=0 --out "$TMP/bl.png"
 # the real sky (docs/STARS.md, "The real sky"): both back-ends draw the same stars; a malformed
 # catalogue line is refused at its FILE:LINE, a catalogue beside generated stars, colours without a
 # catalogue and the catalogue as the output are refused
@@ -391,18 +406,19 @@ check "info scene without shader" 2 "go with --shader STAGE" -- $BT info --scene
 # (pipelines: a header, three rows each of the six integrated cases, two of the five on exact orbits)
 mkdir -p "$TMP/bench"
 check "bench quick" 0 "wrote .*BENCH.md" -- $BT bench --out "$TMP/bench" --quick
-check "bench sections" 0 "^14 sections, table1 21 rows, pipelines 29 rows, figure5 3 rows, limit 3 rows, pareto 4 rows, relativity 5 rows, kiosk 2 rows, antialias 3 rows, stars 3 rows, wait 7 rows$" -- sh -c "
-    printf '%s sections, table1 %s rows, pipelines %s rows, figure5 %s rows, limit %s rows, pareto %s rows, relativity %s rows, kiosk %s rows, antialias %s rows, stars %s rows, wait %s rows\n' \
+check "bench sections" 0 "^15 sections, table1 21 rows, pipelines 29 rows, figure5 3 rows, limit 3 rows, pareto 4 rows, relativity 5 rows, kiosk 2 rows, antialias 3 rows, bloom 3 rows, stars 3 rows, wait 7 rows$" -- sh -c "
+    printf '%s sections, table1 %s rows, pipelines %s rows, figure5 %s rows, limit %s rows, pareto %s rows, relativity %s rows, kiosk %s rows, antialias %s rows, bloom %s rows, stars %s rows, wait %s rows\n' \
       \$(grep -c '^## ' $TMP/bench/BENCH.md) \$(wc -l < $TMP/bench/bench/table1.csv) \$(wc -l < $TMP/bench/bench/pipelines.csv) \
       \$(wc -l < $TMP/bench/bench/figure5.csv) \$(wc -l < $TMP/bench/bench/limit.csv) \
       \$(wc -l < $TMP/bench/bench/pareto.csv) \$(wc -l < $TMP/bench/bench/relativity.csv) \
-      \$(wc -l < $TMP/bench/bench/kiosk.csv) \$(wc -l < $TMP/bench/bench/antialias.csv) \$(wc -l < $TMP/bench/bench/stars.csv) \
+      \$(wc -l < $TMP/bench/bench/kiosk.csv) \$(wc -l < $TMP/bench/bench/antialias.csv) \$(wc -l < $TMP/bench/bench/bloom.csv) \$(wc -l < $TMP/bench/bench/stars.csv) \
       \$(wc -l < $TMP/bench/bench/wait.csv)"
 # the disk's target: demo's view with one ray a pixel, timed warm, met or missed said
 check "bench disk target" 0 "^Target: demo.scene's view \(the disk around the hole\) at [0-9]+x[0-9]+, one ray a pixel, .* in at most 30 ms: \*\*(met|missed)\*\* \([0-9]+ ms\)\.$" -- \
     grep "^Target: demo.scene's view" "$TMP/bench/BENCH.md"
 check "bench accretion cost" 0 "^The accretion disk's light \(each point's orbit and temperature, docs/RELATIVITY.md\) costs [-+][0-9.]+ ms of that: [0-9.]+ ms with the disk's matter at rest at one temperature\.$" -- \
     grep "^The accretion disk's light" "$TMP/bench/BENCH.md"
+check "bench bloom cost" 0 "^\| 64x36 \| [0-9.]+ \| [0-9.]+ \| [0-9.]+ \| [0-9.]+ \| [0-9.]+ \|$" -- grep -A8 "^## Bloom" "$TMP/bench/BENCH.md"
 check "bench tone cost" 0 "^The image's filmic curve and gain \(\`render.tone_curve\`, \`render.gain\`: docs/SCENES.md\) cost [-+][0-9.]+ ms of that: [0-9.]+ ms with each channel clipped at white\.$" -- \
     grep "^The image's filmic curve" "$TMP/bench/BENCH.md"
 # the time a user waits: fresh render processes timed against the warm frame and their own frame

@@ -9,6 +9,7 @@
 #include "hard_cases.h"
 #include "io/sample_average.h"
 #include "physics/blackbody.h"
+#include "render/frame.h"
 #include "results/tone.h"
 
 /* hue angle of a linear colour, degrees (HSV's) */
@@ -145,6 +146,48 @@ static void test_gpu_against_reference(void **state)
     hc_gpu_free(&g);
 }
 
+/* star_sky.scene's point stars drawn by the CPU's pass after the GPU's rays, with gain 2 and the
+ * filmic curve: the frame is read as floats and the curve applied after the stars, on the CPU
+ * (render/frame.h), as the reference applies it: the same outcomes, the colours within the two star
+ * passes' agreement, and brighter stars than without the gain. */
+static void test_curve_after_cpu_stars(void **state)
+{
+    (void)state;
+    static struct scene s;
+    const char *const sets[] = {"render.tone_curve=filmic", "render.gain=2", "render.star_pass=cpu", NULL};
+    hc_load(&s, "star_sky", 160, 90, sets);
+    struct cpu_image cpu;
+    hc_cpu_render(&s, &cpu);
+    struct render_result res, plain;
+    struct frame_info info;
+    struct error e;
+    if (render_frame(&s, &(struct frame_request){"auto", RENDER_READ_STATE, PROGRESS_NONE, 0}, &res, &info, &e) != 0)
+        fail_msg("render: %s", e.message);
+    assert_null(res.color);
+    struct dump gpu;
+    assert_int_equal(result_to_dump(&res, &s, "gpu", &gpu), 0);
+    struct compare_result cr;
+    hc_compare(&gpu, &cpu.dump, &cr);
+    print_message("CPU stars, filmic, gain 2: %ld outcomes differ, PSNR %.1f dB\n", cr.outcomes.differ, cr.psnr_db);
+    assert_int_equal(cr.outcomes.differ, 0);
+    assert_true(cr.psnr_db >= 40.0);
+    s.render.tone_curve = TONE_CURVE_CLIP;
+    s.render.gain = 1.0;
+    if (render_frame(&s, &(struct frame_request){"auto", RENDER_READ_IMAGE, PROGRESS_NONE, 0}, &plain, &info, &e) != 0)
+        fail_msg("render: %s", e.message);
+    double lit = 0.0, unlit = 0.0;
+    for (size_t i = 0; i < (size_t)s.render.width * s.render.height * 4; i++) {
+        lit += (i % 4 != 3) * res.rgba[i];
+        unlit += (i % 4 != 3) * plain.rgba[i];
+    }
+    print_message("the image's codes summed: %.0f with the gain and curve, %.0f without\n", lit, unlit);
+    assert_true(lit > 1.2 * unlit);
+    dump_free(&gpu);
+    render_result_free(&res);
+    render_result_free(&plain);
+    cpu_image_free(&cpu);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -152,6 +195,7 @@ int main(void)
         cmocka_unit_test(test_hue_and_gain),
         cmocka_unit_test(test_linear_table),
         cmocka_unit_test(test_gpu_against_reference),
+        cmocka_unit_test(test_curve_after_cpu_stars),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
