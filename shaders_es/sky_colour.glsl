@@ -76,7 +76,8 @@ const float STAR_T_MIN_K = 500.0;            // physics/blackbody.h, BLACKBODY_T
 const float STAR_T_RANGE = 4.78749174;       // ln(60000 / 500)
 const float MILKY_WAY_TEMPERATURE_K = 4300.0;
 // a level's cells count as this fraction of their width about the pixel's direction, so that the 3x3
-// about it hold every star within the reach, also where the octahedral map skews its cells
+// about it hold every star within the reach, also where the octahedral map skews its cells (and the
+// 2x2 nearest it, where the reach is within half of that)
 const float STAR_CELL_MARGIN = 0.8;
 
 vec3 star_sign(vec2 p)
@@ -99,12 +100,19 @@ vec3 octahedral_decode(vec2 e)
     return normalize(vec3(z < 0.0 ? folded : p, z));
 }
 
-// linear colour of a black body of temperature t per unit luminance (the map's last row)
-vec3 star_chroma(float t)
+// linear colour per unit luminance of the black body at step `code` of the map's last row (its
+// temperatures run from STAR_T_MIN_K up in 255 steps of ln(T) to 60000 K), the nearest step
+vec3 star_chroma_at(float code)
 {
-    float k = clamp(floor(log(t / STAR_T_MIN_K) / STAR_T_RANGE * 255.0 + 0.5), 0.0, 255.0);
+    float k = clamp(floor(code + 0.5), 0.0, 255.0);
     vec3 c = texture2D(u_star_map, vec2(k + 0.5, u_star_map_chroma_row + 0.5) / u_star_map_size).rgb;
     return c / dot(c, vec3(0.2126, 0.7152, 0.0722));
+}
+
+// the same of a black body of temperature t
+vec3 star_chroma(float t)
+{
+    return star_chroma_at(log(t / STAR_T_MIN_K) / STAR_T_RANGE * 255.0);
 }
 
 // The band of the Milky Way along d relative to its brightest (star_light.c, milky_way_shape).
@@ -167,12 +175,28 @@ vec3 sky_stars(vec3 d, vec3 jx, vec3 jy, vec3 fx, vec3 fy, float doppler, bool s
         return light;
     float n = floor(u_star_map_cells / exp2(level) + 0.5);
     vec2 origin = level < 0.5 ? vec2(0.0) : vec2(2.0 * STAR_MAP_SLOTS * (u_star_map_cells - 2.0 * n), u_star_map_cells);
-    vec2 base = clamp(floor(octahedral_encode(d) * n), 0.0, n - 1.0);
+    // where the reach is within half a cell (at level 0 mostly, the kiosk's refined frames), the
+    // 2x2 of cells whose corner is nearest d hold every point within it: four cells, not nine
+    bool near = reach <= 0.5 * width * exp2(level) * STAR_CELL_MARGIN;
+    vec2 at = octahedral_encode(d) * n;
+    vec2 base = near ? clamp(floor(at - 0.5), -1.0, n - 1.0) : clamp(floor(at), 0.0, n - 1.0) - 1.0;
     vec3 inverse = vec3(yy, -xy, xx) / det;
     float reach_cos = cos(reach);
-    for (int j = -1; j <= 1; j++) {
-        for (int i = -1; i <= 1; i++) {
-            vec2 cell = base + vec2(float(i), float(j));
+    // a star's light at the pixel in one exp2: log2 of its flux (from its magnitude, 16 bits over the
+    // catalogue's range) times the gain and the Gaussian's peak, less its offset's share; and the
+    // step of its colour's row moved by the Doppler factor (its temperature's code is ln(T) in steps)
+    float log2_light = log2(u_star_brightness * gain * spread) - 1.32877124 * (u_star_magnitudes.x - 6.0);
+    float log2_per_code = -1.32877124 * u_star_magnitudes.y / 65535.0;
+    float log2_per_px2 = -0.72134752 / (sigma * sigma);
+    float doppler_codes = log(doppler) / STAR_T_RANGE * 255.0;
+    // one loop over the cells, which ends for a group of pixels once none needs another cell
+    int side = near ? 2 : 3;
+    for (int k = 0; k < 9; k++) {
+        if (k >= side * side)
+            break;
+        {
+            int j = k / side;
+            vec2 cell = base + vec2(float(k - j * side), float(j));
             // across the square's border, the map folds back onto itself mirrored
             cell = cell.x < 0.0 ? vec2(0.0, n - 1.0 - cell.y) : cell.x > n - 1.0 ? vec2(n - 1.0, n - 1.0 - cell.y) : cell;
             cell = cell.y < 0.0 ? vec2(n - 1.0 - cell.x, 0.0) : cell.y > n - 1.0 ? vec2(n - 1.0 - cell.x, n - 1.0) : cell;
@@ -195,13 +219,10 @@ vec3 sky_stars(vec3 d, vec3 jx, vec3 jy, vec3 fx, vec3 fy, float doppler, bool s
                 float ry = dot(jy, t);
                 float px = inverse.x * rx + inverse.y * ry;
                 float py = inverse.y * rx + inverse.z * ry;
-                float magnitude = u_star_magnitudes.x + (data.x * 256.0 + data.y) / 65535.0 * u_star_magnitudes.y;
-                float flux = u_star_brightness * pow(10.0, -0.4 * (magnitude - 6.0));
-                float value = flux * gain * exp(-(px * px + py * py) / (2.0 * sigma * sigma)) * spread;
+                float value = exp2(log2_light + log2_per_code * (data.x * 256.0 + data.y) + log2_per_px2 * (px * px + py * py));
                 if (!(value >= STAR_LIGHT_EPSILON))
                     continue;
-                float temperature = STAR_T_MIN_K * exp(data.z / 255.0 * STAR_T_RANGE);
-                light += value * star_chroma(temperature * doppler);
+                light += value * star_chroma_at(data.z + doppler_codes);
             }
         }
     }

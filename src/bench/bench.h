@@ -97,8 +97,9 @@ int bench_relativity(struct bench *b, struct error *e);
 int bench_kiosk(struct bench *b, struct error *e);
 /* the cost of render.samples against the error it leaves (bench_antialias.c) */
 int bench_antialias(struct bench *b, struct error *e);
-/* the cost of render.bloom (bench_bloom.c) */
-int bench_bloom(struct bench *b, struct error *e);
+/* the cost of each addition to the image's light: the disk's emission, the tone curve, the stars,
+ * the bloom (bench_light.c) */
+int bench_light(struct bench *b, struct error *e);
 /* the cost of the stars of the sky, drawn on the CPU (bench_stars.c) */
 int bench_stars(struct bench *b, struct error *e);
 /* what a fresh `bentray render` process adds to its frame (bench_wait.c) */

@@ -1,0 +1,142 @@
+/* The image's light at the kiosk's 1280x720: what each addition to demo.scene's view costs, from the
+ * disk alone (its matter at rest at one temperature, each channel clipped at white, a black sky) to
+ * the disk's emission, the filmic curve and gain, the point stars (on the CPU after the frame, or on
+ * the GPU in its own pass) and the bloom; and the bloom alone at 1920x1080. */
+#include <stdlib.h>
+#include "bench/bench.h"
+#include "render/frame.h"
+#include "render/renderer.h"
+#include "results/bloom.h"
+
+/* Median GPU seconds and CPU seconds (the stars of the CPU's pass, the bloom) of runs frames after a
+ * warm-up. */
+static int time_light(struct bench *b, const struct scene *s, int runs, double *gpu, double *stars, double *bloom,
+                      struct error *e)
+{
+    struct renderer *r = renderer_create(b->ctx, s, e);
+    if (!r)
+        return -1;
+    double g[64], t[64], u[64];
+    runs = runs < 1 ? 1 : runs < 64 ? runs : 64;
+    int rc = 0;
+    for (int k = 0; k <= runs && rc == 0; k++) {
+        struct render_result res;
+        rc = frame_run_samples(r, s, &res, 0, PROGRESS_NONE, e);
+        if (rc != 0)
+            break;
+        if (k > 0) {
+            g[k - 1] = res.seconds;
+            t[k - 1] = res.sky_seconds;
+            u[k - 1] = res.bloom_seconds;
+        }
+        render_result_free(&res);
+    }
+    renderer_destroy(r);
+    if (rc != 0)
+        return -1;
+    *gpu = bench_median(g, runs);
+    *stars = bench_median(t, runs);
+    *bloom = bench_median(u, runs);
+    return 0;
+}
+
+/* The additions, each on top of the ones above it. */
+enum addition { BARE, EMISSION, CURVE, STARS_CPU, STARS_GPU, BLOOM, ADDITIONS };
+static const char *const addition_names[ADDITIONS] = {
+    "the disk alone: its matter at rest at one temperature, each channel clipped at white, a black sky",
+    "+ the disk's emission: each point's orbit and temperature (docs/RELATIVITY.md)",
+    "+ the filmic curve and gain 2 (`render.tone_curve`, `render.gain`)",
+    "+ point stars and the Milky Way, drawn on the CPU after the frame (`[sky] stars`, `star_pass = cpu`)",
+    "the same stars drawn on the GPU in the frame's own pass instead (`star_pass = gpu`, the kiosk's)",
+    "+ bloom 0.15 (`render.bloom`), with the stars on the CPU",
+};
+
+/* demo.scene as shipped, taken back to the additions up to a. */
+static void with_additions(struct scene *s, const struct scene *shipped, enum addition a)
+{
+    *s = *shipped;
+    s->render.bloom = a >= BLOOM ? (shipped->render.bloom > 0.0 ? shipped->render.bloom : 0.15) : 0.0;
+    s->render.star_pass = a == STARS_GPU ? STAR_PASS_GPU : STAR_PASS_CPU;
+    if (a < STARS_CPU) {
+        s->sky.stars = 0;
+        s->sky.milky_way = 0.0;
+    }
+    if (a < CURVE) {
+        s->render.tone_curve = TONE_CURVE_CLIP;
+        s->render.gain = 1.0;
+    }
+    for (int i = 0; i < s->n_objects && a < EMISSION; i++)
+        s->objects[i].material.accretion = 0;
+}
+
+/* The light section, its scene loaded into S. */
+static int light_on(struct bench *b, struct scene *s, struct error *e)
+{
+    if (bench_load_scene(s, "demo", b->quick ? 64 : 1280, b->quick ? 36 : 720, e) != 0)
+        return -1;
+    s->render.samples = 1;
+    struct scene *shipped = malloc(sizeof *shipped);
+    FILE *csv = shipped ? bench_data_file(b, "light.csv", e) : NULL;
+    if (!shipped || !csv) {
+        free(shipped);
+        return shipped ? -1 : error_set(e, ERROR_RUNTIME, NULL, "out of memory for a scene");
+    }
+    *shipped = *s;
+    fprintf(csv, "addition,width,height,gpu_seconds,star_seconds,bloom_seconds\n");
+    fprintf(b->md, "## The image's light\n\nWhat each addition to demo.scene's view costs at %dx%d, one ray a pixel "
+                   "(docs/SCENES.md, docs/STARS.md, docs/RELATIVITY.md), each on top of the ones above it. The GPU's "
+                   "frame, then on the CPU the stars of the CPU's pass and the bloom (where either is drawn there, or "
+                   "the curve must come after the stars, the frame is read as floats and the 8-bit image made on the "
+                   "CPU: src/results/bloom.h); median seconds per frame of %d runs.\n\n| addition | GPU frame | stars "
+                   "on the CPU | bloom on the CPU | total | ratio to the disk alone |\n|---|---|---|---|---|---|\n",
+            s->render.width, s->render.height, b->runs);
+    int rc = 0;
+    double bare = 0.0, bloom_720 = 0.0;
+    for (int a = 0; a < ADDITIONS && rc == 0; a++) {
+        with_additions(s, shipped, (enum addition)a);
+        bench_progress(b, "light: demo at %dx%d, %s", s->render.width, s->render.height, addition_names[a]);
+        double gpu, stars, bloom;
+        rc = time_light(b, s, b->runs, &gpu, &stars, &bloom, e);
+        if (rc != 0)
+            break;
+        b->done++;
+        double total = gpu + stars + bloom;
+        bare = a == BARE ? total : bare;
+        bloom_720 = a == BLOOM ? bloom : bloom_720;
+        fprintf(b->md, "| %s | %.3f | %.3f | %.3f | %.3f | %.2f |\n", addition_names[a], gpu, stars, bloom, total,
+                bare > 0.0 ? total / bare : 0.0);
+        fprintf(csv, "%d,%d,%d,%.5f,%.5f,%.5f\n", a, s->render.width, s->render.height, gpu, stars, bloom);
+    }
+    if (rc == 0 && !b->quick) {
+        /* the bloom alone at a larger size */
+        with_additions(s, shipped, BLOOM);
+        s->render.width = 1920;
+        s->render.height = 1080;
+        bench_progress(b, "light: demo at 1920x1080 with bloom");
+        double gpu, stars, bloom;
+        rc = time_light(b, s, b->runs, &gpu, &stars, &bloom, e);
+        if (rc == 0) {
+            b->done++;
+            fprintf(b->md, "\nAt 1920x1080 with everything: GPU frame %.3f s, stars %.3f s, bloom %.3f s.\n", gpu, stars,
+                    bloom);
+            fprintf(csv, "%d,1920,1080,%.5f,%.5f,%.5f\n", BLOOM, gpu, stars, bloom);
+        }
+    }
+    if (rc == 0)
+        fprintf(b->md, "\nEach of the bloom's %d Gaussians is drawn on an image of a pyramid where it is one to two "
+                       "pixels wide, so the bloom costs about the same whatever the image shows and whatever "
+                       "`bloom_radius`: the full image is read and written a few times for each. On a Raspberry Pi 4 "
+                       "(an estimate: its Cortex-A72 is 2-4 times slower per core than this machine's) the %.0f ms of "
+                       "the bloom at %dx%d would be about %.0f-%.0f ms. The kiosk draws no bloom; it draws the stars on "
+                       "the GPU.\n\n",
+                BLOOM_LEVELS, 1e3 * bloom_720, b->quick ? 64 : 1280, b->quick ? 36 : 720, 2e3 * bloom_720,
+                4e3 * bloom_720);
+    fclose(csv);
+    free(shipped);
+    return rc;
+}
+
+int bench_light(struct bench *b, struct error *e)
+{
+    return bench_with_scene(b, light_on, e);
+}
