@@ -19,6 +19,12 @@ check "kiosk no stats unasked" 0 "^0 lines$" -- sh -c "echo \$($BT kiosk --confi
 mkdir -p "$TMP/staff"
 sed "s|path = visitor.events|path = $PWD/tests/kiosk/staff.events|; s|\.\./\.\./assets|$PWD/assets|g" $K > "$TMP/staff/k.conf"
 check "kiosk staff mode logs frame times" 0 "^1 lines$" -- sh -c "echo \$($BT kiosk --config $TMP/staff/k.conf --out $TMP/staff --frames 2 2>&1 | grep -c 'frame times: schwarzschild') lines"
+# a scene with render.bloom: the kiosk draws it without the bloom and its log says so
+mkdir -p "$TMP/bloom"
+sed "s|^\[render\]|[render]\nbloom = 0.2|; s|\.\./|$PWD/assets/|g" assets/scenes/schwarzschild.scene > "$TMP/bloom/glow.scene"
+sed "s|path = visitor.events|path = $PWD/tests/kiosk/visitor.events|; s|\.\./\.\./assets|$PWD/assets|g; s|^scenes = .*|scenes = $TMP/bloom/glow.scene|; s|^start_scene = .*|start_scene = glow|; s|^assets_root = .*|assets_root = /|" $K > "$TMP/bloom/k.conf"
+check "kiosk says it draws no bloom" 0 "glow.scene: render.bloom = 0.2 is for bentray render's images; the kiosk draws its frames without it" -- \
+    $BT kiosk --config "$TMP/bloom/k.conf" --out "$TMP/bloom" --frames 1
 check "kiosk osmesa run" 0 "headless screen 160x90 \(OSMesa.*stopped after" -- sh -c "$BT kiosk --config $K --out $TMP/kiosk --frames 2 --backend osmesa --force 2>&1 | tr '\n' ' '"
 # a bad script is refused before anything is shown, with FILE:LINE
 mkdir -p "$TMP/badscript"
