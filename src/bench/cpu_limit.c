@@ -17,10 +17,10 @@
  * where a GPU compiler fuses freely. The shaders' products with the zero components of the refraction
  * noise directions are left out, as GPU compilers fold them. */
 #include "io/clock.h"
+#include "io/parallel.h"
 #include "bench/cpu_limit.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -477,32 +477,24 @@ struct slice_job {
     long long sweeps;
 };
 
-static void *run_slice(void *arg)
+/* Slice `part` of the jobs, swept its times. */
+static void run_slice(void *arg, int part, int parts)
 {
-    const struct slice_job *job = arg;
+    (void)parts;
+    const struct slice_job *job = (const struct slice_job *)arg + part;
     for (long long k = 0; k < job->sweeps; k++)
         job->kernel(job->fm, job->h, job->steps_per_call, job->rays, job->begin, job->end);
-    return NULL;
 }
 
-/* Every slice swept `sweeps` times, slice 0 on the calling thread; a slice whose thread cannot start
- * is swept here afterwards, so the work is always complete. Returns the wall time. */
+/* Every slice swept `sweeps` times, slice 0 on the calling thread (io/parallel.h: a slice whose
+ * thread cannot start is swept there afterwards, so the work is always complete). Returns the
+ * wall time. */
 static double run_round(struct slice_job *jobs, int n_jobs, long long sweeps)
 {
-    pthread_t threads[MAX_THREADS];
-    int started[MAX_THREADS] = {0};
     double start = clock_seconds();
     for (int t = 0; t < n_jobs; t++)
         jobs[t].sweeps = sweeps;
-    for (int t = 1; t < n_jobs; t++)
-        started[t] = pthread_create(&threads[t], NULL, run_slice, &jobs[t]) == 0;
-    run_slice(&jobs[0]);
-    for (int t = 1; t < n_jobs; t++) {
-        if (started[t])
-            pthread_join(threads[t], NULL);
-        else
-            run_slice(&jobs[t]);
-    }
+    parallel_run(n_jobs, run_slice, jobs);
     return clock_seconds() - start;
 }
 

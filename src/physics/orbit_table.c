@@ -1,11 +1,10 @@
 /* Photon orbits of Schwarzschild space tabulated for a static observer (orbit_table.h). */
 #include "io/clock.h"
+#include "io/parallel.h"
 #include "physics/orbit_table.h"
 #include "physics/dormand_prince.h"
 #include "physics/escape.h"
 #include <math.h>
-#include <pthread.h>
-#include <unistd.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -504,25 +503,24 @@ static int build_row(struct orbit_table *t, int row, double *phi_s, struct error
     return 0;
 }
 
-/* Rows first, first + stride, ... of the table, on a thread of their own. */
-struct row_worker {
+/* The table's rows on the cores: each part's status and error. */
+struct row_parts {
     struct orbit_table *t;
-    int first, stride, status;
-    pthread_t thread;
-    struct error e;
+    int status[ORBIT_MAX_THREADS];
+    struct error e[ORBIT_MAX_THREADS];
 };
 
-static void *build_rows(void *arg)
+/* Rows part, part + parts, ... of the table. */
+static void build_rows(void *arg, int part, int parts)
 {
-    struct row_worker *w = arg;
+    struct row_parts *w = arg;
     double *phi_s = malloc((size_t)w->t->p.columns * sizeof *phi_s);
-    w->status = phi_s ? 0 : -1;
+    w->status[part] = phi_s ? 0 : -1;
     if (!phi_s)
-        error_set(&w->e, ERROR_RUNTIME, NULL, "orbit table: out of memory");
-    for (int row = w->first; row < w->t->height && w->status == 0; row += w->stride)
-        w->status = build_row(w->t, row, phi_s, &w->e);
+        error_set(&w->e[part], ERROR_RUNTIME, NULL, "orbit table: out of memory");
+    for (int row = part; row < w->t->height && w->status[part] == 0; row += parts)
+        w->status[part] = build_row(w->t, row, phi_s, &w->e[part]);
     free(phi_s);
-    return NULL;
 }
 
 /* Rows closer to psi_c than this many of its double roundings would not be launched at angles
@@ -597,34 +595,21 @@ int orbit_table_build(struct orbit_table *t, const struct orbit_table_params *p,
         return error_set(e, ERROR_RUNTIME, NULL, "orbit table: out of memory");
     }
     /* the rows are independent: one thread per core, at most ORBIT_MAX_THREADS */
-    long cores = sysconf(_SC_NPROCESSORS_ONLN);
-    int threads = cores < 1 ? 1 : cores > ORBIT_MAX_THREADS ? ORBIT_MAX_THREADS : (int)cores;
-    struct row_worker workers[ORBIT_MAX_THREADS];
-    int started = 0;
-    for (int i = 0; i < threads; i++) {
-        workers[i] = (struct row_worker){.t = t, .first = i, .stride = threads};
-        if (i > 0 && pthread_create(&workers[i].thread, NULL, build_rows, &workers[i]) == 0)
-            started |= 1 << i;
-        else if (i > 0)
-            workers[i].stride = -1;   /* not started: its rows are built below */
+    struct row_parts *w = malloc(sizeof *w);
+    if (!w) {
+        orbit_table_free(t);
+        return error_set(e, ERROR_RUNTIME, NULL, "orbit table: out of memory");
     }
-    build_rows(&workers[0]);
-    int status = workers[0].status;
-    const struct error *why = &workers[0].e;
-    for (int i = 1; i < threads; i++) {
-        if (started & (1 << i)) {
-            pthread_join(workers[i].thread, NULL);
-        } else {
-            workers[i].stride = threads;
-            build_rows(&workers[i]);
-        }
-        if (workers[i].status != 0 && status == 0) {
+    w->t = t;
+    int parts = parallel_parts(rows, ORBIT_MAX_THREADS), status = 0;
+    parallel_run(parts, build_rows, w);
+    for (int i = 0; i < parts && status == 0; i++)
+        if (w->status[i] != 0) {
             status = -1;
-            why = &workers[i].e;
+            *e = w->e[i];
         }
-    }
+    free(w);
     if (status != 0) {
-        *e = *why;
         orbit_table_free(t);
         return -1;
     }

@@ -1,4 +1,5 @@
 #include "results/bloom.h"
+#include "io/parallel.h"
 #include "io/sample_average.h"
 #include "results/tone.h"
 #include <math.h>
@@ -36,39 +37,6 @@ static int gaussian_kernel(double sigma, double kernel[KERNEL_MAX + 1])
     return radius;
 }
 
-/* img (w x h) blurred by the kernel along x into tmp, then along y back into img; near an edge
- * the taps inside the image are weighted to sum to 1, so an evenly lit image stays even. */
-static void gaussian(float *img, float *tmp, int w, int h, const double *kernel, int radius)
-{
-    for (int y = 0; y < h; y++)
-        for (int x = 0; x < w; x++) {
-            double acc[CHANNELS] = {0.0, 0.0, 0.0}, total = 0.0;
-            for (int i = x - radius < 0 ? -x : -radius; i <= radius && x + i < w; i++) {
-                double k = kernel[i < 0 ? -i : i];
-                const float *v = img + ((size_t)y * w + x + i) * CHANNELS;
-                total += k;
-                for (int c = 0; c < CHANNELS; c++)
-                    acc[c] += k * v[c];
-            }
-            for (int c = 0; c < CHANNELS; c++)
-                tmp[((size_t)y * w + x) * CHANNELS + c] = (float)(acc[c] / total);
-        }
-    size_t stride = (size_t)w * CHANNELS;
-    for (int y = 0; y < h; y++) {
-        int lo = y - radius < 0 ? -y : -radius, hi = y + radius >= h ? h - 1 - y : radius;
-        double total = 0.0;
-        for (int i = lo; i <= hi; i++)
-            total += kernel[i < 0 ? -i : i];
-        float *dst = img + (size_t)y * stride;
-        for (size_t j = 0; j < stride; j++) {
-            double acc = 0.0;
-            for (int i = lo; i <= hi; i++)
-                acc += kernel[i < 0 ? -i : i] * tmp[(size_t)(y + i) * stride + j];
-            dst[j] = (float)(acc / total);
-        }
-    }
-}
-
 /* Where the centres of a row of n pixels land on the grid of an image 2^k times coarser (coarse_n
  * pixels): for each, the coarse pixel below it and the weight of the one above, clamped at the
  * edges. */
@@ -82,81 +50,143 @@ static void coarse_positions(int n, int k, int coarse_n, int *lo, float *frac)
     }
 }
 
-/* A grid's positions along x and y (coarse_positions). */
-struct coarse_grid {
-    int cw, ch;
+/* The total weight each coarse pixel of a row receives (coarse_positions' weights summed). */
+static void coarse_weights(int n, const int *lo, const float *frac, int coarse_n, float *weight)
+{
+    memset(weight, 0, (size_t)coarse_n * sizeof *weight);
+    for (int i = 0; i < n; i++) {
+        weight[lo[i]] += 1.0f - frac[i];
+        weight[lo[i] + (frac[i] > 0.0f)] += frac[i];
+    }
+}
+
+/* One Gaussian of the bloom on its image of the pyramid, each step split into rows over the cores
+ * (io/parallel.h): the full image (w x h), the coarse one (cw x ch, j levels down) and the
+ * scratch the steps share. */
+struct bloom_level {
+    const float *in;
+    float *out, *level, *tmp, *acc;
+    int w, h, cw, ch, j;
     int *x_lo, *y_lo;
-    float *x_frac, *y_frac;
+    float *x_frac, *y_frac, *x_weight, *y_weight;
+    const double *kernel;
+    int radius;
+    float spread;
 };
 
-/* Image k of the pyramid from the full image (w x h): each full pixel's light shared between the
- * two nearest pixels of image k along x, then along y, by the weights with which add_upsampled
- * interpolates them back (its transpose), and each pixel of image k the mean of what it received.
- * So a point of light keeps its centre and its light through the pyramid (the weights are linear
- * in position), and an evenly lit image stays even. g->cw x g->ch pixels into out; acc holds
- * g->cw x h of them, weight max(cw, ch) numbers. */
-static void downsampled(const float *in, int w, int h, const struct coarse_grid *g, float *out, float *acc,
-                        float *weight)
+/* Image j of the pyramid from the full image: each full pixel's light shared between the two
+ * nearest pixels of image j along x (rows of acc), then along y (rows of level), by the weights
+ * with which the interpolation back (upsampled_rows) reads them (its transpose), and each pixel of
+ * image j the mean of what it received. So a point of light keeps its centre and its light
+ * through the pyramid (the weights are linear in position), and an evenly lit image stays even. */
+static void shared_x_rows(void *arg, int part, int parts)
 {
-    int cw = g->cw, ch = g->ch;
-    size_t row = (size_t)cw * CHANNELS;
-    memset(acc, 0, row * h * sizeof *acc);
-    memset(weight, 0, (size_t)(cw > ch ? cw : ch) * sizeof *weight);
-    for (int x = 0; x < w; x++) {
-        weight[g->x_lo[x]] += 1.0f - g->x_frac[x];
-        weight[g->x_lo[x] + (g->x_frac[x] > 0.0f)] += g->x_frac[x];
-    }
-    for (int y = 0; y < h; y++) {
-        const float *v = in + (size_t)y * w * CHANNELS;
-        float *a = acc + (size_t)y * row;
-        for (int x = 0; x < w; x++, v += CHANNELS) {
-            float f = g->x_frac[x];
-            float *lo = a + (size_t)g->x_lo[x] * CHANNELS, *hi = lo + (f > 0.0f ? CHANNELS : 0);
+    const struct bloom_level *b = arg;
+    size_t row = (size_t)b->cw * CHANNELS;
+    for (int y = part; y < b->h; y += parts) {
+        const float *v = b->in + (size_t)y * b->w * CHANNELS;
+        float *a = b->acc + (size_t)y * row;
+        memset(a, 0, row * sizeof *a);
+        for (int x = 0; x < b->w; x++, v += CHANNELS) {
+            float f = b->x_frac[x];
+            float *lo = a + (size_t)b->x_lo[x] * CHANNELS, *hi = lo + (f > 0.0f ? CHANNELS : 0);
             for (int c = 0; c < CHANNELS; c++) {
                 lo[c] += (1.0f - f) * v[c];
                 hi[c] += f * v[c];
             }
         }
-        for (int x = 0; x < cw; x++)
+        for (int x = 0; x < b->cw; x++)
             for (int c = 0; c < CHANNELS; c++)
-                a[x * CHANNELS + c] /= weight[x];
+                a[x * CHANNELS + c] /= b->x_weight[x];
     }
-    memset(out, 0, row * ch * sizeof *out);
-    memset(weight, 0, (size_t)(cw > ch ? cw : ch) * sizeof *weight);
-    for (int y = 0; y < h; y++) {
-        float f = g->y_frac[y];
-        weight[g->y_lo[y]] += 1.0f - f;
-        weight[g->y_lo[y] + (f > 0.0f)] += f;
-        const float *src = acc + (size_t)y * row;
-        float *lo = out + (size_t)g->y_lo[y] * row, *hi = lo + (f > 0.0f ? row : 0);
-        for (size_t i = 0; i < row; i++) {
-            lo[i] += (1.0f - f) * src[i];
-            hi[i] += f * src[i];
-        }
-    }
-    for (int y = 0; y < ch; y++)
-        for (size_t i = 0; i < row; i++)
-            out[(size_t)y * row + i] /= weight[y];
 }
 
-/* out (w x h) += weight x the image of grid g interpolated bilinearly to w x h; line holds a
- * coarse row. */
-static void add_upsampled(const float *coarse, const struct coarse_grid *g, float weight, float *out, int w, int h,
-                          float *line)
+/* Coarse row cy gathers the rows of acc whose share reaches it (the rows mapped to cy, and those
+ * mapped to cy - 1 with a weight above 0: a run of rows, the mapping being monotonic). */
+static void shared_y_rows(void *arg, int part, int parts)
 {
-    size_t row = (size_t)g->cw * CHANNELS;
-    for (int y = 0; y < h; y++) {
-        const float *r0 = coarse + (size_t)g->y_lo[y] * row, *r1 = g->y_lo[y] + 1 < g->ch ? r0 + row : r0;
-        float fy = g->y_frac[y];
+    const struct bloom_level *b = arg;
+    size_t row = (size_t)b->cw * CHANNELS;
+    int scale = 1 << b->j;
+    for (int cy = part; cy < b->ch; cy += parts) {
+        float *dst = b->level + (size_t)cy * row;
+        memset(dst, 0, row * sizeof *dst);
+        int first = (cy - 1) * scale - scale, last = (cy + 2) * scale + scale;
+        first = first < 0 ? 0 : first;
+        last = last > b->h ? b->h : last;
+        for (int y = first; y < last; y++) {
+            float f = b->y_frac[y];
+            float share = b->y_lo[y] == cy ? 1.0f - f : b->y_lo[y] == cy - 1 && f > 0.0f ? f : 0.0f;
+            if (share == 0.0f)
+                continue;
+            const float *src = b->acc + (size_t)y * row;
+            for (size_t i = 0; i < row; i++)
+                dst[i] += share * src[i];
+        }
         for (size_t i = 0; i < row; i++)
-            line[i] = weight * (r0[i] + fy * (r1[i] - r0[i]));
-        float *o = out + (size_t)y * w * CHANNELS;
-        for (int x = 0; x < w; x++, o += CHANNELS) {
-            const float *a = line + (size_t)g->x_lo[x] * CHANNELS;
-            const float *b = g->x_lo[x] + 1 < g->cw ? a + CHANNELS : a;
-            float fx = g->x_frac[x];
+            dst[i] /= b->y_weight[cy];
+    }
+}
+
+/* The Gaussian along x, level into tmp; near an edge the taps inside the image are weighted to
+ * sum to 1, so an evenly lit image stays even. */
+static void blur_x_rows(void *arg, int part, int parts)
+{
+    const struct bloom_level *b = arg;
+    for (int y = part; y < b->ch; y += parts)
+        for (int x = 0; x < b->cw; x++) {
+            double acc[CHANNELS] = {0.0, 0.0, 0.0}, total = 0.0;
+            for (int i = x - b->radius < 0 ? -x : -b->radius; i <= b->radius && x + i < b->cw; i++) {
+                double k = b->kernel[i < 0 ? -i : i];
+                const float *v = b->level + ((size_t)y * b->cw + x + i) * CHANNELS;
+                total += k;
+                for (int c = 0; c < CHANNELS; c++)
+                    acc[c] += k * v[c];
+            }
             for (int c = 0; c < CHANNELS; c++)
-                o[c] += a[c] + fx * (b[c] - a[c]);
+                b->tmp[((size_t)y * b->cw + x) * CHANNELS + c] = (float)(acc[c] / total);
+        }
+}
+
+/* The same along y, tmp back into level. */
+static void blur_y_rows(void *arg, int part, int parts)
+{
+    const struct bloom_level *b = arg;
+    size_t stride = (size_t)b->cw * CHANNELS;
+    for (int y = part; y < b->ch; y += parts) {
+        int lo = y - b->radius < 0 ? -y : -b->radius, hi = y + b->radius >= b->ch ? b->ch - 1 - y : b->radius;
+        double total = 0.0;
+        for (int i = lo; i <= hi; i++)
+            total += b->kernel[i < 0 ? -i : i];
+        float *dst = b->level + (size_t)y * stride;
+        for (size_t j = 0; j < stride; j++) {
+            double acc = 0.0;
+            for (int i = lo; i <= hi; i++)
+                acc += b->kernel[i < 0 ? -i : i] * b->tmp[(size_t)(y + i) * stride + j];
+            dst[j] = (float)(acc / total);
+        }
+    }
+}
+
+/* out += spread x level interpolated bilinearly to the full image; each part a coarse row of tmp
+ * to hold the row between two of level. */
+static void upsampled_rows(void *arg, int part, int parts)
+{
+    const struct bloom_level *b = arg;
+    size_t row = (size_t)b->cw * CHANNELS;
+    float *line = b->tmp + (size_t)part * row;
+    for (int y = part; y < b->h; y += parts) {
+        const float *r0 = b->level + (size_t)b->y_lo[y] * row, *r1 = b->y_lo[y] + 1 < b->ch ? r0 + row : r0;
+        float fy = b->y_frac[y];
+        for (size_t i = 0; i < row; i++)
+            line[i] = b->spread * (r0[i] + fy * (r1[i] - r0[i]));
+        float *o = b->out + (size_t)y * b->w * CHANNELS;
+        for (int x = 0; x < b->w; x++, o += CHANNELS) {
+            const float *a = line + (size_t)b->x_lo[x] * CHANNELS;
+            const float *c = b->x_lo[x] + 1 < b->cw ? a + CHANNELS : a;
+            float fx = b->x_frac[x];
+            for (int ch = 0; ch < CHANNELS; ch++)
+                o[ch] += a[ch] + fx * (c[ch] - a[ch]);
         }
     }
 }
@@ -180,13 +210,13 @@ int bloom_linear(const struct render_settings *r, int w, int h, const float *in,
         free(ints);
         return -1;
     }
-    float *weight = floats + w + h;
-    struct coarse_grid g = {0, 0, ints, ints + w, floats, floats + w};
-    double sigma[BLOOM_LEVELS], keep = 1.0 - r->bloom;
-    float spread = (float)(r->bloom / BLOOM_LEVELS);
+    struct bloom_level b = {in, out, level, tmp, acc, w, h, 0, 0, 0, ints, ints + w, floats, floats + w,
+                            floats + w + h, floats + 2 * w + h, NULL, 0, (float)(r->bloom / BLOOM_LEVELS)};
+    double sigma[BLOOM_LEVELS], keep = 1.0 - r->bloom, kernel[KERNEL_MAX + 1];
     bloom_sigmas(r, h, sigma);
     for (size_t i = 0; i < n; i++)
         out[i] = (float)(keep * in[i]);
+    int parts = parallel_parts(h, 64);
     for (int k = 0; k < BLOOM_LEVELS; k++) {
         /* Gaussian k is drawn on image j of the pyramid, 2^j times coarser than the full image: the
          * coarsest where it is still COARSE_SIGMA_MIN of that image's pixels wide. The sharing into
@@ -197,19 +227,28 @@ int bloom_linear(const struct render_settings *r, int w, int h, const float *in,
             if (sigma[k] * sigma[k] / ldexp(1.0, 2 * next) - 1.0 / 3.0 >= COARSE_SIGMA_MIN * COARSE_SIGMA_MIN)
                 j = next;
         double scale = ldexp(1.0, j);
-        g.cw = (int)ceil(w / scale);
-        g.ch = (int)ceil(h / scale);
-        coarse_positions(w, j, g.cw, g.x_lo, g.x_frac);
-        coarse_positions(h, j, g.ch, g.y_lo, g.y_frac);
-        if (j == 0)
+        b.j = j;
+        b.cw = (int)ceil(w / scale);
+        b.ch = (int)ceil(h / scale);
+        coarse_positions(w, j, b.cw, b.x_lo, b.x_frac);
+        coarse_positions(h, j, b.ch, b.y_lo, b.y_frac);
+        if (j == 0) {
             memcpy(level, in, n * sizeof *level);
-        else
-            downsampled(in, w, h, &g, level, acc, weight);
-        double s2 = sigma[k] * sigma[k] / (scale * scale) - (j > 0 ? 1.0 / 3.0 : 0.0), kernel[KERNEL_MAX + 1];
+        } else {
+            coarse_weights(w, b.x_lo, b.x_frac, b.cw, b.x_weight);
+            coarse_weights(h, b.y_lo, b.y_frac, b.ch, b.y_weight);
+            parallel_run(parts, shared_x_rows, &b);
+            parallel_run(parallel_parts(b.ch, 64), shared_y_rows, &b);
+        }
+        double s2 = sigma[k] * sigma[k] / (scale * scale) - (j > 0 ? 1.0 / 3.0 : 0.0);
         /* a sigma under a tenth of a pixel moves no light beyond the pixel */
-        if (s2 > 0.01)
-            gaussian(level, tmp, g.cw, g.ch, kernel, gaussian_kernel(sqrt(s2), kernel));
-        add_upsampled(level, &g, spread, out, w, h, tmp);
+        if (s2 > 0.01) {
+            b.kernel = kernel;
+            b.radius = gaussian_kernel(sqrt(s2), kernel);
+            parallel_run(parallel_parts(b.ch, 64), blur_x_rows, &b);
+            parallel_run(parallel_parts(b.ch, 64), blur_y_rows, &b);
+        }
+        parallel_run(parts, upsampled_rows, &b);
     }
     free(level);
     free(tmp);
@@ -267,6 +306,43 @@ static unsigned char code_of(const struct srgb_codes *s, double lin)
     return (unsigned char)k;
 }
 
+/* The 8-bit image from the bloomed light, and the light from the frame's colour, rows over the
+ * cores. */
+struct image_job {
+    const struct render_settings *r;
+    const struct srgb_codes *codes;
+    int w, h;
+    const float *color;
+    float *lin, *bloomed;
+    unsigned char *rgba;
+};
+
+static void decoded_rows(void *arg, int part, int parts)
+{
+    const struct image_job *q = arg;
+    for (int y = part; y < q->h; y += parts)
+        for (size_t i = (size_t)y * q->w; i < (size_t)(y + 1) * q->w; i++)
+            for (int c = 0; c < CHANNELS; c++)
+                q->lin[CHANNELS * i + c] = decoded(q->codes, q->color[4 * i + c]);
+}
+
+static void coded_rows(void *arg, int part, int parts)
+{
+    const struct image_job *q = arg;
+    int tone = tone_active(q->r);
+    for (int y = part; y < q->h; y += parts)
+        for (size_t i = (size_t)y * q->w; i < (size_t)(y + 1) * q->w; i++) {
+            double rgb[CHANNELS];
+            for (int c = 0; c < CHANNELS; c++)
+                rgb[c] = q->bloomed[CHANNELS * i + c];
+            if (tone)
+                tone_map_linear(q->r, rgb);
+            for (int c = 0; c < CHANNELS; c++)
+                q->rgba[4 * i + c] = code_of(q->codes, rgb[c]);
+            q->rgba[4 * i + 3] = unorm8(q->color[4 * i + 3]);
+        }
+}
+
 int bloom_image(const struct render_settings *r, int w, int h, const float *color, unsigned char *rgba)
 {
     size_t pixels = (size_t)w * h;
@@ -279,20 +355,12 @@ int bloom_image(const struct render_settings *r, int w, int h, const float *colo
         return -1;
     }
     srgb_codes_init(codes);
-    for (size_t i = 0; i < pixels; i++)
-        for (int c = 0; c < CHANNELS; c++)
-            lin[CHANNELS * i + c] = decoded(codes, color[4 * i + c]);
-    int rc = bloom_linear(r, w, h, lin, bloomed), tone = tone_active(r);
-    for (size_t i = 0; i < pixels && rc == 0; i++) {
-        double rgb[CHANNELS];
-        for (int c = 0; c < CHANNELS; c++)
-            rgb[c] = bloomed[CHANNELS * i + c];
-        if (tone)
-            tone_map_linear(r, rgb);
-        for (int c = 0; c < CHANNELS; c++)
-            rgba[4 * i + c] = code_of(codes, rgb[c]);
-        rgba[4 * i + 3] = unorm8(color[4 * i + 3]);
-    }
+    struct image_job q = {r, codes, w, h, color, lin, bloomed, rgba};
+    int parts = parallel_parts(h, 64);
+    parallel_run(parts, decoded_rows, &q);
+    int rc = bloom_linear(r, w, h, lin, bloomed);
+    if (rc == 0)
+        parallel_run(parts, coded_rows, &q);
     free(lin);
     free(bloomed);
     free(codes);

@@ -1,16 +1,14 @@
 #include "results/star_light.h"
+#include "io/parallel.h"
 #include "io/sample_average.h"
 #include "physics/blackbody.h"
 #include "physics/bright_stars.h"
 #include "scene/camera.h"
-#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #define MILKY_WAY_TEMPERATURE_K 4300.0
-#define STAR_THREADS_MAX 64
 
 void star_chromaticity(double temperature_k, double rgb[3])
 {
@@ -219,17 +217,17 @@ struct add_job {
     unsigned char *rgba;
     float *color;
     double *color_d;
-    int first_row, row_step;
 };
 
-static void *add_rows(void *arg)
+/* Rows part, part + parts, ... of the view. */
+static void add_rows(void *arg, int part, int parts)
 {
     const struct add_job *job = arg;
     const struct star_view *v = job->v;
     double decoded[256];
     for (int code = 0; code < 256; code++)
         decoded[code] = srgb_to_linear(code / 255.0);
-    for (int j = job->first_row; j < v->height; j += job->row_step)
+    for (int j = part; j < v->height; j += parts)
         for (int i = 0; i < v->width; i++) {
             double light[3];
             star_sky_light(job->k, v, i, j, light);
@@ -245,28 +243,12 @@ static void *add_rows(void *arg)
                     job->color_d[at + c] = linear_to_srgb_unclamped(srgb_to_linear(job->color_d[at + c]) + light[c]);
             }
         }
-    return NULL;
 }
 
 void star_sky_add(const struct star_sky *k, const struct star_view *v, unsigned char *rgba, float *color,
                   double *color_d)
 {
     /* each pixel apart from the others: rows interleaved over the cores */
-    long cores = sysconf(_SC_NPROCESSORS_ONLN);
-    int n = cores < 1 ? 1 : cores > STAR_THREADS_MAX ? STAR_THREADS_MAX : (int)cores;
-    n = n > v->height ? (v->height > 0 ? v->height : 1) : n;
-    struct add_job jobs[STAR_THREADS_MAX];
-    pthread_t threads[STAR_THREADS_MAX];
-    int started[STAR_THREADS_MAX] = {0};
-    for (int t = 0; t < n; t++) {
-        jobs[t] = (struct add_job){k, v, rgba, color, color_d, t, n};
-        started[t] = t > 0 && pthread_create(&threads[t], NULL, add_rows, &jobs[t]) == 0;
-    }
-    add_rows(&jobs[0]);
-    for (int t = 1; t < n; t++) {
-        if (started[t])
-            pthread_join(threads[t], NULL);
-        else
-            add_rows(&jobs[t]);   /* a thread that did not start: its rows here */
-    }
+    struct add_job job = {k, v, rgba, color, color_d};
+    parallel_run(parallel_parts(v->height, 64), add_rows, &job);
 }
