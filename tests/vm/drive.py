@@ -20,6 +20,7 @@ Exit status: 0 every check passed, 1 a check failed, 2 the guest could not be st
 """
 import json
 import os
+import re
 import socket
 import subprocess
 import sys
@@ -431,6 +432,13 @@ def kill_and_restart(log, agent, slow, before):
     if not restarted:
         crash_report(log, agent, slow)
         raise Failed("the kiosk does not come back after a kill: the checks after it cannot run")
+    return took
+
+
+def systemd_seconds(span):
+    """Seconds of a time span as systemctl show prints it ("1min 30s", "10s", "500ms"); 0 if none."""
+    units = {"h": 3600.0, "min": 60.0, "s": 1.0, "ms": 1e-3, "us": 1e-6}
+    return sum(float(n) * units[u] for n, u in re.findall(r"([0-9.]+)(h|min|ms|us|s)", span or ""))
 
 
 def same_picture(log, screen, out):
@@ -545,12 +553,15 @@ def checks(log, qmp, agent, out, slow, kvm):
               "NRestarts=%s after the checks above; the slowest turns of the loop: %s" %
               (before.get("NRestarts"), slow_turns(agent)))
 
-    kill_and_restart(log, agent, slow, before)
-    # a hung kiosk (stopped) is taken down by the watchdog and restarted
+    restart_took = kill_and_restart(log, agent, slow, before)
+    # a hung kiosk (stopped) is taken down by the watchdog and restarted: the watchdog's period,
+    # then a start as long as the restart after the kill took (twice that, as a loaded host slows
+    # the emulated guest unevenly)
     before = show(agent, ["NRestarts", "MainPID", "WatchdogUSec"])
     agent.run("kill -STOP %s" % before["MainPID"])
     took, props = wait_for(agent, lambda p: p.get("NRestarts") != before.get("NRestarts") and
-                           p.get("ActiveState") == "active", 30 * slow)
+                           p.get("ActiveState") == "active",
+                           systemd_seconds(before.get("WatchdogUSec")) + max(30 * slow, 2 * restart_took))
     log.check("watchdog restarts a hung kiosk", took is not None,
               "restarted after %s (WatchdogSec %s, RestartSec=2); %s" % (waited(took), before.get("WatchdogUSec"), props))
     before_switch, _ = stable_screen(qmp, out, "after_watchdog", slow, agent)
