@@ -55,6 +55,15 @@ void bench_progress(struct bench *b, const char *fmt, ...) __attribute__((format
 int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_timing *t, struct dump *d,
                struct error *e);
 
+/* The whole image of s (frame_run_samples: its samples, the stars and bloom drawn on the CPU), runs
+ * + 1 times on a renderer of its own (the first not timed): the medians of the GPU's seconds, the
+ * CPU's stars' and the bloom's; with rgba, the last image (the caller frees it). 0, or -1 with e. */
+struct frame_times {
+    double gpu, stars, bloom;
+};
+int bench_frame_times(struct bench *b, const struct scene *s, int runs, struct frame_times *t, unsigned char **rgba,
+                      struct error *e);
+
 /* The median of n times (sorted in place). */
 double bench_median(double *times, int n);
 

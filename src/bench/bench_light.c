@@ -4,41 +4,7 @@
  * the GPU in its own pass) and the bloom; and the bloom alone at 1920x1080. */
 #include <stdlib.h>
 #include "bench/bench.h"
-#include "render/frame.h"
-#include "render/renderer.h"
 #include "results/bloom.h"
-
-/* Median GPU seconds and CPU seconds (the stars of the CPU's pass, the bloom) of runs frames after a
- * warm-up. */
-static int time_light(struct bench *b, const struct scene *s, int runs, double *gpu, double *stars, double *bloom,
-                      struct error *e)
-{
-    struct renderer *r = renderer_create(b->ctx, s, e);
-    if (!r)
-        return -1;
-    double g[64], t[64], u[64];
-    runs = runs < 1 ? 1 : runs < 64 ? runs : 64;
-    int rc = 0;
-    for (int k = 0; k <= runs && rc == 0; k++) {
-        struct render_result res;
-        rc = frame_run_samples(r, s, &res, 0, PROGRESS_NONE, e);
-        if (rc != 0)
-            break;
-        if (k > 0) {
-            g[k - 1] = res.seconds;
-            t[k - 1] = res.sky_seconds;
-            u[k - 1] = res.bloom_seconds;
-        }
-        render_result_free(&res);
-    }
-    renderer_destroy(r);
-    if (rc != 0)
-        return -1;
-    *gpu = bench_median(g, runs);
-    *stars = bench_median(t, runs);
-    *bloom = bench_median(u, runs);
-    return 0;
-}
 
 /* The additions, each on top of the ones above it. */
 enum addition { BARE, EMISSION, CURVE, STARS_CPU, STARS_GPU, BLOOM, ADDITIONS };
@@ -95,10 +61,11 @@ static int light_on(struct bench *b, struct scene *s, struct error *e)
     for (int a = 0; a < ADDITIONS && rc == 0; a++) {
         with_additions(s, shipped, (enum addition)a);
         bench_progress(b, "light: demo at %dx%d, %s", s->render.width, s->render.height, addition_names[a]);
-        double gpu, stars, bloom;
-        rc = time_light(b, s, b->runs, &gpu, &stars, &bloom, e);
+        struct frame_times times;
+        rc = bench_frame_times(b, s, b->runs, &times, NULL, e);
         if (rc != 0)
             break;
+        double gpu = times.gpu, stars = times.stars, bloom = times.bloom;
         b->done++;
         double total = gpu + stars + bloom;
         bare = a == BARE ? total : bare;
@@ -113,8 +80,9 @@ static int light_on(struct bench *b, struct scene *s, struct error *e)
         s->render.width = 1920;
         s->render.height = 1080;
         bench_progress(b, "light: demo at 1920x1080 with bloom");
-        double gpu, stars, bloom;
-        rc = time_light(b, s, b->runs, &gpu, &stars, &bloom, e);
+        struct frame_times times;
+        rc = bench_frame_times(b, s, b->runs, &times, NULL, e);
+        double gpu = times.gpu, stars = times.stars, bloom = times.bloom;
         if (rc == 0) {
             b->done++;
             fprintf(b->md, "\nAt 1920x1080 with everything: GPU frame %.3f s, stars %.3f s, bloom %.3f s.\n", gpu, stars,

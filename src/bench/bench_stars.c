@@ -4,8 +4,6 @@
  * ten times as many. */
 #include <stdlib.h>
 #include "bench/bench.h"
-#include "render/frame.h"
-#include "render/renderer.h"
 
 static const struct {
     int stars;
@@ -18,33 +16,6 @@ static const struct {
     {300000, 1, "300000 stars and the Milky Way"},
 };
 #define STAR_CONFIGS (int)(sizeof star_configs / sizeof star_configs[0])
-
-/* Median GPU and star seconds of runs frames after a warm-up. */
-static int time_stars(struct bench *b, const struct scene *s, int runs, double *gpu, double *stars, struct error *e)
-{
-    struct renderer *r = renderer_create(b->ctx, s, e);
-    if (!r)
-        return -1;
-    double g[64], t[64];
-    runs = runs < 1 ? 1 : runs < 64 ? runs : 64;
-    int rc = 0;
-    for (int k = 0; k <= runs && rc == 0; k++) {
-        struct render_result res;
-        rc = frame_run_samples(r, s, &res, 0, PROGRESS_NONE, e);
-        if (rc == 0 && k > 0) {
-            g[k - 1] = res.seconds;
-            t[k - 1] = res.sky_seconds;
-        }
-        if (rc == 0)
-            render_result_free(&res);
-    }
-    renderer_destroy(r);
-    if (rc != 0)
-        return -1;
-    *gpu = bench_median(g, runs);
-    *stars = bench_median(t, runs);
-    return 0;
-}
 
 /* One table of the stars section at the scene's size: each sky with its stars drawn by the CPU's
  * pass after the rays and by the GPU's in the frame's own pass (render.star_pass = gpu). */
@@ -59,15 +30,16 @@ static int stars_table(struct bench *b, struct scene *s, FILE *csv, double milky
         s->sky.stars = star_configs[k].stars;
         s->sky.milky_way = star_configs[k].milky_way ? milky_way : 0.0;
         bench_progress(b, "stars: %s at %dx%d", star_configs[k].what, s->render.width, s->render.height);
-        double gpu, stars, on_gpu, unused;
+        struct frame_times cpu_pass, gpu_pass;
         s->render.star_pass = STAR_PASS_CPU;
-        rc = time_stars(b, s, b->runs, &gpu, &stars, e);
+        rc = bench_frame_times(b, s, b->runs, &cpu_pass, NULL, e);
         s->render.star_pass = STAR_PASS_GPU;
         if (rc == 0)
-            rc = time_stars(b, s, b->runs, &on_gpu, &unused, e);
+            rc = bench_frame_times(b, s, b->runs, &gpu_pass, NULL, e);
         s->render.star_pass = STAR_PASS_CPU;
         if (rc != 0)
             break;
+        double gpu = cpu_pass.gpu, stars = cpu_pass.stars, on_gpu = gpu_pass.gpu;
         b->done++;
         double total = gpu + stars;
         none = k == 0 ? total : none;

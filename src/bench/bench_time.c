@@ -25,6 +25,48 @@ static int by_value(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+int bench_frame_times(struct bench *b, const struct scene *s, int runs, struct frame_times *t, unsigned char **rgba,
+                      struct error *e)
+{
+    struct renderer *r = renderer_create(b->ctx, s, e);
+    if (!r)
+        return -1;
+    double gpu[64], stars[64], bloom[64];
+    runs = runs < 1 ? 1 : runs < 64 ? runs : 64;
+    int rc = 0;
+    if (rgba)
+        *rgba = NULL;
+    for (int k = 0; k <= runs && rc == 0; k++) {
+        struct render_result res;
+        rc = frame_run_samples(r, s, &res, 0, PROGRESS_NONE, e);
+        if (rc != 0)
+            break;
+        if (k > 0) {
+            gpu[k - 1] = res.seconds;
+            stars[k - 1] = res.sky_seconds;
+            bloom[k - 1] = res.bloom_seconds;
+        }
+        if (rgba) {
+            free(*rgba);
+            *rgba = res.rgba;
+            res.rgba = NULL;
+        }
+        render_result_free(&res);
+    }
+    renderer_destroy(r);
+    if (rc != 0) {
+        if (rgba) {
+            free(*rgba);
+            *rgba = NULL;
+        }
+        return -1;
+    }
+    t->gpu = bench_median(gpu, runs);
+    t->stars = bench_median(stars, runs);
+    t->bloom = bench_median(bloom, runs);
+    return 0;
+}
+
 int bench_time(struct bench *b, const struct scene *s, int runs, struct bench_timing *t, struct dump *d,
                struct error *e)
 {
