@@ -76,8 +76,7 @@ const float STAR_T_MIN_K = 500.0;            // physics/blackbody.h, BLACKBODY_T
 const float STAR_T_RANGE = 4.78749174;       // ln(60000 / 500)
 const float MILKY_WAY_TEMPERATURE_K = 4300.0;
 // a level's cells count as this fraction of their width about the pixel's direction, so that the 3x3
-// about it hold every star within the reach, also where the octahedral map skews its cells (and the
-// 2x2 nearest it, where the reach is within half of that)
+// about it hold every star within the reach, also where the octahedral map skews its cells
 const float STAR_CELL_MARGIN = 0.8;
 
 vec3 star_sign(vec2 p)
@@ -175,11 +174,7 @@ vec3 sky_stars(vec3 d, vec3 jx, vec3 jy, vec3 fx, vec3 fy, float doppler, bool s
         return light;
     float n = floor(u_star_map_cells / exp2(level) + 0.5);
     vec2 origin = level < 0.5 ? vec2(0.0) : vec2(2.0 * STAR_MAP_SLOTS * (u_star_map_cells - 2.0 * n), u_star_map_cells);
-    // where the reach is within half a cell (at level 0 mostly, the kiosk's refined frames), the
-    // 2x2 of cells whose corner is nearest d hold every point within it: four cells, not nine
-    bool near = reach <= 0.5 * width * exp2(level) * STAR_CELL_MARGIN;
-    vec2 at = octahedral_encode(d) * n;
-    vec2 base = near ? clamp(floor(at - 0.5), -1.0, n - 1.0) : clamp(floor(at), 0.0, n - 1.0) - 1.0;
+    vec2 base = clamp(floor(octahedral_encode(d) * n), 0.0, n - 1.0) - 1.0;
     vec3 inverse = vec3(yy, -xy, xx) / det;
     float reach_cos = cos(reach);
     // a star's light at the pixel in one exp2: log2 of its flux (from its magnitude, 16 bits over the
@@ -189,14 +184,11 @@ vec3 sky_stars(vec3 d, vec3 jx, vec3 jy, vec3 fx, vec3 fy, float doppler, bool s
     float log2_per_code = -1.32877124 * u_star_magnitudes.y / 65535.0;
     float log2_per_px2 = -0.72134752 / (sigma * sigma);
     float doppler_codes = log(doppler) / STAR_T_RANGE * 255.0;
-    // one loop over the cells, which ends for a group of pixels once none needs another cell
-    int side = near ? 2 : 3;
+    // one loop over the nine cells
     for (int k = 0; k < 9; k++) {
-        if (k >= side * side)
-            break;
         {
-            int j = k / side;
-            vec2 cell = base + vec2(float(k - j * side), float(j));
+            int j = k / 3;
+            vec2 cell = base + vec2(float(k - j * 3), float(j));
             // across the square's border, the map folds back onto itself mirrored
             cell = cell.x < 0.0 ? vec2(0.0, n - 1.0 - cell.y) : cell.x > n - 1.0 ? vec2(n - 1.0, n - 1.0 - cell.y) : cell;
             cell = cell.y < 0.0 ? vec2(n - 1.0 - cell.x, 0.0) : cell.y > n - 1.0 ? vec2(n - 1.0 - cell.x, n - 1.0) : cell;

@@ -41,6 +41,18 @@ static int band_arrays_alloc(struct render_result *full, const struct render_res
     return 0;
 }
 
+/* The rows of the band from image row `top` (rows wanted, at least 1): its lower edge on an even
+ * row of the frame as GL counts them from the bottom (h - top - rows), so that no 2x2 group of
+ * pixels straddles two bands; the GPU's stars take their footprints from derivatives across such
+ * groups, and a band's pixels are then the whole frame's whatever the bands. */
+static int band_rows(int top, int rows, int h)
+{
+    rows = rows < 1 ? 1 : rows > h - top ? h - top : rows;
+    if (top + rows < h && (h - top - rows) % 2 != 0)
+        rows += rows > 1 ? -1 : 1;
+    return rows;
+}
+
 /* Image rows [top, top + rows), top row first, in one run, copied into the whole frame. */
 static int run_rows(struct renderer *r, const struct scene *s, int top, int rows, struct render_result *full,
                     enum render_read reads, struct error *e)
@@ -97,7 +109,7 @@ int frame_run_image(struct renderer *r, const struct scene *s, double dx, double
         /* a first band of a thirty-second of the image tells how long a row takes */
         int rows = h / 32 > 0 ? h / 32 : 1;
         for (int top = 0; top < h && rc == 0;) {
-            rows = rows < h - top ? rows : h - top;
+            rows = band_rows(top, rows, h);
             double t0 = clock_seconds();
             rc = run_rows(r, s, top, rows, out, reads, e);
             double per_row = (clock_seconds() - t0) / rows;
@@ -113,14 +125,15 @@ int frame_run_image(struct renderer *r, const struct scene *s, double dx, double
     return rc;
 }
 
-int frame_run_bands(struct renderer *r, const struct scene *s, int band_rows, struct render_result *out,
+int frame_run_bands(struct renderer *r, const struct scene *s, int rows_wanted, struct render_result *out,
                     enum render_read reads, struct error *e)
 {
     int h = s->render.height, rc = frame_alloc(out, s->render.width, h, renderer_hdr(r), e);
     renderer_set_reads(r, reads);
-    band_rows = band_rows < 1 ? 1 : band_rows;
-    for (int top = 0; top < h && rc == 0; top += band_rows)
-        rc = run_rows(r, s, top, band_rows < h - top ? band_rows : h - top, out, reads, e);
+    for (int top = 0, rows; top < h && rc == 0; top += rows) {
+        rows = band_rows(top, rows_wanted, h);
+        rc = run_rows(r, s, top, rows, out, reads, e);
+    }
     if (rc != 0)
         render_result_free(out);
     return rc;

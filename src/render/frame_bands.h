@@ -32,8 +32,11 @@ struct frame_progress {
  * to FRAME_BAND_SECONDS, reporting each. 0, or -1 with e. */
 int frame_run_image(struct renderer *r, const struct scene *s, double dx, double dy, struct render_result *out,
                     enum render_read reads, struct frame_progress *p, struct error *e);
-/* The same in bands of band_rows rows, top first (the last may be shorter), no progress. */
-int frame_run_bands(struct renderer *r, const struct scene *s, int band_rows, struct render_result *out,
+/* The same in bands of about rows_wanted rows, top first, no progress. Either way each band's
+ * lower edge lies on an even row (counted from the bottom, as GL does), one more or less than
+ * asked where it must, so that the 2x2 groups of pixels the GPU takes derivatives over (its star
+ * pass) lie within one band and a banded frame is the whole frame's bit for bit. */
+int frame_run_bands(struct renderer *r, const struct scene *s, int rows_wanted, struct render_result *out,
                     enum render_read reads, struct error *e);
 
 #endif

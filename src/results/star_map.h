@@ -10,9 +10,8 @@
  * - Coarser levels: cells of 2x2, 4x4 ... of the first, each again the brightest stars of its
  *   block, down to 4 cells a side. A pixel looks up the level whose cells are as wide as the
  *   light of the brightest star reaches from it (its footprint, from the derivatives of its exit
- *   direction), and there the 3x3 cells about its direction, or where that light reaches less
- *   than half a cell the 2x2 whose corner is nearest it (most pixels of a large frame): nine or
- *   four lookups a pixel, whatever the number of stars.
+ *   direction), and there the 3x3 cells about its direction: nine lookups a pixel, whatever the
+ *   number of stars.
  * - One RGBA8 texture, two texels a star side by side, STAR_MAP_SLOTS stars a cell, brightest
  *   first: the star's place in its cell (16 bits in u,
  *   16 in v), then its magnitude (16 bits over [brightest, faintest]), its temperature (8 bits

@@ -330,6 +330,10 @@ check "galactic center along pole" 2 "galactic_center lies along galactic_pole" 
 check "info --shader GPU stars compiles" 0 "^compiled$" -- sh -c "$BT info --shader orbit_frame --scene assets/scenes/star_sky.scene \
     --set render.star_pass=gpu --no-mrt > '$TMP/stars.frag' && sed -n 2p '$TMP/stars.frag' | grep -q '^#extension GL_OES_standard_derivatives : enable$' \
     && grep -q 'define GPU_STARS 1' '$TMP/stars.frag' && glslangValidator -S frag '$TMP/stars.frag' > '$TMP/glslang.log' && echo compiled || cat '$TMP/glslang.log'"
+# a render shown in bands (--progress) is the render in one run, the GPU's stars too (their
+# footprints come from 2x2 groups of pixels, which no band edge splits), at an odd size as well
+check "GPU stars the same in bands" 0 "^same$" -- sh -c "$BT render --scene assets/scenes/star_sky.scene --set render.star_pass=gpu --size 65x37 --quiet --out '$TMP/sb1.png' > /dev/null && \
+    $BT render --scene assets/scenes/star_sky.scene --set render.star_pass=gpu --size 65x37 --progress --out '$TMP/sb2.png' > /dev/null 2>&1 && cmp -s '$TMP/sb1.png' '$TMP/sb2.png' && echo same"
 check "GPU stars refused without derivatives" 1 "render.star_pass = gpu: this GPU takes no derivatives in its fragment shaders" -- env BT_FAULT=no_derivatives $BT render --scene assets/scenes/star_sky.scene --set render.star_pass=gpu --size 32x24 --out "$TMP/nd.png"
 # the image's gain and tone curve (results/tone.h) with the stars the CPU's pass adds: the frame read as
 # floats, the curve applied after the stars on the CPU, as the reference engine applies it
