@@ -125,10 +125,9 @@ static int run_samples(struct renderer *r, const struct scene *s, const struct s
 
 /* Whether the frame's 8-bit image is made on the CPU from its colour read as floats: for its bloom,
  * and for a gain or tone curve that must come after the stars the CPU's pass adds (results/tone.h). */
-static int light_on_cpu(const struct scene *s)
+static int light_on_cpu(const struct renderer *r, const struct scene *s)
 {
-    return bloom_active(&s->render) ||
-           (tone_active(&s->render) && star_sky_wanted(s) && s->render.star_pass != STAR_PASS_GPU);
+    return bloom_active(&s->render) || (tone_active(&s->render) && star_sky_wanted(s) && !renderer_gpu_stars(r));
 }
 
 /* The 8-bit image of a frame read as floats, with its bloom, gain and curve (results/bloom.h); the
@@ -153,8 +152,8 @@ static int frame_bloom(const struct scene *s, struct render_result *out, int kee
 static int run_with_stars(struct renderer *r, const struct scene *s, struct render_result *out, enum render_read reads,
                           enum progress_mode progress, struct error *e)
 {
-    /* the GPU's star pass draws them in the frame's own pass (render.star_pass = gpu) */
-    if (!star_sky_wanted(s) || s->render.star_pass == STAR_PASS_GPU)
+    /* the GPU's star pass draws them in the frame's own pass (render.star_pass = gpu, or auto) */
+    if (!star_sky_wanted(s) || renderer_gpu_stars(r))
         return run_samples(r, s, NULL, out, reads, progress, e);
     struct star_sky *stars = malloc(sizeof *stars);
     if (!stars)
@@ -168,7 +167,12 @@ static int run_with_stars(struct renderer *r, const struct scene *s, struct rend
 int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, enum render_read reads,
                       enum progress_mode progress, struct error *e)
 {
-    int on_cpu = light_on_cpu(s), asked = renderer_hdr(r);
+    int on_cpu = light_on_cpu(r, s), asked = renderer_hdr(r);
+    if (on_cpu && !renderer_state_readable(r))
+        return error_set(e, ERROR_RUNTIME, NULL, "render path image only: %s needs the frame's colour read back as "
+                         "floats, and no float format renders on this GPU (bentray info lists them)%s",
+                         bloom_active(&s->render) ? "render.bloom" : "the gain and tone curve after the CPU's stars",
+                         bloom_active(&s->render) ? "" : "; render.star_pass = gpu draws the stars in the frame's pass");
     renderer_set_hdr(r, asked || on_cpu);
     int rc = run_with_stars(r, s, out, reads, progress, e);
     renderer_set_hdr(r, asked);

@@ -320,7 +320,9 @@ static int image_only_refuses(const struct renderer *r, int per_segment_hook, st
                                                         : NULL;
     if (needs)
         return error_set(e, ERROR_RUNTIME, NULL, "render path image only: %s needs float render targets, and no "
-                         "float format renders on this GPU (bentray info lists them)", needs);
+                         "float format renders on this GPU (bentray info lists them)%s", needs,
+                         r->reads == RENDER_READ_SKY && !per_segment_hook && !r->hdr
+                             ? "; render.star_pass = gpu (or auto) draws them in the frame's own pass" : "");
     if (r->reads == RENDER_READ_OUTCOMES && !r->path.mrt)
         return error_set(e, r->caps.mrt_works ? ERROR_INPUT : ERROR_RUNTIME, NULL, "render path image only: each "
                          "ray's outcome (the summary) is drawn beside the image in a second target, and %s%s",
@@ -331,6 +333,7 @@ static int image_only_refuses(const struct renderer *r, int per_segment_hook, st
 }
 
 int renderer_state_readable(const struct renderer *r) { return !r->path.image_only; }
+int renderer_gpu_stars(const struct renderer *r) { return r->star_map != 0; }
 
 int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, int origin_y, int width, int height,
                  segment_hook hook, void *hook_arg, struct error *e)

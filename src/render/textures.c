@@ -28,12 +28,13 @@ static int upload(GLenum target, const struct scene *s, const char *key, int lin
     return 0;
 }
 
-/* The GPU's star pass (render.star_pass = gpu): the star map of the sky's catalogue, one texture
+/* The GPU's star pass (render.star_pass = gpu, or auto where the rays' state cannot be read back): the star map of the sky's catalogue, one texture
  * (results/star_map.h), read with NEAREST from texel centres. */
 static int star_map_load(struct renderer *r, struct error *e)
 {
     const struct scene *s = r->scene;
-    if (s->render.star_pass != STAR_PASS_GPU || !star_sky_wanted(s))
+    int gpu = s->render.star_pass == STAR_PASS_GPU || (s->render.star_pass == STAR_PASS_AUTO && r->path.image_only);
+    if (!gpu || !star_sky_wanted(s))
         return 0;
     int cells = STAR_MAP_CELLS;
     while (cells > STAR_CHROMA_TEXELS / (2 * STAR_MAP_SLOTS) && 2 * STAR_MAP_SLOTS * cells > r->caps.max_texture_size)

@@ -148,7 +148,7 @@ struct observer {
     double time;             /* scene time of the observation, length units (c = 1) */
 };
 
-enum star_pass_choice { STAR_PASS_CPU, STAR_PASS_GPU };
+enum star_pass_choice { STAR_PASS_CPU, STAR_PASS_GPU, STAR_PASS_AUTO };
 enum tone_curve_choice { TONE_CURVE_CLIP, TONE_CURVE_FILMIC };
 
 struct render_settings {
@@ -195,7 +195,8 @@ struct render_settings {
     double sky_alpha;         /* the image's alpha where rays reached the sky (1: opaque) */
     /* where the stars and the Milky Way of [sky] are drawn: after the rays on the CPU's cores
      * (results/star_light.h, the reference), or in the frame's own pass on the GPU (results/star_map.h;
-     * the kiosk always) */
+     * the kiosk always); auto (the default): the CPU's, or the GPU's where the rays' state cannot be
+     * read back (the image-only path: renderer_gpu_stars) */
     enum star_pass_choice star_pass;
     /* the light of an 8-bit image (results/tone.h): linear light times gain, then each channel
      * clipped at white, or the filmic curve on the luminance */

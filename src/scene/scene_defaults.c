@@ -42,6 +42,7 @@ static void render_defaults(struct render_settings *r)
     r->sky_alpha = 1.0;
     r->gain = 1.0;
     r->bloom_radius = 0.004;
+    r->star_pass = STAR_PASS_AUTO;
 }
 
 void scene_default_method(struct scene *s)

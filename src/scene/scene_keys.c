@@ -32,7 +32,7 @@ static const struct conf_choice exposure_names[] = {{"scene", 0}, {"paper", 1}, 
 static const struct conf_choice moving_names[] = {{"rays", 0}, {"polygons", 1}, {NULL, 0}};
 static const struct conf_choice pipeline_names[] = {{"auto", 0}, {"multipass", 1}, {"single", 2}, {"fused", 3}, {NULL, 0}};
 static const struct conf_choice tone_curve_names[] = {{"clip", 0}, {"filmic", 1}, {NULL, 0}};
-static const struct conf_choice star_pass_names[] = {{"cpu", 0}, {"gpu", 1}, {NULL, 0}};
+static const struct conf_choice star_pass_names[] = {{"cpu", 0}, {"gpu", 1}, {"auto", 2}, {NULL, 0}};
 static const struct conf_choice orbit_walk_names[] = {{"auto", 0}, {"separate", 1}, {"inline", 2}, {NULL, 0}};
 
 _Static_assert(sizeof model_names / sizeof model_names[0] == MODEL_COUNT + 1,

@@ -115,9 +115,11 @@ check "no float format renders (gles2)" 1 "no renderable float format for the ra
 # and outcome codes in 8-bit targets, the very picture and summary of the float path; what needs
 # the rest of the ray state is refused before any pass, with what needs it
 NOFLOAT="env BT_FAULT=float_render,half_float_render"
+# (demo's stars: the image-only path draws them on the GPU, render.star_pass = auto, so the float path
+# is run with the GPU's star pass too)
 for sc in schwarzschild lorenz demo; do
     check "image only draws the float path's picture ($sc)" 0 "^same$" -- sh -c "$NOFLOAT $BT render --scene assets/scenes/$sc.scene \
-        --size 48x36 --force --out $TMP/io_n.png 2>$TMP/io_n.log && $BT render --scene assets/scenes/$sc.scene --size 48x36 \
+        --size 48x36 --force --out $TMP/io_n.png 2>$TMP/io_n.log && $BT render --scene assets/scenes/$sc.scene --size 48x36 --set render.star_pass=gpu \
         --force --out $TMP/io_f.png 2>$TMP/io_f.log && grep -qE 'image only: .* [0-9]+ pass(es)? \\(single pass' $TMP/io_n.log && \
         cmp $TMP/io_n.png $TMP/io_f.png && [ \"\$(grep '^rays:' $TMP/io_n.log)\" = \"\$(grep '^rays:' $TMP/io_f.log)\" ] && echo same"
 done
@@ -135,8 +137,14 @@ check "image only refuses a dump" 1 "render path image only: reading the rays' s
     $NOFLOAT $BT render --scene $S --size 32x24 --out "$TMP/io1.png" --dump "$TMP/io1.dump"
 check "image only refuses a float image" 1 "render path image only: writing a float image" -- \
     $NOFLOAT $BT render --scene $S --size 32x24 --out "$TMP/io2.pfm"
-check "image only refuses the stars' exit directions" 1 "render path image only: drawing the stars of the sky" -- \
-    $NOFLOAT $BT render --scene assets/scenes/star_sky.scene --size 32x24 --out "$TMP/io3.png"
+check "image only refuses the stars' exit directions" 1 "render path image only: drawing the stars of the sky.*; render.star_pass = gpu \(or auto\) draws them" -- \
+    $NOFLOAT $BT render --scene assets/scenes/star_sky.scene --set render.star_pass=cpu --size 32x24 --out "$TMP/io3.png"
+# render.star_pass = auto (the default) draws them on the GPU there: the picture of the GPU's pass on the float path
+check "image only draws the stars on the GPU" 0 "^same$" -- sh -c "$NOFLOAT $BT render --scene assets/scenes/star_sky.scene \
+    --size 48x36 --quiet --out $TMP/io_s1.png > /dev/null && $BT render --scene assets/scenes/star_sky.scene --set render.star_pass=gpu \
+    --size 48x36 --quiet --out $TMP/io_s2.png > /dev/null && cmp $TMP/io_s1.png $TMP/io_s2.png && echo same"
+check "image only refuses bloom" 1 "render path image only: render.bloom needs the frame's colour read back as floats" -- \
+    $NOFLOAT $BT render --scene assets/scenes/demo.scene --set render.bloom=0.2 --size 32x24 --out "$TMP/io4.png"
 check "image only refuses trace" 1 "render path image only: reading the rays after every segment" -- \
     $NOFLOAT $BT trace --scene $S --size 32x24 --pixel 3 3
 check "image only refuses the multipass scheme" 1 "render path image only .*cannot run in the single pass \(render.pipeline = multipass\)" -- \
