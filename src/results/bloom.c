@@ -191,6 +191,15 @@ static void upsampled_rows(void *arg, int part, int parts)
     }
 }
 
+/* The parts an image of w x h pixels is split into: one a core, but none under BLOOM_PART_PIXELS
+ * (a thread costs more than a small image's rows), and at most a row each. */
+#define BLOOM_PART_PIXELS 16384
+static int parts_for(int w, int h)
+{
+    size_t chunks = (size_t)w * h / BLOOM_PART_PIXELS + 1;
+    return parallel_parts(chunks < (size_t)h ? (int)chunks : h, 64);
+}
+
 int bloom_linear(const struct render_settings *r, int w, int h, const float *in, float *out)
 {
     size_t n = (size_t)w * h * CHANNELS;
@@ -216,7 +225,7 @@ int bloom_linear(const struct render_settings *r, int w, int h, const float *in,
     bloom_sigmas(r, h, sigma);
     for (size_t i = 0; i < n; i++)
         out[i] = (float)(keep * in[i]);
-    int parts = parallel_parts(h, 64);
+    int parts = parts_for(w, h);
     for (int k = 0; k < BLOOM_LEVELS; k++) {
         /* Gaussian k is drawn on image j of the pyramid, 2^j times coarser than the full image: the
          * coarsest where it is still COARSE_SIGMA_MIN of that image's pixels wide. The sharing into
@@ -238,15 +247,15 @@ int bloom_linear(const struct render_settings *r, int w, int h, const float *in,
             coarse_weights(w, b.x_lo, b.x_frac, b.cw, b.x_weight);
             coarse_weights(h, b.y_lo, b.y_frac, b.ch, b.y_weight);
             parallel_run(parts, shared_x_rows, &b);
-            parallel_run(parallel_parts(b.ch, 64), shared_y_rows, &b);
+            parallel_run(parts_for(b.cw, b.ch), shared_y_rows, &b);
         }
         double s2 = sigma[k] * sigma[k] / (scale * scale) - (j > 0 ? 1.0 / 3.0 : 0.0);
         /* a sigma under a tenth of a pixel moves no light beyond the pixel */
         if (s2 > 0.01) {
             b.kernel = kernel;
             b.radius = gaussian_kernel(sqrt(s2), kernel);
-            parallel_run(parallel_parts(b.ch, 64), blur_x_rows, &b);
-            parallel_run(parallel_parts(b.ch, 64), blur_y_rows, &b);
+            parallel_run(parts_for(b.cw, b.ch), blur_x_rows, &b);
+            parallel_run(parts_for(b.cw, b.ch), blur_y_rows, &b);
         }
         parallel_run(parts, upsampled_rows, &b);
     }
@@ -356,7 +365,7 @@ int bloom_image(const struct render_settings *r, int w, int h, const float *colo
     }
     srgb_codes_init(codes);
     struct image_job q = {r, codes, w, h, color, lin, bloomed, rgba};
-    int parts = parallel_parts(h, 64);
+    int parts = parts_for(w, h);
     parallel_run(parts, decoded_rows, &q);
     int rc = bloom_linear(r, w, h, lin, bloomed);
     if (rc == 0)
