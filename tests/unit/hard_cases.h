@@ -114,6 +114,16 @@ static inline void hc_gpu_render(const struct scene *s, struct hc_gpu *g)
     hc_gpu_render_hook(s, g, NULL, NULL);
 }
 
+/* The frame as `bentray render` draws it (render_frame: its samples, the CPU's stars, the bloom),
+ * read with `reads`, on the default back-end. */
+static inline void hc_frame(const struct scene *s, enum render_read reads, struct render_result *res)
+{
+    struct frame_info info;
+    struct error e;
+    if (render_frame(s, &(struct frame_request){"auto", reads, PROGRESS_NONE, 0}, res, &info, &e) != 0)
+        fail_msg("render: %s", e.message);
+}
+
 static inline void hc_gpu_free(struct hc_gpu *g)
 {
     render_result_free(&g->res);

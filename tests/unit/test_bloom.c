@@ -8,7 +8,6 @@
 #include <cmocka.h>
 #include "hard_cases.h"
 #include "io/sample_average.h"
-#include "render/frame.h"
 #include "results/bloom.h"
 #include "results/tone.h"
 
@@ -185,10 +184,7 @@ static void test_both_engines(void **state)
     hc_cpu_render(&s, &cpu);
     assert_null(cpu.color);   /* kept only for a float image */
     struct render_result res;
-    struct frame_info info;
-    struct error e;
-    if (render_frame(&s, &(struct frame_request){"auto", RENDER_READ_STATE, PROGRESS_NONE, 0}, &res, &info, &e) != 0)
-        fail_msg("render: %s", e.message);
+    hc_frame(&s, RENDER_READ_STATE, &res);
     assert_null(res.color);
     assert_true(res.bloom_seconds > 0.0);
     struct dump gpu;

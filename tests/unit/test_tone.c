@@ -9,7 +9,6 @@
 #include "hard_cases.h"
 #include "io/sample_average.h"
 #include "physics/blackbody.h"
-#include "render/frame.h"
 #include "results/tone.h"
 
 /* hue angle of a linear colour, degrees (HSV's) */
@@ -160,10 +159,7 @@ static void test_curve_after_cpu_stars(void **state)
     struct cpu_image cpu;
     hc_cpu_render(&s, &cpu);
     struct render_result res, plain;
-    struct frame_info info;
-    struct error e;
-    if (render_frame(&s, &(struct frame_request){"auto", RENDER_READ_STATE, PROGRESS_NONE, 0}, &res, &info, &e) != 0)
-        fail_msg("render: %s", e.message);
+    hc_frame(&s, RENDER_READ_STATE, &res);
     assert_null(res.color);
     struct dump gpu;
     assert_int_equal(result_to_dump(&res, &s, "gpu", &gpu), 0);
@@ -174,8 +170,7 @@ static void test_curve_after_cpu_stars(void **state)
     assert_true(cr.psnr_db >= 40.0);
     s.render.tone_curve = TONE_CURVE_CLIP;
     s.render.gain = 1.0;
-    if (render_frame(&s, &(struct frame_request){"auto", RENDER_READ_IMAGE, PROGRESS_NONE, 0}, &plain, &info, &e) != 0)
-        fail_msg("render: %s", e.message);
+    hc_frame(&s, RENDER_READ_IMAGE, &plain);
     double lit = 0.0, unlit = 0.0;
     for (size_t i = 0; i < (size_t)s.render.width * s.render.height * 4; i++) {
         lit += (i % 4 != 3) * res.rgba[i];
