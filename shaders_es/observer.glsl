@@ -59,7 +59,9 @@ uniform float u_blackbody_texels;     // texels per unit of ln(T)
 uniform float u_blackbody_size;       // texels
 uniform vec3 u_gravity_center;
 uniform float u_gravity_mass;         // Schwarzschild M; 0 without gravity
-uniform float u_observer_lapse;       // sqrt(1 - 2M/r) at the camera; 1 without gravity
+uniform float u_observer_lapse;       // sqrt(1 - 2M/r) at the camera; 1 without gravity or its shift
+uniform float u_gravity_shown;        // 1: colours shifted by gravity too; 0: by motion alone
+                                      // (observer.gravitational_shift = off)
 
 // nu_observer / nu_scene of light arriving along the view direction d: 1 / (gamma (1 - beta.d)).
 float observer_doppler(vec3 d)
@@ -78,6 +80,19 @@ float static_lapse(vec3 p)
 {
     float r = max(length(p - u_gravity_center), 1e-9);
     return sqrt(max(1.0 - 2.0 * u_gravity_mass / r, 0.0));
+}
+
+// scene/camera.h's static_lapse_shown and emitted_ratio_shown: the lapse at p as the image shows
+// it, and a ratio of which it is a factor with it taken out where gravity's shift is not shown
+float static_lapse_shown(vec3 p)
+{
+    return u_gravity_shown > 0.5 ? static_lapse(p) : 1.0;
+}
+
+float emitted_ratio_shown(vec3 p, float ratio)
+{
+    float lapse = static_lapse(p);
+    return u_gravity_shown > 0.5 || lapse <= 0.0 ? ratio : ratio / lapse;
 }
 
 #ifdef ACCRETION

@@ -107,14 +107,14 @@ vec3 shade(vec3 p, vec3 normal, vec2 uv, vec3 ray_direction, surface_material m)
 #ifdef MOVING_OBJECTS
     float emitted_doppler = doppler_at_camera / (surface_motion.w * (1.0 - dot(surface_motion.xyz, v_out)));
 #else
-    float emitted_doppler = doppler_at_camera * static_lapse(p);
+    float emitted_doppler = doppler_at_camera * static_lapse_shown(p);
 #endif
     float emitted_temperature = surface_emission_temperature;
 #ifdef ACCRETION
     // matter on its orbit, at its place's temperature (computed for every surface, then selected:
     // see the precision note in common.glsl)
     bool accretes = surface_accretion_inner > 0.0;
-    float orbiting_doppler = doppler_at_camera * keplerian_shift(p, ray_direction, normal);
+    float orbiting_doppler = doppler_at_camera * emitted_ratio_shown(p, keplerian_shift(p, ray_direction, normal));
     float disk_temperature = thin_disk_temperature(surface_emission_temperature, surface_accretion_inner,
                                                    surface_accretion_radius);
     emitted_doppler = accretes ? orbiting_doppler : emitted_doppler;
@@ -148,7 +148,7 @@ vec3 shade(vec3 p, vec3 normal, vec2 uv, vec3 ray_direction, surface_material m)
         float reflected = (1.0 - dot(surface_motion.xyz, v_in)) / (1.0 - dot(surface_motion.xyz, v_out));
         float light_doppler = doppler_at_camera * reflected;
 #else
-        float light_doppler = doppler_at_camera * static_lapse(u_light_position[i]);
+        float light_doppler = doppler_at_camera * static_lapse_shown(u_light_position[i]);
 #endif
         vec3 black_body = u_light_color[i] * reflectance * (m.factors.y * lambert + m.factors.z * specular) *
                           blackbody_colour(u_light_temperature[i] * light_doppler);

@@ -95,7 +95,8 @@ static void print_json(const struct scene *s, long px, long py, const char *engi
             double mass = model_gravity_mass(&s->model);
             double lambda_z = photon_lambda_z(mass, v3_sub(end, s->model.center), along, v3_normalize(o->normal));
             double g = camera_doppler(s, camera_view_direction(s, (int)px, (int)py)) *
-                       keplerian_emitter_shift(mass, v3_len(v3_sub(hit, s->model.center)), lambda_z);
+                       emitted_ratio_shown(s, hit, keplerian_emitter_shift(mass, v3_len(v3_sub(hit, s->model.center)),
+                                                                           lambda_z));
             printf("  \"g\": %.9g,\n", g);
         }
     }

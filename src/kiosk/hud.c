@@ -113,13 +113,17 @@ static void format_percent_of_light(char *out, size_t len, double v)
     snprintf(out, len, "%.*f%%", speed_decimals(v) - 2, 100.0 * v);
 }
 
-/* The effects (enum relativity_effects: geometry, Doppler colour, searchlight): staff's names and
- * a visitor's words. */
-static const char *const effects_names[3] = {"geometry", "Doppler colour", "Doppler colour + searchlight"};
-static const char *const effects_words[3] = {
-    "Colours: as the light left its source",
-    "Colours: shifted by motion and gravity",
-    "Colours: shifted, and brighter where light comes towards you",
+/* The effects (enum relativity_effects: geometry, Doppler colour, searchlight), without and with
+ * gravity's shift: staff's names and a visitor's words. */
+static const char *const effects_names[2][3] = {
+    {"geometry", "Doppler colour", "Doppler colour + searchlight"},
+    {"geometry", "Doppler colour + gravitational shift", "Doppler colour + searchlight + gravitational shift"},
+};
+static const char *const effects_words[2][3] = {
+    {"Colours: as the light left its source", "Colours: shifted by motion",
+     "Colours: shifted by motion, brighter where light comes towards you"},
+    {"Colours: as the light left its source", "Colours: shifted by motion and gravity",
+     "Colours: shifted by motion and gravity, brighter where light comes towards you"},
 };
 
 static int effects_known(int effects)
@@ -196,7 +200,7 @@ static int collect_lines(const struct hud_view *v, char lines[][HUD_LINE_LEN], e
             LINE(LINE_BODY, "%s", knob);
         }
         if (effects_known(v->effects))
-            LINE(LINE_BODY, "%s", effects_words[v->effects]);
+            LINE(LINE_BODY, "%s", effects_words[v->gravitational_shift != 0][v->effects]);
         if (present(v->notice))
             LINE(LINE_NOTICE, "%s", v->notice);
         return n;
@@ -231,7 +235,7 @@ static int collect_lines(const struct hud_view *v, char lines[][HUD_LINE_LEN], e
         }
     }
     if (effects_known(v->effects))
-        LINE(LINE_BODY, "effects: %s", effects_names[v->effects]);
+        LINE(LINE_BODY, "effects: %s", effects_names[v->gravitational_shift != 0][v->effects]);
     /* no rate while none was drawn in the last second: "0.0 frames/s" reads as broken */
     if (v->fps > 0.0 && v->refining)
         LINE(LINE_BODY, "staff mode   %.1f frames/s   refining...", v->fps);

@@ -35,6 +35,7 @@ struct hud_view {
     double speed_range[2], mass_range[2];
     int effects;                     /* the effects shown (enum relativity_effects); < 0 where the
                                         scene has no black body to shift */
+    int gravitational_shift;         /* 1: gravity's shift among them (a scene with a mass) */
     double fps;                      /* staff: frames shown per second, measured; <= 0: not shown */
     int refining;                    /* 1 while the picture is still being refined */
     /* The knob turned in the last moments: a short indicator of its value within its range. */

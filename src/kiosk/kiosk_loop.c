@@ -144,6 +144,7 @@ static void hud_view_of(struct kiosk *k, struct hud_view *v)
     v->mass = k->state.mass;
     v->camera_distance = v3_len(v3_sub(s->camera.position, s->model.center));
     v->effects = scene_has_black_body(s) ? (int)kiosk_state_effects(&k->state, s) : -1;
+    v->gravitational_shift = v->has_mass && kiosk_state_gravitational_shift(&k->state, s);
     v->fps = kiosk_view_refined(&k->view) && k->draws_last_second == 0 ? -1.0 : k->draws_last_second;
     v->refining = !kiosk_view_refined(&k->view);
     /* knobs the scene maps to its own keys show those instead of speed and mass; a mass knob mapped

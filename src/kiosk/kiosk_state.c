@@ -77,7 +77,8 @@ int kiosk_state_same(const struct kiosk_state *a, const struct kiosk_state *b)
 {
     return a->scene == b->scene && a->speed == b->speed && a->mass == b->mass &&
            same_value(a->speed_param, b->speed_param) && same_value(a->mass_param, b->mass_param) &&
-           a->effects == b->effects && a->effects_from_scene == b->effects_from_scene &&
+           a->effects == b->effects && a->gravitational_shift == b->gravitational_shift &&
+           a->effects_from_scene == b->effects_from_scene &&
            a->pipeline_view == b->pipeline_view;
 }
 
@@ -89,12 +90,38 @@ void kiosk_state_reset(struct kiosk_state *st, const struct kiosk_config *c)
     st->mass = c->mass.start;
     st->speed_param = st->mass_param = NAN;
     st->effects = EFFECTS_GEOMETRY;
+    st->gravitational_shift = 1;
     st->effects_from_scene = 1;
 }
 
 enum relativity_effects kiosk_state_effects(const struct kiosk_state *st, const struct scene *base)
 {
     return st->effects_from_scene ? base->observer.effects : st->effects;
+}
+
+int kiosk_state_gravitational_shift(const struct kiosk_state *st, const struct scene *base)
+{
+    return st->effects_from_scene ? base->observer.gravitational_shift : st->gravitational_shift;
+}
+
+/* The layer after those shown (kiosk_state_action): each adds one to the light's shift. */
+static void next_effects(struct kiosk_state *st, const struct scene *scene)
+{
+    enum relativity_effects shown = kiosk_state_effects(st, scene);
+    int gravity = kiosk_state_gravitational_shift(st, scene);
+    int has_mass = model_ops_of(scene->model.type)->has_mass;
+    st->effects_from_scene = 0;
+    if (!scene_has_black_body(scene) || (shown == EFFECTS_SEARCHLIGHT && (gravity || !has_mass))) {
+        st->effects = EFFECTS_GEOMETRY;
+        st->gravitational_shift = 1;
+    } else if (shown == EFFECTS_GEOMETRY) {
+        /* motion's shift alone first where there is a mass to add its own later */
+        st->effects = EFFECTS_DOPPLER;
+        st->gravitational_shift = !has_mass;
+    } else {
+        st->effects = EFFECTS_SEARCHLIGHT;
+        st->gravitational_shift = shown == EFFECTS_SEARCHLIGHT ? 1 : gravity;
+    }
 }
 
 void kiosk_state_action(struct kiosk_state *st, const struct kiosk_config *c, const struct scene *scene,
@@ -107,14 +134,12 @@ void kiosk_state_action(struct kiosk_state *st, const struct kiosk_config *c, co
         /* the knobs keep speed and mass from scene to scene; a mapped key starts at the new scene's own */
         st->scene = (st->scene + (action == KIOSK_ACTION_NEXT_SCENE ? 1 : n - 1)) % n;
         st->effects = EFFECTS_GEOMETRY;
+        st->gravitational_shift = 1;
         st->effects_from_scene = 1;        /* the new scene's own, as its file sets them */
         st->speed_param = st->mass_param = NAN;
         break;
     case KIOSK_ACTION_CYCLE_EFFECTS:
-        /* the next after those shown: geometry, Doppler colour, searchlight, and round again */
-        st->effects = scene_has_black_body(scene)
-                          ? (enum relativity_effects)((kiosk_state_effects(st, scene) + 1) % 3) : EFFECTS_GEOMETRY;
-        st->effects_from_scene = 0;
+        next_effects(st, scene);
         break;
     case KIOSK_ACTION_RESET:
         kiosk_state_reset(st, c);
@@ -139,6 +164,7 @@ int kiosk_state_apply(const struct kiosk_state *st, const struct scene *base, st
     if (!ms->key[0])
         out->observer.velocity = v3_scale(view, st->speed);
     out->observer.effects = kiosk_state_effects(st, base);
+    out->observer.gravitational_shift = kiosk_state_gravitational_shift(st, base);
     if (!mm->key[0] && model_ops_of(out->model.type)->has_mass)
         out->model.mass = st->mass;
     const struct knob_mapping *maps[2] = {ms, mm};

@@ -14,9 +14,10 @@ struct kiosk_state {
      * scene's own; unused for a knob that keeps its own meaning */
     double speed_param, mass_param;
     enum relativity_effects effects;
-    /* 1: the scene's own observer.effects, as its file sets them (at start, after reset and a scene
-     * change: a scene whose description names Doppler colour shows it); 0: `effects`, as the
-     * effects button chose them */
+    int gravitational_shift;         /* 1: colours shifted by gravity as well as motion */
+    /* 1: the scene's own observer.effects and gravitational_shift, as its file sets them (at start,
+     * after reset and a scene change: a scene whose description names Doppler colour shows it); 0:
+     * `effects` and `gravitational_shift`, as the effects button chose them */
     int effects_from_scene;
     int pipeline_view;               /* 1: show the renderer's stages instead of the image */
     /* 1: staff mode: the HUD adds the scene's file name, keys, symbols and frame rate, and the log
@@ -24,8 +25,10 @@ struct kiosk_state {
     int staff;
 };
 
-/* The effects the state shows in its scene `base` (the scene's own, or those chosen). */
+/* The effects the state shows in its scene `base` (the scene's own, or those chosen), and whether
+ * gravity's shift is among them. */
 enum relativity_effects kiosk_state_effects(const struct kiosk_state *st, const struct scene *base);
+int kiosk_state_gravitational_shift(const struct kiosk_state *st, const struct scene *base);
 
 /* The value a knob reaches after `counts` detents from `value`, along its curve (linear in the
  * value, in rapidity atanh(v) for speed, in ln(mass) for log), clamped to [min, max]. A log knob
@@ -45,9 +48,11 @@ int kiosk_state_same(const struct kiosk_state *a, const struct kiosk_state *b);
 /* The start: the configured start scene and knob starts, geometry only, no pipeline view. */
 void kiosk_state_reset(struct kiosk_state *st, const struct kiosk_config *c);
 
-/* A button's action. Cycling effects steps geometry -> doppler -> searchlight -> geometry on a
- * scene that has a black body, and leaves geometry alone on one that has none (scene: the scene
- * being shown). */
+/* A button's action. Cycling effects adds one layer of the light's shift at a time on a scene
+ * that has a black body: geometry -> Doppler colour (motion alone) -> + searchlight (beaming) ->
+ * + gravity's shift (on a scene with a mass) -> geometry; from a scene's own Doppler colour with
+ * gravity's shift it goes on to the searchlight with it. It leaves geometry alone on a scene that has
+ * no black body (scene: the scene being shown). */
 void kiosk_state_action(struct kiosk_state *st, const struct kiosk_config *c, const struct scene *scene,
                         enum kiosk_action action);
 

@@ -6,11 +6,13 @@
 #include "kiosk/kiosk_events.h"
 
 /* The states drawn per scene: each knob at rest (0), at its lower end (-1) and its upper end (+1),
- * in pairs, with each of the three effects (the scene's own, one and two presses of the button:
- * a moving observer's programs differ with the effects), then the pipeline view at rest. */
+ * in pairs, with the scene's own effects and after one, two and three presses of the button (a
+ * moving observer's programs differ with the effects; the button's four layers around a mass hold
+ * each of the three programs within three presses of any start, gravity's shift being a uniform),
+ * then the pipeline view at rest. */
 static const int knob_ends[][2] = {{0, 0}, {-1, 0}, {1, 0}, {0, -1}, {0, 1}, {-1, -1}, {-1, 1}, {1, -1}, {1, 1}};
 #define KNOB_PAIRS (int)(sizeof knob_ends / sizeof knob_ends[0])
-#define EFFECTS 3
+#define EFFECTS 4
 #define WARM_STATES (KNOB_PAIRS * EFFECTS + 1)
 
 static void turn_knob(const struct kiosk_config *c, struct kiosk_state *st, const struct scene *scene,

@@ -131,16 +131,9 @@ static vec3d blackbody_colour(const struct cpu_materials *mat, double temperatur
     return v3(linear_to_srgb_unclamped(lin[0]), linear_to_srgb_unclamped(lin[1]), linear_to_srgb_unclamped(lin[2]));
 }
 
-/* The frequency ratios of observer.glsl: static emitters at p, the observer moving and at rest
- * in the static frame at the camera. */
-static double static_lapse(const struct scene *s, vec3d p)
-{
-    double r = fmax(v3_len(v3_sub(p, s->model.center)), 1e-9);
-    return sqrt(fmax(1.0 - 2.0 * model_gravity_mass(&s->model) / r, 0.0));
-}
-
+/* The frequency ratio at the camera of observer.glsl (scene/camera.h; a name of its own beside
+ * shade_surface's variable) */
 static double doppler_at_camera(const struct scene *s, vec3d view) { return camera_doppler(s, view); }
-
 
 static double rgb_luminance(vec3d c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
@@ -184,14 +177,15 @@ static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray
     double reflectance = 0.5 * (0.3 * base.x + 0.59 * base.y + 0.11 * base.z + 1.0);   /* Eq. 18 */
     vec3d black_bodies = v3(0.0, 0.0, 0.0);
     /* the light the surface sends itself */
-    double emitted = camera_doppler * (moving ? emission_doppler(motion.beta, v_out) : static_lapse(s, ray->hit));
+    double emitted = camera_doppler * (moving ? emission_doppler(motion.beta, v_out) : static_lapse_shown(s, ray->hit));
     double temperature = m->temperature;
     if (m->accretion) {
         /* matter on its orbit about the mass, at its place's temperature (physics/accretion.h) */
         const struct object *o = &s->objects[ray->outcome];
         vec3d from_mass = v3_sub(ray->hit, s->model.center);
         double lambda_z = photon_lambda_z(model_gravity_mass(&s->model), from_mass, ray->velocity, v3_normalize(o->normal));
-        emitted = camera_doppler * keplerian_emitter_shift(model_gravity_mass(&s->model), v3_len(from_mass), lambda_z);
+        emitted = camera_doppler * emitted_ratio_shown(s, ray->hit, keplerian_emitter_shift(model_gravity_mass(&s->model),
+                                                                                           v3_len(from_mass), lambda_z));
         temperature = thin_disk_temperature(m->temperature, o->inner_radius, v3_len(v3_sub(ray->hit, o->center)));
     }
     if (doppler && m->temperature > 0.0) {
@@ -210,7 +204,7 @@ static vec3d shade_surface(const struct cpu_materials *mat, const struct ref_ray
                                                                      m->specular * specular));
         if (doppler && s->lights[i].temperature > 0.0) {
             double d = camera_doppler * (moving ? reflection_doppler(motion.beta, v_in, v_out)
-                                                : static_lapse(s, s->lights[i].position));
+                                                : static_lapse_shown(s, s->lights[i].position));
             double f = reflectance * (m->diffuse * lambert + m->specular * specular);
             vec3d c = blackbody_colour(mat, s->lights[i].temperature * d);
             black_bodies = v3_add(black_bodies, v3_scale(vmul(s->lights[i].color, c), f));

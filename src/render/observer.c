@@ -3,6 +3,7 @@
 #include "physics/blackbody.h"
 #include "physics/relativity.h"
 #include "render/stages.h"
+#include "scene/camera.h"
 #include <math.h>
 #include <stdio.h>
 
@@ -55,8 +56,8 @@ void observer_set_uniforms(const struct program_uniforms *p, const struct render
     double mass = model_gravity_mass(&s->model);
     uniform_vec3(p, "u_gravity_center", s->model.center);
     uniform_float(p, "u_gravity_mass", mass);
-    uniform_float(p, "u_observer_lapse", 1.0 / gravitational_shift(mass, INFINITY, v3_len(v3_sub(s->camera.position,
-                                                                                                   s->model.center))));
+    uniform_float(p, "u_observer_lapse", static_lapse_shown(s, s->camera.position));
+    uniform_float(p, "u_gravity_shown", s->observer.gravitational_shift ? 1.0 : 0.0);
 }
 
 int observer_lut_load(struct renderer *r, struct error *e)

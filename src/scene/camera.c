@@ -52,16 +52,27 @@ vec3d camera_ray_at(const struct scene *s, int i, int j, double dx, double dy)
     return camera_frame_ray(&f, i, j, dx, dy);
 }
 
-double camera_lapse(const struct scene *s)
+double static_lapse(const struct scene *s, vec3d p)
 {
     double mass = model_gravity_mass(&s->model);
     if (mass == 0.0)
         return 1.0;
-    double r = fmax(v3_len(v3_sub(s->camera.position, s->model.center)), 1e-9);
+    double r = fmax(v3_len(v3_sub(p, s->model.center)), 1e-9);
     return sqrt(fmax(1.0 - 2.0 * mass / r, 0.0));
+}
+
+double static_lapse_shown(const struct scene *s, vec3d p)
+{
+    return s->observer.gravitational_shift ? static_lapse(s, p) : 1.0;
+}
+
+double emitted_ratio_shown(const struct scene *s, vec3d p, double ratio)
+{
+    double lapse = static_lapse(s, p);
+    return s->observer.gravitational_shift || lapse <= 0.0 ? ratio : ratio / lapse;
 }
 
 double camera_doppler(const struct scene *s, vec3d view)
 {
-    return doppler_observer(s->observer.velocity, view) / camera_lapse(s);
+    return doppler_observer(s->observer.velocity, view) / static_lapse_shown(s, s->camera.position);
 }

@@ -23,10 +23,18 @@ struct camera_frame {
 void camera_frame_make(const struct scene *s, struct camera_frame *f);
 vec3d camera_frame_view(const struct camera_frame *f, int i, int j, double dx, double dy);
 vec3d camera_frame_ray(const struct camera_frame *f, int i, int j, double dx, double dy);
-/* The lapse sqrt(1 - 2M/r) of the static observer at the camera (1 off Schwarzschild). */
-double camera_lapse(const struct scene *s);
+/* The lapse sqrt(1 - 2M/r) of a static observer at p (1 off Schwarzschild): the frequency ratio of
+ * light sent by a static emitter at p and received by a static observer at infinity. */
+double static_lapse(const struct scene *s, vec3d p);
+/* The same as the image shows it: 1 where observer.gravitational_shift is off (motion's shift alone). */
+double static_lapse_shown(const struct scene *s, vec3d p);
+/* A frequency ratio `ratio` of light sent at p and received by a static observer at infinity, of
+ * which the static observer's lapse at p is a factor (an orbiting emitter's: physics/accretion.h), as
+ * the image shows it: with observer.gravitational_shift off, that lapse taken out. */
+double emitted_ratio_shown(const struct scene *s, vec3d p, double ratio);
 /* Frequency ratio D of light from a source at rest at infinity, seen along view direction `view`
- * (observer's frame): the motion's Doppler factor times the gravitational blueshift at the camera. */
+ * (observer's frame): the motion's Doppler factor times the gravitational blueshift at the camera
+ * (where observer.gravitational_shift is on). */
 double camera_doppler(const struct scene *s, vec3d view);
 
 #endif

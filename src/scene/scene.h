@@ -145,6 +145,10 @@ struct observer {
     vec3d velocity;
     enum relativity_effects effects;
     enum searchlight_exposure exposure;
+    /* 1: colours shifted by gravity as well as motion (a static emitter deeper in the field is seen
+     * redder, the camera's own depth makes all it sees bluer); 0: motion's shift alone, for teaching
+     * the two apart (the kiosk's effects button) */
+    int gravitational_shift;
     double time;             /* scene time of the observation, length units (c = 1) */
 };
 

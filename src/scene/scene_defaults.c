@@ -227,6 +227,7 @@ void scene_defaults(struct scene *s)
     s->sky.galactic_pole = v3(0.25, 0.9, 0.35);
     s->sky.galactic_center = v3(0.0, 0.0, -1.0);
     s->ambient_light = v3(1.0, 1.0, 1.0);
+    s->observer.gravitational_shift = 1;
     s->quality = (struct quality_bound){-1.0, -1.0, -1.0};
 }
 

@@ -369,6 +369,7 @@ const struct conf_key scene_keys[] = {
     {SECTION_OBSERVER, "velocity", CONF_VECTOR, ANY, .offset = AT_SCENE(observer.velocity)},
     {SECTION_OBSERVER, "effects", CHOICE(effects_names, AT_SCENE(observer.effects))},
     {SECTION_OBSERVER, "exposure", CHOICE(exposure_names, AT_SCENE(observer.exposure))},
+    {SECTION_OBSERVER, "gravitational_shift", CHOICE(switch_names, AT_SCENE(observer.gravitational_shift))},
     {SECTION_OBSERVER, "time", CONF_NUMBER, .lo = -1e9, .hi = 1e9, .offset = AT_SCENE(observer.time)},
 
     {SECTION_RENDER, "width", CONF_INTEGER, .lo = 1, .hi = SCENE_MAX_SIZE, .set = set_width},
@@ -558,7 +559,8 @@ _Static_assert(sizeof(enum model_type) == sizeof(int) && sizeof(enum primitive_t
                sizeof(enum potential_profile) == sizeof(int) && sizeof(enum sky_type) == sizeof(int) &&
                sizeof(enum relativity_effects) == sizeof(int) && sizeof(enum searchlight_exposure) == sizeof(int) &&
                sizeof(enum moving_objects_method) == sizeof(int) && sizeof(enum pipeline_choice) == sizeof(int) &&
-               sizeof(((struct scene *)0)->render.early_z) == sizeof(int), "enums are stored as int");
+               sizeof(((struct scene *)0)->render.early_z) == sizeof(int) &&
+               sizeof(((struct scene *)0)->observer.gravitational_shift) == sizeof(int), "enums are stored as int");
 _Static_assert(sizeof scene_keys / sizeof scene_keys[0] <= SCENE_KEY_TABLE_MAX,
                "raise SCENE_KEY_TABLE_MAX");
 _Static_assert(MODEL_COUNT <= 16 && PRIM_COUNT <= 16, "type masks are unsigned bit sets");

@@ -126,6 +126,16 @@ for side in "150 140 approaching 1" "330 140 receding 0"; do
         awk -v a=\$(cat $TMP/g_gpu) -v b=\$(cat $TMP/g_cpu) 'BEGIN { d = a / b - 1; if (d < 0) d = -d;
         print (d <= 1e-5 ? \"agree\" : \"differ \" a \" \" b), (b > 1) }'"
 done
+# without gravity's shift (observer.gravitational_shift = off, the kiosk's layer before it) the
+# disk's g is its motion's alone: the same on both engines, and higher than with gravity's redshift
+check "trace accretion g without gravity's shift" 0 "^agree higher\$" -- sh -c "$BT trace --scene assets/scenes/demo.scene \
+    --pixel 200 150 --set observer.gravitational_shift=off | sed -n 's/^  \"g\": \(.*\),\$/\1/p' > $TMP/g_off && \
+    $BT trace --scene assets/scenes/demo.scene --pixel 200 150 --set observer.gravitational_shift=off --engine cpu \
+    | sed -n 's/^  \"g\": \(.*\),\$/\1/p' > $TMP/g_off_cpu && $BT trace --scene assets/scenes/demo.scene --pixel 200 150 \
+    | sed -n 's/^  \"g\": \(.*\),\$/\1/p' > $TMP/g_on && awk -v a=\$(cat $TMP/g_off) -v b=\$(cat $TMP/g_off_cpu) \
+    -v c=\$(cat $TMP/g_on) 'BEGIN { d = a / b - 1; if (d < 0) d = -d; print (d <= 1e-5 ? \"agree\" : \"differ \" a \" \" b),
+    (a > 1.01 * c ? \"higher\" : \"not higher \" a \" \" c) }'"
+check "gravitational_shift is on or off" 2 "observer.gravitational_shift" -- $BT render --scene assets/scenes/demo.scene --set observer.gravitational_shift=maybe --out "$TMP/gs.png"
 check "trace doppler behind" 0 "\"doppler\": 0\.50" -- $BT trace --scene assets/scenes/starflight.scene --size 32x24 --pixel 16 12 --set "camera.look_at=0 0 1"
 check "trace colour" 0 "\"color\": \[[0-9]+, [0-9]+, [0-9]+\]," -- $BT trace --scene $S --size 32x24 --pixel 16 12 --engine cpu
 check "trace json" 0 "\"outcome\": \"(object|sky)\"" -- $BT trace --scene $S --size 32x24 --pixel 16 12

@@ -110,6 +110,55 @@ static void test_shift_closed_form(void **state)
     assert_true(lowest < 0.8 && highest > 1.1);
 }
 
+/* With observer.gravitational_shift off (the kiosk's layer before gravity's) the ratio the image
+ * uses is the Doppler factor of special relativity for the matter's motion as the static observer
+ * at the hit measures it: speed beta = sqrt(M / (r - 2M)) along the orbit, the photon leaving at
+ * cos(angle) = lambda_z sqrt(1 - 2M/r) / r to that motion in that observer's frame, D = 1 / (gamma (1 -
+ * beta cos)); no lapse at the hit or at the camera. */
+static void test_shift_without_gravity(void **state)
+{
+    (void)state;
+    static const vec3d cameras[] = {{0.0, 3.0, 30.0}, {0.0, 0.4, 9.0}};
+    long hits = 0;
+    double worst = 0.0, largest_gravity = 0.0;
+    for (size_t c = 0; c < sizeof cameras / sizeof cameras[0]; c++) {
+        static struct scene s;
+        disk_scene(&s, cameras[c], v3(0.0, 1.0, 0.0), 64, 64);
+        s.observer.gravitational_shift = 0;
+        double mass = s.model.mass;
+        vec3d y = v3_sub(s.camera.position, s.model.center);
+        double r_o = v3_len(y);
+        vec3d outward = v3_scale(y, 1.0 / r_o);
+        for (int j = 0; j < 64; j += 2)
+            for (int i = 0; i < 64; i += 2) {
+                vec3d dir = camera_ray(&s, i, j);
+                struct ref_ray ray;
+                hc_cpu_ray(&s, dir, &ray);
+                if (ray.outcome != 0)
+                    continue;
+                vec3d from_mass = v3_sub(ray.hit, s.model.center);
+                double r = v3_len(from_mass);
+                double lambda_z = photon_lambda_z(mass, from_mass, ray.velocity, v3(0.0, 1.0, 0.0));
+                double shown = camera_doppler(&s, dir) *
+                               emitted_ratio_shown(&s, ray.hit, keplerian_emitter_shift(mass, r, lambda_z));
+                /* the launch's lambda_z, as closed_form_g takes it */
+                double b = r_o * v3_len(v3_cross(outward, dir)) / sqrt(1.0 - 2.0 * mass / r_o);
+                double launch_lambda = b * v3_dot(v3_normalize(v3_cross(outward, v3_scale(dir, -1.0))), v3(0.0, 1.0, 0.0));
+                double beta = sqrt(mass / (r - 2.0 * mass));
+                double cos_angle = launch_lambda * sqrt(1.0 - 2.0 * mass / r) / r;
+                double want = sqrt(1.0 - beta * beta) / (1.0 - beta * cos_angle);
+                worst = fmax(worst, fabs(shown / want - 1.0));
+                largest_gravity = fmax(largest_gravity, fabs(closed_form_g(&s, dir, ray.hit, v3(0.0, 1.0, 0.0)) / want - 1.0));
+                hits++;
+            }
+    }
+    print_message("%ld hits: g without gravity's shift against special relativity's Doppler factor %.2e; gravity's "
+                  "shift, the difference it makes, up to %.1f%%\n", hits, worst, 100.0 * largest_gravity);
+    assert_true(hits > 200);
+    assert_true(worst <= 1e-6);      /* the reference's integration tolerance, as above */
+    assert_true(largest_gravity > 0.05);   /* the layer takes out a shift a visitor can see */
+}
+
 static void test_shift_limits(void **state)
 {
     (void)state;
@@ -194,16 +243,20 @@ static void test_gpu_against_reference(void **state)
 {
     (void)state;
     static const vec3d cameras[] = {{0.0, 3.0, 30.0}, {0.0, 0.4, 9.0}};
-    for (size_t c = 0; c < 2; c++) {
+    /* with gravity's shift and without it (the kiosk's layers, observer.gravitational_shift) */
+    static struct hc_gpu close_with_gravity;
+    for (size_t c = 0; c < 4; c++) {
         static struct scene s;
-        disk_scene(&s, cameras[c], v3(0.0, 1.0, 0.0), 160, 90);
+        disk_scene(&s, cameras[c % 2], v3(0.0, 1.0, 0.0), 160, 90);
+        s.observer.gravitational_shift = c < 2;
         struct cpu_image cpu;
         struct hc_gpu g;
         hc_render_both(&s, 160, 90, &cpu, &g);
         struct compare_result cr;
         hc_compare(&g.dump, &cpu.dump, &cr);
-        print_message("camera %g %g %g: %ld outcomes differ, PSNR %.1f dB, mean |difference| %.3f %.3f %.3f /255\n",
-                      cameras[c].x, cameras[c].y, cameras[c].z, cr.outcomes.differ, cr.psnr_db,
+        print_message("camera %g %g %g, gravitational shift %s: %ld outcomes differ, PSNR %.1f dB, mean |difference| "
+                      "%.3f %.3f %.3f /255\n", cameras[c % 2].x, cameras[c % 2].y, cameras[c % 2].z,
+                      c < 2 ? "on" : "off", cr.outcomes.differ, cr.psnr_db,
                       cr.mean_abs_diff[0], cr.mean_abs_diff[1], cr.mean_abs_diff[2]);
         assert_int_equal(cr.outcomes.differ, 0);
         /* the same g and temperature in float as in double: the colours agree to the 8-bit levels
@@ -212,6 +265,20 @@ static void test_gpu_against_reference(void **state)
         for (int k = 0; k < 3; k++)
             assert_true(cr.mean_abs_diff[k] <= 0.5);
         cpu_image_free(&cpu);
+        if (c == 1) {
+            close_with_gravity = g;      /* kept for the layer's own difference below */
+            continue;
+        }
+        if (c == 3) {
+            /* near the hole, gravity's shift is a colour a visitor sees: the layer changes the disk */
+            hc_compare(&g.dump, &close_with_gravity.dump, &cr);
+            print_message("camera 0 0.4 9, with gravity's shift against without: PSNR %.1f dB, mean |difference| "
+                          "%.2f %.2f %.2f /255\n", cr.psnr_db, cr.mean_abs_diff[0], cr.mean_abs_diff[1],
+                          cr.mean_abs_diff[2]);
+            assert_int_equal(cr.outcomes.differ, 0);
+            assert_true(cr.mean_abs_diff[0] + cr.mean_abs_diff[1] + cr.mean_abs_diff[2] >= 3.0);
+            hc_gpu_free(&close_with_gravity);
+        }
         hc_gpu_free(&g);
     }
 }
@@ -292,6 +359,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_shift_limits),
         cmocka_unit_test(test_shift_closed_form),
+        cmocka_unit_test(test_shift_without_gravity),
         cmocka_unit_test(test_face_on),
         cmocka_unit_test(test_edge_on),
         cmocka_unit_test(test_gpu_against_reference),

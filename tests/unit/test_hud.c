@@ -57,6 +57,7 @@ static struct hud_view schwarzschild_view(void)
         .camera_distance = 9.0,
         .shadow_share = 0.27,
         .effects = 0,
+        .gravitational_shift = 1,
         .fps = 12.34,
         .refining = 0,
         .indicator = HUD_KNOB_NONE,
@@ -180,6 +181,13 @@ static void test_lines_visitor(void **state)
     assert_true(find_line(lines, n, "Speed: 90% of light speed, clocks 2.29× slower") >= 0);
     assert_true(find_line(lines, n, "Black hole: shadow 27% of the view's height") >= 0);
     assert_true(find_line(lines, n, "Colours: shifted by motion and gravity") >= 0);
+    /* the effects button's layer before gravity's: motion's shift alone */
+    v.gravitational_shift = 0;
+    n = hud_lines(&v, lines, HUD_MAX_LINES);
+    assert_true(find_line(lines, n, "Colours: shifted by motion") >= 0);
+    assert_int_equal(find_line(lines, n, "gravity"), -1);
+    v.gravitational_shift = 1;
+    n = hud_lines(&v, lines, HUD_MAX_LINES);
     static const char *const developer_words[] = {"frames/s", "staff", "M = ", "r_s", "γ", "v = ", "effects:",
                                                   "Schwarzschild black hole", "Light bends around the mass",
                                                   "model.", "Figure", "refining"};

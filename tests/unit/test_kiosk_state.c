@@ -95,6 +95,7 @@ static void test_actions(void **state)
     assert_int_equal(st.scene, config.kiosk.start_scene);
     kiosk_state_action(&st, &config, &without, KIOSK_ACTION_CYCLE_EFFECTS);
     assert_int_equal(st.effects, EFFECTS_GEOMETRY);                /* nothing to colour */
+    /* flat space: geometry, Doppler colour, searchlight and round again (no gravity to add) */
     kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_CYCLE_EFFECTS);
     assert_int_equal(st.effects, EFFECTS_DOPPLER);
     kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_CYCLE_EFFECTS);
@@ -126,6 +127,43 @@ static void test_actions(void **state)
     kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_STAFF_MODE);
     kiosk_state_action(&st, &config, &with_black_body, KIOSK_ACTION_RESET);
     assert_false(st.staff);
+}
+
+/* Around a mass the effects button adds gravity's shift as a layer of its own, after motion's
+ * colour and brightness; from a scene's own Doppler colour with gravity (blackhole_flight) it goes on
+ * to the searchlight with it. The scene drawn takes each layer (kiosk_state_apply). */
+static void test_effects_layers_with_gravity(void **state)
+{
+    (void)state;
+    static struct scene flight, drawn;
+    hc_load(&flight, "blackhole_flight", 16, 12, NULL);
+    assert_int_equal(flight.observer.effects, EFFECTS_DOPPLER);
+    assert_true(flight.observer.gravitational_shift);
+    struct kiosk_state st;
+    kiosk_state_reset(&st, &config);
+    static const struct {
+        enum relativity_effects effects;
+        int gravity;
+    } ladder[] = {
+        {EFFECTS_DOPPLER, 1},     /* the scene's own */
+        {EFFECTS_SEARCHLIGHT, 1}, {EFFECTS_GEOMETRY, 1},    {EFFECTS_DOPPLER, 0},
+        {EFFECTS_SEARCHLIGHT, 0}, {EFFECTS_SEARCHLIGHT, 1}, {EFFECTS_GEOMETRY, 1}, {EFFECTS_DOPPLER, 0},
+    };
+    struct error err = {0};
+    for (size_t i = 0; i < sizeof ladder / sizeof ladder[0]; i++) {
+        if (i > 0)
+            kiosk_state_action(&st, &config, &flight, KIOSK_ACTION_CYCLE_EFFECTS);
+        assert_int_equal(kiosk_state_effects(&st, &flight), ladder[i].effects);
+        if (ladder[i].effects != EFFECTS_GEOMETRY)
+            assert_int_equal(kiosk_state_gravitational_shift(&st, &flight), ladder[i].gravity);
+        assert_int_equal(kiosk_state_apply(&st, &flight, &drawn, &err), 0);
+        assert_int_equal(drawn.observer.effects, ladder[i].effects);
+        assert_int_equal(drawn.observer.gravitational_shift, kiosk_state_gravitational_shift(&st, &flight));
+    }
+    /* a layer chosen is part of what is drawn */
+    struct kiosk_state other = st;
+    other.gravitational_shift = !st.gravitational_shift;
+    assert_false(kiosk_state_same(&st, &other));
 }
 
 /* The shipped attract tour (kiosk.conf's [attract] script) is a valid script, plays over the shipped
@@ -370,6 +408,7 @@ int main(void)
         cmocka_unit_test(test_actions),
         cmocka_unit_test(test_apply),
         cmocka_unit_test(test_script),
+        cmocka_unit_test(test_effects_layers_with_gravity),
         cmocka_unit_test(test_shipped_tour),
         cmocka_unit_test(test_knobs_mapped_to_scene_keys),
         cmocka_unit_test(test_renderer_follows_the_scene),
