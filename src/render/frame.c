@@ -168,14 +168,15 @@ int frame_run_samples(struct renderer *r, const struct scene *s, struct render_r
                       enum progress_mode progress, struct error *e)
 {
     int on_cpu = light_on_cpu(r, s), asked = renderer_hdr(r);
-    if (on_cpu && !renderer_state_readable(r))
-        return error_set(e, ERROR_RUNTIME, NULL, "render path image only: %s needs the frame's colour read back as "
-                         "floats, and no float format renders on this GPU (bentray info lists them)%s",
-                         bloom_active(&s->render) ? "render.bloom" : "the gain and tone curve after the CPU's stars",
-                         bloom_active(&s->render) ? "" : "; render.star_pass = gpu draws the stars in the frame's pass");
-    renderer_set_hdr(r, asked || on_cpu);
+    const char *asked_why = renderer_hdr_why(r);
+    /* the frame's colour read back as floats, for the CPU to finish it */
+    if (on_cpu && !asked)
+        renderer_set_hdr(r, bloom_active(&s->render) ? "render.bloom (the frame's colour read back as floats)"
+                                                     : "the gain and tone curve after the CPU's stars (the frame's "
+                                                       "colour read back as floats; render.star_pass = gpu draws "
+                                                       "the stars in the frame's pass)");
     int rc = run_with_stars(r, s, out, reads, progress, e);
-    renderer_set_hdr(r, asked);
+    renderer_set_hdr(r, asked_why);
     if (rc == 0 && on_cpu)
         rc = frame_bloom(s, out, asked, e);
     return rc;
@@ -205,7 +206,7 @@ int render_frame(const struct scene *s, const struct frame_request *req, struct 
             snprintf(info->path_description, sizeof info->path_description, "%s", renderer_path(r)->description);
             snprintf(info->renderer, sizeof info->renderer, "%s", renderer_caps(r)->renderer);
         }
-        renderer_set_hdr(r, req->hdr);
+        renderer_set_hdr(r, req->hdr ? "writing a float image (a 16-bit PNG or PFM)" : NULL);
         renderer_time_first_draws(r, 1);
         rc = frame_run_samples(r, s, out, req->reads, req->progress, e);
         if (info) {

@@ -183,7 +183,11 @@ const struct gl_caps *renderer_caps(const struct renderer *r) { return &r->caps;
 const char *renderer_pipeline(const struct renderer *r) { return r->pipeline_name ? r->pipeline_name : "multipass"; }
 const char *renderer_pipeline_why(const struct renderer *r) { return r->pipeline_why; }
 
-void renderer_set_hdr(struct renderer *r, int on) { r->hdr = on; }
+void renderer_set_hdr(struct renderer *r, const char *why)
+{
+    r->hdr = why != NULL;
+    r->hdr_why = why;
+}
 void renderer_time_first_draws(struct renderer *r, int on) { r->time_first_draws = on; }
 
 void renderer_capture_shaders(struct renderer *r, const char *file, void (*sink)(const char *source, void *arg),
@@ -205,6 +209,7 @@ int renderer_share_programs(struct renderer *r, struct program_cache *pc)
     return 1;
 }
 int renderer_hdr(const struct renderer *r) { return r->hdr; }
+const char *renderer_hdr_why(const struct renderer *r) { return r->hdr_why; }
 
 void renderer_set_subpixel(struct renderer *r, double dx, double dy)
 {
@@ -314,7 +319,7 @@ static int image_only_refuses(const struct renderer *r, int per_segment_hook, st
     if (!r->path.image_only)
         return 0;
     const char *needs = per_segment_hook                ? "reading the rays after every segment (trace)"
-                        : r->hdr                        ? "writing a float image (a 16-bit PNG or PFM)"
+                        : r->hdr                        ? r->hdr_why
                         : r->reads == RENDER_READ_STATE ? "reading the rays' state back (--dump, the pipeline view)"
                         : r->reads == RENDER_READ_SKY   ? "drawing the stars of the sky from the rays' exit directions"
                                                         : NULL;

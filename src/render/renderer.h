@@ -80,15 +80,18 @@ void renderer_set_reads(struct renderer *r, enum render_read reads);
 int render_read_includes(enum render_read reads, int k);
 /* The read that brings back what both reads and RENDER_READ_SKY ask for. */
 enum render_read render_read_with_sky(enum render_read reads);
-/* With on, each run also keeps the final colour unclamped, as floats, and renderer_read returns it
- * in render_result.color (16-bit PNG and PFM output). Off until set. */
-void renderer_set_hdr(struct renderer *r, int on);
+/* With why (what needs it: "writing a float image (a 16-bit PNG or PFM)", "render.bloom", ...), each
+ * run also keeps the final colour unclamped, as floats, and renderer_read returns it in
+ * render_result.color; on a GPU whose path is image only, the run is refused naming why. NULL: off,
+ * until set. */
+void renderer_set_hdr(struct renderer *r, const char *why);
 /* With on, the first draw of each program in this renderer waits for the GPU's work before it and
  * is timed, its time added to render_result.compile_seconds beside the programs' links (what
  * `bentray render`'s time line says); off until set, as the kiosk keeps it, whose frames should not
  * wait for the GPU at a scene's first draws. */
 void renderer_time_first_draws(struct renderer *r, int on);
 int renderer_hdr(const struct renderer *r);
+const char *renderer_hdr_why(const struct renderer *r);   /* as renderer_set_hdr was given it */
 /* Read the final image, and what `reads` (enum render_read) asks for. 0, or -1 with e. */
 int renderer_read(struct renderer *r, struct render_result *out, enum render_read reads, struct error *e);
 /* Position of the ray of texel (x, y) (GL order) right now: for per-segment hooks. 0, or -1 with e. */

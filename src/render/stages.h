@@ -51,6 +51,7 @@ struct renderer {
     int origin_x, origin_y;       /* image pixel of ray-state texel (0, 0) */
     double subpixel_x, subpixel_y;   /* where in its pixel each ray starts, from the centre (pixels) */
     int hdr;                      /* the sky stage also writes the unclamped colour (renderer_set_hdr) */
+    const char *hdr_why;          /* what needs it, for the image-only path's refusal */
     char model_defines[256];      /* model, method, steps per pass */
     char model_file[64];          /* model_NAME.glsl; model_flat.glsl for straight rays */
     int straight;                 /* rays are straight: one segment, not integrated */

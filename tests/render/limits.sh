@@ -143,7 +143,7 @@ check "image only refuses the stars' exit directions" 1 "render path image only:
 check "image only draws the stars on the GPU" 0 "^same$" -- sh -c "$NOFLOAT $BT render --scene assets/scenes/star_sky.scene \
     --size 48x36 --quiet --out $TMP/io_s1.png > /dev/null && $BT render --scene assets/scenes/star_sky.scene --set render.star_pass=gpu \
     --size 48x36 --quiet --out $TMP/io_s2.png > /dev/null && cmp $TMP/io_s1.png $TMP/io_s2.png && echo same"
-check "image only refuses bloom" 1 "render path image only: render.bloom needs the frame's colour read back as floats" -- \
+check "image only refuses bloom" 1 "render path image only: render.bloom \(the frame's colour read back as floats\) needs float render targets" -- \
     $NOFLOAT $BT render --scene assets/scenes/demo.scene --set render.bloom=0.2 --size 32x24 --out "$TMP/io4.png"
 check "image only refuses trace" 1 "render path image only: reading the rays after every segment" -- \
     $NOFLOAT $BT trace --scene $S --size 32x24 --pixel 3 3
