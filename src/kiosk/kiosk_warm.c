@@ -49,6 +49,17 @@ static void warm_state(const struct kiosk_config *c, const struct scene *scene, 
     turn_knob(c, st, scene, INPUT_KNOB_MASS, knob_ends[k % KNOB_PAIRS][1]);
 }
 
+/* What decides the programs a state draws with, for telling states apart: its effects as drawn,
+ * whether the scene's own or chosen (gravity's shift is a uniform, the same programs either way). */
+static struct kiosk_state programs_key(const struct kiosk_state *st, const struct scene *scene)
+{
+    struct kiosk_state key = *st;
+    key.effects = kiosk_state_effects(st, scene);
+    key.gravitational_shift = 1;
+    key.effects_from_scene = 0;
+    return key;
+}
+
 /* The preview of st and the first band of its refinement (the pipeline view is not refined). */
 static int draw_state(struct kiosk_view *v, const struct kiosk_state *st, struct error *e)
 {
@@ -78,12 +89,13 @@ static int warm_scenes(struct kiosk_view *v, const struct kiosk_config *c, const
         for (int k = 0; k < WARM_STATES && !failed; k++) {
             struct kiosk_state st;
             warm_state(c, &scenes[i], i, k, &st);
+            struct kiosk_state key = programs_key(&st, &scenes[i]);
             int seen = 0;
             for (int j = 0; j < n_done && !seen; j++)
-                seen = kiosk_state_same(&done[j], &st);
+                seen = kiosk_state_same(&done[j], &key);
             if (seen)
                 continue;
-            done[n_done++] = st;
+            done[n_done++] = key;
             if (between && between(arg)) {
                 stop = 1;
                 break;
