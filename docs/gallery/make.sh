@@ -12,6 +12,7 @@ ANIMATE="bentray animate --scene assets/scenes/demo.scene --frames 48 --size 320
 CUBEMAP_SKY="bentray render --scene assets/scenes/star_sky.scene --size 1920x1080 --set sky.stars=0 --set sky.milky_way=0 --set sky.type=cubemap --set sky.cubemap=../sky/stars"
 POINT_SKY="bentray render --scene assets/scenes/star_sky.scene --size 1920x1080"
 BLOOM="bentray render --scene assets/scenes/demo.scene --size 960x540 --set render.bloom=0.2"
+LAYERS="bentray render --scene assets/scenes/demo.scene --set observer.effects=E --set observer.gravitational_shift=G"
 PIPELINE_VIEW="bentray kiosk --config docs/gallery/pipeline_view.conf --display headless --out DIR --frames 1"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -55,6 +56,18 @@ trap 'rm -rf "$tmp"' EXIT
     echo
     echo "![demo with bloom](gallery/demo_bloom.png)"
     echo
+    echo "## The layers of the disk's light"
+    echo
+    echo "demo.scene as the kiosk's effects button shows it, one layer added at a time (docs/RELATIVITY.md):"
+    echo "the bending alone, the disk in its RGB colour (\`E = geometry\`); the colour of each point's black"
+    echo "body shifted by its matter's motion, bluer where it comes towards the camera (\`E = doppler\`,"
+    echo "\`G = off\`); its brightness too, the searchlight (\`E = searchlight\`, \`G = off\`); and gravity's"
+    echo "redshift of the matter deep in the hole's field on top: demo.scene's own image, in the Scenes below."
+    echo
+    echo "\`$LAYERS\`"
+    echo
+    echo "![demo, geometry only](gallery/demo_layer_geometry.png) ![demo, Doppler colour of the motion](gallery/demo_layer_doppler.png) ![demo, with the searchlight](gallery/demo_layer_searchlight.png)"
+    echo
     echo "## The kiosk's pipeline view"
     echo
     echo "The black hole's rays as the renderer leaves them (key \`v\` at the kiosk; docs/KIOSK.md, docs/PIPELINE.md):"
@@ -76,6 +89,11 @@ $BT render --scene assets/scenes/star_sky.scene --size 1920x1080 --set sky.stars
     --set sky.type=cubemap --set sky.cubemap=../sky/stars --out "$OUT/star_sky_cubemap_1080p.png" --force --quiet > /dev/null
 $BT render --scene assets/scenes/star_sky.scene --size 1920x1080 --out "$OUT/star_sky_1080p.png" --force --quiet > /dev/null
 $BT render --scene assets/scenes/demo.scene --size 960x540 --set render.bloom=0.2 --out "$OUT/demo_bloom.png" --force --quiet > /dev/null
+for layer in "geometry on" "doppler off" "searchlight off"; do
+    set -- $layer
+    $BT render --scene assets/scenes/demo.scene --set observer.effects="$1" --set observer.gravitational_shift="$2" \
+        --out "$OUT/demo_layer_$1.png" --force --quiet > /dev/null
+done
 $BT animate --scene assets/scenes/demo.scene --frames 48 --size 320x180 --set-range model.mass=0:1.4 --fps 12 \
     --out "$tmp/frames" --video "$OUT/demo_mass.gif" --force --quiet > /dev/null
 for f in assets/scenes/*.scene; do
