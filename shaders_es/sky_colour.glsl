@@ -57,6 +57,7 @@ uniform vec2 u_star_map_size;           // texels: width, height
 uniform float u_star_map_cells;         // cells a side at level 0
 uniform float u_star_map_levels;
 uniform float u_star_map_chroma_row;    // the texel row of the colours per unit luminance
+uniform float u_star_map_mask_row;      // the first row of the cells' masks
 uniform vec2 u_star_magnitudes;         // the faintest, and brightest minus faintest
 uniform float u_star_brightness;        // the light of a 6th-magnitude star at rest
 uniform float u_star_brightest_flux;    // the brightest star's, at rest
@@ -174,7 +175,13 @@ vec3 sky_stars(vec3 d, vec3 jx, vec3 jy, vec3 fx, vec3 fy, float doppler, bool s
         return light;
     float n = floor(u_star_map_cells / exp2(level) + 0.5);
     vec2 origin = level < 0.5 ? vec2(0.0) : vec2(2.0 * STAR_MAP_SLOTS * (u_star_map_cells - 2.0 * n), u_star_map_cells);
-    vec2 base = clamp(floor(octahedral_encode(d) * n), 0.0, n - 1.0) - 1.0;
+    vec2 centre = clamp(floor(octahedral_encode(d) * n), 0.0, n - 1.0);
+    vec2 base = centre - 1.0;
+    // which of the nine cells hold a star: bit 8 - k for cell k (results/star_map.h), so that the
+    // highest bit left is the next cell in the order of k
+    vec2 mask_origin = vec2(level < 0.5 ? 0.0 : 2.0 * (u_star_map_cells - n), u_star_map_mask_row);
+    vec4 mask = floor(texture2D(u_star_map, (mask_origin + centre + 0.5) / u_star_map_size) * 255.0 + 0.5);
+    float occupied = mask.x + 256.0 * mask.y;
     vec3 inverse = vec3(yy, -xy, xx) / det;
     float reach_cos = cos(reach);
     // a star's light at the pixel in one exp2: log2 of its flux (from its magnitude, 16 bits over the
@@ -184,11 +191,19 @@ vec3 sky_stars(vec3 d, vec3 jx, vec3 jy, vec3 fx, vec3 fy, float doppler, bool s
     float log2_per_code = -1.32877124 * u_star_magnitudes.y / 65535.0;
     float log2_per_px2 = -0.72134752 / (sigma * sigma);
     float doppler_codes = log(doppler) / STAR_T_RANGE * 255.0;
-    // one loop over the nine cells
+    // one loop over the cells of the nine that hold a star, in the order of k
     for (int k = 0; k < 9; k++) {
+        if (occupied < 0.5)
+            break;
         {
-            int j = k / 3;
-            vec2 cell = base + vec2(float(k - j * 3), float(j));
+            // the highest bit left: log2's estimate, made exact (its rounding may miss by one)
+            float top = floor(log2(occupied));
+            top += occupied >= exp2(top + 1.0) ? 1.0 : 0.0;
+            top -= occupied < exp2(top) ? 1.0 : 0.0;
+            occupied -= exp2(top);
+            float cell_k = 8.0 - top;
+            float j = floor((cell_k + 0.5) / 3.0);
+            vec2 cell = base + vec2(cell_k - 3.0 * j, j);
             // across the square's border, the map folds back onto itself mirrored
             cell = cell.x < 0.0 ? vec2(0.0, n - 1.0 - cell.y) : cell.x > n - 1.0 ? vec2(n - 1.0, n - 1.0 - cell.y) : cell;
             cell = cell.y < 0.0 ? vec2(n - 1.0 - cell.x, 0.0) : cell.y > n - 1.0 ? vec2(n - 1.0 - cell.x, n - 1.0) : cell;
@@ -196,8 +211,7 @@ vec3 sky_stars(vec3 d, vec3 jx, vec3 jy, vec3 fx, vec3 fy, float doppler, bool s
             for (int slot = 0; slot < STAR_MAP_SLOTS_I; slot++) {
                 vec2 texel = first + vec2(2.0 * float(slot), 0.0);
                 vec4 data = floor(texture2D(u_star_map, (texel + vec2(1.0, 0.0)) / u_star_map_size) * 255.0 + 0.5);
-                // the slots fill in order, brightest first: an empty one ends the cell (most cells
-                // hold no star, and nothing more is read or computed for them)
+                // the slots fill in order, brightest first: an empty one ends the cell
                 if (data.w < 127.0)
                     break;
                 vec4 place = floor(texture2D(u_star_map, texel / u_star_map_size) * 255.0 + 0.5);

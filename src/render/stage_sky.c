@@ -31,6 +31,7 @@ void sky_colour_set_uniforms(const struct program_uniforms *p, const struct rend
         uniform_float(p, "u_star_map_cells", m->cells);
         uniform_float(p, "u_star_map_levels", m->levels);
         uniform_float(p, "u_star_map_chroma_row", m->chroma_y);
+        uniform_float(p, "u_star_map_mask_row", m->mask_y);
         glUniform2f(program_uniform(p, "u_star_magnitudes"), (float)m->faintest, (float)(m->brightest - m->faintest));
         uniform_float(p, "u_star_brightness", sky->star_brightness);
         /* the brightest star's flux at rest (star_light.c's), from this run's brightness */

@@ -68,6 +68,41 @@ static void put_star(struct star_map *m, int level, const struct star *s, int *o
     memcpy(p, place, sizeof place);
 }
 
+/* The cell the GPU's pass reads as cell (i, j) of a level of n cells a side: across the square's
+ * border the map folds back onto itself mirrored (sky_colour.glsl's fold, in the same order). */
+static void fold_cell(int n, int *i, int *j)
+{
+    if (*i < 0 || *i > n - 1) {
+        *j = n - 1 - *j;
+        *i = *i < 0 ? 0 : n - 1;
+    }
+    if (*j < 0 || *j > n - 1) {
+        *i = n - 1 - *i;
+        *j = *j < 0 ? 0 : n - 1;
+    }
+}
+
+/* Each cell's mask of the 3x3 cells about it that hold a star (star_map.h), from the level's
+ * occupants. */
+static void put_masks(struct star_map *m, int level, const int *occupants)
+{
+    int n = m->cells >> level;
+    for (int cj = 0; cj < n; cj++)
+        for (int ci = 0; ci < n; ci++) {
+            int mask = 0;
+            for (int k = 0; k < 9; k++) {
+                int i = ci - 1 + k % 3, j = cj - 1 + k / 3;
+                fold_cell(n, &i, &j);
+                if (occupants[(size_t)j * n + i] > 0)
+                    mask |= 1 << (8 - k);
+            }
+            unsigned char *p = m->texels + 4 * ((size_t)(m->mask_y + cj) * m->width + m->mask_x[level] + ci);
+            p[0] = (unsigned char)(mask & 255);
+            p[1] = (unsigned char)(mask >> 8);
+            p[3] = 255;
+        }
+}
+
 static int brighter_first(const void *a, const void *b)
 {
     const struct star *const *x = a, *const *y = b;
@@ -83,11 +118,13 @@ int star_map_build(struct star_map *m, const struct star_catalogue *c, int cells
     for (int n = cells; n >= STAR_MAP_MIN_CELLS && m->levels < STAR_MAP_LEVELS_MAX; n >>= 1) {
         m->level_x[m->levels] = m->levels == 0 ? 0 : x;
         m->level_y[m->levels] = m->levels == 0 ? 0 : cells;
+        m->mask_x[m->levels] = m->levels == 0 ? 0 : 2 * cells - 2 * n;
         x += m->levels == 0 ? 0 : 2 * STAR_MAP_SLOTS * n;
         m->levels++;
     }
     m->chroma_y = cells + cells / 2;
-    m->height = m->chroma_y + 1;
+    m->mask_y = m->chroma_y + 1;
+    m->height = m->mask_y + cells;
     m->faintest = -INFINITY;
     m->brightest = INFINITY;
     for (int i = 0; i < c->n; i++) {
@@ -113,6 +150,7 @@ int star_map_build(struct star_map *m, const struct star_catalogue *c, int cells
         memset(occupants, 0, (size_t)n * n * sizeof *occupants);
         for (int i = 0; i < c->n; i++)
             put_star(m, level, order[i], occupants);
+        put_masks(m, level, occupants);
     }
     free(order);
     free(occupants);

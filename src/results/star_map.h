@@ -11,7 +11,9 @@
  *   block, down to 4 cells a side. A pixel looks up the level whose cells are as wide as the
  *   light of the brightest star reaches from it (its footprint, from the derivatives of its exit
  *   direction), and there the 3x3 cells about its direction: nine lookups a pixel, whatever the
- *   number of stars.
+ *   number of stars. Each cell also has a mask of which of the 3x3 about it hold a star, so that
+ *   the pass reads only those: one lookup, and the cells with stars (of nine, about one at the
+ *   kiosk's sizes).
  * - One RGBA8 texture, two texels a star side by side, STAR_MAP_SLOTS stars a cell, brightest
  *   first: the star's place in its cell (16 bits in u,
  *   16 in v), then its magnitude (16 bits over [brightest, faintest]), its temperature (8 bits
@@ -19,7 +21,10 @@
  *   the cell holds a star. Level 0 fills rows 0 .. N-1; the coarser levels lie side by side in the
  *   rows below; the last row holds the colours of black bodies per unit luminance over ln T
  *   (star_chromaticity), each as RGB over its largest component (the shader divides by the
- *   luminance again). */
+ *   luminance again). Below it, one texel a cell, the masks: bit 8 - k (R the low 8 bits, G the
+ *   ninth) set where cell k of the 3x3 about the cell (k = 3 dy + dx from its lower-left
+ *   neighbour, folded across the square's border as the pass folds it) holds a star; level 0 at
+ *   x = 0, each coarser level beside the last. */
 #ifndef BT_STAR_MAP_H
 #define BT_STAR_MAP_H
 #include "physics/star_catalogue.h"
@@ -39,6 +44,7 @@ struct star_map {
     int levels;
     int level_x[STAR_MAP_LEVELS_MAX], level_y[STAR_MAP_LEVELS_MAX];   /* each level's first texel */
     int chroma_y;                /* the colours' row */
+    int mask_x[STAR_MAP_LEVELS_MAX], mask_y;   /* each level's first mask texel */
     int width, height;           /* texels */
     unsigned char *texels;       /* RGBA8, rows from the first */
     double faintest, brightest;  /* magnitudes: the 16-bit encoding's ends */

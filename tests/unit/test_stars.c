@@ -15,6 +15,7 @@
 #include "physics/star_catalogue.h"
 #include "render/frame.h"
 #include "results/star_light.h"
+#include "results/star_map.h"
 #include "scene/camera.h"
 
 /* The same seed gives the same stars, another seed other stars; every star lies in its cell. */
@@ -314,6 +315,54 @@ static void stars_on_both_engines(vec3d velocity)
     cpu_image_free(&cpu);
 }
 
+/* The star map's masks (results/star_map.h): at every level, each cell's bit 8 - k set exactly where
+ * cell k of the 3x3 about it holds a star, that cell found as the GPU's pass finds it (its fold
+ * across the square's border, written here as sky_colour.glsl writes it), so that the pass, which
+ * reads only the cells a mask names, reads every cell with a star. */
+static int map_cell_holds_star(const struct star_map *m, int level, int i, int j)
+{
+    const unsigned char *p = m->texels + 4 * ((size_t)(m->level_y[level] + j) * m->width + m->level_x[level] +
+                                              2 * STAR_MAP_SLOTS * i + 1);
+    return p[3] >= 127;
+}
+
+static void test_star_map_masks(void **state)
+{
+    (void)state;
+    static struct star_catalogue c;
+    assert_int_equal(star_catalogue_make(&c, 30000, 1, v3(0.45, 0.89, 0.1), v3(0.25, -0.1, -1.0)), 0);
+    static struct star_map m;
+    assert_int_equal(star_map_build(&m, &c, 256), 0);
+    long cells = 0, holding = 0, bits = 0;
+    for (int level = 0; level < m.levels; level++) {
+        int n = m.cells >> level;
+        for (int cj = 0; cj < n; cj++)
+            for (int ci = 0; ci < n; ci++) {
+                const unsigned char *p = m.texels + 4 * ((size_t)(m.mask_y + cj) * m.width + m.mask_x[level] + ci);
+                int mask = p[0] | p[1] << 8;
+                for (int k = 0; k < 9; k++) {
+                    double x = ci - 1 + k % 3, y = cj - 1 + k / 3, nn = n;
+                    double fx = x < 0.0 ? 0.0 : x > nn - 1.0 ? nn - 1.0 : x;
+                    double fy = x < 0.0 || x > nn - 1.0 ? nn - 1.0 - y : y;
+                    x = fx;
+                    y = fy;
+                    fx = y < 0.0 || y > nn - 1.0 ? nn - 1.0 - x : x;
+                    fy = y < 0.0 ? 0.0 : y > nn - 1.0 ? nn - 1.0 : y;
+                    int holds = map_cell_holds_star(&m, level, (int)fx, (int)fy);
+                    assert_int_equal((mask >> (8 - k)) & 1, holds);
+                    bits += holds;
+                }
+                assert_int_equal(mask >> 9, 0);
+                holding += map_cell_holds_star(&m, level, ci, cj);
+                cells++;
+            }
+    }
+    print_message("%d levels, %ld cells, %ld hold a star, %ld mask bits set\n", m.levels, cells, holding, bits);
+    assert_true(holding > 0 && holding < cells);   /* both kinds of cell were checked */
+    star_map_free(&m);
+    star_catalogue_free(&c);
+}
+
 static void test_flat_stars_at_rest(void **state)
 {
     (void)state;
@@ -493,6 +542,7 @@ int main(void)
         cmocka_unit_test(test_catalogue_distributions),
         cmocka_unit_test(test_catalogue_near),
         cmocka_unit_test(test_chromaticity),
+        cmocka_unit_test(test_star_map_masks),
         cmocka_unit_test(test_flat_stars_at_rest),
         cmocka_unit_test(test_flat_stars_aberrated),
         cmocka_unit_test(test_lensed_star),
