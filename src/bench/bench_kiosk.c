@@ -20,6 +20,7 @@
  * 70 for this machine's llvmpipe (docs/BENCH.md, the CPU limit): frames must take an eighth here */
 #define KIOSK_PI4_SPEED_FRACTION 0.125
 #define KIOSK_BENCH_PREVIEWS 8       /* knob detents timed per knob and scene */
+#define KIOSK_BENCH_RUN 4            /* ... in runs of this many, the knobs in turn */
 /* a visitor's turn: detents this far apart, so that the tables built ahead have the time they get
  * in front of the exhibit */
 #define KIOSK_DETENT_SECONDS 0.1
@@ -57,43 +58,55 @@ static int show_preview(struct kiosk_view *v, const struct kiosk_state *st, stru
     return 0;
 }
 
-/* KIOSK_BENCH_PREVIEWS detents of one knob, as the kiosk's events turn it (the scene's own mapping
+/* KIOSK_BENCH_PREVIEWS detents of each knob, as the kiosk's events turn it (the scene's own mapping
  * where it has one), KIOSK_DETENT_SECONDS apart: one up, one down, in turn (the other way first where
  * the knob's end stops it), so that each knob is timed about the same view, and what differs between
  * the two knobs is their own work (a table, an upload), not a larger shadow or a faster camera that
- * a sweep of one of them would show. */
-static int time_knob(struct kiosk_view *v, const struct kiosk_config *c, struct kiosk_state *st,
-                     struct screen *screen, enum input_knob knob, double *preview, double *table_ms, struct error *e)
+ * a sweep of one of them would show. Each knob from the scene's start view; the two take turns in
+ * runs of KIOSK_BENCH_RUN detents (a visitor turns one knob at a time; a run of each knob in each
+ * half of the time, so that a loaded machine's slow moment does not fall on one knob alone). */
+static int time_knobs(struct kiosk_view *v, const struct kiosk_config *c, int scene, struct screen *screen,
+                      double preview[2], double table_ms[2], struct error *e)
 {
-    double times[KIOSK_BENCH_PREVIEWS], tables[KIOSK_BENCH_PREVIEWS];
-    long direction = 1;
-    for (int i = 0; i < KIOSK_BENCH_PREVIEWS; i++) {
-        struct input_event ev = {.kind = INPUT_KNOB, .knob = knob, .counts = direction, .bit = -1};
+    double times[2][KIOSK_BENCH_PREVIEWS], tables[2][KIOSK_BENCH_PREVIEWS];
+    struct kiosk_state st[2];
+    long direction[2] = {1, 1};
+    for (int knob = 0; knob < 2; knob++) {
+        kiosk_state_reset(&st[knob], c);
+        st[knob].scene = scene;
+    }
+    int n[2] = {0, 0};
+    for (int turn = 0; turn < 2 * KIOSK_BENCH_PREVIEWS; turn++) {
+        int knob = (turn / KIOSK_BENCH_RUN) % 2, i = n[knob]++;
+        struct input_event ev = {.kind = INPUT_KNOB, .knob = (enum input_knob)knob, .counts = direction[knob],
+                                 .bit = -1};
         struct event_outcome o = {0};
-        struct kiosk_state was = *st;
-        kiosk_event_apply(c, st, &v->base, &ev, &o);
+        struct kiosk_state was = st[knob];
+        kiosk_event_apply(c, &st[knob], &v->base, &ev, &o);
         if (!o.changed) {
-            *st = was;
-            direction = -direction;
-            ev.counts = direction;
-            kiosk_event_apply(c, st, &v->base, &ev, &o);
+            st[knob] = was;
+            direction[knob] = -direction[knob];
+            ev.counts = direction[knob];
+            kiosk_event_apply(c, &st[knob], &v->base, &ev, &o);
         }
-        direction = -direction;
+        direction[knob] = -direction[knob];
         double paced = clock_seconds() + KIOSK_DETENT_SECONDS;
         double built = renderer_orbit_build_seconds(v->renderer);
         double t0 = clock_seconds();
-        if (show_preview(v, st, screen, e) != 0)
+        if (show_preview(v, &st[knob], screen, e) != 0)
             return -1;
-        times[i] = clock_seconds() - t0;
-        tables[i] = 1e3 * (renderer_orbit_build_seconds(v->renderer) - built);
+        times[knob][i] = clock_seconds() - t0;
+        tables[knob][i] = 1e3 * (renderer_orbit_build_seconds(v->renderer) - built);
         double rest = paced - clock_seconds();
         if (rest > 0.0) {
             struct timespec ts = {(time_t)rest, (long)((rest - (double)(time_t)rest) * 1e9)};
             nanosleep(&ts, NULL);
         }
     }
-    *preview = median(times, KIOSK_BENCH_PREVIEWS);
-    *table_ms = median(tables, KIOSK_BENCH_PREVIEWS);
+    for (int knob = 0; knob < 2; knob++) {
+        preview[knob] = median(times[knob], KIOSK_BENCH_PREVIEWS);
+        table_ms[knob] = median(tables[knob], KIOSK_BENCH_PREVIEWS);
+    }
     return 0;
 }
 
@@ -112,13 +125,9 @@ static int time_scene(struct kiosk_view *v, const struct kiosk_config *c, struct
     /* the first band of a refinement compiles the refined frame's programs: not timed */
     if (kiosk_view_refine(v, e) != 0)
         return -1;
-    /* each knob from the scene's start view */
-    for (int knob = INPUT_KNOB_SPEED; knob <= INPUT_KNOB_MASS; knob++) {
-        kiosk_state_reset(&st, c);
-        st.scene = scene;
-        if (time_knob(v, c, &st, screen, (enum input_knob)knob, &t->preview_median[knob], &t->table_ms[knob], e) != 0)
-            return -1;
-    }
+    /* each knob from the scene's start view, the two in turn */
+    if (time_knobs(v, c, scene, screen, t->preview_median, t->table_ms, e) != 0)
+        return -1;
     /* the first band of a refinement makes the band-sized ray state; that is part of the wait */
     t0 = clock_seconds();
     t->bands = 0;
@@ -190,8 +199,8 @@ int bench_kiosk(struct bench *b, struct error *e)
                    "through the kiosk's own view, events and compositor (src/kiosk/kiosk_view.c). First frame: from "
                    "the switch to the scene to its first preview on screen. Then %d detents of each knob, %.1f s "
                    "apart as a visitor turns it (the scene's own mapping where it has one), from the scene's start "
-                   "view, one up and one down in turn, so that both knobs are timed about the same view: the "
-                   "median preview at "
+                   "view, one up and one down in turn, so that both knobs are timed about the same view, the two "
+                   "knobs in turn in runs of %d detents: the median preview at "
                    "%dx%d, put on a %dx%d screen, and the median milliseconds per detent that the render thread "
                    "spent building orbit tables or waiting for the worker that builds them ahead (0 for scenes "
                    "without a table). Then the time from the knobs at rest to the refined %dx%d frame on screen, "
@@ -205,7 +214,7 @@ int bench_kiosk(struct bench *b, struct error *e)
                    "detent | refined s | bands | previews here | refined here | previews Pi 4 | refined Pi 4 | "
                    "anti-aliased s |\n"
                    "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
-            shown, KIOSK_BENCH_PREVIEWS, KIOSK_DETENT_SECONDS, c.kiosk.preview_width, c.kiosk.preview_height,
+            shown, KIOSK_BENCH_PREVIEWS, KIOSK_DETENT_SECONDS, KIOSK_BENCH_RUN, c.kiosk.preview_width, c.kiosk.preview_height,
             c.kiosk.width, c.kiosk.height, c.kiosk.width, c.kiosk.height, v.band_rows, c.kiosk.refine_samples,
             KIOSK_TARGET_PREVIEW_FPS,
             KIOSK_TARGET_REFINED_SECONDS, KIOSK_PI4_SPEED_FRACTION, pi4_fps, pi4_refined);
