@@ -55,6 +55,15 @@ static void disk_scene(struct scene *s, vec3d camera, vec3d up, int width, int h
 
 /* ---- 1. g against the closed form ---- */
 
+/* Whether pixel (i, j)'s ray, traced by the CPU reference, hits the disk (object 0); its launch
+ * direction and the ray. */
+static int disk_hit(const struct scene *s, int i, int j, vec3d *dir, struct ref_ray *ray)
+{
+    *dir = camera_ray(s, i, j);
+    hc_cpu_ray(s, *dir, ray);
+    return ray->outcome == 0;
+}
+
 /* g = sqrt(1 - 3M/r) / (sqrt(1 - 2M/r_o) (1 - Omega L_z/E)) for the static observer at the camera,
  * L_z / E from the launch direction in its frame: b = r_o sin psi / sqrt(1 - 2M/r_o), along the
  * normal of the launch plane (the photon arrives along -dir). */
@@ -84,10 +93,9 @@ static void test_shift_closed_form(void **state)
         disk_scene(&s, cameras[c], v3(0.0, 1.0, 0.0), 64, 64);
         for (int j = 0; j < 64; j += 2)
             for (int i = 0; i < 64; i += 2) {
-                vec3d dir = camera_ray(&s, i, j);
+                vec3d dir;
                 struct ref_ray ray;
-                hc_cpu_ray(&s, dir, &ray);
-                if (ray.outcome != 0)
+                if (!disk_hit(&s, i, j, &dir, &ray))
                     continue;
                 double lapse_o = sqrt(1.0 - 2.0 * s.model.mass / v3_len(s.camera.position));
                 vec3d from_mass = v3_sub(ray.hit, s.model.center);
@@ -131,10 +139,9 @@ static void test_shift_without_gravity(void **state)
         vec3d outward = v3_scale(y, 1.0 / r_o);
         for (int j = 0; j < 64; j += 2)
             for (int i = 0; i < 64; i += 2) {
-                vec3d dir = camera_ray(&s, i, j);
+                vec3d dir;
                 struct ref_ray ray;
-                hc_cpu_ray(&s, dir, &ray);
-                if (ray.outcome != 0)
+                if (!disk_hit(&s, i, j, &dir, &ray))
                     continue;
                 vec3d from_mass = v3_sub(ray.hit, s.model.center);
                 double r = v3_len(from_mass);
