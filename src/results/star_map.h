@@ -10,10 +10,9 @@
  * - Coarser levels: cells of 2x2, 4x4 ... of the first, each again the brightest stars of its
  *   block, down to 4 cells a side. A pixel looks up the level whose cells are as wide as the
  *   light of the brightest star reaches from it (its footprint, from the derivatives of its exit
- *   direction), and there the 3x3 cells about its direction: nine lookups a pixel, whatever the
- *   number of stars. Each cell also has a mask of which of the 3x3 about it hold a star, so that
- *   the pass reads only those: one lookup, and the cells with stars (of nine, about one at the
- *   kiosk's sizes).
+ *   direction), and there the 3x3 cells about its direction, whatever the number of stars: each
+ *   cell has a mask of which of the 3x3 about it hold a star, and the pass reads the mask and
+ *   then only those cells.
  * - One RGBA8 texture, two texels a star side by side, STAR_MAP_SLOTS stars a cell, brightest
  *   first: the star's place in its cell (16 bits in u,
  *   16 in v), then its magnitude (16 bits over [brightest, faintest]), its temperature (8 bits
