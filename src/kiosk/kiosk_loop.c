@@ -144,7 +144,6 @@ static void hud_view_of(struct kiosk *k, struct hud_view *v)
     v->mass = k->state.mass;
     v->camera_distance = v3_len(v3_sub(s->camera.position, s->model.center));
     v->effects = scene_has_black_body(s) ? (int)kiosk_state_effects(&k->state, s) : -1;
-    v->gravitational_shift = v->has_mass && kiosk_state_gravitational_shift(&k->state, s);
     v->fps = kiosk_view_refined(&k->view) && k->draws_last_second == 0 ? -1.0 : k->draws_last_second;
     v->refining = !kiosk_view_refined(&k->view);
     /* knobs the scene maps to its own keys show those instead of speed and mass; a mass knob mapped
@@ -160,6 +159,10 @@ static void hud_view_of(struct kiosk *k, struct hud_view *v)
     int hole_mapped = v->has_mass && strcmp(mm->key, "model.mass") == 0 && !mm->label[0];
     if (hole_mapped)
         v->mass = knob_turn_mapped(mm, s, k->state.mass_param, 0);
+    /* gravity's shift named only where there is a mass to shift the light: the hole's mass as drawn
+     * (a knob mapped to another key leaves the scene's own) */
+    double drawn_mass = !mm->key[0] || hole_mapped ? v->mass : s->model.mass;
+    v->gravitational_shift = v->has_mass && drawn_mass > 0.0 && kiosk_state_gravitational_shift(&k->state, s);
     vec3d view = v3_normalize(v3_sub(s->camera.look_at, s->camera.position));
     vec3d velocity = ms->key[0] ? s->observer.velocity : v3_scale(view, k->state.speed);
     v->shadow_share = shadow_share(s, v->mass, velocity);
