@@ -167,8 +167,8 @@ static int run_with_stars(struct renderer *r, const struct scene *s, struct rend
 int frame_run_samples(struct renderer *r, const struct scene *s, struct render_result *out, enum render_read reads,
                       enum progress_mode progress, struct error *e)
 {
-    int on_cpu = light_on_cpu(r, s), asked = renderer_hdr(r);
-    const char *asked_why = renderer_hdr_why(r);
+    int on_cpu = light_on_cpu(r, s);
+    const char *asked = renderer_hdr_why(r);   /* the caller's own float image, if any */
     /* the frame's colour read back as floats, for the CPU to finish it */
     if (on_cpu && !asked)
         renderer_set_hdr(r, bloom_active(&s->render) ? "render.bloom (the frame's colour read back as floats)"
@@ -176,9 +176,9 @@ int frame_run_samples(struct renderer *r, const struct scene *s, struct render_r
                                                        "colour read back as floats; render.star_pass = gpu draws "
                                                        "the stars in the frame's pass)");
     int rc = run_with_stars(r, s, out, reads, progress, e);
-    renderer_set_hdr(r, asked_why);
+    renderer_set_hdr(r, asked);
     if (rc == 0 && on_cpu)
-        rc = frame_bloom(s, out, asked, e);
+        rc = frame_bloom(s, out, asked != NULL, e);
     return rc;
 }
 

@@ -183,11 +183,7 @@ const struct gl_caps *renderer_caps(const struct renderer *r) { return &r->caps;
 const char *renderer_pipeline(const struct renderer *r) { return r->pipeline_name ? r->pipeline_name : "multipass"; }
 const char *renderer_pipeline_why(const struct renderer *r) { return r->pipeline_why; }
 
-void renderer_set_hdr(struct renderer *r, const char *why)
-{
-    r->hdr = why != NULL;
-    r->hdr_why = why;
-}
+void renderer_set_hdr(struct renderer *r, const char *why) { r->hdr_why = why; }
 void renderer_time_first_draws(struct renderer *r, int on) { r->time_first_draws = on; }
 
 void renderer_capture_shaders(struct renderer *r, const char *file, void (*sink)(const char *source, void *arg),
@@ -208,7 +204,7 @@ int renderer_share_programs(struct renderer *r, struct program_cache *pc)
     r->programs = pc;
     return 1;
 }
-int renderer_hdr(const struct renderer *r) { return r->hdr; }
+int renderer_hdr(const struct renderer *r) { return r->hdr_why != NULL; }
 const char *renderer_hdr_why(const struct renderer *r) { return r->hdr_why; }
 
 void renderer_set_subpixel(struct renderer *r, double dx, double dy)
@@ -226,14 +222,14 @@ void renderer_set_subpixel(struct renderer *r, double dx, double dy)
  * that is asked for. */
 static int run_single_pass(struct renderer *r, struct error *e)
 {
-    int codes = r->reads == RENDER_READ_OUTCOMES && r->path.mrt && r->path.fp32 && !r->hdr;
+    int codes = r->reads == RENDER_READ_OUTCOMES && r->path.mrt && r->path.fp32 && !r->hdr_why;
     if (codes) {
         /* two 8-bit targets where the path writes two float ones: complete on every GPU known, and
          * where one is not, the float outcomes as before */
         struct error unused;
         codes = raystate_fbo(&r->rs, r->rs.final_color, r->rs.outcome_codes, &unused) != 0;
     }
-    int colour = (r->reads == RENDER_READ_IMAGE && !r->hdr) || codes;
+    int colour = (r->reads == RENDER_READ_IMAGE && !r->hdr_why) || codes;
     if ((r->exact_orbits && orbit_prepare(r, e) != 0) ||
         stage_frame(r, codes ? FRAME_WRITES_COLOUR_CODES : colour ? FRAME_WRITES_COLOUR : FRAME_WRITES_OUTCOMES,
                     e) != 0 ||
@@ -319,14 +315,14 @@ static int image_only_refuses(const struct renderer *r, int per_segment_hook, st
     if (!r->path.image_only)
         return 0;
     const char *needs = per_segment_hook                ? "reading the rays after every segment (trace)"
-                        : r->hdr                        ? r->hdr_why
+                        : r->hdr_why                    ? r->hdr_why
                         : r->reads == RENDER_READ_STATE ? "reading the rays' state back (--dump, the pipeline view)"
                         : r->reads == RENDER_READ_SKY   ? "drawing the stars of the sky from the rays' exit directions"
                                                         : NULL;
     if (needs)
         return error_set(e, ERROR_RUNTIME, NULL, "render path image only: %s needs float render targets, and no "
                          "float format renders on this GPU (bentray info lists them)%s", needs,
-                         r->reads == RENDER_READ_SKY && !per_segment_hook && !r->hdr
+                         r->reads == RENDER_READ_SKY && !per_segment_hook && !r->hdr_why
                              ? "; render.star_pass = gpu (or auto) draws them in the frame's own pass" : "");
     if (r->reads == RENDER_READ_OUTCOMES && !r->path.mrt)
         return error_set(e, r->caps.mrt_works ? ERROR_INPUT : ERROR_RUNTIME, NULL, "render path image only: each "
@@ -471,7 +467,7 @@ int renderer_read(struct renderer *r, struct render_result *out, enum render_rea
         return -1;
     if (rows_flip(out->rgba, (size_t)rs->width * 4, rs->height) != 0)
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the image back");
-    if (r->hdr) {
+    if (r->hdr_why) {
         out->color = malloc(n * 4 * sizeof(float));
         if (!out->color)
             return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the image back");

@@ -81,7 +81,7 @@ int stage_sky(struct renderer *r, struct error *e)
     };
     if (pass_run(r, sp, rs->final_color, 0, in, 2, set_sky, r, e) != 0)
         return -1;
-    if (r->hdr) {
+    if (r->hdr_why) {
         /* the float colour into a ping-pong texture of the ray state, free once the rays are done */
         char hdr_defines[sizeof defines + 32];
         snprintf(hdr_defines, sizeof hdr_defines, "#define HDR_OUTPUT 1\n%s", defines);

@@ -50,8 +50,9 @@ struct renderer {
     int mesh_indices[SCENE_MAX_OBJECTS];
     int origin_x, origin_y;       /* image pixel of ray-state texel (0, 0) */
     double subpixel_x, subpixel_y;   /* where in its pixel each ray starts, from the centre (pixels) */
-    int hdr;                      /* the sky stage also writes the unclamped colour (renderer_set_hdr) */
-    const char *hdr_why;          /* what needs it, for the image-only path's refusal */
+    /* what needs the unclamped colour, which the sky stage then also writes (renderer_set_hdr);
+     * NULL: nothing. Named for the image-only path's refusal. */
+    const char *hdr_why;
     char model_defines[256];      /* model, method, steps per pass */
     char model_file[64];          /* model_NAME.glsl; model_flat.glsl for straight rays */
     int straight;                 /* rays are straight: one segment, not integrated */
