@@ -25,6 +25,14 @@ void main()
     gl_FragColor = vec4(low, middle, high, 255.0 * step(-1.0, x)) / 255.0;
     return;
 #endif
+#ifdef PROBE_PACKING
+    // A float's four bytes (pack.glsl) unpacked, times u_value.x, and packed again: exact only
+    // where the fragment shader computes in 32-bit floats (src/gl/packing.c). u_value.y: the size
+    // of a texel of the source in texture coordinates.
+    float x = unpack_float(texture2D(u_source, gl_FragCoord.xy * u_value.y));
+    gl_FragColor = pack_float(x * u_value.x);
+    return;
+#endif
 #ifdef PROBE_ARITHMETIC
     // What the fragment shader really computes in: u_value.x = u_value.y = 1 + 2^-12, which 32-bit
     // floats hold and 16-bit ones round to 1; their product less 1, times u_value.z = 1024, is

@@ -2,6 +2,7 @@
 #include "cli/commands.h"
 #include "cli/options.h"
 #include "gl/caps.h"
+#include "gl/packing.h"
 #include "gl/shader.h"
 #include "render/path.h"
 #include "render/renderer.h"
@@ -56,7 +57,9 @@ static void print_paths(const struct gl_caps *c)
     else
         printf("  %-14s yes (the image%s; the rest of the ray state cannot be read)\n", "image only",
                c->mrt_works ? " and the rays' outcomes in 8-bit targets" : " alone: no MRT for the outcomes");
-    printf("  %-14s no: not built (docs/HARDWARE.md)\n", "packed 8-bit");
+    /* the packing itself is probed; the ray state in it is the next step (docs/HARDWARE.md) */
+    printf("  %-14s no: the ray state in it is not built (docs/HARDWARE.md); packing floats into RGBA8 texels: %s%s\n",
+           "packed 8-bit", c->packing ? "exact, " : "", c->packing_why);
 }
 
 static void print_caps(const struct gl_caps *c)
@@ -269,6 +272,7 @@ int cmd_info(int argc, char **argv)
             printf("back-end:        %s: probe failed: %s\n\n", list[i], e.message);
             failures++;
         } else {
+            probe_packing(&caps);
             print_caps(&caps);
             printf("\n");
             shown++;

@@ -522,6 +522,9 @@ int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, struct error 
     probe_query(c, prog);
     probe_blit(c);
     probe_arithmetic(c);
+    /* the packing is probed where it is asked about (bentray info): no path takes it yet */
+    c->packing = 0;
+    snprintf(c->packing_why, sizeof c->packing_why, "not probed");
     probe_loops(c);
     glDeleteProgram(prog);
     const struct float_format *best = caps_format(c, 1);

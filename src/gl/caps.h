@@ -30,6 +30,9 @@ struct gl_caps {
      * in fp16; a GPU without highp computes bentray's mediump shaders in fp16 or less) */
     int fragment_fp32;
     char fragment_fp32_why[160];
+    /* floats unpacked from RGBA8 texels and packed again came back bit for bit (gl/packing.h) */
+    int packing;
+    char packing_why[160];
     int max_texture_size, max_draw_buffers;
     int derivatives;                 /* dFdx, dFdy in fragment shaders (the GPU's star pass) */
     int max_fragment_uniform_vectors, max_texture_units;
@@ -78,6 +81,7 @@ int gl_has_extension(const char *name);
  *   no_highp             the GPU reports no highp float in fragment shaders: they declare mediump,
  *                        which llvmpipe then really computes in 16-bit floats
  *   fp16_alu             the arithmetic probe finds 16-bit floats although highp is reported (lima)
+ *   packing              the packing probe finds a float that does not come back bit for bit
  *   loop_limit           the loop probe finds loops ended after 4096 turns (llvmpipe: 65535)
  *   slow_previews        the kiosk measures its previews 100 times slower, and at least 20 us a
  *                        pixel, as on a slow GPU

@@ -125,8 +125,13 @@ for sc in schwarzschild lorenz demo; do
 done
 check "image only in info" 0 "render path: +image only: no float format renders here" -- $NOFLOAT $BT info --backend egl
 # info's ladder: every path with yes or why not, the pipelines and exact orbits as they follow
-check "info lists the paths" 0 "^  fp32\+mrt +yes \(RGBA32F\) \|.*   fp16 +yes \(RGBA16F; reduced accuracy\) \|   image only +not taken: a float format renders \|   packed 8-bit +no: not built" -- \
+check "info lists the paths" 0 "^  fp32\+mrt +yes \(RGBA32F\) \|.*   fp16 +yes \(RGBA16F; reduced accuracy\) \|   image only +not taken: a float format renders \|   packed 8-bit +no: the ray state in it is not built .*: exact, 256 floats" -- \
     sh -c "$BT info --backend egl | grep '^  [a-z]' | tr '\n' '|' | sed 's/|/ | /g'"
+# the packing probed where it is needed: an ES 2 GPU without float textures (VC4's kind)
+check "info: packing exact on gles2 without float textures" 0 "^  packed 8-bit +no: the ray state in it is not built .*: exact, 256 floats" -- \
+    env MESA_GLES_VERSION_OVERRIDE=2.0 MESA_EXTENSION_OVERRIDE="-GL_OES_texture_float -GL_OES_texture_half_float" $BT info --backend egl
+check "info: packing refused by its fault" 0 "^  packed 8-bit +no: .* packed as .*\(BT_FAULT=packing\)" -- \
+    env BT_FAULT=packing $BT info --backend egl
 check "info lists the paths, none renders" 0 "^  fp32\+mrt +no: no 32-bit float format renders \|.*   image only +yes \(the image and the rays' outcomes in 8-bit targets.*pipeline: +single pass only.*exact orbits: +yes: .* sampled as RGBA32F" -- \
     sh -c "$NOFLOAT $BT info --backend egl | grep '^  [a-z]\|^pipeline\|^exact' | tr '\n' '|' | sed 's/|/ | /g'"
 check "info: exact orbits on a 16-bit ray state in the single pass" 0 "^exact orbits: +yes: .* sampled as RGBA32F, in the single pass" -- \
