@@ -16,7 +16,7 @@ uniform float u_observer_gamma;
 // Pixel centres at (i + 0.5) / W (paper 004's eye rays).
 vec3 observer_view_direction()
 {
-    vec2 pixel_centre = u_pixel_origin + gl_FragCoord.xy;
+    vec2 pixel_centre = u_pixel_origin + ray_pixel() + 0.5;
     vec2 ndc = pixel_centre / u_image_size * 2.0 - 1.0;
     return normalize(u_camera_forward + ndc.x * u_camera_right + ndc.y * u_camera_up);
 }

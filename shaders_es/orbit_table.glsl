@@ -57,7 +57,7 @@ orbit_ray orbit_ray_of()
     float along = dot(d, u_orbit_axis);
     vec3 across = d - along * u_orbit_axis;
 #else
-    vec2 pixel = u_pixel_origin + gl_FragCoord.xy;
+    vec2 pixel = u_pixel_origin + ray_pixel() + 0.5;
     vec2 offset = ((pixel - u_orbit_axis_pixel_hi) - u_orbit_axis_pixel_lo) * u_orbit_pixel_scale;
     vec3 across = u_orbit_across0 + offset.x * u_orbit_across_x + offset.y * u_orbit_across_y;
     float along = u_orbit_along.x + offset.x * u_orbit_along.y + offset.y * u_orbit_along.z;

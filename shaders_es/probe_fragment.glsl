@@ -26,7 +26,7 @@ void main()
     return;
 #endif
 #ifdef PROBE_PACKING
-    // A float's four bytes (pack.glsl) unpacked, times u_value.x, and packed again: exact only
+    // A float's four bytes (common.glsl, pack_float) unpacked, times u_value.x, and packed again: exact only
     // where the fragment shader computes in 32-bit floats (src/gl/packing.c). u_value.y: the size
     // of a texel of the source in texture coordinates.
     float x = unpack_float(texture2D(u_source, gl_FragCoord.xy * u_value.y));

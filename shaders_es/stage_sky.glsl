@@ -6,5 +6,6 @@ uniform sampler2D u_ray_velocity;
 
 void main()
 {
-    gl_FragColor = sky_final_colour(fetch(u_image), fetch(u_ray_velocity).xyz);
+    // the colour as it is, or on the packed path a float colour (HDR_OUTPUT) packed (common.glsl)
+    gl_FragColor = state_written(sky_final_colour(fetch(u_image), fetch(u_ray_velocity).xyz));
 }

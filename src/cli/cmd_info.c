@@ -48,6 +48,7 @@ static void print_paths(const struct gl_caps *c)
         any += why[0] == 'y';
         printf("  %-14s %s\n", ladder[i].name, why);
     }
+    int image_only = !any && c->long_loops && c->fragment_highp;
     if (any)
         printf("  %-14s not taken: a float format renders\n", "image only");
     else if (!c->long_loops)
@@ -57,9 +58,15 @@ static void print_paths(const struct gl_caps *c)
     else
         printf("  %-14s yes (the image%s; the rest of the ray state cannot be read)\n", "image only",
                c->mrt_works ? " and the rays' outcomes in 8-bit targets" : " alone: no MRT for the outcomes");
-    /* the packing itself is probed; the ray state in it is the next step (docs/HARDWARE.md) */
-    printf("  %-14s no: the ray state in it is not built (docs/HARDWARE.md); packing floats into RGBA8 texels: %s%s\n",
-           "packed 8-bit", c->packing ? "exact, " : "", c->packing_why);
+    /* the packing is probed here whatever the path (cmd_info runs probe_packing) */
+    if (!c->packing)
+        printf("  %-14s no: %s\n", "packed 8-bit", c->packing_why);
+    else if (any || image_only)
+        printf("  %-14s not taken: %s (packing floats into RGBA8 texels: exact, %s)\n", "packed 8-bit",
+               any ? "a float format renders" : "the image-only path is", c->packing_why);
+    else
+        printf("  %-14s yes (each 32-bit float of the ray state in an RGBA8 texel: %s)\n", "packed 8-bit",
+               c->packing_why);
 }
 
 static void print_caps(const struct gl_caps *c)

@@ -1,4 +1,5 @@
 #include "gl/caps.h"
+#include "gl/packing.h"
 #include "gl/quad.h"
 #include "gl/readback.h"
 #include "gl/texture.h"
@@ -522,11 +523,14 @@ int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, struct error 
     probe_query(c, prog);
     probe_blit(c);
     probe_arithmetic(c);
-    /* the packing is probed where it is asked about (bentray info): no path takes it yet */
-    c->packing = 0;
-    snprintf(c->packing_why, sizeof c->packing_why, "not probed");
     probe_loops(c);
     glDeleteProgram(prog);
+    /* the packing, where the packed path may be taken: no float format renders (bentray info probes
+     * it everywhere) */
+    c->packing = 0;
+    snprintf(c->packing_why, sizeof c->packing_why, "not probed: a float format renders");
+    if (!caps_format(c, 1) && !caps_format(c, 0))
+        probe_packing(c);
     const struct float_format *best = caps_format(c, 1);
     probe_mrt(c, best ? best : caps_format(c, 0));
     return 0;

@@ -8,19 +8,18 @@
 #include <string.h>
 
 int gl_pack_round_trip(const struct shader_target *t, const uint32_t *in, int side, float factor,
-                       uint32_t *out)
+                       uint32_t *out, struct error *e)
 {
     static const char *const vs[] = {"quad_vertex.glsl", NULL};
-    static const char *const fs[] = {"pack.glsl", "probe_fragment.glsl", NULL};
-    struct error err;
-    GLuint prog = shader_program_build(t, "#define PROBE_PACKING 1\n", vs, fs, &err);
+    static const char *const fs[] = {"common.glsl", "probe_fragment.glsl", NULL};
+    GLuint prog = shader_program_build(t, "#define PROBE_PACKING 1\n#define BT_TARGET 0\n", vs, fs, e);
     if (!prog)
         return -1;
     size_t n = (size_t)side * side;
     unsigned char *bytes = malloc(4 * n);
     if (!bytes) {
         glDeleteProgram(prog);
-        return -1;
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory for %d packed floats", side * side);
     }
     for (size_t i = 0; i < n; i++)
         for (int k = 0; k < 4; k++)
@@ -56,7 +55,7 @@ int gl_pack_round_trip(const struct shader_target *t, const uint32_t *in, int si
     free(bytes);
     while (glGetError() != GL_NO_ERROR) {
     }
-    return complete ? 0 : -1;
+    return complete ? 0 : error_set(e, ERROR_RUNTIME, NULL, "the packing's RGBA8 target is incomplete");
 }
 
 uint32_t packed_product(uint32_t x, float factor, uint32_t *also)
@@ -120,8 +119,9 @@ void probe_packing(struct gl_caps *c)
     static const float factors[] = {1.0f, -2.0f};
     c->packing = 0;
     for (int f = 0; f < 2; f++) {
-        if (gl_pack_round_trip(&c->shader, in, PACKING_PROBE_SIDE, factors[f], out) != 0) {
-            snprintf(c->packing_why, sizeof c->packing_why, "the packing probe does not compile or draw");
+        struct error e;
+        if (gl_pack_round_trip(&c->shader, in, PACKING_PROBE_SIDE, factors[f], out, &e) != 0) {
+            snprintf(c->packing_why, sizeof c->packing_why, "the packing probe fails: %.120s", e.message);
             return;
         }
         for (int i = 0; i < N; i++) {

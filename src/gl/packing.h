@@ -1,4 +1,4 @@
-/* 32-bit floats in RGBA8 texels on the GPU (shaders_es/pack.glsl): the way to a ray state on a GPU
+/* 32-bit floats in RGBA8 texels on the GPU (shaders_es/common.glsl, pack_float): the way to a ray state on a GPU
  * without float textures. Exact only where the fragment shaders compute in 32-bit floats, so the
  * probe runs it: floats unpacked, scaled and packed again must come back bit for bit. */
 #ifndef BT_PACKING_H
@@ -9,9 +9,9 @@
 /* side x side floats, as their IEEE 754 bits (in[y * side + x] the texel at x, y; high byte in r),
  * unpacked on the GPU, times factor, packed again and read back into out the same way. side a
  * power of two up to the GPU's largest texture. 0, or -1 where the program does not compile or
- * the target is incomplete (out left alone). */
+ * the target is incomplete (out left alone), with e. */
 int gl_pack_round_trip(const struct shader_target *t, const uint32_t *in, int side, float factor,
-                       uint32_t *out);
+                       uint32_t *out, struct error *e);
 
 /* The bits x * factor has in 32-bit IEEE arithmetic as the packing gives them back: x unpacked (a
  * subnormal as zero, NaN as infinity of its sign), times factor. A product below the smallest

@@ -187,21 +187,22 @@ static void dump_program(const char *dir, const char *vertex_whole, const char *
 
 static void preamble(const struct shader_target *t, GLenum stage, char *out, size_t n)
 {
+    const char *packed = t->state_packed ? "#define STATE_PACKED 1\n" : "";
     if (t->dialect == DIALECT_GLSL_130) {
         /* Desktop GL (compatibility profile): GLSL 1.30 accepts the ES 1.00 source as is;
          * precision qualifiers are accepted and have no effect. */
-        snprintf(out, n, "#version 130\n#define BT_DESKTOP 1\n");
+        snprintf(out, n, "#version 130\n#define BT_DESKTOP 1\n%s", packed);
         return;
     }
     if (stage == GL_VERTEX_SHADER) {
         snprintf(out, n, "#version 100\nprecision highp float;\n");
         return;
     }
-    snprintf(out, n, "#version 100\n%s%s%s",
+    snprintf(out, n, "#version 100\n%s%s%s%s",
              t->draw_buffers_ext ? "#extension GL_EXT_draw_buffers : require\n" : "",
              t->derivatives_ext ? "#extension GL_OES_standard_derivatives : enable\n" : "",
              t->fragment_highp ? "precision highp float;\nprecision highp sampler2D;\n"
-                               : "precision mediump float;\n");
+                               : "precision mediump float;\n", packed);
 }
 
 /* Driver logs say "S:L(C): ..." with S the source string; each file after the preamble

@@ -11,6 +11,7 @@ struct shader_target {
     int fragment_highp;        /* the fragment stage has highp float */
     int draw_buffers_ext;      /* GLSL ES 1.00 needs #extension GL_EXT_draw_buffers for gl_FragData[1] */
     int derivatives_ext;       /* and #extension GL_OES_standard_derivatives for dFdx, dFdy */
+    int state_packed;          /* the packed path's programs: #define STATE_PACKED 1 (render/path.h) */
     /* every fragment shader compiled whose files include capture_file is handed to capture whole, as
      * the GL compiles it: preamble, defines, each file after its #line (bentray info --shader) */
     const char *capture_file;

@@ -274,12 +274,12 @@ static int take_state(struct kiosk *k, const struct kiosk_state *asked)
     const struct kiosk_state *proposed = &corrected;
     /* the pipeline view shows every ray's final state, which the image-only path cannot read back */
     if (corrected.pipeline_view && !k->state.pipeline_view && k->view.renderer &&
-        !renderer_state_readable(k->view.renderer)) {
+        !renderer_state_sampled(k->view.renderer)) {
         corrected.pipeline_view = 0;
         notice(k, "no pipeline view", "it shows the rays' state, and this GPU renders into no float texture");
         if (k->log) {
             fprintf(k->log, "bentray kiosk: no pipeline view: it shows the rays' state, and this GPU renders into no "
-                    "float texture (render path image only)\n");
+                    "float texture (render path %s)\n", renderer_path(k->view.renderer)->name);
             fflush(k->log);
         }
         if (kiosk_state_same(&corrected, &k->state))

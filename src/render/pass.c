@@ -92,10 +92,17 @@ int pass_run_targets(struct renderer *r, const struct stage_program *sp, const G
         if (!fbo)
             return -1;
         const struct program_uniforms *prog = &sp->program[k];
+        /* the target's size: on the packed path, a float target's fragments are the four texels of
+         * each ray's block (u_pixel_scale 0.5) and every float texture read is that size too */
+        int w, h, state_w, state_h;
+        raystate_texture_size(rs, out[k], &w, &h);
+        raystate_texture_size(rs, rs->position[0], &state_w, &state_h);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-        glViewport(0, 0, rs->width, rs->height);
+        glViewport(0, 0, w, h);
         glUseProgram(prog->id);
-        glUniform2f(program_uniform(prog, "u_inv_size"), 1.0f / (float)rs->width, 1.0f / (float)rs->height);
+        glUniform2f(program_uniform(prog, "u_inv_size"), 1.0f / (float)state_w, 1.0f / (float)state_h);
+        if (rs->packed)
+            glUniform1f(program_uniform(prog, "u_pixel_scale"), w == rs->width ? 1.0f : 0.5f);
         for (int i = 0; i < n_inputs; i++) {
             if (raystate_storage(rs, inputs[i].texture, e) != 0)
                 return -1;

@@ -97,6 +97,27 @@ static int image_only(const struct gl_caps *c, enum mrt_choice mrt, struct rende
     return 0;
 }
 
+/* The packed path's textures: RGBA8, each texel one float of a 32-bit ray state (raystate.h). */
+static const struct float_format packed_rgba8 = {"RGBA8 (packed floats)", GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, 1, 1, ""};
+
+static int packed(const struct gl_caps *c, enum mrt_choice mrt, struct render_path *p, struct error *e)
+{
+    if (mrt == MRT_ON)
+        return error_set(e, ERROR_INPUT, NULL, "mrt=on: the packed path (no float format renders here) writes one "
+                         "target a pass");
+    p->format = &packed_rgba8;
+    p->packed = 1;
+    p->fp32 = 1;
+    p->mrt = 0;
+    p->table_format = NULL;
+    p->name = "packed 8-bit";
+    (void)c;
+    snprintf(p->description, sizeof p->description, "packed 8-bit: no float format renders here (bentray info), so "
+             "each 32-bit float of the ray state is packed into an RGBA8 texel (probed exact), x and v written in "
+             "separate passes");
+    return 0;
+}
+
 int render_path_choose(const struct gl_caps *c, enum precision_choice precision, enum mrt_choice mrt,
                        struct render_path *p, struct error *e)
 {
@@ -116,9 +137,13 @@ int render_path_choose(const struct gl_caps *c, enum precision_choice precision,
     if (!f32 && !f16) {
         if (precision == PRECISION_AUTO && c->long_loops && c->fragment_highp)
             return image_only(c, mrt, p, e);
+        if (precision != PRECISION_FP16 && c->packing)
+            return packed(c, mrt, p, e);
         return error_set(e, whose, NULL, "this GPU has no renderable float format for the ray state (%s; %s); "
-                         "bentray needs RGBA32F or RGBA16F render targets%s", why32, why16,
-                         c->long_loops ? "" : ", or long fragment-shader loops (OpenGL ES 3) for the image alone");
+                         "bentray needs RGBA32F or RGBA16F render targets%s, or floats packed into RGBA8 texels "
+                         "exactly (%s)", why32, why16,
+                         c->long_loops ? "" : ", or long fragment-shader loops (OpenGL ES 3) for the image alone",
+                         c->packing_why);
     }
     if (mrt == MRT_ON && !c->mrt_works)
         return error_set(e, ERROR_INPUT, NULL, "mrt=on: multiple render targets do not work here (%s)", c->mrt_why);

@@ -13,11 +13,16 @@ struct render_path {
      * frame's image (and its rays' outcome codes, with mrt) into 8-bit targets, and no other part
      * of the ray state can be read (renderer_run refuses what needs it) */
     int image_only;
+    /* 1: no float format renders and the GPU runs no long loops (GLES 2: VC4), but its fragment
+     * shaders pack floats into RGBA8 texels exactly (gl/packing.h): the ray state's float textures
+     * hold each texel as a 2x2 block of RGBA8 texels, one float each, and the multipass scheme runs
+     * on them one target a pass (raystate.h) */
+    int packed;
     const struct float_format *table_format;  /* the 32-bit float format the orbit table is sampled
                                                  from: the ray state's where it is 32-bit, else
                                                  RGBA32F on GLES 3 and desktop GL (the single pass
                                                  only, renderer.c), NULL on GLES 2's fp16 paths */
-    const char *name;         /* "fp32+mrt", "fp32", "fp16+mrt", "fp16", "image only" */
+    const char *name;         /* "fp32+mrt", "fp32", "fp16+mrt", "fp16", "image only", "packed 8-bit" */
     char description[256];
 };
 

@@ -92,7 +92,8 @@ int program_cache_fits(const struct program_cache *pc, const struct shader_targe
 {
     return pc->mrt == mrt && pc->target.dialect == target->dialect &&
            pc->target.fragment_highp == target->fragment_highp &&
-           pc->target.draw_buffers_ext == target->draw_buffers_ext && !target->capture && !pc->target.capture;
+           pc->target.draw_buffers_ext == target->draw_buffers_ext && pc->target.state_packed == target->state_packed &&
+           !target->capture && !pc->target.capture;
 }
 
 void program_cache_release(struct program_cache *pc)

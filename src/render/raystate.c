@@ -1,6 +1,7 @@
 #include "render/raystate.h"
 #include "gl/readback.h"
 #include "gl/texture.h"
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,7 +36,9 @@ static GLuint make_fbo(struct raystate *rs, const GLuint target[RAYSTATE_MAX_TAR
         glFramebufferTexture2D(GL_FRAMEBUFFER, buffers[i], GL_TEXTURE_2D, target[i], 0);
     if (n > 1)
         glDrawBuffers(n, buffers);    /* draw-buffer state belongs to the framebuffer: set once */
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rs->depth);
+    /* on the packed path the depth buffer is the float textures' size: an 8-bit target has none */
+    if (!(rs->packed && byte_texture(rs, target[0])))
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rs->depth);
     /* the presentation image and the walk's state are 8-bit: only the float targets are the render
      * path's concern */
     *status = render_path_framebuffer_status(byte_texture(rs, target[0]) ? NULL : rs->format, n);
@@ -94,7 +97,9 @@ int raystate_init(struct raystate *rs, const struct render_path *path, int width
     /* 16 bits are plenty: the buffer holds only 0 (terminated) and 1, and the quads sit at 0 and 0.5 */
     glGenRenderbuffers(1, &rs->depth);
     glBindRenderbuffer(GL_RENDERBUFFER, rs->depth);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT16, width, height);
+    rs->packed = path->packed;
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT16, rs->packed ? 2 * width : width,
+                          rs->packed ? 2 * height : height);
     rs->format = f;
     rs->path_name = path->name;
     rs->mrt = path->mrt;
@@ -147,25 +152,34 @@ int raystate_storage(struct raystate *rs, GLuint texture, struct error *e)
     if (!f && !byte_texture(rs, texture))
         return error_set(e, ERROR_RUNTIME, NULL, "render path %s: the ray state's float textures are needed, and no "
                          "float format renders on this GPU", rs->path_name);
+    int w, h;
+    raystate_texture_size(rs, texture, &w, &h);
     if (byte_texture(rs, texture))
-        texture_define(texture, GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, rs->width, rs->height);
+        texture_define(texture, GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
     else
-        texture_define(texture, f->internal_format, f->format, f->type, rs->width, rs->height);
+        texture_define(texture, f->internal_format, f->format, f->type, w, h);
     glBindTexture(GL_TEXTURE_2D, (GLuint)bound);
     char what[160];
     snprintf(what, sizeof what, "render path %s: allocating the ray state (a %s texture of %dx%d)", rs->path_name,
-             byte_texture(rs, texture) ? "RGBA8" : f->name, rs->width, rs->height);
+             byte_texture(rs, texture) ? "RGBA8" : f->name, w, h);
     if (gl_check(what, e) != 0)
         return -1;   /* not kept as given: a later pass tries again, and fails as clearly */
     rs->stored[rs->n_stored++] = texture;
     return 0;
 }
 
+void raystate_texture_size(const struct raystate *rs, GLuint texture, int *width, int *height)
+{
+    int twice = rs->packed && !byte_texture(rs, texture);
+    *width = twice ? 2 * rs->width : rs->width;
+    *height = twice ? 2 * rs->height : rs->height;
+}
+
 size_t raystate_bytes(const struct raystate *rs)
 {
-    size_t texel = rs->format ? (rs->format->is_fp32 ? 16 : 8) : 0;
+    size_t texel = rs->format ? (rs->format->is_fp32 ? 16 : 8) : 0;   /* packed: four RGBA8 texels */
     size_t texels = (size_t)rs->width * rs->height;
-    size_t bytes = texels * 2;   /* the 16-bit depth buffer */
+    size_t bytes = texels * (rs->packed ? 8 : 2);   /* the 16-bit depth buffer, four texels a ray packed */
     for (int i = 0; i < rs->n_stored; i++)
         bytes += texels * (byte_texture(rs, rs->stored[i]) ? 4 : texel);
     if (rs->hdr_color)
@@ -175,9 +189,10 @@ size_t raystate_bytes(const struct raystate *rs)
 
 GLuint raystate_hdr_color(struct raystate *rs)
 {
-    if (!rs->hdr_color)
-        rs->hdr_color = texture_create_nearest(rs->format->internal_format, rs->format->format, rs->format->type,
-                                               rs->width, rs->height);
+    if (!rs->hdr_color) {
+        int w = rs->packed ? 2 * rs->width : rs->width, h = rs->packed ? 2 * rs->height : rs->height;
+        rs->hdr_color = texture_create_nearest(rs->format->internal_format, rs->format->format, rs->format->type, w, h);
+    }
     return rs->hdr_color;
 }
 
@@ -231,6 +246,27 @@ GLuint raystate_fbo_targets(struct raystate *rs, const GLuint target[RAYSTATE_MA
     return fbo;
 }
 
+/* A packed float texture read back: each texel's four floats from its 2x2 block of RGBA8 texels,
+ * their bytes high first (shaders_es/common.glsl, pack_float), GL's row order. */
+static int read_packed(struct raystate *rs, float *out, struct error *e)
+{
+    int w = rs->width, h = rs->height;
+    unsigned char *bytes = malloc((size_t)16 * w * h);
+    if (!bytes)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the packed ray state back");
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, 2 * w, 2 * h, GL_RGBA, GL_UNSIGNED_BYTE, bytes);
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++)
+            for (int c = 0; c < 4; c++) {
+                const unsigned char *b = bytes + 4 * ((size_t)(2 * y + c / 2) * 2 * w + 2 * x + c % 2);
+                uint32_t bits = (uint32_t)b[0] << 24 | (uint32_t)b[1] << 16 | (uint32_t)b[2] << 8 | b[3];
+                memcpy(&out[4 * ((size_t)y * w + x) + c], &bits, sizeof bits);
+            }
+    free(bytes);
+    return gl_check("reading the packed ray state back", e);
+}
+
 int raystate_read(struct raystate *rs, GLuint texture, float *out, struct error *e)
 {
     int w = rs->width, h = rs->height;
@@ -238,7 +274,10 @@ int raystate_read(struct raystate *rs, GLuint texture, float *out, struct error 
     if (!fbo)
         return -1;
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    if (read_float_pixels(0, 0, w, h, out) != 0)
+    if (rs->packed) {
+        if (read_packed(rs, out, e) != 0)
+            return -1;
+    } else if (read_float_pixels(0, 0, w, h, out) != 0)
         return error_set(e, ERROR_RUNTIME, NULL, "the ray state cannot be read back as floats");
     /* GL rows run bottom-up; images and dumps run top-down */
     if (rows_flip(out, (size_t)w * 4 * sizeof *out, h) != 0)

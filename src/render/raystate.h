@@ -39,6 +39,9 @@ struct raystate {
     struct { GLuint target[RAYSTATE_MAX_TARGETS], fbo; } fbos[RAYSTATE_MAX_FBOS];
     int n_fbos;
     const struct float_format *format;  /* of every texture but the RGBA8 ones; for messages */
+    /* the packed path (render/path.h): every float texture, and the depth buffer, twice as wide and
+     * high, each texel a 2x2 block of RGBA8 texels, one float each (shaders_es/common.glsl) */
+    int packed;
     const char *path_name;         /* the render path these textures serve */
     int mrt;
     GLuint stored[RAYSTATE_TEXTURES];  /* the textures given memory so far (raystate_storage) */
@@ -60,6 +63,9 @@ int raystate_storage(struct raystate *rs, GLuint texture, struct error *e);
 int raystate_stored(const struct raystate *rs, GLuint texture);
 /* Bytes of GPU memory the ray state's textures hold now (the depth buffer included). */
 size_t raystate_bytes(const struct raystate *rs);
+/* The size of TEXTURE, one of the ray state's, in texels: the image's, twice it for a float texture
+ * on the packed path. */
+void raystate_texture_size(const struct raystate *rs, GLuint texture, int *width, int *height);
 /* Framebuffer with target0 (and target1 when nonzero) and the shared depth buffer attached;
  * made once and cached. */
 GLuint raystate_fbo(struct raystate *rs, GLuint target0, GLuint target1, struct error *e);

@@ -114,9 +114,12 @@ static int renderer_open(struct renderer *r, const struct gl_context *ctx, const
         quad_release();
         return -1;
     }
-    if (scene->render.width > r->caps.max_texture_size || scene->render.height > r->caps.max_texture_size) {
-        error_set(e, ERROR_INPUT, NULL, "image size %dx%d exceeds this GPU's texture limit %d", scene->render.width,
-                  scene->render.height, r->caps.max_texture_size);
+    /* the packed path's float textures are twice the image's size each way (raystate.h) */
+    int largest = r->path.packed ? r->caps.max_texture_size / 2 : r->caps.max_texture_size;
+    if (scene->render.width > largest || scene->render.height > largest) {
+        error_set(e, ERROR_INPUT, NULL, "image size %dx%d exceeds this GPU's texture limit %d%s", scene->render.width,
+                  scene->render.height, r->caps.max_texture_size,
+                  r->path.packed ? " at twice its size each way (the packed path's ray state)" : "");
         quad_release();
         return -1;
     }
@@ -146,7 +149,9 @@ static int renderer_open(struct renderer *r, const struct gl_context *ctx, const
         quad_release();
         return -1;
     }
-    program_cache_init(&r->own_programs, &r->caps.shader, r->path.mrt);
+    struct shader_target target = r->caps.shader;
+    target.state_packed = r->path.packed;
+    program_cache_init(&r->own_programs, &target, r->path.mrt);
     r->programs = &r->own_programs;
     r->programs_ready = 1;
     if (renderer_follow_scene(r, e) != 0)
@@ -333,7 +338,27 @@ static int image_only_refuses(const struct renderer *r, int per_segment_hook, st
     return 0;
 }
 
+/* On the packed path, what needs a float render target or the ray state at its own size: -1 with
+ * e, refused before any pass, else 0. */
+static int packed_refuses(const struct renderer *r, struct error *e)
+{
+    if (!r->path.packed)
+        return 0;
+    /* the float colour is packed as the ray state is, four fragments a ray: no derivatives across rays */
+    if (r->hdr_why && r->star_map)
+        return error_set(e, ERROR_RUNTIME, NULL, "render path packed 8-bit: %s with render.star_pass = gpu: the "
+                         "packed float colour's pass cannot take the stars' derivatives; star_pass = cpu (or auto) "
+                         "draws them", r->hdr_why);
+    for (int k = 0; k < r->scene->n_objects; k++)
+        if (polygons_draw_object(r, k))
+            return error_set(e, ERROR_RUNTIME, NULL, "render path packed 8-bit: render.moving_objects = polygons "
+                             "draws into float targets, and no float format renders on this GPU (moving_objects = "
+                             "rays traces [object %s] on any)", r->scene->objects[k].name);
+    return 0;
+}
+
 int renderer_state_readable(const struct renderer *r) { return !r->path.image_only; }
+int renderer_state_sampled(const struct renderer *r) { return !r->path.image_only && !r->path.packed; }
 int renderer_gpu_stars(const struct renderer *r) { return r->star_map != 0; }
 
 int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, int origin_y, int width, int height,
@@ -365,7 +390,8 @@ int renderer_run(struct renderer *r, const struct scene *scene, int origin_x, in
     r->origin_x = origin_x;
     r->origin_y = origin_y;
     struct pipeline_choice_made run;
-    if (image_only_refuses(r, hook != NULL, e) != 0 || pipeline_choose(r, hook != NULL, &run, e) != 0)
+    if (image_only_refuses(r, hook != NULL, e) != 0 || packed_refuses(r, e) != 0 ||
+        pipeline_choose(r, hook != NULL, &run, e) != 0)
         return -1;
     r->pipeline_name = pipeline_name(run.kind);
     snprintf(r->pipeline_why, sizeof r->pipeline_why, "%s", run.why);

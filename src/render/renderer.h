@@ -48,6 +48,9 @@ const struct render_path *renderer_path(const struct renderer *r);
  * stars of the sky, a float image): not on the image-only path (render/path.h), whose runs refuse
  * to be asked for it. */
 int renderer_state_readable(const struct renderer *r);
+/* Whether the ray state's textures hold floats a shader can sample (the kiosk's pipeline view):
+ * not on the image-only path, nor on the packed path, whose textures hold bytes. */
+int renderer_state_sampled(const struct renderer *r);
 /* Whether the frame's own pass draws the stars of [sky] (render.star_pass = gpu, or auto on a path
  * whose rays' state cannot be read back); else the CPU's pass adds them after the frame. */
 int renderer_gpu_stars(const struct renderer *r);

@@ -92,7 +92,12 @@ check "kiosk leaves out a scene this GPU cannot draw" 0 "lorenz_single.scene: th
 check "kiosk logs each scene's render path" 0 "starflight.scene: fp32\+mrt: RGBA32F ray state" -- \
     env BT_FAULT=loop_limit $BT kiosk --config "$TMP/gpu/k.conf" --out "$TMP/gpu/out" --frames 2 --force
 check "kiosk on a GPU that can draw none of its scenes" 3 "starflight.scene: this GPU \(.*\) cannot draw it: this GPU has no renderable float format.*this GPU \(.*\) can draw none of the 2 scenes; stopped \(exit 3: the service does not start it again\)" -- \
-    sh -c "NOGPU='MESA_GLES_VERSION_OVERRIDE=2.0 BT_FAULT=float_render,half_float_render'; env \$NOGPU $BT kiosk --config $TMP/gpu/k.conf --out $TMP/gpu/none --frames 2 2>&1 | tr '\n' ' '; exit \$(env \$NOGPU $BT kiosk --config $TMP/gpu/k.conf --out $TMP/gpu/none --frames 2 >/dev/null 2>&1; echo \$?)"
+    sh -c "NOGPU='MESA_GLES_VERSION_OVERRIDE=2.0 BT_FAULT=float_render,half_float_render,packing'; env \$NOGPU $BT kiosk --config $TMP/gpu/k.conf --out $TMP/gpu/none --frames 2 2>&1 | tr '\n' ' '; exit \$(env \$NOGPU $BT kiosk --config $TMP/gpu/k.conf --out $TMP/gpu/none --frames 2 >/dev/null 2>&1; echo \$?)"
+# GLES 2 without float textures (VC4's kind), where the fragment shaders pack floats exactly: the
+# packed path draws the scenes (lorenz_single's forced single pass is left out: GLES 2 runs no long loops)
+mkdir -p "$TMP/gpu/packed"
+check "kiosk on gles2 without float textures draws packed" 0 "starflight.scene: packed 8-bit: .* \| 2 frames$" -- \
+    sh -c "env MESA_GLES_VERSION_OVERRIDE=2.0 MESA_EXTENSION_OVERRIDE='-GL_OES_texture_float -GL_OES_texture_half_float' $BT kiosk --config $TMP/gpu/k.conf --out $TMP/gpu/packed --frames 2 2>&1 | grep 'packed 8-bit' | tr '\n' '|' | sed 's/|/ | /g'; echo \$(ls $TMP/gpu/packed/frame_*.png | wc -l) frames"
 # a GPU that renders into no float texture but runs long loops (OpenGL ES 3) shows every scene on
 # the image-only path, the very frames of the float path; its pipeline view, which shows the rays'
 # state, is refused on screen and in the log, and the kiosk goes on

@@ -109,8 +109,20 @@ check "fbo fault in info" 0 "render path: +fp16\+mrt: .*fell back from fp32\+mrt
 check "float format does not render" 0 "fp16\+mrt: RGBA16F ray state" -- \
     env BT_FAULT=float_render $BT render --scene $S --size 32x24 --out "$TMP/j.png"
 check "float fault in info" 0 "RGBA32F +no: not a render target \(BT_FAULT=float_render\)" -- env BT_FAULT=float_render $BT info --backend egl
-check "no float format renders (gles2)" 1 "no renderable float format for the ray state.*or long fragment-shader loops \(OpenGL ES 3\) for the image alone" -- \
-    env MESA_GLES_VERSION_OVERRIDE=2.0 BT_FAULT=float_render,half_float_render $BT render --scene $S --size 32x24 --backend egl --out "$TMP/k.png"
+check "no float format renders nor packs (gles2)" 1 "no renderable float format for the ray state.*or long fragment-shader loops \(OpenGL ES 3\) for the image alone, or floats packed into RGBA8 texels exactly \(.*BT_FAULT=packing" -- \
+    env MESA_GLES_VERSION_OVERRIDE=2.0 BT_FAULT=float_render,half_float_render,packing $BT render --scene $S --size 32x24 --backend egl --out "$TMP/k.png"
+# GLES 2 without float textures (VC4's kind): the packed path, the multipass scheme on 32-bit floats
+# packed into RGBA8 texels, draws the very picture, rays and outcomes of the fp32 multipass scheme
+# one target a pass (exact orbits integrated with rk4 there: the orbit table is a float texture)
+PACKED="env MESA_GLES_VERSION_OVERRIDE=2.0 MESA_EXTENSION_OVERRIDE='-GL_OES_texture_float -GL_OES_texture_half_float'"
+for sc in test lorenz schwarzschild; do
+    check "packed path draws the fp32 multipass picture ($sc)" 0 "^same$" -- sh -c "$PACKED $BT render --scene assets/scenes/$sc.scene \
+        --size 40x30 --set render.method=rk4 --force --out $TMP/pk_p.png --dump $TMP/pk_p.dump 2>$TMP/pk_p.log && $BT render \
+        --scene assets/scenes/$sc.scene --size 40x30 --set render.method=rk4 --set render.pipeline=multipass --no-mrt --force \
+        --out $TMP/pk_f.png --dump $TMP/pk_f.dump 2>$TMP/pk_f.log && grep -q 'packed 8-bit: ' $TMP/pk_p.log && \
+        cmp $TMP/pk_p.png $TMP/pk_f.png && $BT compare $TMP/pk_p.dump $TMP/pk_f.dump | grep -q 'outcome differs: 0 of' && \
+        $BT compare $TMP/pk_p.dump $TMP/pk_f.dump | grep -qE 'hit point +[0-9]+ +0 +0 +0 ' && echo same"
+done
 # no float format renders, but the GPU runs long loops: the image-only path, the single pass's image
 # and outcome codes in 8-bit targets, the very picture and summary of the float path; what needs
 # the rest of the ray state is refused before any pass, with what needs it
@@ -125,10 +137,10 @@ for sc in schwarzschild lorenz demo; do
 done
 check "image only in info" 0 "render path: +image only: no float format renders here" -- $NOFLOAT $BT info --backend egl
 # info's ladder: every path with yes or why not, the pipelines and exact orbits as they follow
-check "info lists the paths" 0 "^  fp32\+mrt +yes \(RGBA32F\) \|.*   fp16 +yes \(RGBA16F; reduced accuracy\) \|   image only +not taken: a float format renders \|   packed 8-bit +no: the ray state in it is not built .*: exact, 256 floats" -- \
+check "info lists the paths" 0 "^  fp32\+mrt +yes \(RGBA32F\) \|.*   fp16 +yes \(RGBA16F; reduced accuracy\) \|   image only +not taken: a float format renders \|   packed 8-bit +not taken: a float format renders \(packing floats into RGBA8 texels: exact, 256 floats" -- \
     sh -c "$BT info --backend egl | grep '^  [a-z]' | tr '\n' '|' | sed 's/|/ | /g'"
 # the packing probed where it is needed: an ES 2 GPU without float textures (VC4's kind)
-check "info: packing exact on gles2 without float textures" 0 "^  packed 8-bit +no: the ray state in it is not built .*: exact, 256 floats" -- \
+check "info: packing exact on gles2 without float textures" 0 "^  packed 8-bit +yes \(each 32-bit float of the ray state in an RGBA8 texel: 256 floats" -- \
     env MESA_GLES_VERSION_OVERRIDE=2.0 MESA_EXTENSION_OVERRIDE="-GL_OES_texture_float -GL_OES_texture_half_float" $BT info --backend egl
 check "info: packing refused by its fault" 0 "^  packed 8-bit +no: .* packed as .*\(BT_FAULT=packing\)" -- \
     env BT_FAULT=packing $BT info --backend egl
