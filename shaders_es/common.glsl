@@ -32,7 +32,15 @@ uniform vec2 u_inv_size;               // 1 / ray-state texture size
 // seven; b and a: the rest of the mantissa), written and read with float arithmetic alone, as
 // GLSL ES 1.00 has no bit operations. Every normal float comes back bit for bit; zero comes back
 // as zero of either sign, a subnormal as zero (GPUs flush them), an infinity or NaN as infinity.
-// Exact only where the fragment shader computes in 32-bit floats: src/gl/caps.c probes it.
+// Exact only where the fragment shader computes in 32-bit floats: src/gl/packing.c probes it.
+
+// p times 2^bit (factor) where k holds that bit (k >= bit), the bit then taken off k
+float times_bit(float p, inout float k, float bit, float factor)
+{
+    float b = step(bit, k);
+    k -= bit * b;
+    return p * mix(1.0, factor, b);
+}
 
 // 2^e for a whole e from -126 to 127, exactly: 2^-126 times the powers 2^(2^i) that e + 126 is
 // made of, each a literal. exp2 would do where it is exact at whole numbers, which GLSL ES 1.00
@@ -40,32 +48,19 @@ uniform vec2 u_inv_size;               // 1 / ray-state texture size
 float pow2_whole(float e)
 {
     float k = e + 126.0;
-    float p = 1.1754943508222875e-38;
-    float b = step(128.0, k);
-    k -= 128.0 * b;
-    p *= mix(1.0, 1.8446744073709552e19, b);
-    p *= mix(1.0, 1.8446744073709552e19, b);
-    b = step(64.0, k);
-    k -= 64.0 * b;
-    p *= mix(1.0, 1.8446744073709552e19, b);
-    b = step(32.0, k);
-    k -= 32.0 * b;
-    p *= mix(1.0, 4294967296.0, b);
-    b = step(16.0, k);
-    k -= 16.0 * b;
-    p *= mix(1.0, 65536.0, b);
-    b = step(8.0, k);
-    k -= 8.0 * b;
-    p *= mix(1.0, 256.0, b);
-    b = step(4.0, k);
-    k -= 4.0 * b;
-    p *= mix(1.0, 16.0, b);
-    b = step(2.0, k);
-    k -= 2.0 * b;
-    p *= mix(1.0, 4.0, b);
-    b = step(1.0, k);
-    p *= mix(1.0, 2.0, b);
-    return p;
+    float p = 1.1754943508222875e-38;          // 2^-126
+    // 2^128 is no float: twice 2^64
+    float top = step(128.0, k);
+    k -= 128.0 * top;
+    p *= mix(1.0, 1.8446744073709552e19, top);
+    p *= mix(1.0, 1.8446744073709552e19, top);
+    p = times_bit(p, k, 64.0, 1.8446744073709552e19);
+    p = times_bit(p, k, 32.0, 4294967296.0);
+    p = times_bit(p, k, 16.0, 65536.0);
+    p = times_bit(p, k, 8.0, 256.0);
+    p = times_bit(p, k, 4.0, 16.0);
+    p = times_bit(p, k, 2.0, 4.0);
+    return times_bit(p, k, 1.0, 2.0);
 }
 
 // The colour that writes x's four bytes into an RGBA8 target: each byte a quarter above its
