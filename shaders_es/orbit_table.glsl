@@ -26,7 +26,21 @@ struct orbit_ray {
     float segments;                   // chords along the orbit
 };
 
+#ifdef STATE_PACKED
+// the packed path: a texel's four floats from its 2x2 block of RGBA8 texels, as the ray state is
+// packed (common.glsl); u_orbit_texel is 1 / the packed texture's size
+vec4 orbit_texel_packed(float col, float row)
+{
+    vec2 corner = 2.0 * vec2(col, row) + 0.5;
+    return vec4(unpack_float(texture2D(u_orbit_table, corner * u_orbit_texel)),
+                unpack_float(texture2D(u_orbit_table, (corner + vec2(1.0, 0.0)) * u_orbit_texel)),
+                unpack_float(texture2D(u_orbit_table, (corner + vec2(0.0, 1.0)) * u_orbit_texel)),
+                unpack_float(texture2D(u_orbit_table, (corner + vec2(1.0, 1.0)) * u_orbit_texel)));
+}
+#define ORBIT_TEXEL(col, row) orbit_texel_packed(col, row)
+#else
 #define ORBIT_TEXEL(col, row) texture2D(u_orbit_table, (vec2(col, row) + 0.5) * u_orbit_texel)
+#endif
 
 // The launch angle is measured from the radial axis nearer the critical cone (towards the mass
 // when r_o > 3M), as chi, so that chi - chi_c keeps its relative precision next to the shadow's

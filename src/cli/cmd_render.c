@@ -31,7 +31,7 @@ static void usage(FILE *out)
             "                       1 to 256; the dump follows each pixel's centre)\n"
             "GPU engine:\n"
             "  --backend B          egl, osmesa or auto (default auto: EGL, then OSMesa)\n"
-            "  --precision P        fp32, fp16 or auto: the float format of the ray state\n"
+            "  --precision P        fp32, fp16, packed or auto: the float format of the ray state\n"
             "  --no-mrt             write x and v in separate passes even where MRT works\n"
             "  --set SECTION.KEY=V  override any scene key, e.g. --set model.mass=1.5\n"
             "  --shader-dir DIR     load shaders from DIR instead of the built-in copies\n"

@@ -280,8 +280,8 @@ int options_common(struct common_options *o, const char *cmd, int id, const char
         return 0;
     }
     case OPT_PRECISION:
-        if (strcmp(v, "fp32") && strcmp(v, "fp16") && strcmp(v, "auto")) {
-            fprintf(stderr, "bentray %s: --precision: expected fp32, fp16 or auto, got '%s'\n", cmd, v);
+        if (strcmp(v, "fp32") && strcmp(v, "fp16") && strcmp(v, "packed") && strcmp(v, "auto")) {
+            fprintf(stderr, "bentray %s: --precision: expected fp32, fp16, packed or auto, got '%s'\n", cmd, v);
             return -1;
         }
         o->precision = v;
@@ -403,9 +403,10 @@ int options_load_scene(const struct common_options *o, const char *cmd, struct s
     if (o->samples)
         s->render.samples = o->samples;
     if (o->precision)
-        s->render.precision = strcmp(o->precision, "fp32") == 0   ? PRECISION_FP32
-                              : strcmp(o->precision, "fp16") == 0 ? PRECISION_FP16
-                                                                  : PRECISION_AUTO;
+        s->render.precision = strcmp(o->precision, "fp32") == 0     ? PRECISION_FP32
+                              : strcmp(o->precision, "fp16") == 0   ? PRECISION_FP16
+                              : strcmp(o->precision, "packed") == 0 ? PRECISION_PACKED
+                                                                    : PRECISION_AUTO;
     if (o->no_mrt)
         s->render.mrt = MRT_OFF;
     if (scene_validate(s, &err) != 0) {

@@ -109,12 +109,12 @@ static int packed(const struct gl_caps *c, enum mrt_choice mrt, struct render_pa
     p->packed = 1;
     p->fp32 = 1;
     p->mrt = 0;
-    p->table_format = NULL;
+    p->table_format = &packed_rgba8;   /* the orbit table packed the same way (stage_orbit.c) */
     p->name = "packed 8-bit";
-    (void)c;
-    snprintf(p->description, sizeof p->description, "packed 8-bit: no float format renders here (bentray info), so "
-             "each 32-bit float of the ray state is packed into an RGBA8 texel (probed exact), x and v written in "
-             "separate passes");
+    snprintf(p->description, sizeof p->description, "packed 8-bit: %s, so each 32-bit float of the ray state is "
+             "packed into an RGBA8 texel (probed exact), x and v written in separate passes",
+             caps_format(c, 1) || caps_format(c, 0) ? "render.precision = packed"
+                                                    : "no float format renders here (bentray info)");
     return 0;
 }
 
@@ -132,12 +132,18 @@ int render_path_choose(const struct gl_caps *c, enum precision_choice precision,
     if (precision == PRECISION_FP16 && !f16)
         return error_set(e, ERROR_INPUT, NULL, "--precision fp16: no 16-bit float render target works here (%s)",
                          why16);
+    if (precision == PRECISION_PACKED) {
+        if (!c->packing)
+            return error_set(e, ERROR_INPUT, NULL, "--precision packed: floats do not pack into RGBA8 texels exactly "
+                             "here (%s)", c->packing_why);
+        return packed(c, mrt, p, e);
+    }
     /* a failure of a path the scene forced is the user's request, of the automatic choice the machine's */
     enum error_status whose = precision != PRECISION_AUTO || mrt == MRT_ON ? ERROR_INPUT : ERROR_RUNTIME;
     if (!f32 && !f16) {
         if (precision == PRECISION_AUTO && c->long_loops && c->fragment_highp)
             return image_only(c, mrt, p, e);
-        if (precision != PRECISION_FP16 && c->packing)
+        if (precision == PRECISION_AUTO && c->packing)
             return packed(c, mrt, p, e);
         return error_set(e, whose, NULL, "this GPU has no renderable float format for the ray state (%s; %s); "
                          "bentray needs RGBA32F or RGBA16F render targets%s, or floats packed into RGBA8 texels "

@@ -44,6 +44,14 @@ static int single_pass_fits(const struct renderer *r, int per_segment_hook, char
         snprintf(why, whylen, "the rays are read back after every segment");
         return 0;
     }
+    /* the packed path is the multipass scheme's: its passes write one float a fragment */
+    if (r->path.packed) {
+        if (s->render.pipeline == PIPELINE_SINGLE)
+            return error_set(e, ERROR_INPUT, NULL, "render.pipeline = single: the packed path (render path packed "
+                             "8-bit) runs the multipass scheme; use render.pipeline = multipass or auto");
+        snprintf(why, whylen, "the packed path writes one float a fragment");
+        return 0;
+    }
     /* a loop that the GPU ends early would leave rays short of their budget, unnoticed: refused
      * even where the scene asks for the single pass (a GLES2 device that may cut loops is not
      * probed, loop_turns 0, and the scene's choice is taken there, as documented) */

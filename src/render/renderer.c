@@ -1,6 +1,7 @@
 /* The pass schedule of one frame (paper Figure 1). */
 #include "io/clock.h"
 #include "gl/quad.h"
+#include "gl/packing.h"
 #include "gl/readback.h"
 #include "render/stages.h"
 #include <math.h>
@@ -110,6 +111,9 @@ static int renderer_open(struct renderer *r, const struct gl_context *ctx, const
     }
     /* its status says whose failure it is: a forced path that this GPU lacks is the user's request,
      * no path at all the machine's */
+    /* the packing is probed at start only where no float format renders; here where it is asked for */
+    if (scene->render.precision == PRECISION_PACKED && !r->caps.packing)
+        probe_packing(&r->caps);
     if (render_path_choose(&r->caps, scene->render.precision, scene->render.mrt, &r->path, e) != 0) {
         quad_release();
         return -1;
@@ -140,12 +144,16 @@ static int renderer_open(struct renderer *r, const struct gl_context *ctx, const
                  "; exact orbits in the single pass, their table sampled as %s (rk4 where a frame takes another "
                  "pipeline)", r->path.table_format->name);
     }
-    int table_width = scene->render.orbit_columns + 1 + ORBIT_WARP_SAMPLES, table_height = 2 * scene->render.orbit_rows;
+    /* packed, the table is twice as wide and high (stage_orbit.c) */
+    int twice = r->path.packed ? 2 : 1;
+    int table_width = twice * (scene->render.orbit_columns + 1 + ORBIT_WARP_SAMPLES);
+    int table_height = twice * 2 * scene->render.orbit_rows;
     if (scene->render.method == METHOD_ORBIT_TABLE && r->path.table_format &&
         (table_width > r->caps.max_texture_size || table_height > r->caps.max_texture_size)) {
         error_set(e, ERROR_INPUT, NULL, "the orbit table (%dx%d texels for render.orbit_columns = %d, "
-                  "render.orbit_rows = %d) exceeds this GPU's texture limit %d", table_width, table_height,
-                  scene->render.orbit_columns, scene->render.orbit_rows, r->caps.max_texture_size);
+                  "render.orbit_rows = %d%s) exceeds this GPU's texture limit %d", table_width, table_height,
+                  scene->render.orbit_columns, scene->render.orbit_rows, r->path.packed ? ", packed" : "",
+                  r->caps.max_texture_size);
         quad_release();
         return -1;
     }

@@ -7,7 +7,9 @@
 #include "scene/object_bound.h"
 #include "gl/texture.h"
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* Escaping orbits are tabulated this fraction beyond the farthest point of the bounding sphere. */
@@ -78,6 +80,30 @@ static void release_table(struct orbit_table *t, GLuint *texture)
     orbit_table_free(t);
 }
 
+/* The table on the packed path: each texel's four floats in a 2x2 block of RGBA8 texels, their bytes
+ * high first, as the ray state is packed (shaders_es/common.glsl, orbit_table.glsl). */
+static int upload_packed(struct renderer *r, const struct orbit_table *t, struct error *e)
+{
+    int w = 2 * t->width, h = 2 * t->height;
+    unsigned char *bytes = malloc((size_t)4 * w * h);
+    if (!bytes)
+        return error_set(e, ERROR_RUNTIME, NULL, "out of memory packing the orbit table");
+    for (int y = 0; y < t->height; y++)
+        for (int x = 0; x < t->width; x++)
+            for (int c = 0; c < 4; c++) {
+                uint32_t bits;
+                memcpy(&bits, &t->texels[4 * ((size_t)y * t->width + x) + c], sizeof bits);
+                unsigned char *b = bytes + 4 * ((size_t)(2 * y + c / 2) * w + 2 * x + c % 2);
+                for (int k = 0; k < 4; k++)
+                    b[k] = (unsigned char)(bits >> (24 - 8 * k));
+            }
+    r->orbit_texture = texture_create_nearest(GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, bytes);
+    free(bytes);
+    return 0;
+}
+
 /* The renderer keeps two tables on the GPU: the kiosk's coarse preview table and its refined
  * frame's, which alternate while the knobs rest, are each uploaded once. Any other comes from the
  * store: built ahead where the kiosk asked for it (renderer_orbit_prefetch), else built now. */
@@ -96,13 +122,20 @@ int orbit_prepare(struct renderer *r, struct error *e)
     const struct orbit_table *t = orbit_store_get(r->orbit_store, &p, e);
     if (!t)
         return -1;
-    if (t->width > r->caps.max_texture_size || t->height > r->caps.max_texture_size)
-        return error_set(e, ERROR_INPUT, NULL, "the orbit table (%dx%d) exceeds this GPU's texture limit %d: lower "
-                         "render.orbit_rows or render.orbit_columns", t->width, t->height, r->caps.max_texture_size);
-    const struct float_format *f = r->path.table_format;
-    r->orbit_texture = texture_create_nearest(f->internal_format, f->format, GL_FLOAT, t->width, t->height);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, t->width, t->height, f->format, GL_FLOAT, t->texels);
+    int twice = r->path.packed ? 2 : 1;
+    if (twice * t->width > r->caps.max_texture_size || twice * t->height > r->caps.max_texture_size)
+        return error_set(e, ERROR_INPUT, NULL, "the orbit table (%dx%d%s) exceeds this GPU's texture limit %d: lower "
+                         "render.orbit_rows or render.orbit_columns", twice * t->width, twice * t->height,
+                         r->path.packed ? ", packed" : "", r->caps.max_texture_size);
+    if (r->path.packed) {
+        if (upload_packed(r, t, e) != 0)
+            return -1;
+    } else {
+        const struct float_format *f = r->path.table_format;
+        r->orbit_texture = texture_create_nearest(f->internal_format, f->format, GL_FLOAT, t->width, t->height);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, t->width, t->height, f->format, GL_FLOAT, t->texels);
+    }
     r->orbit = *t;
     r->orbit.texels = NULL;
     return gl_check("uploading the orbit table", e);
@@ -230,7 +263,8 @@ void orbit_set_uniforms(const struct program_uniforms *p, const struct renderer 
     glActiveTexture(GL_TEXTURE0 + UNIT_ORBIT(r));
     glBindTexture(GL_TEXTURE_2D, r->orbit_texture);
     glUniform1i(program_uniform(p, "u_orbit_table"), UNIT_ORBIT(r));
-    glUniform2f(program_uniform(p, "u_orbit_texel"), 1.0f / (float)t->width, 1.0f / (float)t->height);
+    int twice = r->path.packed ? 2 : 1;
+    glUniform2f(program_uniform(p, "u_orbit_texel"), 1.0f / (float)(twice * t->width), 1.0f / (float)(twice * t->height));
     uniform_float(p, "u_orbit_rows", t->p.rows_per_side);
     uniform_float(p, "u_orbit_columns", t->p.columns);
     uniform_float(p, "u_orbit_warps", ORBIT_WARP_SAMPLES);

@@ -41,7 +41,7 @@
 #define SCENE_MAX_FLAT_EDGE 1e9
 
 enum primitive_type { PRIM_SPHERE, PRIM_TRIANGLE, PRIM_DISK, PRIM_RECT, PRIM_COUNT };
-enum precision_choice { PRECISION_AUTO, PRECISION_FP32, PRECISION_FP16 };
+enum precision_choice { PRECISION_AUTO, PRECISION_FP32, PRECISION_FP16, PRECISION_PACKED };
 enum mrt_choice { MRT_AUTO, MRT_ON, MRT_OFF };
 /* Step-size control (paper section 4.2): fixed h; step doubling (one step of h against two of h/2);
  * the error estimate of the embedded Dormand-Prince 5(4) pair (method dopri5 only). */

@@ -112,17 +112,23 @@ check "float fault in info" 0 "RGBA32F +no: not a render target \(BT_FAULT=float
 check "no float format renders nor packs (gles2)" 1 "no renderable float format for the ray state.*or long fragment-shader loops \(OpenGL ES 3\) for the image alone, or floats packed into RGBA8 texels exactly \(.*BT_FAULT=packing" -- \
     env MESA_GLES_VERSION_OVERRIDE=2.0 BT_FAULT=float_render,half_float_render,packing $BT render --scene $S --size 32x24 --backend egl --out "$TMP/k.png"
 # GLES 2 without float textures (VC4's kind): the packed path, the multipass scheme on 32-bit floats
-# packed into RGBA8 texels, draws the very picture, rays and outcomes of the fp32 multipass scheme
-# one target a pass (exact orbits integrated with rk4 there: the orbit table is a float texture)
+# packed into RGBA8 texels (the orbit table too), draws the very picture, rays and outcomes of the
+# fp32 multipass scheme one target a pass
 PACKED="env MESA_GLES_VERSION_OVERRIDE=2.0 MESA_EXTENSION_OVERRIDE='-GL_OES_texture_float -GL_OES_texture_half_float'"
 for sc in test lorenz schwarzschild; do
     check "packed path draws the fp32 multipass picture ($sc)" 0 "^same$" -- sh -c "$PACKED $BT render --scene assets/scenes/$sc.scene \
-        --size 40x30 --set render.method=rk4 --force --out $TMP/pk_p.png --dump $TMP/pk_p.dump 2>$TMP/pk_p.log && $BT render \
-        --scene assets/scenes/$sc.scene --size 40x30 --set render.method=rk4 --set render.pipeline=multipass --no-mrt --force \
+        --size 40x30 --force --out $TMP/pk_p.png --dump $TMP/pk_p.dump 2>$TMP/pk_p.log && $BT render \
+        --scene assets/scenes/$sc.scene --size 40x30 --set render.pipeline=multipass --no-mrt --force \
         --out $TMP/pk_f.png --dump $TMP/pk_f.dump 2>$TMP/pk_f.log && grep -q 'packed 8-bit: ' $TMP/pk_p.log && \
         cmp $TMP/pk_p.png $TMP/pk_f.png && $BT compare $TMP/pk_p.dump $TMP/pk_f.dump | grep -q 'outcome differs: 0 of' && \
         $BT compare $TMP/pk_p.dump $TMP/pk_f.dump | grep -qE 'hit point +[0-9]+ +0 +0 +0 ' && echo same"
 done
+check "precision packed on a GPU with float targets" 0 "^lorenz: 16x12, .* packed 8-bit: render.precision = packed, .*multipass: the packed path writes one float a fragment" -- \
+    $BT render --scene assets/scenes/lorenz.scene --size 16x12 --precision packed --out "$TMP/pk_q.png"
+check "precision packed refused where floats do not pack" 2 "--precision packed: floats do not pack into RGBA8 texels exactly here \(.*BT_FAULT=packing" -- \
+    env BT_FAULT=packing $BT render --scene assets/scenes/lorenz.scene --size 16x12 --precision packed --out "$TMP/pk_r.png"
+check "precision packed takes no single pass" 2 "render.pipeline = single: the packed path .* runs the multipass scheme" -- \
+    $BT render --scene assets/scenes/lorenz.scene --size 16x12 --precision packed --set render.pipeline=single --out "$TMP/pk_s.png"
 # no float format renders, but the GPU runs long loops: the image-only path, the single pass's image
 # and outcome codes in 8-bit targets, the very picture and summary of the float path; what needs
 # the rest of the ray state is refused before any pass, with what needs it
