@@ -119,13 +119,16 @@ static int targets_written(const char *fragment)
  * textures, src/render/raystate.c, and the orbit table, src/render/orbit_store.c), 0 for 8-bit
  * colour (objects' textures, the sky, the black-body table, the orbit walk's bytes, the kiosk's
  * canvas). u_image is the ray state's image everywhere but in the kiosk's blit, which copies its
- * 8-bit canvas. */
+ * 8-bit canvas. On the packed path every texture holds bytes. */
 static int sampler_holds_floats(const char *name, const char *fragment)
 {
     static const char *const floats[] = {"u_orbit_table", "u_hit", "u_image", "u_position", "u_velocity",
                                          "u_ray_position", "u_ray_velocity", "u_segment_start", "u_segment_end",
                                          "u_state0", "u_state1", "u_outcome", NULL};
     if (strcmp(name, "u_image") == 0 && strstr(fragment, "// shaders_es/kiosk_blit.glsl"))
+        return 0;
+    /* the packed path's ray state and orbit table: bytes (render/path.h) */
+    if (strstr(fragment, "#define STATE_PACKED 1"))
         return 0;
     for (int i = 0; floats[i]; i++)
         if (strcmp(name, floats[i]) == 0)

@@ -174,7 +174,9 @@ def main():
     w("## On the GPUs of an exhibit")
     w("")
     w("Every shader program bentray builds for the shipped scenes (each with `render.pipeline` = auto, "
-      "multipass and fused, and multipass with one target a pass, `render.mrt = off`; the single passes' "
+      "multipass and fused, and multipass with one target a pass, `render.mrt = off`; the packed path's, "
+      "`render.precision = packed` (\"packed\": the multipass scheme one target a pass on floats packed into RGBA8 "
+      "texels, which a GPU without float textures takes); the single passes' "
       "variants a GPU takes, `BT_FAULT=gpu_rasterizer` (on exact orbits the walk in a pass of its own, "
       "`render.orbit_walk = separate`, and for comparison in the frame's own pass, \"single-inline\"; the "
       "integrated pass's chord cull read from its uniforms) and for the "

@@ -48,12 +48,14 @@ done
 for scene in "$work"/scenes/*.scene; do
     name=$(basename "$scene" .scene)
     # the multipass scheme also with one target a pass (render.mrt = off): the variants a GPU with
-    # one draw buffer builds (VC4, Mali-400, Mali-T720)
-    for pipeline in auto multipass fused multipass-1target single-inline; do
+    # one draw buffer builds (VC4, Mali-400, Mali-T720); and on the packed path, the variants a GPU
+    # without float textures builds (VC4)
+    for pipeline in auto multipass fused multipass-1target packed single-inline; do
         d="$work/dump/$name@$pipeline"
         mkdir -p "$d"
         set -- --set render.pipeline=$pipeline
         [ $pipeline = multipass-1target ] && set -- --set render.pipeline=multipass --set render.mrt=off
+        [ $pipeline = packed ] && set -- --set render.precision=packed
         if [ $pipeline = single-inline ]; then
             grep -q '^method = orbit_table' "$scene" || continue
             set -- --set render.pipeline=auto --set render.orbit_walk=inline
