@@ -59,13 +59,17 @@ static void print_paths(const struct gl_caps *c)
         printf("  %-14s yes (the image%s; the rest of the ray state cannot be read)\n", "image only",
                c->mrt_works ? " and the rays' outcomes in 8-bit targets" : " alone: no MRT for the outcomes");
     /* the packing is probed here whatever the path (cmd_info runs probe_packing) */
+    int fp32 = caps_format(c, 1) != NULL;
     if (!c->packing)
         printf("  %-14s no: %s\n", "packed 8-bit", c->packing_why);
-    else if (any || image_only)
+    else if (fp32 || image_only || c->long_loops)
         printf("  %-14s not taken: %s (packing floats into RGBA8 texels: exact, %s)\n", "packed 8-bit",
-               any ? "a float format renders" : "the image-only path is", c->packing_why);
+               fp32 ? "a 32-bit float format renders" : image_only ? "the image-only path is"
+                    : "the single pass keeps its rays in 32 bits, a 16-bit state stores only their results",
+               c->packing_why);
     else
-        printf("  %-14s yes (each 32-bit float of the ray state in an RGBA8 texel: %s)\n", "packed 8-bit",
+        printf("  %-14s yes%s (each 32-bit float of the ray state in an RGBA8 texel: %s)\n", "packed 8-bit",
+               any ? " for light that bends, which 16-bit floats would change; fp16 for straight rays" : "",
                c->packing_why);
 }
 
@@ -101,7 +105,8 @@ static void print_caps(const struct gl_caps *c)
         printf("framebuffer blit: no: the kiosk draws its canvas on the screen (%s)\n", c->blit_why);
     struct render_path path;
     struct error e;
-    int have_path = render_path_choose(c, PRECISION_AUTO, MRT_AUTO, &path, &e) == 0;
+    /* the path of a scene whose light bends (a flat one may take fp16 where the packed path is taken) */
+    int have_path = render_path_choose(c, PRECISION_AUTO, MRT_AUTO, 1, &path, &e) == 0;
     if (have_path)
         printf("render path:     %s\n", path.description);
     else
@@ -111,7 +116,12 @@ static void print_caps(const struct gl_caps *c)
     char else_path[128];
     snprintf(else_path, sizeof else_path, "%s", fused ? "one fused pass a segment (4 draw buffers) where the scene's objects "
                                                         "fit one pass, else multipass" : "multipass");
-    if (have_path && path.image_only)
+    if (have_path && path.packed && caps_format(c, 0))
+        printf("pipeline:        multipass for light that bends (the packed path writes one float a fragment); "
+               "straight rays %s; the single pass only when forced (%s)\n", else_path, c->long_loops_why);
+    else if (have_path && path.packed)
+        printf("pipeline:        multipass (the packed path writes one float a fragment)\n");
+    else if (have_path && path.image_only)
         printf("pipeline:        single pass only, where the scene's objects fit one pass (the image-only path: the "
                "fused pass and the multipass scheme keep the ray state in float textures)\n");
     else if (c->long_loops)

@@ -525,11 +525,12 @@ int gl_caps_probe(struct gl_caps *c, const struct gl_context *ctx, struct error 
     probe_arithmetic(c);
     probe_loops(c);
     glDeleteProgram(prog);
-    /* the packing, where the packed path may be taken: no float format renders (bentray info probes
-     * it everywhere) */
+    /* the packing, where the packed path may be taken: no 32-bit float format renders and no long
+     * loops run (bentray info probes it everywhere) */
     c->packing = 0;
-    snprintf(c->packing_why, sizeof c->packing_why, "not probed: a float format renders");
-    if (!caps_format(c, 1) && !caps_format(c, 0))
+    snprintf(c->packing_why, sizeof c->packing_why, "not probed: %s",
+             caps_format(c, 1) ? "a 32-bit float format renders" : "long loops run (the single pass)");
+    if (!caps_format(c, 1) && !c->long_loops)
         probe_packing(c);
     const struct float_format *best = caps_format(c, 1);
     probe_mrt(c, best ? best : caps_format(c, 0));

@@ -143,7 +143,7 @@ for sc in schwarzschild lorenz demo; do
 done
 check "image only in info" 0 "render path: +image only: no float format renders here" -- $NOFLOAT $BT info --backend egl
 # info's ladder: every path with yes or why not, the pipelines and exact orbits as they follow
-check "info lists the paths" 0 "^  fp32\+mrt +yes \(RGBA32F\) \|.*   fp16 +yes \(RGBA16F; reduced accuracy\) \|   image only +not taken: a float format renders \|   packed 8-bit +not taken: a float format renders \(packing floats into RGBA8 texels: exact, 256 floats" -- \
+check "info lists the paths" 0 "^  fp32\+mrt +yes \(RGBA32F\) \|.*   fp16 +yes \(RGBA16F; reduced accuracy\) \|   image only +not taken: a float format renders \|   packed 8-bit +not taken: a 32-bit float format renders \(packing floats into RGBA8 texels: exact, 256 floats" -- \
     sh -c "$BT info --backend egl | grep '^  [a-z]' | tr '\n' '|' | sed 's/|/ | /g'"
 # the packing probed where it is needed: an ES 2 GPU without float textures (VC4's kind)
 check "info: packing exact on gles2 without float textures" 0 "^  packed 8-bit +yes \(each 32-bit float of the ray state in an RGBA8 texel: 256 floats" -- \
@@ -154,7 +154,7 @@ check "info lists the paths, none renders" 0 "^  fp32\+mrt +no: no 32-bit float 
     sh -c "$NOFLOAT $BT info --backend egl | grep '^  [a-z]\|^pipeline\|^exact' | tr '\n' '|' | sed 's/|/ | /g'"
 check "info: exact orbits on a 16-bit ray state in the single pass" 0 "^exact orbits: +yes: .* sampled as RGBA32F, in the single pass" -- \
     env BT_FAULT=float_render $BT info --backend egl
-check "info: no exact orbits on gles2's 16-bit ray state" 0 "^exact orbits: +no: render.method = orbit_table integrates its rays with rk4 here" -- \
+check "info: exact orbits on gles2 packed, not on its 16-bit ray state" 0 "^exact orbits: +yes: render.method = orbit_table's table sampled as RGBA8 \(packed floats\)" -- \
     env MESA_GLES_VERSION_OVERRIDE=2.0 $BT info --backend egl
 check "image only refuses a dump" 1 "render path image only: reading the rays' state back \(--dump" -- \
     $NOFLOAT $BT render --scene $S --size 32x24 --out "$TMP/io1.png" --dump "$TMP/io1.dump"
