@@ -69,7 +69,7 @@ static void print_paths(const struct gl_caps *c)
                c->packing_why);
     else
         printf("  %-14s yes%s (each 32-bit float of the ray state in an RGBA8 texel: %s)\n", "packed 8-bit",
-               any ? " for light that bends, which 16-bit floats would change; fp16 for straight rays" : "",
+               any ? ", before fp16, whose state stored pass after pass would change rays' outcomes" : "",
                c->packing_why);
 }
 
@@ -105,8 +105,7 @@ static void print_caps(const struct gl_caps *c)
         printf("framebuffer blit: no: the kiosk draws its canvas on the screen (%s)\n", c->blit_why);
     struct render_path path;
     struct error e;
-    /* the path of a scene whose light bends (a flat one may take fp16 where the packed path is taken) */
-    int have_path = render_path_choose(c, PRECISION_AUTO, MRT_AUTO, 1, &path, &e) == 0;
+    int have_path = render_path_choose(c, PRECISION_AUTO, MRT_AUTO, &path, &e) == 0;
     if (have_path)
         printf("render path:     %s\n", path.description);
     else
@@ -116,10 +115,7 @@ static void print_caps(const struct gl_caps *c)
     char else_path[128];
     snprintf(else_path, sizeof else_path, "%s", fused ? "one fused pass a segment (4 draw buffers) where the scene's objects "
                                                         "fit one pass, else multipass" : "multipass");
-    if (have_path && path.packed && caps_format(c, 0))
-        printf("pipeline:        multipass for light that bends (the packed path writes one float a fragment); "
-               "straight rays %s; the single pass only when forced (%s)\n", else_path, c->long_loops_why);
-    else if (have_path && path.packed)
+    if (have_path && path.packed)
         printf("pipeline:        multipass (the packed path writes one float a fragment)\n");
     else if (have_path && path.image_only)
         printf("pipeline:        single pass only, where the scene's objects fit one pass (the image-only path: the "

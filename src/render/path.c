@@ -112,8 +112,8 @@ static int packed(const struct gl_caps *c, enum mrt_choice mrt, struct render_pa
     p->table_format = &packed_rgba8;   /* the orbit table packed the same way (stage_orbit.c) */
     p->name = "packed 8-bit";
     const char *why = caps_format(c, 1)   ? "render.precision = packed"
-                      : caps_format(c, 0) ? "only 16-bit floats render here, which would change the outcomes of "
-                                            "rays that bend"
+                      : caps_format(c, 0) ? "only 16-bit floats render here, which would change rays' outcomes "
+                                            "from pass to pass"
                                           : "no float format renders here (bentray info)";
     snprintf(p->description, sizeof p->description, "packed 8-bit: %s, so each 32-bit float of the ray state is "
              "packed into an RGBA8 texel (probed exact), x and v written in separate passes", why);
@@ -121,7 +121,7 @@ static int packed(const struct gl_caps *c, enum mrt_choice mrt, struct render_pa
 }
 
 int render_path_choose(const struct gl_caps *c, enum precision_choice precision, enum mrt_choice mrt,
-                       int bends, struct render_path *p, struct error *e)
+                       struct render_path *p, struct error *e)
 {
     char why32[400], why16[400];
     memset(p, 0, sizeof *p);
@@ -155,10 +155,10 @@ int render_path_choose(const struct gl_caps *c, enum precision_choice precision,
     }
     if (mrt == MRT_ON && !c->mrt_works)
         return error_set(e, ERROR_INPUT, NULL, "mrt=on: multiple render targets do not work here (%s)", c->mrt_why);
-    /* 16-bit floats would change the outcomes of rays that bend where the ray state is stored between
-     * passes (a GPU without long loops: the fused pass, the multipass scheme); packed 32-bit ones keep
-     * them. The single pass keeps its rays in 32-bit registers and stores only their results. */
-    if (precision == PRECISION_AUTO && !f32 && bends && !c->long_loops && c->packing && mrt != MRT_ON)
+    /* 16-bit floats change rays' outcomes where the ray state is stored between passes (a GPU without
+     * long loops: the fused pass, the multipass scheme); packed 32-bit ones keep them. The single pass
+     * keeps its rays in 32-bit registers and stores only their results. */
+    if (precision == PRECISION_AUTO && !f32 && !c->long_loops && c->packing && mrt != MRT_ON)
         return packed(c, mrt, p, e);
     /* the paths in order of preference: the first that the scene allows (a forced precision or MRT
      * setting is kept), the probe found working and whose ray-state framebuffer is complete */

@@ -35,16 +35,16 @@ int render_path_can_fuse(const struct gl_caps *caps, int mrt);
  * (ERROR_INPUT where the path was forced, ERROR_RUNTIME where none works). Where no float format
  * renders, the image-only path, on a GPU that runs long loops and computes in 32 bits, with the
  * precision not forced. Where only 16-bit floats render, the GPU runs no long loops (the ray state
- * is stored between passes), the rays bend (bends: a scene whose light is integrated or follows exact
- * orbits) and the GPU packs floats exactly, the packed path: a 16-bit ray state stored pass after
- * pass changes such rays' outcomes, the packed one is the 32-bit scheme's.
+ * is stored between passes) and packs floats exactly, the packed path: a 16-bit ray state stored
+ * pass after pass changes rays' outcomes (bent ones and straight ones alike), the packed one is the
+ * 32-bit scheme's.
  * The chosen path's ray-state framebuffer (its colour targets and the depth buffer, as
  * raystate_init makes them) is built once: where it is incomplete, the next path the scene allows
  * is taken (precision auto: fp32 -> fp16; mrt auto: MRT -> separate passes) and the description
  * says why. Where no allowed path's framebuffer is complete, the preferred path is returned and
  * raystate_init reports the failure. Needs the probed context current. */
 int render_path_choose(const struct gl_caps *caps, enum precision_choice precision, enum mrt_choice mrt,
-                       int bends, struct render_path *path, struct error *e);
+                       struct render_path *path, struct error *e);
 
 /* Completeness of the bound framebuffer whose `targets` colour targets (1, or 2 with MRT) have
  * format f (NULL: not a float format): glCheckFramebufferStatus, or GL_FRAMEBUFFER_UNSUPPORTED

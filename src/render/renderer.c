@@ -114,9 +114,7 @@ static int renderer_open(struct renderer *r, const struct gl_context *ctx, const
     /* the packing is probed at start only where no float format renders; here where it is asked for */
     if (scene->render.precision == PRECISION_PACKED && !r->caps.packing)
         probe_packing(&r->caps);
-    /* light that bends: integrated, or on exact orbits (the packed path keeps its outcomes) */
-    int bends = !model_is_straight(&scene->model);
-    if (render_path_choose(&r->caps, scene->render.precision, scene->render.mrt, bends, &r->path, e) != 0) {
+    if (render_path_choose(&r->caps, scene->render.precision, scene->render.mrt, &r->path, e) != 0) {
         quad_release();
         return -1;
     }
