@@ -599,18 +599,23 @@ const int ORBIT_HIT_LEVELS = 4;
 
 // best: the hit on chord a -> b (segment `segment`); a and b become the ends of the short chord
 // that carries the hit, and best its fraction, normal and uv there (its depth key is kept); lost:
-// whether the orbit misses what the chord met.
+// whether the orbit misses what the chord met; halves: which half each level kept, 2^level for a
+// second half (orbit_hit_chord finds the short chord again from them).
 void orbit_refine_hit(orbit_ray ray, float s_a, float s_b, float segment, inout vec3 a, inout vec3 b,
-                      inout candidate best, out bool lost)
+                      inout candidate best, out bool lost, out float halves)
 {
     float lo = s_a;
     float hi = s_b;
     float key = best.key;
+    float level_bit = 1.0;
+    halves = 0.0;
     for (int level = 0; level < ORBIT_HIT_LEVELS; level++) {
         float s_m = lo + 0.5 * (hi - lo);
         vec2 q = orbit_at(ray, s_m);
         vec3 m = orbit_point(ray, q, s_m);
         bool first_half = intersect_chord_meets(a, m);
+        halves += first_half ? 0.0 : level_bit;
+        level_bit *= 2.0;
         float new_lo = first_half ? lo : s_m;
         float new_hi = first_half ? s_m : hi;
         vec3 new_a = first_half ? a : m;
@@ -630,9 +635,120 @@ void orbit_refine_hit(orbit_ray ray, float s_a, float s_b, float segment, inout 
     best = last;
     best.key = key;
 }
+
+#ifdef HIT_ENDS
+// The short chord a -> b that orbit_refine_hit ended on, from the halves it kept: the same
+// fractions of the orbit, and its points there found by the same arithmetic (an end that no level
+// moved is the segment's own, as there).
+void orbit_hit_chord(orbit_ray ray, float s_a, float s_b, float halves, inout vec3 a, inout vec3 b)
+{
+    float lo = s_a;
+    float hi = s_b;
+    bool moved_a = false;
+    bool moved_b = false;
+    float rest = halves;
+    for (int level = 0; level < ORBIT_HIT_LEVELS; level++) {
+        float s_m = lo + 0.5 * (hi - lo);
+        bool second_half = rest - 2.0 * floor(0.5 * rest) >= 0.5;
+        rest = floor(0.5 * rest);
+        lo = second_half ? s_m : lo;
+        hi = second_half ? hi : s_m;
+        moved_a = moved_a || second_half;
+        moved_b = moved_b || !second_half;
+    }
+    vec3 at_lo = orbit_point(ray, orbit_at(ray, lo), lo);
+    vec3 at_hi = orbit_point(ray, orbit_at(ray, hi), hi);
+    a = moved_a ? at_lo : a;
+    b = moved_b ? at_hi : b;
+}
+#endif
 #endif
 
 #ifndef SINGLE_PASS
+// The segment's chord runs from fraction s_a of the orbit to s_b (the orbit stage's own arithmetic,
+// again).
+#ifdef ORBIT_HITS
+void orbit_segment(orbit_ray ray, out float s_a, out float s_b)
+{
+    s_a = orbit_chord_end(ray, u_segment_index);
+    vec2 q_b;
+    bool leaves;
+    orbit_chord_from(ray, s_a, u_segment_index, q_b, s_b, leaves);
+}
+#endif
+
+#if defined(HIT_CHORD)
+// The hit shaded in a pass of its own (render.hit_shading = separate, src/render/stage_intersect.c),
+// first: the closest hit on the segment's chord, nearer than the ray's hit so far: its depth key,
+// fraction and object (< 0: none) in u_hit_found's layout. On exact orbits the next pass finds it
+// again on the orbit; elsewhere this is the hit.
+void main()
+{
+    vec4 hit = fetch(u_hit);
+    vec3 a = fetch(u_segment_start).xyz;
+    vec3 b = fetch(u_segment_end).xyz;
+    candidate best = candidate(hit.w, 0.0, -1.0, vec3(0.0), vec3(0.0));
+    intersect_chord(a, b, u_segment_index, best);
+    WRITE_TARGET0(vec4(best.key, best.t, best.slot, 0.0));
+}
+#elif defined(HIT_ORBIT)
+// Second, on exact orbits: the chord's hit found again on the orbit (orbit_refine_hit), with the
+// halves that lead to its short chord; object < 0 where the chord met nothing or the orbit misses it.
+uniform sampler2D u_hit_found;
+void main()
+{
+    vec4 found_on_chord = fetch(u_hit_found);
+    vec3 a = fetch(u_segment_start).xyz;
+    vec3 b = fetch(u_segment_end).xyz;
+    candidate best = candidate(found_on_chord.x, found_on_chord.y, found_on_chord.z, vec3(0.0), vec3(0.0));
+    orbit_ray ray = orbit_ray_of();
+    float s_a, s_b;
+    orbit_segment(ray, s_a, s_b);
+    bool lost;
+    float halves;
+    orbit_refine_hit(ray, s_a, s_b, u_segment_index, a, b, best, lost, halves);
+    bool found = found_on_chord.z >= 0.0 && !lost;
+    WRITE_TARGET0(found ? vec4(best.key, best.t, best.slot, halves) : vec4(0.0, 0.0, -1.0, 0.0));
+}
+#elif defined(HIT_ENDS)
+// Third, on exact orbits: the short chord that carries the hit (orbit_hit_chord), its start in one
+// target and its end in the other. The finding and the shading in one pass were too large for VC4's
+// register allocator; each of these passes fits (`make shader-stats`).
+uniform sampler2D u_hit_found;
+void main()
+{
+    vec4 found_here = fetch(u_hit_found);
+    vec3 a = fetch(u_segment_start).xyz;
+    vec3 b = fetch(u_segment_end).xyz;
+    orbit_ray ray = orbit_ray_of();
+    float s_a, s_b;
+    orbit_segment(ray, s_a, s_b);
+    orbit_hit_chord(ray, s_a, s_b, found_here.w, a, b);
+    WRITE_TARGET0(vec4(a, 0.0));
+    WRITE_TARGET1(vec4(b, 0.0));
+}
+#elif defined(HIT_SHADE)
+// Last: the hit found shaded, as the stage in one pass shades it below, on the chord that carries it
+// (the segment's, or on exact orbits the short chord of the pass before).
+uniform sampler2D u_hit_found;
+uniform sampler2D u_hit_chord_start;
+uniform sampler2D u_hit_chord_end;
+void main()
+{
+    vec4 hit = fetch(u_hit);
+    vec4 image = fetch(u_image);
+    vec4 found_here = fetch(u_hit_found);
+    vec3 a = fetch(u_hit_chord_start).xyz;
+    vec3 b = fetch(u_hit_chord_end).xyz;
+    candidate best = candidate(found_here.x, found_here.y, found_here.z, vec3(0.0), vec3(0.0));
+    vec4 new_hit, new_image;
+    intersect_shade(best, a, b, new_hit, new_image);
+    bool found = best.slot >= 0.0;
+    WRITE_TARGET0(found ? new_hit : hit);
+    WRITE_TARGET1(found ? new_image : image);
+}
+#else
+// The intersection stage in one pass: find the closest hit of the batch, and shade it.
 void main()
 {
     vec4 hit = fetch(u_hit);
@@ -643,16 +759,13 @@ void main()
     intersect_chord(a, b, u_segment_index, best);
     bool found = best.slot >= 0.0;
 #ifdef ORBIT_HITS
-    // the segment's chord runs from fraction s_a of the orbit to s_b (the orbit stage's own
-    // arithmetic, again): the hit is found again on the orbit (orbit_hit.glsl)
+    // the hit is found again on the orbit
     orbit_ray ray = orbit_ray_of();
-    float s_a = orbit_chord_end(ray, u_segment_index);
-    vec2 q_b;
-    float s_b;
-    bool leaves;
-    orbit_chord_from(ray, s_a, u_segment_index, q_b, s_b, leaves);
+    float s_a, s_b;
+    orbit_segment(ray, s_a, s_b);
     bool lost;
-    orbit_refine_hit(ray, s_a, s_b, u_segment_index, a, b, best, lost);
+    float halves;
+    orbit_refine_hit(ray, s_a, s_b, u_segment_index, a, b, best, lost, halves);
     // a hit the orbit misses is not kept: the ray goes on (or ends at the chord's end)
     found = found && !lost;
 #endif
@@ -664,4 +777,5 @@ void main()
     WRITE_TARGET0(hit);
     WRITE_TARGET1(image);
 }
+#endif
 #endif

@@ -108,8 +108,9 @@ void main()
         bool lost = false;
         vec3 hit_a = a;
         vec3 hit_b = b;
+        float halves = 0.0;
         if (best.slot >= 0.0)
-            orbit_refine_hit(ray, s_a, s, k, hit_a, hit_b, best, lost);
+            orbit_refine_hit(ray, s_a, s, k, hit_a, hit_b, best, lost, halves);
         lost = lost && !last_try;
         bool goes_on = lost && !leaving && !falls;
         bool stops = lost && !goes_on;

@@ -137,6 +137,16 @@ static void print_caps(const struct gl_caps *c)
     else
         printf("orbit walk:      a pass of its own, then a pass that finishes each ray (a GPU: render.orbit_walk = "
                "auto takes separate)\n");
+    /* render.hit_shading = auto (stage_intersect.c: hit_shading_separate), for the multipass scheme */
+    if (c->cpu_rasterizer)
+        printf("hit shading:     in the intersection pass (a CPU rasteriser: render.hit_shading = auto takes inline)\n");
+    else if (have_path && !path.image_only && !path.mrt && path.fp32)
+        printf("hit shading:     a pass of its own after the passes that find the hit (one target a pass on a 32-bit "
+               "ray state: render.hit_shading = auto takes separate)\n");
+    else
+        printf("hit shading:     in the intersection pass (render.hit_shading = auto takes inline: %s)\n",
+               !have_path || path.image_only ? "no ray state in float textures here"
+               : path.mrt ? "MRT writes both of its targets in one pass" : "a 16-bit ray state");
 }
 
 /* The sources of the stage's programs, as compiled, in order. */

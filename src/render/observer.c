@@ -47,9 +47,9 @@ void observer_set_uniforms(const struct program_uniforms *p, const struct render
     }
     if (!doppler_colour(s))
         return;
-    glActiveTexture(GL_TEXTURE0 + UNIT_BLACKBODY);
+    glActiveTexture(GL_TEXTURE0 + UNIT_BLACKBODY(r));
     glBindTexture(GL_TEXTURE_2D, r->blackbody_lut);
-    glUniform1i(program_uniform(p, "u_blackbody"), UNIT_BLACKBODY);
+    glUniform1i(program_uniform(p, "u_blackbody"), UNIT_BLACKBODY(r));
     uniform_float(p, "u_blackbody_log_min", log(BLACKBODY_T_MIN_K));
     uniform_float(p, "u_blackbody_texels", (BLACKBODY_LUT_SIZE - 1) / log(BLACKBODY_T_MAX_K / BLACKBODY_T_MIN_K));
     uniform_float(p, "u_blackbody_size", BLACKBODY_LUT_SIZE);

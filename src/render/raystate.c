@@ -86,6 +86,8 @@ int raystate_init(struct raystate *rs, const struct render_path *path, int width
         rs->velocity[i] = texture_name_nearest();
         rs->hit[i] = texture_name_nearest();
         rs->image[i] = texture_name_nearest();
+        rs->hit_found[i] = texture_name_nearest();
+        rs->hit_chord[i] = texture_name_nearest();
     }
     GLuint *results[4] = {&rs->result_position, &rs->result_velocity, &rs->result_hit, &rs->result_image};
     for (int i = 0; i < 4; i++)
@@ -125,7 +127,8 @@ static int own_texture(const struct raystate *rs, GLuint texture)
                                            rs->hit[1],         rs->image[0],         rs->image[1],
                                            rs->result_position, rs->result_velocity, rs->result_hit,
                                            rs->result_image,   rs->final_color,      rs->outcome_codes,
-                                           rs->orbit_walk[0],  rs->orbit_walk[1]};
+                                           rs->orbit_walk[0],  rs->orbit_walk[1],    rs->hit_found[0],
+                                           rs->hit_found[1],   rs->hit_chord[0],     rs->hit_chord[1]};
     for (int i = 0; i < RAYSTATE_TEXTURES; i++)
         if (texture && own[i] == texture)
             return 1;
@@ -204,6 +207,8 @@ void raystate_release(struct raystate *rs)
     glDeleteTextures(2, rs->velocity);
     glDeleteTextures(2, rs->hit);
     glDeleteTextures(2, rs->image);
+    glDeleteTextures(2, rs->hit_found);
+    glDeleteTextures(2, rs->hit_chord);
     GLuint results[4] = {rs->result_position, rs->result_velocity, rs->result_hit, rs->result_image};
     glDeleteTextures(4, results);
     glDeleteTextures(1, &rs->final_color);

@@ -8,7 +8,7 @@
  * are written), and marks the ray in the depth buffer that every ray-state framebuffer shares.
  *
  * A texture takes memory only once a pass writes or reads it (raystate_storage): the single pass
- * writes two of the thirteen float textures (the results it ends in), or none where it draws the
+ * writes two of the seventeen float textures (the results it ends in), or none where it draws the
  * final colour itself (the kiosk, a render's summary: the RGBA8 image and outcome codes), and on
  * exact orbits with its walk in a pass of its own the two RGBA8 walk textures, so its frames
  * neither clear nor hold the others, on a board whose GPU shares 1 GB with everything else. */
@@ -21,7 +21,7 @@
 
 #define RAYSTATE_MAX_FBOS 32
 #define RAYSTATE_MAX_TARGETS 4     /* colour targets of one pass: the fused segment pass writes four */
-#define RAYSTATE_TEXTURES 17       /* the float textures below, final_color, outcome_codes, orbit_walk */
+#define RAYSTATE_TEXTURES 21       /* the float textures below, final_color, outcome_codes, orbit_walk */
 
 struct raystate {
     int width, height;
@@ -34,6 +34,10 @@ struct raystate {
                                       summary of a frame that drew its colour itself (sky_colour.glsl) */
     GLuint orbit_walk[2];          /* RGBA8: where each ray's walk along its exact orbit stopped
                                       (shaders_es/stage_orbit_walk.glsl), ping-pong */
+    GLuint hit_found[2];           /* a batch's hit found, before the pass that shades it
+                                      (render.hit_shading = separate, stage_intersect.c): depth key,
+                                      fraction, object, halves (shaders_es/stage_intersect.glsl) */
+    GLuint hit_chord[2];           /* ... on exact orbits the short chord that carries it: start, end */
     GLuint hdr_color;              /* the colour unclamped (raystate_hdr_color); 0 until asked for */
     int cur_position, cur_velocity, cur_hit;  /* indices of the current copies */
     struct { GLuint target[RAYSTATE_MAX_TARGETS], fbo; } fbos[RAYSTATE_MAX_FBOS];

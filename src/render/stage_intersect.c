@@ -26,9 +26,9 @@
 #define ORBIT_UNIFORM_VECS 16
 /* ... and the single pass's, for the integration (model, step control, bounds, rounded up) */
 #define FRAME_UNIFORM_VECS 16
-/* texture units 0-3 carry the ray state, the black-body table UNIT_BLACKBODY (4); object textures
- * start here */
-#define FIRST_OBJECT_UNIT 5
+/* texture units 0-3 (0-4) carry the ray state, the black-body table UNIT_BLACKBODY; object textures
+ * start above it */
+#define FIRST_OBJECT_UNIT(r) (UNIT_BLACKBODY(r) + 1)
 
 static const char *const prim_files[PRIM_COUNT] = {"prim_sphere.glsl", "prim_triangle.glsl", "prim_disk.glsl",
                                                    "prim_rect.glsl"};
@@ -170,7 +170,7 @@ void object_batch_set_uniforms(const struct program_uniforms *p, const void *arg
     float geometry[OBJECT_BATCH_MAX][GEOMETRY_VECS][4], material[OBJECT_BATCH_MAX][MATERIAL_VECS][4];
     float motion[OBJECT_BATCH_MAX][MOTION_VECS][4];
     GLint units[OBJECT_BATCH_MAX];
-    int unit = FIRST_OBJECT_UNIT;
+    int unit = FIRST_OBJECT_UNIT(b->r);
     for (int i = 0; i < b->count; i++) {
         const struct object *o = &s->objects[b->object[i]];
         struct object rest;
@@ -178,7 +178,7 @@ void object_batch_set_uniforms(const struct program_uniforms *p, const void *arg
         pack_geometry(&rest, geometry[i]);
         pack_motion(o, motion[i]);
         intersect_pack_material(b->r, o, b->object[i], material[i]);
-        units[i] = FIRST_OBJECT_UNIT;
+        units[i] = FIRST_OBJECT_UNIT(b->r);
         if (o->material.texture >= 0) {
             glActiveTexture(GL_TEXTURE0 + unit);
             glBindTexture(GL_TEXTURE_2D, b->r->textures[o->material.texture]);
@@ -305,7 +305,7 @@ int object_batch_defines(const struct object_batch *b, char *out, size_t len)
  * orbit table (the last unit) when rays follow exact orbits. */
 static int object_texture_units(const struct renderer *r)
 {
-    return r->caps.max_texture_units - FIRST_OBJECT_UNIT - (r->exact_orbits ? 1 : 0);
+    return r->caps.max_texture_units - FIRST_OBJECT_UNIT(r) - (r->exact_orbits ? 1 : 0);
 }
 
 int object_batch_files(const struct object_batch *b, const char **files, int n)
@@ -361,12 +361,26 @@ int frame_object_limit(const struct renderer *r)
     return pass_capacity(r, 1);
 }
 
-static int intersect_batch(struct renderer *r, const struct object_batch *b, int segment_start, struct error *e)
+int hit_shading_separate(const struct renderer *r)
 {
-    struct raystate *rs = &r->rs;
-    char defines[BATCH_DEFINES_LEN];
-    if (object_batch_defines(b, defines, sizeof defines) != 0)
-        return error_set(e, ERROR_RUNTIME, NULL, "internal: the defines of an object batch do not fit");
+    switch (r->scene->render.hit_shading) {
+    case HIT_SHADING_SEPARATE: return 1;
+    case HIT_SHADING_INLINE: return 0;
+    default: return !r->path.mrt && r->path.fp32 && !r->caps.cpu_rasterizer;
+    }
+}
+
+/* The batch's program: the stage in one pass (step NULL), or one of its passes when the hit is
+ * shaded in a pass of its own (step "HIT_CHORD", "HIT_ORBIT", "HIT_ENDS" or "HIT_SHADE"). */
+static const struct stage_program *batch_program(struct renderer *r, const struct object_batch *b, const char *step,
+                                                 struct error *e)
+{
+    char defines[BATCH_DEFINES_LEN + 32];
+    int used = step ? snprintf(defines, sizeof defines, "#define %s 1\n", step) : 0;
+    if (object_batch_defines(b, defines + used, sizeof defines - (size_t)used) != 0) {
+        error_set(e, ERROR_RUNTIME, NULL, "internal: the defines of an object batch do not fit");
+        return NULL;
+    }
     const char *files[PRIM_COUNT + 9] = {"common.glsl"};
     int n = object_batch_files(b, files, 1);
     files[n++] = "observer.glsl";
@@ -378,7 +392,67 @@ static int intersect_batch(struct renderer *r, const struct object_batch *b, int
     files[n++] = "shade.glsl";
     files[n++] = "stage_intersect.glsl";
     files[n] = NULL;
-    const struct stage_program *sp = program_cache_get(r->programs, files, defines, 1, e);
+    int one_target = step && (strcmp(step, "HIT_CHORD") == 0 || strcmp(step, "HIT_ORBIT") == 0);
+    return program_cache_get(r->programs, files, defines, !one_target, e);
+}
+
+/* The hit of one batch shaded in a pass of its own (hit_shading_separate): the closest hit on the
+ * segment's chord found first (HIT_CHORD); on exact orbits found again on the orbit (HIT_ORBIT), and
+ * the short chord that carries it written (HIT_ENDS); then shaded (HIT_SHADE), each pass a program
+ * of its own (shaders_es/stage_intersect.glsl). */
+static int intersect_batch_separate(struct renderer *r, const struct object_batch *b, int segment_start,
+                                    struct error *e)
+{
+    struct raystate *rs = &r->rs;
+    if (!r->path.fp32)
+        return error_set(e, ERROR_INPUT, NULL, "render.hit_shading = separate: the hit found would be kept between "
+                         "passes in 16-bit floats (render path %s), which round it; use render.hit_shading = inline "
+                         "or auto", r->path.name);
+    const struct pass_input segment[] = {
+        {"u_segment_start", rs->position[segment_start]},
+        {"u_segment_end", rs->position[rs->cur_position]},
+    };
+    struct pass_input chord_in[] = {segment[0], segment[1], {"u_hit", rs->hit[rs->cur_hit]}};
+    const struct stage_program *sp = batch_program(r, b, "HIT_CHORD", e);
+    if (!sp || pass_run(r, sp, rs->hit_found[0], 0, chord_in, 3, object_batch_set_uniforms, b, e) != 0)
+        return -1;
+    struct pass_input shade_in[] = {
+        {"u_hit", rs->hit[rs->cur_hit]},
+        {"u_image", rs->image[rs->cur_hit]},
+        {"u_hit_found", rs->hit_found[0]},
+        {"u_hit_chord_start", segment[0].texture},
+        {"u_hit_chord_end", segment[1].texture},
+    };
+    if (r->exact_orbits) {
+        struct pass_input orbit_in[] = {segment[0], segment[1], {"u_hit_found", rs->hit_found[0]}};
+        sp = batch_program(r, b, "HIT_ORBIT", e);
+        if (!sp || pass_run(r, sp, rs->hit_found[1], 0, orbit_in, 3, object_batch_set_uniforms, b, e) != 0)
+            return -1;
+        struct pass_input ends_in[] = {segment[0], segment[1], {"u_hit_found", rs->hit_found[1]}};
+        sp = batch_program(r, b, "HIT_ENDS", e);
+        if (!sp || pass_run(r, sp, rs->hit_chord[0], rs->hit_chord[1], ends_in, 3, object_batch_set_uniforms, b,
+                            e) != 0)
+            return -1;
+        shade_in[2].texture = rs->hit_found[1];
+        shade_in[3].texture = rs->hit_chord[0];
+        shade_in[4].texture = rs->hit_chord[1];
+    }
+    sp = batch_program(r, b, "HIT_SHADE", e);
+    int out = 1 - rs->cur_hit;
+    if (!sp || pass_run(r, sp, rs->hit[out], rs->image[out], shade_in, 5, object_batch_set_uniforms, b, e) != 0)
+        return -1;
+    rs->cur_hit = out;
+    return 0;
+}
+
+/* The paper's intersection stage for one batch: the closest hit of its objects on each ray's
+ * segment, shaded, in one pass (or in passes of their own, above). */
+static int intersect_batch(struct renderer *r, const struct object_batch *b, int segment_start, struct error *e)
+{
+    if (hit_shading_separate(r))
+        return intersect_batch_separate(r, b, segment_start, e);
+    struct raystate *rs = &r->rs;
+    const struct stage_program *sp = batch_program(r, b, NULL, e);
     if (!sp)
         return -1;
     int out = 1 - rs->cur_hit;

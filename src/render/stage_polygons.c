@@ -12,8 +12,8 @@
 #include <stdio.h>
 #include <string.h>
 
-/* texture unit of a polygon object's texture: the black-body table is UNIT_BLACKBODY */
-#define UNIT_POLYGON_TEXTURE 5
+/* texture unit of a polygon object's texture: the one above the black-body table's */
+#define UNIT_POLYGON_TEXTURE(r) (UNIT_BLACKBODY(r) + 1)
 
 int polygons_draw_object(const struct renderer *r, int k)
 {
@@ -90,9 +90,9 @@ static void draw_object(struct renderer *r, const struct program_uniforms *p, in
     uniform_vec3(p, "u_observer_rest", rest_position(&m, s->observer.time, s->camera.position));
     uniform_float(p, "u_observer_rest_time", proper_time(&m, s->observer.time, s->camera.position));
     if (o->material.texture >= 0) {
-        glActiveTexture(GL_TEXTURE0 + UNIT_POLYGON_TEXTURE);
+        glActiveTexture(GL_TEXTURE0 + UNIT_POLYGON_TEXTURE(r));
         glBindTexture(GL_TEXTURE_2D, r->textures[o->material.texture]);
-        glUniform1i(program_uniform(p, "u_texture"), UNIT_POLYGON_TEXTURE);
+        glUniform1i(program_uniform(p, "u_texture"), UNIT_POLYGON_TEXTURE(r));
     }
     glBindBuffer(GL_ARRAY_BUFFER, r->mesh_buffers[k][0]);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, r->mesh_buffers[k][1]);

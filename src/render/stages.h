@@ -21,8 +21,10 @@
  * the final colour, the sky stage (two inputs, units 0 and 1) and a single-pass frame's colour (at
  * most one, unit 0) */
 #define UNIT_STARS 2
-/* the black-body table: below the object textures, which start at FIRST_OBJECT_UNIT (intersect) */
-#define UNIT_BLACKBODY 4
+/* the black-body table: above the ray-state inputs of every pass (four; five where the intersection
+ * stage shades its hits in a pass of its own, hit_shading_separate), below the object textures,
+ * which start at the next unit (intersect_first_object_unit) */
+#define UNIT_BLACKBODY(r) (hit_shading_separate(r) ? 5 : 4)
 /* the orbit table: the GPU's last texture unit (object textures stay below it) */
 #define UNIT_ORBIT(r) ((r)->caps.max_texture_units - 1)
 
@@ -194,6 +196,15 @@ int stage_segment(struct renderer *r, int segment, struct error *e);
  * and the outcomes are read, as for a render's summary, on a path with MRT: FRAME_CODES). */
 enum frame_output { FRAME_WRITES_OUTCOMES, FRAME_WRITES_STATE, FRAME_WRITES_COLOUR, FRAME_WRITES_COLOUR_CODES };
 int stage_frame(struct renderer *r, enum frame_output output, struct error *e);
+/* Whether the multipass scheme shades a batch's hit in a pass of its own (render.hit_shading): auto
+ * takes it on a GPU where each pass writes one target (no MRT: the packed path, a GPU with one draw
+ * buffer) on a 32-bit ray state. There the stage in one pass is one program a target, each finding
+ * the hit, and on exact orbits too large for VC4's register allocator (`make shader-stats`); in
+ * passes of their own each program is smaller, and only the shading runs once a target. Not on a
+ * CPU rasteriser, which has no register file to overflow: there the extra passes and fetches cost
+ * more than the finding they save (schwarzschild on the packed path, 320x240: 10.0 s in one pass,
+ * 11.8 s separate). With MRT the stage stays one pass: fewer passes over the ray state. */
+int hit_shading_separate(const struct renderer *r);
 /* Whether a single pass on exact orbits walks in a pass of its own (render.orbit_walk; the frame's
  * pass finishes each ray in a second), where it walks at all. */
 int orbit_walk_separate(const struct renderer *r);

@@ -59,6 +59,8 @@ enum pipeline_choice { PIPELINE_AUTO, PIPELINE_MULTIPASS, PIPELINE_SINGLE, PIPEL
  * frame's pass on a CPU rasteriser), separate (a walk pass, then a pass that finishes the ray),
  * inline (one pass). The same rays either way (docs/PIPELINE.md). */
 enum orbit_walk_choice { ORBIT_WALK_AUTO, ORBIT_WALK_SEPARATE, ORBIT_WALK_INLINE };
+/* render.hit_shading: where the multipass scheme shades a batch's hit (stage_intersect.c) */
+enum hit_shading_choice { HIT_SHADING_AUTO, HIT_SHADING_SEPARATE, HIT_SHADING_INLINE };
 
 struct camera {
     vec3d position;
@@ -188,6 +190,7 @@ struct render_settings {
     int max_chords;           /* method orbit_table: most chords a ray's orbit is split into */
     int orbit_rows, orbit_columns;
     enum orbit_walk_choice orbit_walk;
+    enum hit_shading_choice hit_shading;
     enum pipeline_choice pipeline;  /* MOVING_POLYGONS: segments along each edge of a primitive's mesh */
     /* the budget of a ray, in its affine parameter (the path length of light with |v| = 1): 0 takes
      * SCENE_PATH_BOUND_DIAMETERS diameters of the bounding sphere (render_path_budget) */

@@ -38,6 +38,7 @@ static void render_defaults(struct render_settings *r)
     r->orbit_columns = 128;
     r->pipeline = PIPELINE_AUTO;
     r->orbit_walk = ORBIT_WALK_AUTO;
+    r->hit_shading = HIT_SHADING_AUTO;
     r->samples = 1;
     r->sky_alpha = 1.0;
     r->gain = 1.0;

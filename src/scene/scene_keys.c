@@ -34,6 +34,7 @@ static const struct conf_choice pipeline_names[] = {{"auto", 0}, {"multipass", 1
 static const struct conf_choice tone_curve_names[] = {{"clip", 0}, {"filmic", 1}, {NULL, 0}};
 static const struct conf_choice star_pass_names[] = {{"cpu", 0}, {"gpu", 1}, {"auto", 2}, {NULL, 0}};
 static const struct conf_choice orbit_walk_names[] = {{"auto", 0}, {"separate", 1}, {"inline", 2}, {NULL, 0}};
+static const struct conf_choice hit_shading_names[] = {{"auto", 0}, {"separate", 1}, {"inline", 2}, {NULL, 0}};
 
 _Static_assert(sizeof model_names / sizeof model_names[0] == MODEL_COUNT + 1,
                "one name per model type");
@@ -413,6 +414,7 @@ const struct conf_key scene_keys[] = {
      .offset = AT_SCENE(render.orbit_rows)},
     {SECTION_RENDER, "pipeline", CHOICE(pipeline_names, AT_SCENE(render.pipeline))},
     {SECTION_RENDER, "orbit_walk", CHOICE(orbit_walk_names, AT_SCENE(render.orbit_walk))},
+    {SECTION_RENDER, "hit_shading", CHOICE(hit_shading_names, AT_SCENE(render.hit_shading))},
     {SECTION_RENDER, "star_pass", CHOICE(star_pass_names, AT_SCENE(render.star_pass))},
     {SECTION_RENDER, "gain", CONF_NUMBER, .lo = 0.0, .hi = 1e6, .flags = CONF_ABOVE_LO, .offset = AT_SCENE(render.gain)},
     {SECTION_RENDER, "tone_curve", CHOICE(tone_curve_names, AT_SCENE(render.tone_curve))},

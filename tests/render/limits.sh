@@ -123,6 +123,20 @@ for sc in test lorenz schwarzschild; do
         cmp $TMP/pk_p.png $TMP/pk_f.png && $BT compare $TMP/pk_p.dump $TMP/pk_f.dump | grep -q 'outcome differs: 0 of' && \
         $BT compare $TMP/pk_p.dump $TMP/pk_f.dump | grep -qE 'hit point +[0-9]+ +0 +0 +0 ' && echo same"
 done
+# on a GPU (not a CPU rasteriser) the packed path shades each batch's hit in a pass of its own
+# (render.hit_shading = auto takes separate there: VC4 cannot hold the one pass on exact orbits); the
+# same picture, rays and outcomes, in more passes
+check "packed path on a GPU: the hit shaded apart, the same picture (schwarzschild)" 0 "^same$" -- sh -c "$PACKED BT_FAULT=gpu_rasterizer \
+    $BT render --scene assets/scenes/schwarzschild.scene --size 40x30 --force --out $TMP/hs_p.png --dump $TMP/hs_p.dump 2>$TMP/hs_p.log && \
+    $PACKED $BT render --scene assets/scenes/schwarzschild.scene --size 40x30 --force --out $TMP/hs_i.png --dump $TMP/hs_i.dump \
+    2>$TMP/hs_i.log && cmp $TMP/hs_p.png $TMP/hs_i.png && cmp $TMP/hs_p.dump $TMP/hs_i.dump && \
+    [ \$(sed -n 's/.* \([0-9]*\) passes .*/\\1/p' $TMP/hs_p.log) -gt \$(sed -n 's/.* \([0-9]*\) passes .*/\\1/p' $TMP/hs_i.log) ] && echo same"
+check "info: hit shading apart on a GPU without MRT" 0 "^hit shading: +a pass of its own .*auto takes separate" -- \
+    env MESA_GLES_VERSION_OVERRIDE=2.0 MESA_EXTENSION_OVERRIDE="-GL_OES_texture_float -GL_OES_texture_half_float" \
+    BT_FAULT=gpu_rasterizer $BT info --backend egl
+check "hit shading apart refused on a 16-bit ray state" 2 "render.hit_shading = separate: the hit found would be kept between passes in 16-bit floats \(render path fp16" -- \
+    $BT render --scene $S --size 16x12 --precision fp16 --set render.pipeline=multipass --set render.hit_shading=separate \
+    --out "$TMP/hs_r.png"
 check "precision packed on a GPU with float targets" 0 "^lorenz: 16x12, .* packed 8-bit: render.precision = packed, .*multipass: the packed path writes one float a fragment" -- \
     $BT render --scene assets/scenes/lorenz.scene --size 16x12 --precision packed --out "$TMP/pk_q.png"
 check "precision packed refused where floats do not pack" 2 "--precision packed: floats do not pack into RGBA8 texels exactly here \(.*BT_FAULT=packing" -- \

@@ -216,6 +216,37 @@ static void test_batches_are_exact(void **state)
     }
 }
 
+/* The hit shaded in a pass of its own (render.hit_shading = separate, which a GPU writing one target
+ * a pass takes): found once, on exact orbits found again on the orbit and its short chord written,
+ * then shaded; the same rays as the stage in one pass, in more passes. schwarzschild: exact orbits,
+ * textured objects, in batches of one too (each batch's hit found over the last's); demo: Doppler
+ * colour and an accretion disk (the black-body table one unit higher there); cube_approach: moving
+ * objects; clocks: clocks; lorenz: an integrated model. */
+static void test_hit_shading_is_exact(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *scene;
+        const char *extra;
+    } cases[] = {{"schwarzschild", NULL}, {"schwarzschild", "render.batch=1"}, {"demo", NULL},
+                 {"cube_approach", NULL}, {"clocks", NULL}, {"lorenz", NULL}, {"test", NULL}};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        const char *in_one[] = {"render.mrt=off", "render.hit_shading=inline", cases[k].extra, NULL};
+        const char *apart[] = {"render.mrt=off", "render.hit_shading=separate", cases[k].extra, NULL};
+        char what[160];
+        case_label(what, sizeof what, cases[k].scene, apart, "against inline");
+        struct hc_gpu a, b;
+        render_with(cases[k].scene, in_one, &a);
+        render_with(cases[k].scene, apart, &b);
+        assert_same_rays(&a, &b, what);
+        if (b.res.passes <= a.res.passes)
+            fail_msg("%s: %ld passes, inline %ld: the separate shading did not run", what, b.res.passes,
+                     a.res.passes);
+        hc_gpu_free(&a);
+        hc_gpu_free(&b);
+    }
+}
+
 /* K steps per pass, K = 1 being the paper's scheme: the same arithmetic in fewer passes. */
 static void test_unrolling_is_exact(void **state)
 {
@@ -795,6 +826,7 @@ int main(void)
         cmocka_unit_test(test_early_stop_is_exact),
         cmocka_unit_test(test_fused_pass_is_exact),
         cmocka_unit_test(test_batches_are_exact),
+        cmocka_unit_test(test_hit_shading_is_exact),
         cmocka_unit_test(test_unrolling_is_exact),
         cmocka_unit_test(test_single_pass_is_exact),
         cmocka_unit_test(test_single_pass_many_objects),
