@@ -263,15 +263,7 @@ static int probe_draw_rgba8(const struct gl_caps *c, const char *defines, const 
     if (!prog)
         return -1;
     GLuint tex, fbo;
-    glGenTextures(1, &tex);
-    glBindTexture(GL_TEXTURE_2D, tex);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, PROBE_SIZE, PROBE_SIZE, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
-    int complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    int complete = texture_rgba8_target(PROBE_SIZE, PROBE_SIZE, &tex, &fbo);
     if (complete) {
         glViewport(0, 0, PROBE_SIZE, PROBE_SIZE);
         set_probe(prog, v, 0);
@@ -279,9 +271,7 @@ static int probe_draw_rgba8(const struct gl_caps *c, const char *defines, const 
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, got);
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteFramebuffers(1, &fbo);
-    glDeleteTextures(1, &tex);
+    texture_rgba8_target_release(tex, fbo);
     glDeleteProgram(prog);
     while (glGetError() != GL_NO_ERROR) {
     }

@@ -27,11 +27,8 @@ int gl_pack_round_trip(const struct shader_target *t, const uint32_t *in, int si
     GLuint source = texture_create_nearest(GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, side, side);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, side, side, GL_RGBA, GL_UNSIGNED_BYTE, bytes);
-    GLuint target = texture_create_nearest(GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, side, side), fbo;
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
-    int complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    GLuint target, fbo;
+    int complete = texture_rgba8_target(side, side, &target, &fbo);
     if (complete) {
         glViewport(0, 0, side, side);
         glUseProgram(prog);
@@ -47,10 +44,8 @@ int gl_pack_round_trip(const struct shader_target *t, const uint32_t *in, int si
             out[i] = (uint32_t)bytes[4 * i] << 24 | (uint32_t)bytes[4 * i + 1] << 16 |
                      (uint32_t)bytes[4 * i + 2] << 8 | bytes[4 * i + 3];
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteFramebuffers(1, &fbo);
+    texture_rgba8_target_release(target, fbo);
     glDeleteTextures(1, &source);
-    glDeleteTextures(1, &target);
     glDeleteProgram(prog);
     free(bytes);
     while (glGetError() != GL_NO_ERROR) {

@@ -34,3 +34,19 @@ GLuint texture_create_nearest(GLint internal_format, GLenum format, GLenum type,
 {
     return texture_create(internal_format, format, type, width, height, GL_NEAREST);
 }
+
+int texture_rgba8_target(int width, int height, GLuint *tex, GLuint *fbo)
+{
+    *tex = texture_create_nearest(GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+    glGenFramebuffers(1, fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, *fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, *tex, 0);
+    return glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+}
+
+void texture_rgba8_target_release(GLuint tex, GLuint fbo)
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fbo);
+    glDeleteTextures(1, &tex);
+}

@@ -1,4 +1,6 @@
 #include "render/programs.h"
+#include "gl/caps.h"
+#include "gl/draw_check.h"
 #include "io/clock.h"
 #include <stdio.h>
 #include <stdlib.h>
@@ -128,6 +130,45 @@ static int write_key(char *key, int two_targets, const char *defines, const char
     return 0;
 }
 
+/* Whether a program may leave fragments undrawn on purpose (a `discard`): the draw check cannot tell
+ * those from a draw the driver skipped. */
+static int may_discard(const char *const *fragment_files)
+{
+    int found = 0;
+    for (int i = 0; fragment_files[i] && !found; i++) {
+        struct error e;
+        char *text = shader_load_text(fragment_files[i], &e);
+        found = text && strstr(text, "discard;") != NULL;
+        free(text);
+    }
+    return found;
+}
+
+/* Whether the driver draws with each program of a new variant (gl/draw_check.h), where the check can
+ * tell: the pass quad's programs that never discard. 0, or -1 with e naming the stage.
+ * BT_FAULT=draw_skipped: the driver skips every draw with the intersection stage in one pass, as
+ * VC4's skips a program its register allocator cannot hold (docs/HARDWARE.md). */
+static int variant_draws(const struct stage_program *sp, const char *const *vertex_files,
+                         const char *const *fragment_files, const char *defines, struct error *e)
+{
+    if (vertex_files || may_discard(fragment_files))
+        return 0;
+    const char *stage = fragment_files[0];
+    for (int i = 1; fragment_files[i]; i++)
+        stage = fragment_files[i];
+    int intersect_in_one = strcmp(stage, "stage_intersect.glsl") == 0 && !strstr(defines, "#define HIT_");
+    int fault = gl_fault("draw_skipped") && intersect_in_one;
+    for (int k = 0; k < sp->n_programs; k++)
+        if (draw_check_program(sp->program[k].id, fault) == 0)
+            return error_set(e, ERROR_RUNTIME, NULL, "the GPU's driver draws nothing with the program of %.*s (a quad "
+                             "drawn into a texel cleared to two colours left each as it was): it could not build the "
+                             "program for this GPU, as VC4's cannot one that needs more registers than it has (`make "
+                             "shader-stats`, docs/HARDWARE.md)%s%s", (int)(strlen(stage) - 5), stage,
+                             intersect_in_one ? "; render.hit_shading = separate draws this stage in smaller passes" : "",
+                             fault ? " (BT_FAULT=draw_skipped)" : "");
+    return 0;
+}
+
 const struct stage_program *program_cache_get(struct program_cache *pc, const char *const *fragment_files,
                                               const char *defines, int two_targets, struct error *e)
 {
@@ -209,6 +250,7 @@ const struct stage_program *program_cache_get_vertex(struct program_cache *pc, c
     int failed = 0;
     for (int k = 0; k < n_programs; k++)
         failed |= !ids[k] || uniforms_read(&sp.program[k], ids[k], e) != 0;
+    failed = failed || variant_draws(&sp, vertex_files, fragment_files, defines, e) != 0;
     if (failed) {
         free(kept);
         free(entry);

@@ -134,6 +134,19 @@ check "packed path on a GPU: the hit shaded apart, the same picture (schwarzschi
 check "info: hit shading apart on a GPU without MRT" 0 "^hit shading: +a pass of its own .*auto takes separate" -- \
     env MESA_GLES_VERSION_OVERRIDE=2.0 MESA_EXTENSION_OVERRIDE="-GL_OES_texture_float -GL_OES_texture_half_float" \
     BT_FAULT=gpu_rasterizer $BT info --backend egl
+# a driver that skips every draw with a program it cannot hold (VC4's, without a GL error): each new
+# program is drawn once into a texel cleared to two colours, and a scene whose program drew nothing
+# is refused with its stage; in passes of their own the stage's programs draw
+check "a program the driver does not draw is refused" 1 "the GPU's driver draws nothing with the program of stage_intersect \(.*render.hit_shading = separate draws this stage in smaller passes \(BT_FAULT=draw_skipped\)" -- \
+    env BT_FAULT=draw_skipped $BT render --scene assets/scenes/schwarzschild.scene --size 16x12 --set render.pipeline=multipass \
+    --out "$TMP/ds_r.png"
+check "a program the driver does not draw is refused (osmesa)" 1 "the GPU's driver draws nothing with the program of stage_intersect" -- \
+    env BT_FAULT=draw_skipped $BT render --scene assets/scenes/lorenz.scene --size 16x12 --set render.pipeline=multipass \
+    --backend osmesa --out "$TMP/ds_o.png"
+check "the stage in passes of their own draws where the one pass is skipped" 0 "^same$" -- sh -c "env BT_FAULT=draw_skipped \
+    $BT render --scene assets/scenes/schwarzschild.scene --size 40x30 --set render.pipeline=multipass --no-mrt \
+    --set render.hit_shading=separate --force --out $TMP/ds_s.png 2>/dev/null && $BT render --scene assets/scenes/schwarzschild.scene \
+    --size 40x30 --set render.pipeline=multipass --no-mrt --force --out $TMP/ds_i.png 2>/dev/null && cmp $TMP/ds_s.png $TMP/ds_i.png && echo same"
 check "hit shading apart refused on a 16-bit ray state" 2 "render.hit_shading = separate: the hit found would be kept between passes in 16-bit floats \(render path fp16" -- \
     $BT render --scene $S --size 16x12 --precision fp16 --set render.pipeline=multipass --set render.hit_shading=separate \
     --out "$TMP/hs_r.png"

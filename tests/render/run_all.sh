@@ -483,5 +483,7 @@ done
 check "kiosk install" 0 "^install checks: 0 failed$" -- sh -c "sh tests/render/install_check.sh | grep -v '^ok '"
 # the limits before allocation and the GL fault paths (BT_FAULT), in a script of their own
 BT=$BT tests/render/limits.sh || fails=$((fails + 1))
+# every shipped scene under every GPU an exhibit might buy: the default path's rays, or a refusal
+BT=$BT tests/render/targets.sh || fails=$((fails + 1))
 echo "command-line tests: $fails failed"
 [ "$fails" = 0 ]
