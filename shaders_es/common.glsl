@@ -132,15 +132,22 @@ vec2 ray_pixel()
     return floor(gl_FragCoord.xy * u_pixel_scale);
 }
 
-// A texel of a float texture: its four floats from the ray's block. A function: an RGBA8 texture's
-// texels are bytes, which any sampler precision holds.
+// The four floats of the 2x2 block of RGBA8 texels whose first texel is `corner` (in texels, from
+// (0, 0)) of a packed texture whose texels are texel_size across (1 / its size). A function: an
+// RGBA8 texture's texels are bytes, which any sampler precision holds.
+vec4 unpack_block(sampler2D texels, vec2 corner, vec2 texel_size)
+{
+    vec2 at = corner + 0.5;
+    return vec4(unpack_float(texture2D(texels, at * texel_size)),
+                unpack_float(texture2D(texels, (at + vec2(1.0, 0.0)) * texel_size)),
+                unpack_float(texture2D(texels, (at + vec2(0.0, 1.0)) * texel_size)),
+                unpack_float(texture2D(texels, (at + vec2(1.0, 1.0)) * texel_size)));
+}
+
+// A texel of a float texture: its four floats from the ray's block.
 vec4 fetch_packed(sampler2D state)
 {
-    vec2 corner = 2.0 * ray_pixel() + 0.5;
-    return vec4(unpack_float(texture2D(state, corner * u_inv_size)),
-                unpack_float(texture2D(state, (corner + vec2(1.0, 0.0)) * u_inv_size)),
-                unpack_float(texture2D(state, (corner + vec2(0.0, 1.0)) * u_inv_size)),
-                unpack_float(texture2D(state, (corner + vec2(1.0, 1.0)) * u_inv_size)));
+    return unpack_block(state, 2.0 * ray_pixel(), u_inv_size);
 }
 #define fetch(state) fetch_packed(state)
 

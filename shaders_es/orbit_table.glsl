@@ -29,15 +29,7 @@ struct orbit_ray {
 #ifdef STATE_PACKED
 // the packed path: a texel's four floats from its 2x2 block of RGBA8 texels, as the ray state is
 // packed (common.glsl); u_orbit_texel is 1 / the packed texture's size
-vec4 orbit_texel_packed(float col, float row)
-{
-    vec2 corner = 2.0 * vec2(col, row) + 0.5;
-    return vec4(unpack_float(texture2D(u_orbit_table, corner * u_orbit_texel)),
-                unpack_float(texture2D(u_orbit_table, (corner + vec2(1.0, 0.0)) * u_orbit_texel)),
-                unpack_float(texture2D(u_orbit_table, (corner + vec2(0.0, 1.0)) * u_orbit_texel)),
-                unpack_float(texture2D(u_orbit_table, (corner + vec2(1.0, 1.0)) * u_orbit_texel)));
-}
-#define ORBIT_TEXEL(col, row) orbit_texel_packed(col, row)
+#define ORBIT_TEXEL(col, row) unpack_block(u_orbit_table, 2.0 * vec2(col, row), u_orbit_texel)
 #else
 #define ORBIT_TEXEL(col, row) texture2D(u_orbit_table, (vec2(col, row) + 0.5) * u_orbit_texel)
 #endif

@@ -691,42 +691,53 @@ void main()
     intersect_chord(a, b, u_segment_index, best);
     WRITE_TARGET0(vec4(best.key, best.t, best.slot, 0.0));
 }
-#elif defined(HIT_ORBIT)
+#elif defined(HIT_ORBIT) || defined(HIT_ENDS)
+uniform sampler2D u_hit_found;
+
+// What the pass before found on the segment, the segment's chord a -> b, the ray's orbit and the
+// fractions of it the chord runs between.
+void found_on_segment(out vec4 found, out vec3 a, out vec3 b, out orbit_ray ray, out float s_a, out float s_b)
+{
+    found = fetch(u_hit_found);
+    a = fetch(u_segment_start).xyz;
+    b = fetch(u_segment_end).xyz;
+    ray = orbit_ray_of();
+    orbit_segment(ray, s_a, s_b);
+}
+
+#ifdef HIT_ORBIT
 // Second, on exact orbits: the chord's hit found again on the orbit (orbit_refine_hit), with the
 // halves that lead to its short chord; object < 0 where the chord met nothing or the orbit misses it.
-uniform sampler2D u_hit_found;
 void main()
 {
-    vec4 found_on_chord = fetch(u_hit_found);
-    vec3 a = fetch(u_segment_start).xyz;
-    vec3 b = fetch(u_segment_end).xyz;
-    candidate best = candidate(found_on_chord.x, found_on_chord.y, found_on_chord.z, vec3(0.0), vec3(0.0));
-    orbit_ray ray = orbit_ray_of();
+    vec4 found_on_chord;
+    vec3 a, b;
+    orbit_ray ray;
     float s_a, s_b;
-    orbit_segment(ray, s_a, s_b);
+    found_on_segment(found_on_chord, a, b, ray, s_a, s_b);
+    candidate best = candidate(found_on_chord.x, found_on_chord.y, found_on_chord.z, vec3(0.0), vec3(0.0));
     bool lost;
     float halves;
     orbit_refine_hit(ray, s_a, s_b, u_segment_index, a, b, best, lost, halves);
     bool found = found_on_chord.z >= 0.0 && !lost;
     WRITE_TARGET0(found ? vec4(best.key, best.t, best.slot, halves) : vec4(0.0, 0.0, -1.0, 0.0));
 }
-#elif defined(HIT_ENDS)
+#else
 // Third, on exact orbits: the short chord that carries the hit (orbit_hit_chord), its start in one
 // target and its end in the other. The finding and the shading in one pass were too large for VC4's
 // register allocator; each of these passes fits (`make shader-stats`).
-uniform sampler2D u_hit_found;
 void main()
 {
-    vec4 found_here = fetch(u_hit_found);
-    vec3 a = fetch(u_segment_start).xyz;
-    vec3 b = fetch(u_segment_end).xyz;
-    orbit_ray ray = orbit_ray_of();
+    vec4 found_here;
+    vec3 a, b;
+    orbit_ray ray;
     float s_a, s_b;
-    orbit_segment(ray, s_a, s_b);
+    found_on_segment(found_here, a, b, ray, s_a, s_b);
     orbit_hit_chord(ray, s_a, s_b, found_here.w, a, b);
     WRITE_TARGET0(vec4(a, 0.0));
     WRITE_TARGET1(vec4(b, 0.0));
 }
+#endif
 #elif defined(HIT_SHADE)
 // Last: the hit found shaded, as the stage in one pass shades it below, on the chord that carries it
 // (the segment's, or on exact orbits the short chord of the pass before).

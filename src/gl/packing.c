@@ -133,3 +133,33 @@ void probe_packing(struct gl_caps *c)
     snprintf(c->packing_why, sizeof c->packing_why, "%d floats of every exponent unpacked, times 1 and -2, and "
              "packed again bit for bit", N);
 }
+
+/* The byte offset of float c of texel (x, y) in the packed layout of a width-texel-wide texture. */
+static size_t packed_offset(int width, int x, int y, int c)
+{
+    return 4 * ((size_t)(2 * y + c / 2) * 2 * width + 2 * x + c % 2);
+}
+
+void packed_from_floats(const float *texels, int width, int height, unsigned char *bytes)
+{
+    for (int y = 0; y < height; y++)
+        for (int x = 0; x < width; x++)
+            for (int c = 0; c < 4; c++) {
+                uint32_t bits;
+                memcpy(&bits, &texels[4 * ((size_t)y * width + x) + c], sizeof bits);
+                unsigned char *b = bytes + packed_offset(width, x, y, c);
+                for (int k = 0; k < 4; k++)
+                    b[k] = (unsigned char)(bits >> (24 - 8 * k));
+            }
+}
+
+void packed_to_floats(const unsigned char *bytes, int width, int height, float *texels)
+{
+    for (int y = 0; y < height; y++)
+        for (int x = 0; x < width; x++)
+            for (int c = 0; c < 4; c++) {
+                const unsigned char *b = bytes + packed_offset(width, x, y, c);
+                uint32_t bits = (uint32_t)b[0] << 24 | (uint32_t)b[1] << 16 | (uint32_t)b[2] << 8 | b[3];
+                memcpy(&texels[4 * ((size_t)y * width + x) + c], &bits, sizeof bits);
+            }
+}

@@ -21,6 +21,13 @@ uint32_t packed_product(uint32_t x, float factor, uint32_t *also);
 /* Whether got, read back, is one packed_product allows (want, also). */
 int packed_as_allowed(uint32_t got, uint32_t want, uint32_t also);
 
+/* The packed layout of a float texture (shaders_es/common.glsl, unpack_block): texel (x, y) of a
+ * width x height texture of four floats a texel is the 2x2 block of RGBA8 texels at (2x, 2y) of one
+ * twice as wide and high, its x, y, z, w at (0, 0), (1, 0), (0, 1), (1, 1) of the block, each float's
+ * IEEE 754 bytes high first. Both arrays row by row from row 0; bytes holds 16 * width * height. */
+void packed_from_floats(const float *texels, int width, int height, unsigned char *bytes);
+void packed_to_floats(const unsigned char *bytes, int width, int height, float *texels);
+
 /* The probe: PACKING_PROBE_SIDE^2 floats of every exponent, once as they are and once times -2;
  * sets c->packing and c->packing_why (gl_caps_probe leaves them "not probed": no render path takes
  * the packing yet, and a probe costs every start a compile; bentray info runs it). */

@@ -1,4 +1,5 @@
 #include "render/raystate.h"
+#include "gl/packing.h"
 #include "gl/readback.h"
 #include "gl/texture.h"
 #include <stdint.h>
@@ -261,13 +262,7 @@ static int read_packed(struct raystate *rs, float *out, struct error *e)
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory reading the packed ray state back");
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, 2 * w, 2 * h, GL_RGBA, GL_UNSIGNED_BYTE, bytes);
-    for (int y = 0; y < h; y++)
-        for (int x = 0; x < w; x++)
-            for (int c = 0; c < 4; c++) {
-                const unsigned char *b = bytes + 4 * ((size_t)(2 * y + c / 2) * 2 * w + 2 * x + c % 2);
-                uint32_t bits = (uint32_t)b[0] << 24 | (uint32_t)b[1] << 16 | (uint32_t)b[2] << 8 | b[3];
-                memcpy(&out[4 * ((size_t)y * w + x) + c], &bits, sizeof bits);
-            }
+    packed_to_floats(bytes, w, h, out);
     free(bytes);
     return gl_check("reading the packed ray state back", e);
 }

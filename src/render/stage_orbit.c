@@ -5,6 +5,7 @@
  * tables built ahead (render/orbit_store.h). */
 #include "render/stages.h"
 #include "scene/object_bound.h"
+#include "gl/packing.h"
 #include "gl/texture.h"
 #include <math.h>
 #include <stdint.h>
@@ -88,15 +89,7 @@ static int upload_packed(struct renderer *r, const struct orbit_table *t, struct
     unsigned char *bytes = malloc((size_t)4 * w * h);
     if (!bytes)
         return error_set(e, ERROR_RUNTIME, NULL, "out of memory packing the orbit table");
-    for (int y = 0; y < t->height; y++)
-        for (int x = 0; x < t->width; x++)
-            for (int c = 0; c < 4; c++) {
-                uint32_t bits;
-                memcpy(&bits, &t->texels[4 * ((size_t)y * t->width + x) + c], sizeof bits);
-                unsigned char *b = bytes + 4 * ((size_t)(2 * y + c / 2) * w + 2 * x + c % 2);
-                for (int k = 0; k < 4; k++)
-                    b[k] = (unsigned char)(bits >> (24 - 8 * k));
-            }
+    packed_from_floats(t->texels, t->width, t->height, bytes);
     r->orbit_texture = texture_create_nearest(GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, bytes);
