@@ -411,6 +411,16 @@ check "BT_SHADER_DUMP's program is info --shader's" 0 "^same$" -- sh -c "BT_SHAD
 check "dumped programs compile and draw" 0 "^results: [1-9][0-9]* ok, 0 other$" -- sh -c "${COMPILE_STATS:-build/tests/gpus/compile_stats} \
     \$(ls '$TMP'/shader_dump/*.frag | sed 's/\.frag$//') 2>&1 | awk '/^== result /{ if (\$4 == \"ok\") ok++; else other++ }
     END { printf \"results: %d ok, %d other\\n\", ok, other }'"
+# every program of the packed path as a GPU builds it (the intersection stage's hit found and shaded
+# in passes of their own) keeps to GLSL ES 1.00 under glslang: exact orbits with Doppler colour, an
+# accretion disk and textures (demo), moving objects and clocks (clocks)
+mkdir -p "$TMP/packed_dump"
+check "the packed path's programs on a GPU compile under glslang" 0 "^glslang: [1-9][0-9]* compiled, 0 failed, [1-9][0-9]* of the hit passes$" -- sh -c "\
+    for sc in demo clocks; do env MESA_GLES_VERSION_OVERRIDE=2.0 MESA_EXTENSION_OVERRIDE='-GL_OES_texture_float -GL_OES_texture_half_float' \
+    BT_FAULT=gpu_rasterizer BT_SHADER_DUMP='$TMP/packed_dump' $BT render --scene assets/scenes/\$sc.scene --size 8x6 --backend egl \
+    --out '$TMP/packed_dump.png' --force >/dev/null 2>&1 || exit 1; done; ok=0; bad=0; for f in '$TMP'/packed_dump/*.frag; do \
+    case \$f in *probe_fragment*) continue;; esac; if glslangValidator -S frag \$f >/dev/null 2>&1; then ok=\$((ok + 1)); \
+    else bad=\$((bad + 1)); echo \$f; fi; done; echo glslang: \$ok compiled, \$bad failed, \$(grep -l '^#define HIT_' '$TMP'/packed_dump/*.frag | wc -l) of the hit passes"
 check "BT_SHADER_DUMP into a missing directory" 0 "BT_SHADER_DUMP: cannot write $TMP/no_such_dir/.*-stage_orbit_frame.frag: No such file" -- \
     env BT_SHADER_DUMP="$TMP/no_such_dir" $BT render --scene assets/scenes/schwarzschild.scene --size 16x12 --out "$TMP/undumped.png"
 check "info --shader unknown stage" 2 "no stage 'integrator' \(stages: fill, frame, integrate, intersect, orbit, orbit_crossings, orbit_frame," -- \
