@@ -11,7 +11,7 @@ struct frame_info {
     char path_description[256];
     char renderer[160];
     char pipeline[16];        /* "multipass", "fused segment" or "single pass" */
-    char pipeline_why[200];   /* why that one (renderer_pipeline_why) */
+    char pipeline_why[400];   /* why that one (renderer_pipeline_why) */
 };
 
 /* What a frame should bring back. */

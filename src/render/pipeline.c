@@ -127,6 +127,21 @@ static int fused_fits(const struct renderer *r, char *why, size_t whylen, struct
     return 1;
 }
 
+/* Says in the reason where the scene names a choice for a pipeline this frame does not run
+ * (render.hit_shading, render.orbit_walk): a setting that changes nothing is said, not ignored. */
+static void unused_choices(const struct renderer *r, struct pipeline_choice_made *out)
+{
+    const struct render_settings *rs = &r->scene->render;
+    size_t used = strlen(out->why);
+    if (rs->hit_shading != HIT_SHADING_AUTO && out->kind != PIPELINE_RUN_MULTIPASS)
+        used += (size_t)snprintf(out->why + used, sizeof out->why - used, "; render.hit_shading is for the multipass "
+                                 "scheme's intersection stage, which this frame does not run");
+    if (used < sizeof out->why && rs->orbit_walk != ORBIT_WALK_AUTO &&
+        (out->kind != PIPELINE_RUN_SINGLE || !r->exact_orbits))
+        snprintf(out->why + used, sizeof out->why - used, "; render.orbit_walk is for the single pass on exact "
+                 "orbits, which this frame does not run");
+}
+
 int pipeline_choose(const struct renderer *r, int per_segment_hook, struct pipeline_choice_made *out,
                     struct error *e)
 {
@@ -140,6 +155,7 @@ int pipeline_choose(const struct renderer *r, int per_segment_hook, struct pipel
             snprintf(out->why + used, sizeof out->why - used, "; the objects' planes pass through the mass: "
                      "each met where the orbits cross it");
         }
+        unused_choices(r, out);
         return 0;
     }
     /* the render paths whose ray state the other pipelines cannot keep */
@@ -161,5 +177,6 @@ int pipeline_choose(const struct renderer *r, int per_segment_hook, struct pipel
         snprintf(out->why + used, sizeof out->why - used, "; %s%s", fused ? "" : "not fused: ", fused_why);
     }
     out->kind = fused ? PIPELINE_RUN_FUSED : PIPELINE_RUN_MULTIPASS;
+    unused_choices(r, out);
     return 0;
 }

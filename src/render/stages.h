@@ -62,7 +62,7 @@ struct renderer {
     int exact_orbits;             /* rays follow tabulated exact orbits (not straight, orbit_table) */
     int sky_at_infinity;          /* integrated rays around a mass: the sky along the direction at infinity */
     const char *pipeline_name;    /* of the last run: "multipass", "fused segment", "single pass" */
-    char pipeline_why[200];       /* why the last run took it */
+    char pipeline_why[400];       /* why the last run took it */
     int state_pending;            /* single pass: hit and position not yet written */
     int outcomes_pending;         /* single pass drawn as FRAME_COLOUR: image and velocity neither */
     int codes_written;            /* ... with the outcome codes beside it (FRAME_WRITES_COLOUR_CODES) */
@@ -179,7 +179,7 @@ int object_batch_all(const struct renderer *r, struct object_batch *b);
 enum pipeline_kind { PIPELINE_RUN_SINGLE, PIPELINE_RUN_FUSED, PIPELINE_RUN_MULTIPASS };
 struct pipeline_choice_made {
     enum pipeline_kind kind;
-    char why[200];
+    char why[400];
 };
 int pipeline_choose(const struct renderer *r, int per_segment_hook, struct pipeline_choice_made *out,
                     struct error *e);

@@ -147,6 +147,10 @@ check "the stage in passes of their own draws where the one pass is skipped" 0 "
     $BT render --scene assets/scenes/schwarzschild.scene --size 40x30 --set render.pipeline=multipass --no-mrt \
     --set render.hit_shading=separate --force --out $TMP/ds_s.png 2>/dev/null && $BT render --scene assets/scenes/schwarzschild.scene \
     --size 40x30 --set render.pipeline=multipass --no-mrt --force --out $TMP/ds_i.png 2>/dev/null && cmp $TMP/ds_s.png $TMP/ds_i.png && echo same"
+# a choice for a pipeline the frame does not run is said on the render line, not ignored
+check "a choice for a pipeline not run is said" 0 "\(single pass: .*; render.hit_shading is for the multipass scheme's intersection stage, which this frame does not run; render.orbit_walk is for the single pass on exact orbits, which this frame does not run\)" -- \
+    $BT render --scene assets/scenes/lorenz.scene --size 16x12 --set render.hit_shading=separate --set render.orbit_walk=inline \
+    --out "$TMP/hs_u.png"
 check "hit shading apart refused on a 16-bit ray state" 2 "render.hit_shading = separate: the hit found would be kept between passes in 16-bit floats \(render path fp16" -- \
     $BT render --scene $S --size 16x12 --precision fp16 --set render.pipeline=multipass --set render.hit_shading=separate \
     --out "$TMP/hs_r.png"
