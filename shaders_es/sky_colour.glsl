@@ -158,8 +158,9 @@ vec3 sky_stars(vec3 d, vec3 jx, vec3 jy, vec3 fx, vec3 fy, float doppler, bool s
     float reach_px = min(sigma * sqrt(2.0 * log(peak / STAR_LIGHT_EPSILON)), STAR_RADIUS_MAX_PX);
     float trace = xx + yy;
     float widest = sqrt(0.5 * (trace + sqrt(max(trace * trace - 4.0 * det, 0.0))));
-    float reach = reach_px * widest;
-    if (!(reach <= STAR_FOOTPRINT_MAX_RAD))
+    // at most STAR_FOOTPRINT_MAX_RAD (results/star_light.h)
+    float reach = min(reach_px * widest, STAR_FOOTPRINT_MAX_RAD);
+    if (!(reach > 0.0))
         return light;
     // the width of the map's level-0 cells about d (the octahedral map's cells differ in size and
     // shape, fourfold from its centre to its folds): the least of the three sides of the triangle

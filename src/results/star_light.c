@@ -202,8 +202,8 @@ void star_sky_light(const struct star_sky *k, const struct star_view *v, int i, 
         return;
     double reach_px = fmin(sigma * sqrt(2.0 * log(peak / STAR_LIGHT_EPSILON)), STAR_RADIUS_MAX_PX);
     double trace = xx + yy, widest = sqrt(0.5 * (trace + sqrt(fmax(trace * trace - 4.0 * det, 0.0))));
-    double reach = reach_px * widest;
-    if (!(reach <= STAR_FOOTPRINT_MAX_RAD))
+    double reach = fmin(reach_px * widest, STAR_FOOTPRINT_MAX_RAD);
+    if (!(reach > 0.0))
         return;
     p.reach_cos = cos(reach);
     star_catalogue_near(&k->catalogue, d, reach, add_star, &p);
