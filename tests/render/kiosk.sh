@@ -37,11 +37,14 @@ mkdir -p "$TMP/badscript"
 printf '0.5 turn speed +3\n0.2 frame\n' > "$TMP/badscript/bad.events"
 sed "s|path = visitor.events|path = $TMP/badscript/bad.events|; s|\.\./\.\./assets|$PWD/assets|g" $K > "$TMP/badscript/k.conf"
 check "kiosk bad script" 2 "bad.events:2: time 0.2 goes back" -- $BT kiosk --config "$TMP/badscript/k.conf" --out "$TMP/badscript"
-# the scenes' decoded images are held to [kiosk] image_memory before any is decoded: the two
-# scenes' six sky faces and one texture of 256 x 256 take 2 MB (1.8), each file once, also where
-# a scene is listed twice
+# the scenes' decoded images are held to [kiosk] image_memory before any is decoded: schwarzschild's
+# six grid faces and texture and a flight under the 256 x 256 star cube map (starflight as it was
+# before its point stars) take 2 MB (2.1), each file once, also where a scene is listed twice
 mkdir -p "$TMP/images"
-sed '/^refine_frames/a image_memory = 1' $K | sed 's|\.\./\.\./assets|'"$PWD"'/assets|g; s|path = visitor.events|path = '"$PWD"'/tests/kiosk/visitor.events|' > "$TMP/images/k.conf"
+sed -e 's|^type = color$|type = cubemap\ncubemap = '"$PWD"'/assets/sky/stars\ntemperature = 3000|' \
+    -e '/^stars = /d; /^star_seed = /d; /^milky_way = /d; /^color = 0 0 0$/d' assets/scenes/starflight.scene > "$TMP/images/star_cubemap.scene"
+sed '/^refine_frames/a image_memory = 1' $K | sed 's|\.\./\.\./assets|'"$PWD"'/assets|g; s|path = visitor.events|path = '"$PWD"'/tests/kiosk/visitor.events|;
+    s|'"$PWD"'/assets/scenes/starflight.scene|'"$TMP"'/images/star_cubemap.scene|; s|^assets_root = .*|assets_root = /|' > "$TMP/images/k.conf"
 check "kiosk image memory bound" 2 "k.conf:10: \[kiosk\] image_memory = 1 MB: the scenes' textures and sky faces take 2 MB decoded.*checker_grey.png, is 256x256" -- $BT kiosk --config "$TMP/images/k.conf" --out "$TMP/images"
 sed 's|^scenes = \(.*\)$|scenes = \1, '"$PWD"'/assets/scenes/schwarzschild.scene|; s|^start_scene = .*|start_scene = 0|' "$TMP/images/k.conf" > "$TMP/images/twice.conf"
 check "kiosk image memory counts a file once" 2 "take 2 MB decoded" -- $BT kiosk --config "$TMP/images/twice.conf" --out "$TMP/images"
