@@ -24,7 +24,14 @@ struct orbit_ray {
     float phi_end;                    // angle swept to the orbit's end
     float phi_infinity;               // escaping: angle swept to infinity, where the sky is
     float segments;                   // chords along the orbit
+    float r_turn;                     // at most the radius of the orbit's periapsis, where it has one
 };
+
+// How much lower than the periapsis of the exact orbit r_turn is taken: more than the float
+// roundings of the closed form below next to the critical angle (its acos at -1 has an infinite
+// slope: 4e-4 of the radius for a rounding of its argument) and than the orbit that the table's
+// interpolation gives differs from the exact one.
+const float ORBIT_TURN_MARGIN = 1e-2;
 
 #ifdef STATE_PACKED
 // the packed path: a texel's four floats from its 2x2 block of RGBA8 texels, as the ray state is
@@ -110,6 +117,13 @@ orbit_ray orbit_ray_of()
     ray.phi_infinity = infinity_over_sin * sin_psi;
     // rows i and i + 1 are the stencil's middle two (0 <= i <= last_row - 1: no clamp)
     ray.segments = max(ends[1].y, ends[2].y);
+    // the periapsis of light with impact parameter b = r_o sin psi / sqrt(1 - 2M / r_o) past the
+    // critical one (b > 3 sqrt 3 M): the largest root of r^3 - b^2 r + 2 M b^2 = 0, in the cubic's
+    // trigonometric form, (2 b / sqrt 3) cos(acos(-3 sqrt 3 M / b) / 3); b itself in flat space
+    float r_o = length(u_camera_position - u_model_center);
+    float b = r_o * sin_psi / sqrt(max(1.0 - 2.0 * u_mass / r_o, 1e-30));
+    float critical = clamp(-5.196152422706632 * u_mass / max(b, 1e-30), -1.0, 0.0);
+    ray.r_turn = 1.1547005383792515 * b * cos(acos(critical) / 3.0) * (1.0 - ORBIT_TURN_MARGIN);
     return ray;
 }
 

@@ -50,11 +50,12 @@ void main()
     float end_key = NO_HIT;
     bool done = false;
     bool leaving = false;
+    bool escaped = false;
     candidate best = candidate(NO_HIT, 0.0, -1.0, vec3(0.0), vec3(0.0));
     bool found_walking;
 #ifdef ORBIT_WALKED
     // where the walk pass stopped
-    orbit_walk_read(k, done, leaving, found_walking);
+    orbit_walk_read(k, done, leaving, escaped, found_walking);
     bool last_try = u_orbit_last_try > 0.0;
     {
 #else
@@ -63,7 +64,7 @@ void main()
     // what the chord met, the ray goes on from that chord's end (as the multipass scheme, whose
     // intersection stage keeps no such hit), up to ORBIT_HIT_TRIES walks.
     for (int attempt = 0; attempt < ORBIT_HIT_TRIES; attempt++) {
-        orbit_walk(ray, k, done, leaving, found_walking);
+        orbit_walk(ray, k, done, leaving, escaped, found_walking);
         bool last_try = attempt == ORBIT_HIT_TRIES - 1;
 #endif
         // every value of the walk where it stopped, found again from it
@@ -82,6 +83,12 @@ void main()
         steps = done ? k + 1.0 : k;
         code = done && !found ? CODE_CAPTURED : CODE_UNFINISHED;
         end_key = done && !found ? steps : NO_HIT;
+        // a ray that left the bounding sphere in a group of chords that meets nothing
+        // (ORBIT_SKY_UNPLACED): the sky, along its direction at infinity; where it crossed the
+        // sphere is not read
+        code = escaped ? CODE_SKY : code;
+        end_key = escaped ? steps : end_key;
+        leaves = escaped;
         if (leaving) {
             // the leaving chord as the orbit stage makes it (orbit_chord_from): from its end outside
             // the sphere back to where the orbit crosses it, on the same values

@@ -120,10 +120,15 @@ static const struct stage_program *frame_program(struct renderer *r, const struc
             files[n++] = "stage_orbit_frame.glsl";
     }
     files[n] = NULL;
-    char written[SKY_COLOUR_DEFINES_LEN + 96], sky_defines[SKY_COLOUR_DEFINES_LEN] = "";
+    char written[SKY_COLOUR_DEFINES_LEN + 160], sky_defines[SKY_COLOUR_DEFINES_LEN] = "";
     if (colour && !walk)
         sky_colour_defines(r, sky_defines, sizeof sky_defines);
-    snprintf(written, sizeof written, "%s%s%s%s",
+    /* where the outputs read of a ray that leaves only that it leaves (its sky is along its direction
+     * at infinity), the walk stops in the first group of chords that meets nothing and ends outside
+     * the bounding sphere, without finding the chord that crosses it (stage_orbit_walk.glsl) */
+    int unplaced = r->exact_orbits && output != FRAME_WRITES_STATE;
+    snprintf(written, sizeof written, "%s%s%s%s%s",
+             unplaced ? "#define ORBIT_SKY_UNPLACED 1\n" : "",
              walk ? "#define ORBIT_WALK_PASS 1\n" : a->walked ? "#define ORBIT_WALKED 1\n" : "",
              walk ? "" : output == FRAME_WRITES_STATE ? "#define FRAME_STATE 1\n" : colour ? "#define FRAME_COLOUR 1\n" : "",
              sky_defines,
