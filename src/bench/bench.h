@@ -99,6 +99,8 @@ int bench_pareto(struct bench *b, struct error *e);
 int bench_pipelines(struct bench *b, struct error *e);
 /* configurations bench_pareto times in all (for the progress count) */
 extern const int bench_pareto_count;
+/* the configurations the pipelines section times: its cases times their pipelines */
+extern const int bench_pipelines_count;
 int bench_limit(struct bench *b, struct error *e);
 /* the observer's effects and moving objects, rays against polygons (bench_relativity.c) */
 int bench_relativity(struct bench *b, struct error *e);

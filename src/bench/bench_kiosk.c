@@ -172,6 +172,7 @@ int bench_kiosk(struct bench *b, struct error *e)
         c.kiosk.height = 36;
     }
     int n = b->quick ? 1 : c.kiosk.n_scenes;
+    b->total += n;
     static struct kiosk_view v;
     struct screen *screen;
     if (kiosk_view_init(&v, &c, b->ctx, e) != 0)

@@ -38,6 +38,7 @@ static const enum pipeline_choice row_pipelines[ROW_PIPELINES] = {PIPELINE_MULTI
 static const enum precision_choice row_precision[ROW_PIPELINES] = {PRECISION_AUTO, PRECISION_AUTO, PRECISION_AUTO,
                                                                    PRECISION_PACKED};
 static const char *const row_names[ROW_PIPELINES] = {"multipass", "fused", "single", "packed"};
+const int bench_pipelines_count = N_CASES * ROW_PIPELINES;
 
 /* The pipelines section, each case's scene loaded into S. */
 static int pipelines_on(struct bench *b, struct scene *s, struct error *e)
@@ -81,8 +82,10 @@ static int pipelines_on(struct bench *b, struct scene *s, struct error *e)
             if (cases[k].walk != ORBIT_WALK_AUTO)
                 s->render.orbit_walk = cases[k].walk;
             /* exact orbits have no fused pass */
-            if (row_pipelines[p] == PIPELINE_FUSED && s->render.method == METHOD_ORBIT_TABLE)
+            if (row_pipelines[p] == PIPELINE_FUSED && s->render.method == METHOD_ORBIT_TABLE) {
+                b->done++;
                 continue;
+            }
             s->render.pipeline = row_pipelines[p];
             s->render.precision = row_precision[p];
             if (row_precision[p] == PRECISION_PACKED)
