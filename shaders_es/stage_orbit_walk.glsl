@@ -95,12 +95,11 @@ const float GROUP_RADIUS_MARGIN = 1e-3;
 // turning point between them (du/ds keeps its sign) all their ends lie between the radii of the
 // two ends; with the orbit's periapsis (u rises, then falls), between that of the periapsis (r_turn)
 // and the larger of the ends'; a group with another turn (an apoapsis: seen from inside the photon
-// sphere) is followed chord by chord. escapes: where the frame reads of a ray
-// that leaves the bounding sphere only that it leaves (ORBIT_SKY_UNPLACED), whether the group's
-// chords meet nothing and fall into nothing, and its end, p_b, lies outside the bounding sphere:
-// the chord-by-chord walk would leave on one of them, with no hit.
-bool group_clear(orbit_ray ray, float s_a, vec2 q_a, vec2 cs_a, float s_b, vec2 q_b, vec2 cs_b, vec3 p_b,
-                 out bool escapes)
+// sphere) is followed chord by chord. meets_nothing: whether the group's chords meet nothing and
+// fall into nothing, whether or not they leave (a group that does and ends outside the bounding
+// sphere: the chord-by-chord walk would leave on one of them, with no hit).
+bool group_clear(orbit_ray ray, float s_a, vec2 q_a, vec2 cs_a, float s_b, vec2 q_b, vec2 cs_b,
+                 out bool meets_nothing)
 {
     bool periapsis = q_a.y >= 0.0 && q_b.y <= 0.0;
     bool turns = q_a.y * q_b.y <= 0.0 && !periapsis;
@@ -117,12 +116,7 @@ bool group_clear(orbit_ray ray, float s_a, vec2 q_a, vec2 cs_a, float s_b, vec2 
     float phi_a = s_a * ray.phi_end;
     float span = s_b * ray.phi_end - phi_a;
     vec4 ends = vec4(cs_a, cs_b);
-    bool meets_nothing = !turns && !may_fall && cull_group_clear(ray, ends, phi_a, span, r_lo, r_hi);
-#ifdef ORBIT_SKY_UNPLACED
-    escapes = meets_nothing && outside_bounds(p_b);
-#else
-    escapes = false;
-#endif
+    meets_nothing = !turns && !may_fall && cull_group_clear(ray, ends, phi_a, span, r_lo, r_hi);
     return meets_nothing && !may_leave;
 }
 
@@ -171,11 +165,18 @@ void orbit_walk(orbit_ray ray, inout float k, out bool done, out bool leaving, o
         float phi1 = s1 * ray.phi_end;
         vec2 cs1 = vec2(cos(phi1), sin(phi1));
         vec3 p1 = orbit_point_at(ray, q1, cs1);
-        bool passes = group_clear(ray, s, q, cs_group, s1, q1, cs1, p1, escaped);
+        bool meets_nothing;
+        bool passes = group_clear(ray, s, q, cs_group, s1, q1, cs1, meets_nothing);
+        bool outside = outside_bounds(p1);
+#ifdef ORBIT_SKY_UNPLACED
+        // where the frame reads of a leaving ray only that it leaves: a group that meets nothing
+        // and ends outside the bounding sphere ends the walk
+        escaped = meets_nothing && outside;
+#endif
         float chords = k1 - k;
         bool chord = !passes && !escaped && chords <= 1.0;
         // a leaving chord moves nothing: the ray stands at its start (k)
-        leaving = chord && outside_bounds(p1);
+        leaving = chord && outside;
         bool tested = chord && !leaving;
         bool moves = passes || tested;
         // the orbit's values at the new end are taken before the chord's test, so that the old
