@@ -6,7 +6,8 @@
 //              ray that reached the sky or fell in has a depth too: where it ended)
 //   u_panel 3  step size: log2 of h against the scene's step, blue (shorter) to red (longer); with
 //              steps of fixed size (u_steps_budget > 0, h the same everywhere) the steps each ray
-//              took instead, blue (none) to red (the whole budget), black where the ray failed;
+//              took instead, blue (none) to red (the whole budget), black where the ray failed
+//              (steps that grow away from the objects: the path each ray took, its state's w);
 //              with exact orbits (u_orbit_rows > 0) the orbit table instead: one orbit per row,
 //              from the observer (left) to where it ends (right), coloured by u = 1/r against the
 //              horizon's, blue (far) to red (at the horizon), the photon sphere at 2/3; escaping
@@ -24,7 +25,7 @@ uniform float u_panel;
 uniform float u_bound_radius;
 uniform float u_segments;
 uniform float u_step;
-uniform float u_steps_budget;       // the steps every ray has, where they are of fixed size; else 0
+uniform float u_steps_budget;       // the steps (or with far steps the path) every ray has, where they are fixed; else 0
 uniform sampler2D u_orbit_table;
 uniform vec2 u_orbit_size;          // the table texture's width and height in texels
 uniform float u_orbit_columns;

@@ -20,6 +20,7 @@ const highp int FRAME_MAX_SEGMENTS = 100000;
 
 void main()
 {
+    far_reach_prepare();
     vec3 view = observer_scene_direction(observer_view_direction());
     vec3 x = u_camera_position;
     vec3 v = model_initial_velocity(u_camera_position, view);

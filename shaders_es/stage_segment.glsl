@@ -18,6 +18,7 @@ uniform float u_segment_index;
 
 void main()
 {
+    far_reach_prepare();
     vec4 position = fetch(u_ray_position);
     vec4 velocity = fetch(u_ray_velocity);
     vec4 hit = fetch(u_hit);

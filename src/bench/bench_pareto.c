@@ -22,37 +22,41 @@ struct pareto_config {
     double step_max_factor;       /* adaptive: step_max = scene step x factor (0: the default, x64) */
     double chord_tolerance;       /* method orbit_table: render.chord_tolerance (0: the scene's) */
     int multipass;                /* method orbit_table: the paper's scheme instead of the single pass */
+    double far_step_factor;       /* fixed steps: far_step = the step x factor (0: steps do not grow) */
 };
 
 static const struct pareto_config configs[] = {
-    {"scene default", 0, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 1, 0, 0, 0},
-    {"scene default, K = 1", 0, 1.0, 1.0, STEP_FIXED, 0, 0, 1, 1, 0, 0, 0},
-    {"scene default, fp16", 0, 1.0, 1.0, STEP_FIXED, 0, 1, 0, 1, 0, 0, 0},
-    {"euler, step x2", METHOD_EULER, 2.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
-    {"euler, step x1", METHOD_EULER, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
-    {"euler, step x0.5", METHOD_EULER, 0.5, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
-    {"rk4, step x4", METHOD_RK4, 4.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
-    {"rk4, step x2", METHOD_RK4, 2.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
-    {"rk4, step x1", METHOD_RK4, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
-    {"rk4, step x0.5", METHOD_RK4, 0.5, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
-    {"dopri5, step x4", METHOD_DOPRI5, 4.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
-    {"dopri5, step x2", METHOD_DOPRI5, 2.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
-    {"rk4, segment x0.5", METHOD_RK4, 1.0, 0.5, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
-    {"rk4, segment x0.2", METHOD_RK4, 1.0, 0.2, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
-    {"rk4, step x2, segment x0.4", METHOD_RK4, 2.0, 0.4, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0},
-    {"rk4 doubling, tol 1e-3", METHOD_RK4, 1.0, 1.0, STEP_DOUBLING, 1e-3, 0, 0, 0, 0, 0, 0},
-    {"rk4 doubling, tol 1e-4", METHOD_RK4, 1.0, 1.0, STEP_DOUBLING, 1e-4, 0, 0, 0, 0, 0, 0},
-    {"rk4 doubling, tol 1e-5", METHOD_RK4, 1.0, 1.0, STEP_DOUBLING, 1e-5, 0, 0, 0, 0, 0, 0},
-    {"dopri5 embedded, tol 1e-4", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-4, 0, 0, 0, 0, 0, 0},
-    {"dopri5 embedded, tol 1e-6", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-6, 0, 0, 0, 0, 0, 0},
-    {"dopri5 embedded, tol 1e-8", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-8, 0, 0, 0, 0, 0, 0},
-    {"dopri5 embedded, tol 1e-6, step max x4", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-6, 0, 0, 0, 4.0, 0, 0},
-    {"dopri5 embedded, tol 1e-8, step max x4", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-8, 0, 0, 0, 4.0, 0, 0},
+    {"scene default", 0, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 1, 0, 0, 0, 0},
+    {"scene default, K = 1", 0, 1.0, 1.0, STEP_FIXED, 0, 0, 1, 1, 0, 0, 0, 0},
+    {"scene default, fp16", 0, 1.0, 1.0, STEP_FIXED, 0, 1, 0, 1, 0, 0, 0, 0},
+    {"euler, step x2", METHOD_EULER, 2.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0, 0},
+    {"euler, step x1", METHOD_EULER, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0, 0},
+    {"euler, step x0.5", METHOD_EULER, 0.5, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4, step x4", METHOD_RK4, 4.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4, step x2", METHOD_RK4, 2.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4, step x1", METHOD_RK4, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4, step x0.5", METHOD_RK4, 0.5, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0, 0},
+    {"dopri5, step x4", METHOD_DOPRI5, 4.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0, 0},
+    {"dopri5, step x2", METHOD_DOPRI5, 2.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4, far step x2", METHOD_RK4, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0, 2.0},
+    {"rk4, far step x4", METHOD_RK4, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0, 4.0},
+    {"rk4, far step x8", METHOD_RK4, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0, 8.0},
+    {"rk4, segment x0.5", METHOD_RK4, 1.0, 0.5, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4, segment x0.2", METHOD_RK4, 1.0, 0.2, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4, step x2, segment x0.4", METHOD_RK4, 2.0, 0.4, STEP_FIXED, 0, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4 doubling, tol 1e-3", METHOD_RK4, 1.0, 1.0, STEP_DOUBLING, 1e-3, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4 doubling, tol 1e-4", METHOD_RK4, 1.0, 1.0, STEP_DOUBLING, 1e-4, 0, 0, 0, 0, 0, 0, 0},
+    {"rk4 doubling, tol 1e-5", METHOD_RK4, 1.0, 1.0, STEP_DOUBLING, 1e-5, 0, 0, 0, 0, 0, 0, 0},
+    {"dopri5 embedded, tol 1e-4", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-4, 0, 0, 0, 0, 0, 0, 0},
+    {"dopri5 embedded, tol 1e-6", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-6, 0, 0, 0, 0, 0, 0, 0},
+    {"dopri5 embedded, tol 1e-8", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-8, 0, 0, 0, 0, 0, 0, 0},
+    {"dopri5 embedded, tol 1e-6, step max x4", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-6, 0, 0, 0, 4.0, 0, 0, 0},
+    {"dopri5 embedded, tol 1e-8, step max x4", METHOD_DOPRI5, 1.0, 1.0, STEP_EMBEDDED, 1e-8, 0, 0, 0, 4.0, 0, 0, 0},
     /* exact orbits (Schwarzschild only; they come last, so other models take the configurations above) */
-    {"orbit table, chord 1e-2", METHOD_ORBIT_TABLE, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 1e-2, 0},
-    {"orbit table, chord 1e-3", METHOD_ORBIT_TABLE, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 1e-3, 0},
-    {"orbit table, chord 1e-4", METHOD_ORBIT_TABLE, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 1e-4, 0},
-    {"orbit table, chord 1e-3, multipass", METHOD_ORBIT_TABLE, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 1e-3, 1},
+    {"orbit table, chord 1e-2", METHOD_ORBIT_TABLE, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 1e-2, 0, 0},
+    {"orbit table, chord 1e-3", METHOD_ORBIT_TABLE, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 1e-3, 0, 0},
+    {"orbit table, chord 1e-4", METHOD_ORBIT_TABLE, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 1e-4, 0, 0},
+    {"orbit table, chord 1e-3, multipass", METHOD_ORBIT_TABLE, 1.0, 1.0, STEP_FIXED, 0, 0, 0, 0, 0, 1e-3, 1, 0},
 };
 #define N_CONFIGS (int)(sizeof configs / sizeof configs[0])
 #define N_ORBIT_CONFIGS 4
@@ -131,6 +135,9 @@ static void apply_config(struct scene *s, const struct pareto_config *c)
         r->max_path = 0.0;
     if (c->step_max_factor > 0)
         r->step_max = r->step_size * c->step_max_factor;
+    /* the scene default's variants keep its far steps; the others grow theirs as named, or none */
+    if (!c->scene_method)
+        r->far_step = c->far_step_factor > 0.0 ? r->step_size * c->far_step_factor : 0.0;
     r->early_z = 1;
     r->batch = SCENE_MAX_BATCH;
     r->steps_per_pass = c->k1 ? 1 : unroll_for(r->steps_per_segment);
@@ -183,6 +190,10 @@ static const char *config_not_applicable(const struct scene *s, const struct par
     realised_factors(s, c, &step, &segment);
     if ((c->step_factor != 1.0 && step == 1.0) || (c->segment_factor != 1.0 && segment == 1.0))
         return "not with this scene's steps a chord";
+    if (c->far_step_factor > 0.0 && !(s->render.step_size * step * c->far_step_factor < s->render.bound_radius))
+        return "a far step across the bounding sphere";
+    if (c->far_step_factor > 0.0 && s->n_objects == 0)
+        return "no object to grow the steps away from";
     return NULL;
 }
 
@@ -503,7 +514,9 @@ int bench_pareto(struct bench *b, struct error *e)
                    "the scene's steps a segment allow only another factor, the row says which it took, and where "
                    "they allow none, the row is n/a); \"segment xF\" multiplies the "
                    "segment and keeps the step and the path; \"step max x4\" bounds adaptive steps at 4 times the "
-                   "scene's step. \"orbit table, chord C\" (Schwarzschild only) integrates nothing: each ray "
+                   "scene's step; \"far step xF\" lets the step grow away from the objects up to F times the "
+                   "step (render.far_step; the other rows take the step everywhere, the scene default takes the "
+                   "scene's). \"orbit table, chord C\" (Schwarzschild only) integrates nothing: each ray "
                    "follows its exact orbit from the table, in chords within C of it, in one pass "
                    "(render.pipeline = single) or in the paper's multipass scheme. A configuration is on the "
                    "front when no other is as fast and as accurate in all three measures and better in one. "

@@ -195,7 +195,7 @@ static void panel_viewport(const struct compositor *c, int k)
 }
 
 int compositor_put_pipeline(struct compositor *c, const struct renderer_textures *t, double bound_radius,
-                            int segments, double step, long steps_budget, struct error *e)
+                            int segments, double step, double steps_budget, struct error *e)
 {
     to_canvas(c, 0, 0, c->width, c->height);
     glClearColor(0, 0, 0, 1);

@@ -52,7 +52,7 @@ int compositor_show_preview(struct compositor *c, struct error *e);
  * frame's aspect ratio (round things stay round), centred in its cell (kiosk/pipeline_layout.h);
  * the bands above and below it are black but for the colour scales and the outcome's legend. */
 int compositor_put_pipeline(struct compositor *c, const struct renderer_textures *t, double bound_radius,
-                            int segments, double step, long steps_budget, struct error *e);
+                            int segments, double step, double steps_budget, struct error *e);
 /* The HUD image (screen-sized, top row first, straight alpha), or NULL for none. */
 int compositor_set_hud(struct compositor *c, const unsigned char *rgba, int width, int height, struct error *e);
 /* Where compositor_draw puts the canvas on a screen of sw x sh: keeping its aspect ratio, centred;

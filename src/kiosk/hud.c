@@ -464,14 +464,16 @@ const char *const hud_pipeline_labels[HUD_PIPELINE_PANELS] = {
 };
 const char *const hud_pipeline_table_label = "orbit table: 1/r along each orbit";
 const char *const hud_pipeline_steps_label = "steps taken";
+const char *const hud_pipeline_path_label = "path travelled";
 
 /* What the colour scales and the legend below the panels say (kiosk_pipeline.glsl draws them):
  * the ends of each scale, the outcome's five colours in the legend's order, and how the positions
  * and directions take their colours. */
-static const char *const scale_ends[4][2] = {{"first", "last segment"},
+static const char *const scale_ends[5][2] = {{"first", "last segment"},
                                              {"shorter", "longer than the step"},
                                              {"far", "at the horizon"},
-                                             {"none", "every step a ray has"}};
+                                             {"none", "every step a ray has"},
+                                             {"none", "the whole path a ray has"}};
 static const char *const outcome_words[5] = {"object", "sky", "fell in", "unfinished", "failed"};
 static const char *const colour_axes = "x, y, z as red, green, blue";
 #define LEGEND_TEXT_DIVISOR 45
@@ -490,7 +492,7 @@ static void draw_panel_legend(struct hud_font *font, unsigned char *rgba, int w,
     } else if (k < 5) {
         int table = k == HUD_PIPELINE_TABLE_PANEL && v->orbit_table;
         int steps = k == HUD_PIPELINE_TABLE_PANEL && !v->orbit_table && v->fixed_steps;
-        const char *const *ends = scale_ends[table ? 2 : steps ? 3 : k - 3];
+        const char *const *ends = scale_ends[table ? 2 : steps ? (v->far_steps ? 4 : 3) : k - 3];
         hud_text_draw(font, rgba, w, h, x, base, px, ends[0], body_color);
         int right = hud_text_width(font, px, ends[1]);
         hud_text_draw(font, rgba, w, h, x + lw - right, base, px, ends[1], body_color);
@@ -517,6 +519,7 @@ static void draw_panel_labels(struct hud_font *font, unsigned char *rgba, int w,
             snprintf(text, sizeof text, "%s",
                      p != HUD_PIPELINE_TABLE_PANEL ? hud_pipeline_labels[p]
                      : v->orbit_table              ? hud_pipeline_table_label
+                     : v->far_steps                ? hud_pipeline_path_label
                      : v->fixed_steps              ? hud_pipeline_steps_label
                                                    : hud_pipeline_labels[p]);
         size_t take = fitting_head(font, px, text, pw - 2 * pad);

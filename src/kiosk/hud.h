@@ -48,6 +48,7 @@ struct hud_view {
     int pipeline_view;
     int orbit_table;                 /* exact orbits: the step-size panel shows the orbit table */
     int fixed_steps;                 /* steps of fixed size: that panel shows the steps each ray took */
+    int far_steps;                   /* ... that grow away from the objects: the path each ray took */
     int canvas_x, canvas_y, canvas_w, canvas_h;
 };
 
@@ -57,8 +58,9 @@ extern const char *const hud_pipeline_labels[HUD_PIPELINE_PANELS];
 /* The step-size panel's label where it shows the orbit table, and that panel's index. */
 #define HUD_PIPELINE_TABLE_PANEL 4
 extern const char *const hud_pipeline_table_label;
-/* Its label where it shows the steps each ray took. */
+/* Its label where it shows the steps each ray took, and where it shows the path (far steps). */
 extern const char *const hud_pipeline_steps_label;
+extern const char *const hud_pipeline_path_label;
 
 /* The HUD's text, one line per entry (title, caption, knobs in words, colours, notice; in staff
  * mode the name, description, knobs with symbols and keys, effects, fps), for the log and for

@@ -125,6 +125,8 @@ void kiosk_preview_scene(const struct scene *full, int width, int height, struct
     if (full->render.step_control == STEP_FIXED && segments >= fewer &&
         full->render.steps_per_segment * PREVIEW_SEGMENT_FACTOR <= SCENE_MAX_STEPS_PER_SEGMENT) {
         out->render.step_size = full->render.step_size * PREVIEW_STEP_FACTOR;
+        /* steps that grow away from the objects grow from the longer step, as far again */
+        out->render.far_step = full->render.far_step > 0.0 ? full->render.far_step * PREVIEW_STEP_FACTOR : 0.0;
         out->render.steps_per_segment = full->render.steps_per_segment * PREVIEW_SEGMENT_FACTOR;
         out->render.segments = (segments + fewer - 1) / fewer;
         out->render.max_path = 0.0;      /* the segments are the budget now */
@@ -181,9 +183,11 @@ static long steps_per_ray(const struct scene *s)
     return (long)render_segments(&s->render) * s->render.steps_per_segment;
 }
 
-long kiosk_fixed_step_budget(const struct scene *s)
+double kiosk_state_budget(const struct scene *s)
 {
-    return s->render.step_control == STEP_FIXED ? steps_per_ray(s) : 0;
+    if (s->render.step_control != STEP_FIXED || steps_per_ray(s) == 0)
+        return 0.0;
+    return render_far_steps(&s->render) ? render_path_budget(&s->render) : (double)steps_per_ray(s);
 }
 
 /* Tile k of t: its lower-left pixel and the part of it inside the frame. */
@@ -253,7 +257,7 @@ int kiosk_view_preview(struct kiosk_view *v, const struct kiosk_state *st, struc
     renderer_textures(v->renderer, &t);
     int rc = v->pipeline_view ? compositor_put_pipeline(&v->comp, &t, v->live.render.bound_radius,
                                                         render_segments(&v->live.render), v->live.render.step_size,
-                                                        kiosk_fixed_step_budget(&v->live), e)
+                                                        kiosk_state_budget(&v->live), e)
                               : compositor_put_preview(&v->comp, t.image, e);
     /* the pipeline view shows the preview's own state: it is not refined */
     v->refined_rows = v->pipeline_view ? k->height : 0;

@@ -129,9 +129,10 @@ void kiosk_preview_scene(const struct scene *full, int width, int height, struct
 /* Scene scene_index previews at width x height from now on (at most the configuration's size). */
 void kiosk_view_set_preview_size(struct kiosk_view *v, int scene_index, int width, int height);
 
-/* The steps each ray of s takes where its steps are of fixed size, against which the pipeline view
- * shows the steps a ray took (its step size is the same everywhere): 0 for adaptive steps,
- * straight rays and exact orbits. */
-long kiosk_fixed_step_budget(const struct scene *s);
+/* The budget each ray of s has where its steps are fixed, against which the pipeline view shows
+ * how much of it a ray took (the state's w): the steps, or the path where they grow away from the
+ * objects (render.far_step, render_far_steps). 0 for adaptive steps (the view shows their step
+ * sizes), straight rays and exact orbits. */
+double kiosk_state_budget(const struct scene *s);
 
 #endif

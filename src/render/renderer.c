@@ -68,17 +68,27 @@ static int renderer_follow_scene(struct renderer *r, struct error *e)
     r->sky_at_infinity = !r->straight && !r->exact_orbits && ops->direction_at_infinity;
     snprintf(r->model_file, sizeof r->model_file, "model_%s.glsl",
              r->straight ? "flat" : model_name(scene->model.type));
+    /* fixed steps that grow away from the objects: their bounds, as many as the GPU's uniforms
+     * spare (far_reach.h) */
+    r->far_reach_count = -1;
+    char far_define[64] = "";
+    if (!r->straight && !r->exact_orbits && render_far_steps(&scene->render)) {
+        int most = r->caps.max_fragment_uniform_vectors >= FAR_REACH_ROOMY_VECS ? FAR_REACH_MAX : 1;
+        r->far_reach_count = far_reach_pack(scene, most, r->far_ball, r->far_normal);
+        snprintf(far_define, sizeof far_define, "#define STEP_FAR %d\n%s", r->far_reach_count,
+                 r->caps.cpu_rasterizer ? "#define FAR_REACH_COPIES 1\n" : "");
+    }
     static const char *const method_defines[] = {"EULER", "RK4", "DOPRI5", "ORBIT_TABLE"};
     static const char *const control_defines[] = {"FIXED", "DOUBLING", "EMBEDDED"};
     int written = snprintf(r->model_defines, sizeof r->model_defines,
-             "#define MODEL_%s 1\n%s%s%s#define METHOD_%s 1\n#define STEP_%s 1\n#define STEPS_PER_PASS %d\n%s",
+             "#define MODEL_%s 1\n%s%s%s#define METHOD_%s 1\n#define STEP_%s 1\n%s#define STEPS_PER_PASS %d\n%s",
              r->straight ? "FLAT" : "CURVED",
              /* a 16-bit ray state: each value rounded to a 16-bit float before it is written (common.glsl) */
              r->path.format && !r->path.fp32 ? "#define STATE_HALF 1\n" : "",
              !r->straight && model_capture_radius(&scene->model) > 0.0 ? "#define MODEL_HORIZON 1\n" : "",
              r->sky_at_infinity ? "#define SKY_AT_INFINITY 1\n" : "",
              method_defines[r->method],
-             control_defines[scene->render.step_control], scene->render.steps_per_pass,
+             control_defines[scene->render.step_control], far_define, scene->render.steps_per_pass,
              !r->straight && ops->shader_defines ? ops->shader_defines(&scene->model) : "");
     if (written < 0 || (size_t)written >= sizeof r->model_defines)
         return error_set(e, ERROR_RUNTIME, NULL, "internal: the model's defines do not fit");

@@ -54,7 +54,7 @@ static void set_frame(const struct program_uniforms *p, const void *arg)
         }
         return;
     }
-    integrate_set_uniforms(p, r->scene);
+    integrate_set_uniforms(p, r);
     observer_set_uniforms(p, r);
     uniform_float(p, "u_step_size", r->scene->render.step_size);
     uniform_float(p, "u_segments", r->straight ? 1 : render_segments(&r->scene->render));

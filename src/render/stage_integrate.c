@@ -3,9 +3,10 @@
 #include "render/stages.h"
 #include <stdio.h>
 
-void integrate_set_uniforms(const struct program_uniforms *p, const void *scene)
+void integrate_set_uniforms(const struct program_uniforms *p, const void *renderer)
 {
-    const struct scene *s = scene;
+    const struct renderer *rn = renderer;
+    const struct scene *s = rn->scene;
     const struct render_settings *r = &s->render;
     model_set_uniforms(p, &s->model);
     bounds_set_uniforms(p, s);
@@ -14,8 +15,20 @@ void integrate_set_uniforms(const struct program_uniforms *p, const void *scene)
         uniform_float(p, "u_grow_below", r->grow_fraction * r->tolerance);
         uniform_float(p, "u_step_min", render_step_min(r));
         uniform_float(p, "u_step_max", render_step_max(r));
-        uniform_float(p, "u_path_max", render_path_budget(r));
     }
+    if (r->step_control != STEP_FIXED || rn->far_reach_count >= 0)
+        uniform_float(p, "u_path_max", render_path_budget(r));
+    if (rn->far_reach_count >= 0)
+        uniform_float(p, "u_far_step", r->far_step);
+    if (rn->far_reach_count > 0) {
+        glUniform4fv(program_uniform(p, "u_reach_ball"), rn->far_reach_count, &rn->far_ball[0][0]);
+        glUniform4fv(program_uniform(p, "u_reach_normal"), rn->far_reach_count, &rn->far_normal[0][0]);
+    }
+}
+
+int far_step_uniform_vecs(const struct renderer *r)
+{
+    return r->far_reach_count < 0 ? 0 : 2 * r->far_reach_count + 1;
 }
 
 int stage_integrate(struct renderer *r, int segment_start, struct error *e)
@@ -27,7 +40,7 @@ int stage_integrate(struct renderer *r, int segment_start, struct error *e)
         return -1;
     int passes = r->straight ? 1 : s->render.steps_per_segment / s->render.steps_per_pass;
     for (int k = 0; k < passes; k++)
-        if (pass_move_rays(r, sp, segment_start, integrate_set_uniforms, s, e) != 0)
+        if (pass_move_rays(r, sp, segment_start, integrate_set_uniforms, r, e) != 0)
             return -1;
     return gl_check("ray integration", e);
 }

@@ -343,7 +343,7 @@ static int pass_capacity(const struct renderer *r, int single_pass)
     int per_object = GEOMETRY_VECS + MATERIAL_VECS + (scene_has_moving_objects(r->scene) ? MOTION_VECS : 0) +
                      (single_pass ? (r->exact_orbits ? ORBIT_CULL_VECS : CHORD_VECS) : 0);
     int reserved = RESERVED_UNIFORM_VECS + (r->exact_orbits ? ORBIT_UNIFORM_VECS : 0) +
-                   (single_pass ? FRAME_UNIFORM_VECS : 0);
+                   (single_pass ? FRAME_UNIFORM_VECS + far_step_uniform_vecs(r) : 0);
     int by_uniforms = (r->caps.max_fragment_uniform_vectors - reserved) / per_object;
     int most = single_pass ? OBJECT_BATCH_MAX : SCENE_MAX_BATCH;
     int limit = by_uniforms < most ? by_uniforms : most;

@@ -16,7 +16,7 @@ static void set_segment(const struct program_uniforms *p, const void *arg)
 {
     const struct segment_args *a = arg;
     object_batch_set_uniforms(p, &a->batch);
-    integrate_set_uniforms(p, a->r->scene);
+    integrate_set_uniforms(p, a->r);
     observer_set_uniforms(p, a->r);
 }
 

@@ -7,6 +7,7 @@
 #include "render/renderer.h"
 #include "physics/orbit_table.h"
 #include "render/orbit_store.h"
+#include "render/far_reach.h"
 #include "results/star_map.h"
 
 /* The programs a renderer times the first draw of (pass_draw_begin): more than any frame uses. */
@@ -55,12 +56,16 @@ struct renderer {
     /* what needs the unclamped colour, which the sky stage then also writes (renderer_set_hdr);
      * NULL: nothing. Named for the image-only path's refusal. */
     const char *hdr_why;
-    char model_defines[256];      /* model, method, steps per pass */
+    char model_defines[320];      /* model, method, step control, steps per pass */
     char model_file[64];          /* model_NAME.glsl; model_flat.glsl for straight rays */
     int straight;                 /* rays are straight: one segment, not integrated */
     enum integration_method method;  /* the scene's, or rk4 where orbit_table lacks fp32 textures */
     int exact_orbits;             /* rays follow tabulated exact orbits (not straight, orbit_table) */
     int sky_at_infinity;          /* integrated rays around a mass: the sky along the direction at infinity */
+    /* fixed steps that grow away from the objects (render.far_step; STEP_FAR): the objects' bounds
+     * they grow from (render/far_reach.h), far_reach_count of them; -1 where the steps do not grow */
+    int far_reach_count;
+    float far_ball[FAR_REACH_MAX][4], far_normal[FAR_REACH_MAX][4];
     const char *pipeline_name;    /* of the last run: "multipass", "fused segment", "single pass" */
     char pipeline_why[400];       /* why the last run took it */
     int state_pending;            /* single pass: hit and position not yet written */
@@ -136,7 +141,10 @@ void textures_release(struct renderer *r);
 int stage_setup(struct renderer *r, struct error *e);
 int stage_integrate(struct renderer *r, int segment_start, struct error *e);
 /* The integration stage's uniforms (model, bounds, step control): a set_uniforms_fn of a scene. */
-void integrate_set_uniforms(const struct program_uniforms *p, const void *scene);
+/* The integration's uniforms (model, bounds, step control) of renderer r's scene. */
+void integrate_set_uniforms(const struct program_uniforms *p, const void *renderer);
+/* Uniform vectors the integration's far steps take (2 a bound and the step): 0 without them. */
+int far_step_uniform_vecs(const struct renderer *r);
 /* render.method = orbit_table (stage_orbit.c): the table for the scene as it is now, built and
  * uploaded when its parameters changed; one pass per segment along the exact orbits. */
 int orbit_prepare(struct renderer *r, struct error *e);

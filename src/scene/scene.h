@@ -181,6 +181,12 @@ struct render_settings {
     double tolerance;
     double grow_fraction;
     double step_min, step_max;
+    /* the longest step a ray takes where no object is near (0, or no more than the step near them:
+     * steps do not grow). The longest step from a point grows with its distance from the nearest
+     * object's bound from `step` (fixed steps) or step_max (adaptive ones) to at most this
+     * (shaders_es/stage_integrate.glsl, far_bound); a ray's state then carries the path it
+     * travelled, as with adaptive steps, and its budget is that path */
+    double far_step;
     enum moving_objects_method moving_objects;
     int polygon_subdivision;
     /* method orbit_table: largest distance of a segment's chord from the exact orbit (scene
@@ -224,6 +230,10 @@ void scene_cubemap_face_path(const char *prefix, int face, char *out, size_t len
 /* The bounds adaptive steps stay within (the defaults resolved). */
 double render_step_min(const struct render_settings *r);
 double render_step_max(const struct render_settings *r);
+/* 1 when steps grow away from the objects: far_step beyond `step` (fixed steps) or step_max
+ * (adaptive ones), an integrator's steps. Fixed steps' state then carries the path, as adaptive
+ * steps' does, and their budget is a path. */
+int render_far_steps(const struct render_settings *r);
 
 /* The default budget of a ray: a path this many times the bounding sphere's diameter. A straight
  * ray crosses the sphere within one diameter; the rest is for bent ones (orbits, flows). */

@@ -32,6 +32,7 @@ static void render_defaults(struct render_settings *r)
     r->grow_fraction = 1.0 / 32.0;
     r->step_min = 0.0;
     r->step_max = 0.0;
+    r->far_step = 0.0;
     r->chord_tolerance = 1e-3;
     r->max_chords = 1000;
     r->orbit_rows = 512;
@@ -62,6 +63,12 @@ double render_step_min(const struct render_settings *r)
 double render_step_max(const struct render_settings *r)
 {
     return r->step_max > 0.0 ? r->step_max : r->step_size * 64.0;
+}
+
+int render_far_steps(const struct render_settings *r)
+{
+    double near = r->step_control == STEP_FIXED ? r->step_size : render_step_max(r);
+    return r->method != METHOD_ORBIT_TABLE && r->far_step > near;
 }
 
 double render_requested_path(const struct render_settings *r)

@@ -382,6 +382,7 @@ const struct conf_key scene_keys[] = {
      .offset = AT_SCENE(render.steps_per_segment)},
     {SECTION_RENDER, "segments", CONF_INTEGER, .lo = 0, .hi = SCENE_MAX_SEGMENTS,
      .offset = AT_SCENE(render.segments)},
+    {SECTION_RENDER, "far_step", CONF_NUMBER, .lo = 0.0, .hi = 1e6, .offset = AT_SCENE(render.far_step)},
     {SECTION_RENDER, "max_path", CONF_NUMBER, .lo = 0.0, .hi = 1e9, .offset = AT_SCENE(render.max_path)},
     {SECTION_RENDER, "unfinished_color", CONF_COLOR, COLOR_RANGE, .offset = AT_SCENE(render.unfinished_color)},
     {SECTION_RENDER, "steps_per_pass", CONF_INTEGER, .lo = 1, .hi = SCENE_MAX_STEPS_PER_PASS,

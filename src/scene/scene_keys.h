@@ -15,7 +15,7 @@
  * the scene's numbers. */
 #define SCENE_ACCRETION_CENTRE_TOL 1e-9
 /* Capacity of per-key bookkeeping arrays; the table is checked against it at compile time. */
-#define SCENE_KEY_TABLE_MAX 128
+#define SCENE_KEY_TABLE_MAX 160
 
 enum scene_section_kind {
     SECTION_SCENE,

@@ -100,6 +100,10 @@ static int validate_render(const struct scene *s, struct error *err)
                        "render.max_path", render_requested_path(r),
                        r->max_path > 0.0 ? "" : " 0: the default",
                        needed, r->steps_per_segment, r->step_size, SCENE_MAX_SEGMENTS);
+    if (r->far_step > 0.0 && !(r->far_step < r->bound_radius))
+        return invalid(s, err, "render.far_step (%g) must be shorter than the bounding sphere's radius "
+                       "(render.bound_radius %g): a step across the scene is no step of its light", r->far_step,
+                       r->bound_radius);
     double lo = render_step_min(r), hi = render_step_max(r);
     if (r->step_control != STEP_FIXED && !(lo <= r->step_size && r->step_size <= hi))
         return invalid(s, err, "render.step (%g) must lie within render.step_min (%g) and render.step_max (%g)",

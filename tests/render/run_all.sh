@@ -105,8 +105,11 @@ if command -v ffmpeg > /dev/null; then
 else
     echo "skip animate video: ffmpeg is not installed"
 fi
-# a ray that hit an object in segment 14 of 60: its polyline ends there, the end not repeated
-check "trace polyline ends where the ray ends" 0 "^15 points, 0 repeated$" -- sh -c "$BT trace --scene assets/scenes/lorenz.scene --size 32x24 --pixel 16 16 > $TMP/t.json && echo \"\$(grep -c '^    \[' $TMP/t.json) points, \$(grep '^    \[' $TMP/t.json | uniq -d | wc -l) repeated\""
+# a ray that hit an object in segment 14 of 60 (steps of 0.5 throughout): its polyline ends there,
+# the end not repeated; with lorenz's far steps the same ray hits it in fewer segments, and its
+# polyline ends in the segment of its depth (depth 6.09: segments 0 to 6, 8 points)
+check "trace polyline ends where the ray ends" 0 "^15 points, 0 repeated$" -- sh -c "$BT trace --scene assets/scenes/lorenz.scene --size 32x24 --pixel 16 16 --set render.far_step=0 > $TMP/t.json && echo \"\$(grep -c '^    \[' $TMP/t.json) points, \$(grep '^    \[' $TMP/t.json | uniq -d | wc -l) repeated\""
+check "trace polyline ends where the ray ends (far steps)" 0 "^8 points, 0 repeated, depth 6$" -- sh -c "$BT trace --scene assets/scenes/lorenz.scene --size 32x24 --pixel 16 16 > $TMP/t.json && echo \"\$(grep -c '^    \[' $TMP/t.json) points, \$(grep '^    \[' $TMP/t.json | uniq -d | wc -l) repeated, depth \$(sed -n 's/^  \"depth\": \([0-9]*\)\..*/\1/p' $TMP/t.json)\""
 # on exact orbits the GPU's polyline follows the orbit from the table to where the ray ended: every
 # point of the CPU reference's curve lies within 2e-3 of it (its 64 samples' own sag), and both end
 # at the same point (a hit, the sky's sphere, the horizon)
@@ -327,6 +330,9 @@ check "bad engine" 2 "--engine: expected gpu or cpu" -- $BT render --scene $S --
 for f in assets/scenes/*.scene; do
     check "quality $(basename "$f")" 0 ": met$" -- $BT error --scene "$f" --check
 done
+# lorenz's far steps (render.far_step) hold its [quality] at the knobs' far end too, as the scene says
+check "quality lorenz at the knobs' far end" 0 ": met$" -- $BT error --scene assets/scenes/lorenz.scene --check \
+    --set model.rho=50 --set model.strength=0.01
 check "quality missed" 3 "MISSED" -- $BT error --scene assets/scenes/schwarzschild.scene --check --set render.method=euler
 sed -e '/^\[quality\]/,$d' -e "s#\.\./#$PWD/assets/#" assets/scenes/test.scene > "$TMP/unstated.scene"
 check "quality not stated" 2 "states no \[quality\]" -- $BT error --scene "$TMP/unstated.scene" --check

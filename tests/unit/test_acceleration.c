@@ -160,6 +160,10 @@ static void test_fused_pass_is_exact(void **state)
         {"lorenz", {NULL}},
         {"lorenz", {"render.termination_interval=3", NULL}},
         {"lorenz", {"render.early_z=off", "render.max_path=20", NULL}},
+        /* lorenz's steps grow away from its objects (render.far_step); here they do not */
+        {"lorenz", {"render.far_step=0", NULL}},
+        /* adaptive steps whose bound grows away from the objects */
+        {"lorenz", {"render.step_control=doubling", "render.step_max=0.5", "render.max_path=20", NULL}},
         {"rossler", {NULL}},
         {"potential", {"render.steps_per_pass=1", NULL}},
         {"refraction", {NULL}},
@@ -282,6 +286,8 @@ static void test_single_pass_is_exact(void **state)
         {"test", {NULL}},
         {"demo", {"render.method=rk4", NULL}},
         {"lorenz", {NULL}},
+        /* lorenz's steps grow away from its objects (render.far_step); here they do not */
+        {"lorenz", {"render.far_step=0", NULL}},
         {"rossler", {NULL}},
         {"potential", {NULL}},
         {"refraction", {NULL}},
@@ -299,6 +305,10 @@ static void test_single_pass_is_exact(void **state)
         {"lorenz", {"render.step=5", "render.bound_radius=1e18", "render.max_path=0", "render.segments=60", NULL}},
         /* adaptive steps within a path budget that most rays spend: the last step cut to it */
         {"lorenz", {"render.step_control=doubling", "render.max_path=20", NULL}},
+        /* ... with their bound grown away from the objects (render.far_step) */
+        {"lorenz", {"render.step_control=doubling", "render.step_max=0.5", "render.max_path=20", NULL}},
+        /* far steps within a budget that most rays spend */
+        {"lorenz", {"render.max_path=6", NULL}},
     };
     long seen[5] = {0};  /* outcomes over all cases: object, sky, captured, unfinished, failed */
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
@@ -475,6 +485,10 @@ static void test_unchecked_steps_are_exact(void **state)
         {"lorenz", {NULL}},
         {"lorenz", {"render.pipeline=multipass", NULL}},
         {"lorenz", {"render.steps_per_pass=1", "render.pipeline=multipass", NULL}},
+        /* lorenz's steps grow away from its objects (render.far_step); here they do not */
+        {"lorenz", {"render.far_step=0", NULL}},
+        {"lorenz", {"render.far_step=0", "render.pipeline=multipass", NULL}},
+        {"lorenz", {"render.step_control=doubling", "render.step_max=0.5", "render.max_path=20", NULL}},
         {"rossler", {NULL}},
         {"potential", {"render.step_control=doubling", "render.tolerance=1e-4", NULL}},
         {"refraction", {NULL}},

@@ -60,8 +60,10 @@ static void test_lorenz_divergence(void **state)
     (void)state;
     static struct scene s;
     /* The scene's field, camera, step and bound; its objects removed so that every ray runs the
-     * whole lambda = 30 = 60 segments x 0.5 (they end unfinished, inside the bound). */
-    static const char *const budget[] = {"render.max_path=30", NULL};
+     * whole lambda = 30 = 60 segments x 0.5 (they end unfinished, inside the bound). Steps of 0.5
+     * throughout (no far steps, which would grow to far_step with no object near): each segment
+     * ends at lambda = k x 0.5, where the reference is sampled. */
+    static const char *const budget[] = {"render.max_path=30", "render.far_step=0", NULL};
     hc_load(&s, "lorenz", 8, 6, budget);
     s.n_objects = 0;
     static const int pixels[LZ_RAYS][2] = {{1, 1}, {6, 2}, {3, 4}, {5, 5}};

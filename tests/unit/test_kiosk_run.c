@@ -357,8 +357,9 @@ static void test_pipeline_view(void **state)
 }
 
 /* With steps of fixed size every ray's step is the scene's, and the step-size panel shows the steps
- * each ray took instead (blue none to red the whole budget): lorenz's rays that hit an object near
- * the camera take few, those that reach the sky many, so the panel is not one colour. */
+ * each ray took instead (blue none to red the whole budget), or with lorenz's far steps the path
+ * each ray took (its state's w): lorenz's rays that hit an object near the camera take little of it,
+ * those that reach the sky much, so the panel is not one colour. */
 static void test_pipeline_steps_taken(void **state)
 {
     (void)state;
