@@ -270,6 +270,19 @@ void controlled_step(vec3 x, vec3 v, float h, float h_most, out vec3 x1, out vec
     h_next = h;
 #endif
 }
+
+// One step from (x, v), whose state's step is h and path `travelled`: the step tried (h_try), the
+// state at its end, whether the step control accepts it, and the state's next step.
+void step_attempt(vec3 x, vec3 v, float h, float travelled, out float h_try, out vec3 x1, out vec3 v1,
+                  out bool accept, out float h_next)
+{
+    float h_most;
+    step_to_try(x, v, h, travelled, h_try, h_most);
+    controlled_step(x, v, h_try, h_most, x1, v1, accept, h_next);
+#if defined(STEP_FAR) && !defined(STEP_DOUBLING) && !defined(STEP_EMBEDDED)
+    h_next = h;   // fixed steps: the state keeps the scene's step, which the next point's grows from
+#endif
+}
 #endif
 
 #ifndef MODEL_FLAT
@@ -339,13 +352,8 @@ void step_checked(inout vec3 x, inout vec3 v, inout float steps, inout float h, 
 {
     vec3 x1, v1;
     bool accept;
-    float h_next;
-    float h_try, h_most;
-    step_to_try(x, v, h, steps, h_try, h_most);
-    controlled_step(x, v, h_try, h_most, x1, v1, accept, h_next);
-#if defined(STEP_FAR) && !defined(STEP_DOUBLING) && !defined(STEP_EMBEDDED)
-    h_next = h;   // fixed steps: the state keeps the scene's step, which the next point's grows from
-#endif
+    float h_try, h_next;
+    step_attempt(x, v, h, steps, h_try, x1, v1, accept, h_next);
     bool ok = finite_step(x, x1, v1) || !accept;
     bool take = running && ok && accept;
     float next_steps = travelled_after(steps, h_try);
@@ -385,13 +393,8 @@ void step_unchecked(inout vec3 x, inout vec3 v, inout float steps, inout float h
 {
     vec3 x1, v1;
     bool accept;
-    float h_next;
-    float h_try, h_most;
-    step_to_try(x, v, h, steps, h_try, h_most);
-    controlled_step(x, v, h_try, h_most, x1, v1, accept, h_next);
-#if defined(STEP_FAR) && !defined(STEP_DOUBLING) && !defined(STEP_EMBEDDED)
-    h_next = h;   // fixed steps: the state keeps the scene's step, which the next point's grows from
-#endif
+    float h_try, h_next;
+    step_attempt(x, v, h, steps, h_try, x1, v1, accept, h_next);
     float next_steps = travelled_after(steps, h_try);
     vec3 x0 = x;
     x = accept ? x1 : x;
