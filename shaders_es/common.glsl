@@ -150,6 +150,8 @@ vec4 fetch_packed(sampler2D state)
     return unpack_block(state, 2.0 * ray_pixel(), u_inv_size);
 }
 #define fetch(state) fetch_packed(state)
+// the texel of the ray at `ray` (from (0, 0)), another ray's than the fragment's
+#define fetch_at(state, ray) unpack_block(state, 2.0 * (ray), u_inv_size)
 
 // What a pass writes for value: in a ray's block, the float of the fragment's texel, packed; a
 // colour (u_pixel_scale 1) as it is.
@@ -172,6 +174,8 @@ vec2 ray_pixel()
 // A macro, not a function: a sampler passed as a function parameter can lose its highp
 // precision in GLSL ES 1.00 (Mesa then returns 16-bit floats from a 32-bit texture).
 #define fetch(state) texture2D(state, gl_FragCoord.xy * u_inv_size)
+// the texel of the ray at `ray` (from (0, 0)), another ray's than the fragment's
+#define fetch_at(state, ray) texture2D(state, ((ray) + 0.5) * u_inv_size)
 #define state_written(value) (value)
 #endif
 

@@ -13,12 +13,18 @@ uniform vec3 u_observer_beta;         // velocity / c in the scene's (or the sta
 uniform float u_observer_gamma;
 #endif
 
-// Pixel centres at (i + 0.5) / W (paper 004's eye rays).
-vec3 observer_view_direction()
+// Pixel centres at (i + 0.5) / W (paper 004's eye rays): the view direction of the ray at `ray`
+// (from (0, 0)), and of the fragment's own.
+vec3 observer_view_direction_at(vec2 ray)
 {
-    vec2 pixel_centre = u_pixel_origin + ray_pixel() + 0.5;
+    vec2 pixel_centre = u_pixel_origin + ray + 0.5;
     vec2 ndc = pixel_centre / u_image_size * 2.0 - 1.0;
     return normalize(u_camera_forward + ndc.x * u_camera_right + ndc.y * u_camera_up);
+}
+
+vec3 observer_view_direction()
+{
+    return observer_view_direction_at(ray_pixel());
 }
 
 // Aberration, Eq. 3-4: the photon's four-momentum boosted from the observer's frame to the scene's.

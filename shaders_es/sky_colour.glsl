@@ -237,20 +237,33 @@ vec3 sky_stars(vec3 d, vec3 jx, vec3 jy, vec3 fx, vec3 fy, float doppler, bool s
 }
 #endif
 
+#ifdef STAR_FOOTPRINT_NEIGHBOURS
+// A pixel's footprints (the Jacobians of its exit direction and of the camera's straight ray per
+// pixel step) from its neighbouring rays, where the GPU takes no derivatives: the pass that includes
+// this file reads the rays' state and defines it (stage_sky.glsl).
+void star_footprints(out vec3 jx, out vec3 jy, out vec3 fx, out vec3 fy);
+#endif
+
 // image: colour and outcome code (common.glsl); velocity: the final direction, any length.
 vec4 sky_final_colour(vec4 image, vec3 velocity)
 {
     vec3 color = image.rgb;
     float alpha = image.a == CODE_SKY ? u_sky_alpha : 1.0;
 #ifdef GPU_STARS
+    vec3 exit_direction = normalize(velocity);
+#ifdef STAR_FOOTPRINT_NEIGHBOURS
+    // from the neighbouring rays, which the pass reads (stage_sky.glsl: a GPU without derivatives)
+    vec3 footprint_x, footprint_y, straight_x, straight_y;
+    star_footprints(footprint_x, footprint_y, straight_x, straight_y);
+#else
     // the footprints, before any branch: the derivatives are differences across the 2x2 group of
     // fragments, which all take them here
-    vec3 exit_direction = normalize(velocity);
     vec3 footprint_x = dFdx(exit_direction);
     vec3 footprint_y = dFdy(exit_direction);
     vec3 straight = observer_scene_direction(observer_view_direction());
     vec3 straight_x = dFdx(straight);
     vec3 straight_y = dFdy(straight);
+#endif
 #endif
     if (image.a == CODE_SKY) {
         color = sky(normalize(velocity));

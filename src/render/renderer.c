@@ -245,14 +245,16 @@ void renderer_set_subpixel(struct renderer *r, double dx, double dy)
  * that is asked for. */
 static int run_single_pass(struct renderer *r, struct error *e)
 {
-    int codes = r->reads == RENDER_READ_OUTCOMES && r->path.mrt && r->path.fp32 && !r->hdr_why;
+    /* the stars' footprints from neighbouring rays are the sky stage's alone */
+    int codes = r->reads == RENDER_READ_OUTCOMES && r->path.mrt && r->path.fp32 && !r->hdr_why &&
+                !stars_from_neighbours(r);
     if (codes) {
         /* two 8-bit targets where the path writes two float ones: complete on every GPU known, and
          * where one is not, the float outcomes as before */
         struct error unused;
         codes = raystate_fbo(&r->rs, r->rs.final_color, r->rs.outcome_codes, &unused) != 0;
     }
-    int colour = (r->reads == RENDER_READ_IMAGE && !r->hdr_why) || codes;
+    int colour = (r->reads == RENDER_READ_IMAGE && !r->hdr_why && !stars_from_neighbours(r)) || codes;
     if ((r->exact_orbits && orbit_prepare(r, e) != 0) ||
         stage_frame(r, codes ? FRAME_WRITES_COLOUR_CODES : colour ? FRAME_WRITES_COLOUR : FRAME_WRITES_OUTCOMES,
                     e) != 0 ||

@@ -55,14 +55,24 @@ void sky_colour_set_uniforms(const struct program_uniforms *p, const struct rend
 void sky_colour_defines(const struct renderer *r, char *out, size_t len)
 {
     const struct render_settings *rs = &r->scene->render;
-    snprintf(out, len, "%s%s%s%s", r->sky_cubemap ? "#define SKY_CUBEMAP 1\n" : "",
-             r->star_map ? STAR_DEFINES(STAR_MAP_SLOTS) : "", tone_active(rs) ? "#define TONE_MAP 1\n" : "",
+    snprintf(out, len, "%s%s%s%s%s", r->sky_cubemap ? "#define SKY_CUBEMAP 1\n" : "",
+             r->star_map ? STAR_DEFINES(STAR_MAP_SLOTS) : "",
+             stars_from_neighbours(r) ? "#define STAR_FOOTPRINT_NEIGHBOURS 1\n" : "",
+             tone_active(rs) ? "#define TONE_MAP 1\n" : "",
              tone_active(rs) && rs->tone_curve == TONE_CURVE_FILMIC ? "#define TONE_FILMIC 1\n" : "");
+}
+
+int stars_from_neighbours(const struct renderer *r)
+{
+    return r->star_map && !r->caps.derivatives;
 }
 
 static void set_sky(const struct program_uniforms *p, const void *arg)
 {
-    sky_colour_set_uniforms(p, arg, UNIT_SKY);
+    const struct renderer *r = arg;
+    sky_colour_set_uniforms(p, r, UNIT_SKY);
+    if (stars_from_neighbours(r))
+        glUniform2f(program_uniform(p, "u_run_rays"), (float)r->rs.width, (float)r->rs.height);
 }
 
 int stage_sky(struct renderer *r, struct error *e)

@@ -229,6 +229,10 @@ int stage_terminate(struct renderer *r, int segment, struct error *e);
 /* Retire finished rays (all: every ray) into the result textures; mark them for early-z. */
 int stage_retire(struct renderer *r, int all, struct error *e);
 int stage_sky(struct renderer *r, struct error *e);
+/* Whether the GPU's stars take their footprints from the neighbouring rays (a GPU without
+ * derivatives): then only the sky stage, which reads the rays' state, draws the final colour
+ * (stage_sky.glsl), never a single-pass frame's own pass. */
+int stars_from_neighbours(const struct renderer *r);
 /* The final colour's uniforms and defines (sky_colour.glsl), for the sky stage and FRAME_WRITES_COLOUR. */
 void sky_colour_set_uniforms(const struct program_uniforms *p, const struct renderer *r, int sky_unit);
 #define SKY_COLOUR_DEFINES_LEN 160

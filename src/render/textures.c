@@ -39,11 +39,11 @@ static int star_map_load(struct renderer *r, struct error *e)
     int cells = STAR_MAP_CELLS;
     while (cells > STAR_CHROMA_TEXELS / (2 * STAR_MAP_SLOTS) && 2 * STAR_MAP_SLOTS * cells > r->caps.max_texture_size)
         cells /= 2;
-    if (!r->caps.derivatives || !r->caps.fragment_fp32 || 2 * STAR_MAP_SLOTS * cells > r->caps.max_texture_size)
+    /* a GPU without derivatives takes the footprints from the neighbouring rays (stage_sky.glsl) */
+    if (!r->caps.fragment_fp32 || 2 * STAR_MAP_SLOTS * cells > r->caps.max_texture_size)
         return error_set(e, ERROR_RUNTIME, NULL, "render.star_pass = gpu: this GPU %s (bentray render draws the "
                          "stars with render.star_pass = cpu; the kiosk draws them on the GPU only: give the scene a "
-                         "cube-map sky there)", !r->caps.derivatives ? "takes no derivatives in its fragment shaders "
-                         "(GL_OES_standard_derivatives)" : !r->caps.fragment_fp32 ? "computes its fragment shaders in less "
+                         "cube-map sky there)", !r->caps.fragment_fp32 ? "computes its fragment shaders in less "
                          "than 32-bit floats" : "holds no texture large enough for the star map");
     struct star_sky *sky = malloc(sizeof *sky);
     if (!sky)
