@@ -30,8 +30,34 @@ bool finite_step(vec3 x0, vec3 x, vec3 v)
     return finite_state(x, v) && dot(d, d) < 4.0 * u_bound_radius2;
 }
 
-#ifndef STEP_FAR
-// steps that do not grow away from the objects (STEP_FAR below) need nothing of them
+// The objects' bounds that steps grow away from (STEP_FAR, below: their count), and where the
+// steps do not grow, nothing. As the chord cull's balls (stage_intersect.glsl, chord_cull_prepare):
+// a CPU rasteriser, which loads a uniform from memory at each use, takes copies once a pixel
+// (FAR_REACH_COPIES; llvmpipe's lorenz frame took 0.33 s with the uniforms read at each step, 0.26 s
+// with copies); a GPU's compiler reads the uniforms where they are used.
+#ifdef STEP_FAR
+#if STEP_FAR > 0
+uniform vec4 u_reach_ball[STEP_FAR];    // a bound's centre and radius
+uniform vec4 u_reach_normal[STEP_FAR];  // a flat bound's unit normal; 0 for a ball alone
+#ifdef FAR_REACH_COPIES
+#define FAR_REACH_COPIED 1
+vec4 reach_ball[STEP_FAR];
+vec4 reach_normal[STEP_FAR];
+
+void far_reach_prepare()
+{
+    for (int n = 0; n < STEP_FAR; n++) {
+        reach_ball[n] = u_reach_ball[n];
+        reach_normal[n] = u_reach_normal[n];
+    }
+}
+#else
+#define reach_ball u_reach_ball
+#define reach_normal u_reach_normal
+#endif
+#endif
+#endif
+#ifndef FAR_REACH_COPIED
 void far_reach_prepare()
 {
 }
@@ -133,37 +159,6 @@ uniform float u_path_max;
 // rays bit for bit.
 uniform float u_far_step;
 const float FAR_STEP_MARGIN = 1.5;
-#if STEP_FAR > 0
-uniform vec4 u_reach_ball[STEP_FAR];    // a bound's centre and radius
-uniform vec4 u_reach_normal[STEP_FAR];  // a flat bound's unit normal; 0 for a ball alone
-// As the chord cull's balls (stage_intersect.glsl, chord_cull_prepare): a CPU rasteriser, which
-// loads a uniform from memory at each use, takes copies once a pixel (FAR_REACH_COPIES; llvmpipe's
-// lorenz frame took 0.33 s with the uniforms read at each step, 0.26 s with copies); a GPU's
-// compiler reads the uniforms where they are used.
-#ifdef FAR_REACH_COPIES
-vec4 reach_ball[STEP_FAR];
-vec4 reach_normal[STEP_FAR];
-
-void far_reach_prepare()
-{
-    for (int n = 0; n < STEP_FAR; n++) {
-        reach_ball[n] = u_reach_ball[n];
-        reach_normal[n] = u_reach_normal[n];
-    }
-}
-#else
-#define reach_ball u_reach_ball
-#define reach_normal u_reach_normal
-
-void far_reach_prepare()
-{
-}
-#endif
-#else
-void far_reach_prepare()
-{
-}
-#endif
 
 // A lower bound of the distance from x to the nearest object: to a bound's ball, and for a flat one
 // to its plane, whichever is the larger (a ball alone: the larger of that and 0, since its normal

@@ -195,7 +195,7 @@ static void hud_view_of(struct kiosk *k, struct hud_view *v)
     renderer_textures(k->view.renderer, &t);
     v->orbit_table = t.orbit_table != 0;
     v->fixed_steps = kiosk_state_budget(&k->view.live) > 0.0;
-    v->far_steps = v->fixed_steps && render_far_steps(&k->view.live.render);
+    v->far_steps = v->fixed_steps && scene_far_steps(&k->view.live);
     compositor_letterbox(&k->view.comp, k->screen->width, k->screen->height, &v->canvas_x, &v->canvas_y,
                          &v->canvas_w, &v->canvas_h);
 }

@@ -187,7 +187,7 @@ double kiosk_state_budget(const struct scene *s)
 {
     if (s->render.step_control != STEP_FIXED || steps_per_ray(s) == 0)
         return 0.0;
-    return render_far_steps(&s->render) ? render_path_budget(&s->render) : (double)steps_per_ray(s);
+    return scene_far_steps(s) ? render_path_budget(&s->render) : (double)steps_per_ray(s);
 }
 
 /* Tile k of t: its lower-left pixel and the part of it inside the frame. */

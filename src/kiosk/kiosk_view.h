@@ -131,7 +131,7 @@ void kiosk_view_set_preview_size(struct kiosk_view *v, int scene_index, int widt
 
 /* The budget each ray of s has where its steps are fixed, against which the pipeline view shows
  * how much of it a ray took (the state's w): the steps, or the path where they grow away from the
- * objects (render.far_step, render_far_steps). 0 for adaptive steps (the view shows their step
+ * objects (render.far_step, scene_far_steps). 0 for adaptive steps (the view shows their step
  * sizes), straight rays and exact orbits. */
 double kiosk_state_budget(const struct scene *s);
 

@@ -256,7 +256,7 @@ int result_to_dump(const struct render_result *res, const struct scene *s, const
         /* fixed steps: the state's w counts them; an adaptive ray's w is the path it travelled
          * (its budget), and its steps are not counted; nor are fixed steps that grow (far_step) */
         float steps = pos[3] < 0.0f ? -1.0f - pos[3] : pos[3];
-        rec->steps = s->render.step_control == STEP_FIXED && !render_far_steps(&s->render) ? (uint32_t)lrintf(steps) : 0;
+        rec->steps = s->render.step_control == STEP_FIXED && !scene_far_steps(s) ? (uint32_t)lrintf(steps) : 0;
         memcpy(rec->rgba, res->rgba + 4 * i, 4);
     }
     return 0;

@@ -68,13 +68,10 @@ static int renderer_follow_scene(struct renderer *r, struct error *e)
     r->sky_at_infinity = !r->straight && !r->exact_orbits && ops->direction_at_infinity;
     snprintf(r->model_file, sizeof r->model_file, "model_%s.glsl",
              r->straight ? "flat" : model_name(scene->model.type));
-    /* fixed steps that grow away from the objects: their bounds, as many as the GPU's uniforms
-     * spare (far_reach.h) */
-    r->far_reach_count = -1;
+    /* steps that grow away from the objects (their bounds packed in renderer_open) */
+    r->far_steps = !r->straight && !r->exact_orbits && scene_far_steps(scene);
     char far_define[64] = "";
-    if (!r->straight && !r->exact_orbits && render_far_steps(&scene->render)) {
-        int most = r->caps.max_fragment_uniform_vectors >= FAR_REACH_ROOMY_VECS ? FAR_REACH_MAX : 1;
-        r->far_reach_count = far_reach_pack(scene, most, r->far_ball, r->far_normal);
+    if (r->far_steps) {
         snprintf(far_define, sizeof far_define, "#define STEP_FAR %d\n%s", r->far_reach_count,
                  r->caps.cpu_rasterizer ? "#define FAR_REACH_COPIES 1\n" : "");
     }
@@ -110,6 +107,9 @@ static int renderer_open(struct renderer *r, const struct gl_context *ctx, const
         quad_release();              /* the probe takes its share of the pass quad even when it fails */
         return -1;
     }
+    /* the objects' bounds that steps grow away from, as many as the GPU's uniforms spare (far_reach.h) */
+    int most = r->caps.max_fragment_uniform_vectors >= FAR_REACH_ROOMY_VECS ? FAR_REACH_MAX : 1;
+    r->far_reach_count = far_reach_pack(scene, most, r->far_ball, r->far_normal);
     if (!r->caps.fragment_fp32) {
         /* a picture computed in 16-bit floats is a wrong one: potential's rays never finish, a black
          * hole's shadow comes out at the wrong size (docs/LIMITS.md) */

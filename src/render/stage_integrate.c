@@ -16,11 +16,11 @@ void integrate_set_uniforms(const struct program_uniforms *p, const void *render
         uniform_float(p, "u_step_min", render_step_min(r));
         uniform_float(p, "u_step_max", render_step_max(r));
     }
-    if (r->step_control != STEP_FIXED || rn->far_reach_count >= 0)
+    if (r->step_control != STEP_FIXED || rn->far_steps)
         uniform_float(p, "u_path_max", render_path_budget(r));
-    if (rn->far_reach_count >= 0)
+    if (rn->far_steps)
         uniform_float(p, "u_far_step", r->far_step);
-    if (rn->far_reach_count > 0) {
+    if (rn->far_steps && rn->far_reach_count > 0) {
         glUniform4fv(program_uniform(p, "u_reach_ball"), rn->far_reach_count, &rn->far_ball[0][0]);
         glUniform4fv(program_uniform(p, "u_reach_normal"), rn->far_reach_count, &rn->far_normal[0][0]);
     }
@@ -28,7 +28,7 @@ void integrate_set_uniforms(const struct program_uniforms *p, const void *render
 
 int far_step_uniform_vecs(const struct renderer *r)
 {
-    return r->far_reach_count < 0 ? 0 : 2 * r->far_reach_count + 1;
+    return r->far_steps ? 2 * r->far_reach_count + 1 : 0;
 }
 
 int stage_integrate(struct renderer *r, int segment_start, struct error *e)

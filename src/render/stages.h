@@ -62,8 +62,10 @@ struct renderer {
     enum integration_method method;  /* the scene's, or rk4 where orbit_table lacks fp32 textures */
     int exact_orbits;             /* rays follow tabulated exact orbits (not straight, orbit_table) */
     int sky_at_infinity;          /* integrated rays around a mass: the sky along the direction at infinity */
-    /* fixed steps that grow away from the objects (render.far_step; STEP_FAR): the objects' bounds
-     * they grow from (render/far_reach.h), far_reach_count of them; -1 where the steps do not grow */
+    /* steps that grow away from the objects (render.far_step; STEP_FAR) in the scene as it is now,
+     * and the objects' bounds they grow from (render/far_reach.h), far_reach_count of them, packed
+     * once: the objects are the renderer's assets */
+    int far_steps;
     int far_reach_count;
     float far_ball[FAR_REACH_MAX][4], far_normal[FAR_REACH_MAX][4];
     const char *pipeline_name;    /* of the last run: "multipass", "fused segment", "single pass" */

@@ -230,10 +230,6 @@ void scene_cubemap_face_path(const char *prefix, int face, char *out, size_t len
 /* The bounds adaptive steps stay within (the defaults resolved). */
 double render_step_min(const struct render_settings *r);
 double render_step_max(const struct render_settings *r);
-/* 1 when steps grow away from the objects: far_step beyond `step` (fixed steps) or step_max
- * (adaptive ones), an integrator's steps. Fixed steps' state then carries the path, as adaptive
- * steps' does, and their budget is a path. */
-int render_far_steps(const struct render_settings *r);
 
 /* The default budget of a ray: a path this many times the bounding sphere's diameter. A straight
  * ray crosses the sphere within one diameter; the rest is for bent ones (orbits, flows). */
@@ -335,6 +331,10 @@ void object_rest_geometry(const struct object *o, struct object *rest);
 int scene_has_black_body(const struct scene *s);
 /* 1 when any object moves. */
 int scene_has_moving_objects(const struct scene *s);
+/* 1 when s's steps grow away from the objects: integrated rays (not straight, not exact orbits)
+ * whose far_step is beyond `step` (fixed steps) or step_max (adaptive ones). Fixed steps' state then
+ * carries the path, as adaptive steps' does, and their budget is a path. */
+int scene_far_steps(const struct scene *s);
 
 /* Errors from loading or overriding a scene are the one error type (io/error.h): where ("file:line"
  * or "--set model.mass=x"), the message, and status ERROR_INPUT, as for every configuration file. */

@@ -65,10 +65,11 @@ double render_step_max(const struct render_settings *r)
     return r->step_max > 0.0 ? r->step_max : r->step_size * 64.0;
 }
 
-int render_far_steps(const struct render_settings *r)
+int scene_far_steps(const struct scene *s)
 {
+    const struct render_settings *r = &s->render;
     double near = r->step_control == STEP_FIXED ? r->step_size : render_step_max(r);
-    return r->method != METHOD_ORBIT_TABLE && r->far_step > near;
+    return !model_is_straight(&s->model) && r->method != METHOD_ORBIT_TABLE && r->far_step > near;
 }
 
 double render_requested_path(const struct render_settings *r)

@@ -216,7 +216,7 @@ static void test_far_step_within_the_near_step(void **state)
         struct hc_gpu a, b;
         hc_load(&s, "lorenz", W, H, cases[k].sets);
         assert_true(s.render.far_step > 0.0);
-        assert_false(render_far_steps(&s.render));
+        assert_false(scene_far_steps(&s));
         hc_gpu_render(&s, &a);
         s.render.far_step = 0.0;
         hc_gpu_render(&s, &b);
@@ -262,7 +262,7 @@ static void test_far_steps_keep_the_path_budget(void **state)
 }
 
 /* A far step across the bounding sphere is refused, with the key's name and why; a negative one by
- * the key's range. */
+ * the key's range; where nothing is integrated it does not apply. */
 static void test_far_step_refused(void **state)
 {
     (void)state;
@@ -281,9 +281,19 @@ static void test_far_step_refused(void **state)
     /* like `step`, it does not apply where nothing is integrated: exact orbits, flat space */
     static const char *const flat[] = {"model.type=flat", NULL};
     hc_load(&s, "lorenz", W, H, flat);
+    assert_false(scene_far_steps(&s));
+    /* a field switched off: straight rays, one segment each, counted as one step in the dump */
+    static const char *const off[] = {"model.strength=0", NULL};
+    hc_load(&s, "lorenz", W, H, off);
+    assert_true(s.render.far_step > s.render.step_size);
+    assert_false(scene_far_steps(&s));
+    struct hc_gpu g;
+    hc_gpu_render(&s, &g);
+    assert_int_equal(g.dump.records[0].steps, 1);
+    hc_gpu_free(&g);
     static const char *const orbits[] = {"render.far_step=2", NULL};
     hc_load(&s, "schwarzschild", W, H, orbits);
-    assert_false(render_far_steps(&s.render));
+    assert_false(scene_far_steps(&s));
 }
 
 int main(void)
